@@ -1,0 +1,98 @@
+#include <cstdio>
+#include <sstream>
+
+#include "fw/model/face_asset.hpp"
+
+namespace fw::model {
+namespace {
+
+// Six significant digits are well below a texel and a tenth of a millimetre,
+// and keep the committed file small and its diffs readable.
+std::string number(float v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.6g", static_cast<double>(v));
+  std::string s(buffer);
+  return s == "-0" ? "0" : s;
+}
+
+template <typename Item, typename Write>
+void write_rows(std::ostringstream& out, const std::vector<Item>& items, Write write_item,
+                const char* indent) {
+  out << "[";
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    out << (i == 0 ? "\n" : ",\n") << indent;
+    write_item(items[i]);
+  }
+  out << "]";
+}
+
+void write_mesh(std::ostringstream& out, const Mesh& mesh, const char* indent) {
+  const std::string inner = std::string(indent) + "  ";
+  out << "{\n" << inner << "\"positions\": ";
+  write_rows(out, mesh.positions, [&](const glm::vec3& p) {
+    out << "[" << number(p.x) << ", " << number(p.y) << ", " << number(p.z) << "]";
+  }, (inner + "  ").c_str());
+  out << ",\n" << inner << "\"uvs\": ";
+  write_rows(out, mesh.uvs, [&](const glm::vec2& t) {
+    out << "[" << number(t.x) << ", " << number(t.y) << "]";
+  }, (inner + "  ").c_str());
+  out << ",\n" << inner << "\"triangles\": ";
+  write_rows(out, mesh.triangles, [&](const glm::uvec3& t) {
+    out << "[" << t.x << ", " << t.y << ", " << t.z << "]";
+  }, (inner + "  ").c_str());
+  out << "\n" << indent << "}";
+}
+
+template <typename Container>
+void write_index_list(std::ostringstream& out, const Container& values) {
+  out << "[";
+  bool first = true;
+  for (const auto v : values) {
+    out << (first ? "" : ", ") << v;
+    first = false;
+  }
+  out << "]";
+}
+
+}  // namespace
+
+std::string serialize_face_asset(const GenericFace& face) {
+  std::ostringstream out;
+  out << "{\n  \"format\": \"facewire-generic-face\",\n  \"version\": " << face.version << ",\n";
+  out << "  \"units\": \"inter-ocular distance; x right, y up, z toward the viewer\",\n";
+  out << "  \"texture_frame\": {\"origin\": [" << number(face.texture_frame.origin.x) << ", "
+      << number(face.texture_frame.origin.y) << "], \"size\": " << number(face.texture_frame.size)
+      << "},\n";
+  out << "  \"regions\": [";
+  for (std::size_t i = 0; i < kFaceRegionNames.size(); ++i)
+    out << (i ? ", " : "") << "\"" << kFaceRegionNames[i] << "\"";
+  out << "],\n  \"landmark_vertices\": ";
+  write_index_list(out, face.landmark_vertices);
+  out << ",\n  \"holes\": {\"eye_right\": ";
+  write_index_list(out, face.eye_holes[0]);
+  out << ", \"eye_left\": ";
+  write_index_list(out, face.eye_holes[1]);
+  out << ", \"mouth\": ";
+  write_index_list(out, face.mouth_slit);
+  out << "},\n  \"skin\": ";
+  write_mesh(out, face.skin, "  ");
+  out << ",\n  \"triangle_regions\": [";
+  for (std::size_t i = 0; i < face.triangle_regions.size(); ++i)
+    out << (i ? (i % 32 == 0 ? ",\n    " : ", ") : "\n    ") << static_cast<int>(face.triangle_regions[i]);
+  out << "\n  ],\n  \"eyes\": {";
+  for (int side = 0; side < 2; ++side) {
+    const EyeLayer& eye = face.eyes[static_cast<std::size_t>(side)];
+    out << (side ? ",\n" : "\n") << "    \"" << (side ? "left" : "right") << "\": {\"centre\": ["
+        << number(eye.centre.x) << ", " << number(eye.centre.y) << ", " << number(eye.centre.z)
+        << "], \"radius\": " << number(eye.radius) << ", \"cap_angle_rad\": "
+        << number(eye.cap_angle_rad) << ",\n      \"mesh\": ";
+    write_mesh(out, eye.mesh, "      ");
+    out << "}";
+  }
+  out << "\n  },\n  \"mouth_cavity\": ";
+  write_mesh(out, face.mouth_cavity, "  ");
+  out << "\n}\n";
+  return out.str();
+}
+
+}  // namespace fw::model

@@ -1,0 +1,201 @@
+#include "fw/model/procedural_texture.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <span>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+namespace fw::model {
+namespace {
+
+namespace lm = landmarks;
+
+glm::vec2 landmark(int i) { return landmark_template()[static_cast<std::size_t>(i)]; }
+
+// Deterministic value noise in [0,1]: the same face always gets the same skin.
+float hash(int x, int y) {
+  std::uint32_t h = static_cast<std::uint32_t>(x) * 374761393u + static_cast<std::uint32_t>(y) * 668265263u;
+  h = (h ^ (h >> 13)) * 1274126177u;
+  return static_cast<float>((h ^ (h >> 16)) & 0xffffu) / 65535.0f;
+}
+
+float value_noise(glm::vec2 p) {
+  const glm::vec2 i = glm::floor(p);
+  const glm::vec2 f = p - i;
+  const glm::vec2 s = f * f * (3.0f - 2.0f * f);
+  const int x = static_cast<int>(i.x), y = static_cast<int>(i.y);
+  const float a = hash(x, y), b = hash(x + 1, y), c = hash(x, y + 1), d = hash(x + 1, y + 1);
+  return glm::mix(glm::mix(a, b, s.x), glm::mix(c, d, s.x), s.y);
+}
+
+float distance_to_segment(glm::vec2 p, glm::vec2 a, glm::vec2 b) {
+  const glm::vec2 ab = b - a;
+  const float t = std::clamp(glm::dot(p - a, ab) / glm::dot(ab, ab), 0.0f, 1.0f);
+  return glm::length(p - (a + t * ab));
+}
+
+// Distance to the polyline through landmarks [begin, end), with the position
+// along it in [0,1] (for features that taper).
+float distance_to_polyline(glm::vec2 p, int begin, int end, float* along = nullptr) {
+  float best = 1e9f;
+  for (int i = begin; i + 1 < end; ++i) {
+    const float d = distance_to_segment(p, landmark(i), landmark(i + 1));
+    if (d < best) {
+      best = d;
+      if (along) *along = static_cast<float>(i - begin) / static_cast<float>(end - begin - 1);
+    }
+  }
+  return best;
+}
+
+bool inside(glm::vec2 p, int begin, int end) {
+  bool in = false;
+  for (int i = begin, j = end - 1; i < end; j = i++) {
+    const glm::vec2 a = landmark(i), b = landmark(j);
+    if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x) in = !in;
+  }
+  return in;
+}
+
+// 1 well inside a feature of soft width `edge`, 0 outside.
+float soft_inside(float distance_outside, float edge) {
+  return std::clamp(0.5f - distance_outside / edge, 0.0f, 1.0f);
+}
+
+void put(RgbaImage& image, int x, int y, glm::vec3 rgb, float alpha) {
+  std::uint8_t* px = image.at(x, y);
+  const glm::vec3 c = glm::clamp(rgb, 0.0f, 1.0f) * 255.0f + 0.5f;
+  px[0] = static_cast<std::uint8_t>(c.r);
+  px[1] = static_cast<std::uint8_t>(c.g);
+  px[2] = static_cast<std::uint8_t>(c.b);
+  px[3] = static_cast<std::uint8_t>(std::clamp(alpha, 0.0f, 1.0f) * 255.0f + 0.5f);
+}
+
+glm::vec3 skin_colour(glm::vec2 p, const Appearance& look) {
+  glm::vec3 c = look.skin * (0.95f + 0.08f * value_noise(p * 24.0f) + 0.04f * value_noise(p * 7.0f));
+  // Warmer cheeks and nose tip, darker toward the ears and under the jaw.
+  const glm::vec3 flush(0.08f, -0.03f, -0.02f);
+  c += flush * std::exp(-glm::dot(p - glm::vec2(-0.7f, -0.55f), p - glm::vec2(-0.7f, -0.55f)) / 0.06f);
+  c += flush * std::exp(-glm::dot(p - glm::vec2(0.7f, -0.55f), p - glm::vec2(0.7f, -0.55f)) / 0.06f);
+  c += flush * 0.7f * std::exp(-glm::dot(p - glm::vec2(0.0f, -0.58f), p - glm::vec2(0.0f, -0.58f)) / 0.02f);
+  c *= 1.0f - 0.22f * std::clamp((std::abs(p.x) - 0.95f) / 0.45f, 0.0f, 1.0f);
+  c *= 1.0f - 0.2f * std::clamp((-1.75f - p.y) / 0.3f, 0.0f, 1.0f);
+  return c;
+}
+
+// Hair above the hairline (an arc like the mesh outline, a little lower so
+// hair frames the forehead) with strands of noise.
+float hair_cover(glm::vec2 p) {
+  const float across = std::clamp(p.x / 1.18f, -1.0f, 1.0f);
+  const float hairline_y = 0.22f + std::sqrt(1.0f - across * across);
+  const float strands = 0.06f * (value_noise(glm::vec2(p.x * 30.0f, p.y * 3.0f)) - 0.5f);
+  float cover = soft_inside(hairline_y + strands - p.y, 0.05f);
+  // Hair at the temples, beyond the face outline above the ears.
+  if (p.y > 0.0f) cover = std::max(cover, soft_inside(1.12f - std::abs(p.x), 0.08f));
+  return cover;
+}
+
+glm::vec3 face_colour(glm::vec2 p, const Appearance& look) {
+  glm::vec3 c = skin_colour(p, look);
+
+  // Lips, a little darker at their inner line.
+  if (inside(p, lm::kOuterLipBegin, lm::kOuterLipEnd) || distance_to_polyline(p, 48, 60) < 0.012f) {
+    const float inner = distance_to_polyline(p, lm::kInnerLipBegin, lm::kInnerLipEnd);
+    const float edge = std::min(1.0f, distance_to_polyline(p, 48, 55) / 0.02f);
+    c = glm::mix(c, look.lips * (0.75f + 0.25f * std::min(1.0f, inner / 0.05f)), 0.4f + 0.6f * edge);
+  }
+  // Brows, thick at the inner end and tapering outward, with hair texture.
+  struct Brow { int begin, end; bool inner_first; };
+  for (const Brow brow : {Brow{lm::kBrowRightBegin, lm::kBrowRightEnd, false},
+                          Brow{lm::kBrowLeftBegin, lm::kBrowLeftEnd, true}}) {
+    const auto [begin, end, inner_first] = brow;
+    float along = 0;
+    const float d = distance_to_polyline(p + glm::vec2(0.0f, -0.015f), begin, end, &along);
+    const float from_inner = inner_first ? along : 1.0f - along;
+    const float half_width = 0.045f - 0.025f * from_inner;
+    const float cover = soft_inside(d - half_width, 0.025f) * (0.7f + 0.3f * value_noise(p * 90.0f));
+    c = glm::mix(c, look.hair * 0.8f, cover);
+  }
+  // Lashes: a dark line along each upper lid, a lighter one along the lower.
+  for (const int begin : {lm::kEyeRightBegin, lm::kEyeLeftBegin}) {
+    const float upper = distance_to_polyline(p, begin, begin + 4);
+    c = glm::mix(c, glm::vec3(0.08f, 0.06f, 0.05f), soft_inside(upper - 0.012f, 0.012f));
+    const glm::vec2 lower[] = {landmark(begin + 3), landmark(begin + 4), landmark(begin + 5), landmark(begin)};
+    float d_lower = 1e9f;
+    for (int i = 0; i < 3; ++i) d_lower = std::min(d_lower, distance_to_segment(p, lower[i], lower[i + 1]));
+    c = glm::mix(c, c * 0.6f, soft_inside(d_lower - 0.006f, 0.01f));
+  }
+  // Nostrils.
+  for (const float sign : {-1.0f, 1.0f}) {
+    const glm::vec2 d = (p - glm::vec2(sign * 0.11f, -0.71f)) / glm::vec2(0.055f, 0.028f);
+    c = glm::mix(c, c * 0.35f, soft_inside(glm::length(d) - 1.0f, 0.6f));
+  }
+  return glm::mix(c, look.hair, hair_cover(p));
+}
+
+}  // namespace
+
+RgbaImage make_skin_texture(const GenericFace& face, const Appearance& look, int size) {
+  assert(size >= 16);
+  RgbaImage image(size, size);
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x) {
+      const glm::vec2 uv((static_cast<float>(x) + 0.5f) / static_cast<float>(size),
+                         1.0f - (static_cast<float>(y) + 0.5f) / static_cast<float>(size));
+      const glm::vec2 p = face.texture_frame.to_model(uv);
+      const bool hole = inside(p, lm::kEyeRightBegin, lm::kEyeRightEnd) || inside(p, lm::kEyeLeftBegin, lm::kEyeLeftEnd);
+      put(image, x, y, face_colour(p, look), hole ? 0.0f : 1.0f);
+    }
+  return image;
+}
+
+RgbaImage make_eye_texture(const EyeLayer& eye, const Appearance& look, int size) {
+  constexpr float kIrisRadiusMm = 5.85f, kPupilRadiusMm = 1.9f;
+  const float iris_angle = std::asin(std::min(1.0f, kIrisRadiusMm / kMillimetresPerUnit / eye.radius));
+  const float pupil_angle = std::asin(std::min(1.0f, kPupilRadiusMm / kMillimetresPerUnit / eye.radius));
+  RgbaImage image(size, size);
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x) {
+      const glm::vec2 d((static_cast<float>(x) + 0.5f) / static_cast<float>(size) - 0.5f,
+                        0.5f - (static_cast<float>(y) + 0.5f) / static_cast<float>(size));
+      const float angle = glm::length(d) * 2.0f * eye.cap_angle_rad;
+      const float around = std::atan2(d.y, d.x);
+      glm::vec3 sclera = glm::vec3(0.93f, 0.91f, 0.88f) * (1.0f - 0.25f * std::clamp(angle / 1.4f, 0.0f, 1.0f));
+      const float streaks = 0.8f + 0.35f * value_noise(glm::vec2(around * 12.0f, angle * 40.0f));
+      glm::vec3 iris = look.iris * streaks * (0.75f + 0.35f * angle / iris_angle);
+      iris = glm::mix(iris, look.iris * 0.35f, std::clamp((angle / iris_angle - 0.85f) / 0.15f, 0.0f, 1.0f));
+      glm::vec3 c = glm::mix(iris, sclera, std::clamp((angle - iris_angle) / 0.03f + 0.5f, 0.0f, 1.0f));
+      c = glm::mix(glm::vec3(0.03f), c, std::clamp((angle - pupil_angle) / 0.02f + 0.5f, 0.0f, 1.0f));
+      // A highlight, so the eye looks wet.
+      const float glint = glm::length(d - glm::vec2(-0.03f, 0.035f));
+      c = glm::mix(c, glm::vec3(1.0f), soft_inside(glint - 0.012f, 0.01f) * 0.8f);
+      put(image, x, y, c, 1.0f);
+    }
+  return image;
+}
+
+RgbaImage make_mouth_texture(int width, int height) {
+  RgbaImage image(width, height);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const float u = (static_cast<float>(x) + 0.5f) / static_cast<float>(width);
+      const float v = 1.0f - (static_cast<float>(y) + 0.5f) / static_cast<float>(height);
+      const float centre = 1.0f - std::abs(u - 0.5f) * 2.0f;
+      glm::vec3 c = glm::vec3(0.22f, 0.06f, 0.06f) * (0.35f + 0.65f * centre);
+      // Upper teeth: a pale band under the upper lip with gaps between teeth.
+      if (v > 0.62f && v < 0.74f && std::abs(u - 0.5f) < 0.3f) {
+        const float gap = std::abs(std::fmod(u * 14.0f, 1.0f) - 0.5f);
+        c = glm::mix(c, glm::vec3(0.85f, 0.82f, 0.74f) * (0.6f + 0.4f * centre), gap < 0.44f ? 0.9f : 0.3f);
+      }
+      // Tongue: a rounded shape low in the cavity.
+      const glm::vec2 t((u - 0.5f) / 0.28f, (v - 0.2f) / 0.22f);
+      c = glm::mix(c, glm::vec3(0.62f, 0.27f, 0.28f) * (0.5f + 0.5f * centre), soft_inside(glm::length(t) - 1.0f, 0.3f));
+      put(image, x, y, c, 1.0f);
+    }
+  return image;
+}
+
+}  // namespace fw::model

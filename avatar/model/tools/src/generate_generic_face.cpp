@@ -1,0 +1,167 @@
+#include "fw/facegen/generate_generic_face.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "assign_regions.hpp"
+#include "face_points.hpp"
+#include "fw/model/depth_profile.hpp"
+#include "triangulate.hpp"
+
+namespace fw::facegen {
+namespace {
+
+using model::GenericFace;
+using model::Mesh;
+namespace lm = model::landmarks;
+
+// The texture square: wide enough for the rim at the ears, tall enough for
+// the rim over the forehead and under the chin.
+constexpr model::TextureFrame kTextureFrame{{-1.9f, -2.15f}, 3.8f};
+// How far the rim is pulled back beyond the depth profile: it is the turn of
+// the head toward the ears and the crown, seen only when the head turns.
+constexpr float kRimSetBack = 0.25f;
+
+void add_loop(const std::vector<std::uint32_t>& loop, std::vector<std::pair<unsigned, unsigned>>& edges) {
+  for (std::size_t i = 0; i < loop.size(); ++i) edges.emplace_back(loop[i], loop[(i + 1) % loop.size()]);
+}
+
+std::vector<std::uint32_t> landmark_loop(int begin, int end) {
+  std::vector<std::uint32_t> loop;
+  for (int i = begin; i < end; ++i) loop.push_back(static_cast<std::uint32_t>(i));
+  return loop;
+}
+
+// Skin triangles inside the outer boundary but outside the eyes and the
+// mouth slit. Constraints make every triangle lie wholly on one side of each
+// boundary, so its centroid decides.
+bool is_skin(glm::vec2 centroid, const FacePoints& face) {
+  return inside_polygon(centroid, polygon_of(face, face.rim)) &&
+         !inside_polygon(centroid, landmark_polygon(lm::kEyeRightBegin, lm::kEyeRightEnd)) &&
+         !inside_polygon(centroid, landmark_polygon(lm::kEyeLeftBegin, lm::kEyeLeftEnd)) &&
+         !inside_polygon(centroid, landmark_polygon(lm::kInnerLipBegin, lm::kInnerLipEnd));
+}
+
+void build_skin(GenericFace& face) {
+  const FacePoints points = place_face_points();
+  std::vector<std::pair<unsigned, unsigned>> constraints;
+  add_loop(points.rim, constraints);
+  add_loop(points.outline, constraints);
+  add_loop(landmark_loop(lm::kEyeRightBegin, lm::kEyeRightEnd), constraints);
+  add_loop(landmark_loop(lm::kEyeLeftBegin, lm::kEyeLeftEnd), constraints);
+  add_loop(landmark_loop(lm::kOuterLipBegin, lm::kOuterLipEnd), constraints);
+  add_loop(landmark_loop(lm::kInnerLipBegin, lm::kInnerLipEnd), constraints);
+
+  Mesh& skin = face.skin;
+  for (std::size_t i = 0; i < points.points.size(); ++i) {
+    const glm::vec2 p = points.points[i];
+    const float set_back = i >= points.first_rim_point ? kRimSetBack : 0.0f;
+    skin.positions.emplace_back(p, model::face_depth(p) - set_back);
+    skin.uvs.push_back(kTextureFrame.to_uv(p));
+  }
+  for (const glm::uvec3& t : constrained_delaunay(points.points, constraints)) {
+    const glm::vec2 centroid = (points.points[t.x] + points.points[t.y] + points.points[t.z]) / 3.0f;
+    if (!is_skin(centroid, points)) continue;
+    skin.triangles.push_back(t);
+    face.triangle_regions.push_back(region_of(centroid, points));
+  }
+  for (int i = 0; i < model::kLandmarkCount; ++i)
+    face.landmark_vertices[static_cast<std::size_t>(i)] = static_cast<std::uint32_t>(i);
+
+  // The holes are the boundary loops through landmarks 36, 42 and 60.
+  for (auto& loop : model::boundary_loops(skin)) {
+    const auto has = [&](std::uint32_t v) { return std::find(loop.begin(), loop.end(), v) != loop.end(); };
+    if (has(lm::kEyeRightBegin)) face.eye_holes[0] = loop;
+    else if (has(lm::kEyeLeftBegin)) face.eye_holes[1] = loop;
+    else if (has(lm::kInnerLipBegin)) face.mouth_slit = loop;
+  }
+}
+
+// The front cap of a sphere, in rings around the +z pole.
+Mesh sphere_cap(glm::vec3 centre, float radius, float cap_angle) {
+  constexpr int kRings = 10, kSegments = 24;
+  Mesh mesh;
+  mesh.positions.push_back(centre + glm::vec3(0, 0, radius));
+  mesh.uvs.emplace_back(0.5f, 0.5f);
+  for (int ring = 1; ring <= kRings; ++ring) {
+    const float theta = cap_angle * static_cast<float>(ring) / kRings;
+    for (int s = 0; s < kSegments; ++s) {
+      const float phi = 2.0f * std::numbers::pi_v<float> * static_cast<float>(s) / kSegments;
+      const glm::vec3 direction(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+      mesh.positions.push_back(centre + radius * direction);
+      const float r = 0.5f * theta / cap_angle;
+      mesh.uvs.emplace_back(0.5f + r * std::cos(phi), 0.5f + r * std::sin(phi));
+    }
+  }
+  const auto at = [](int ring, int s) {
+    return static_cast<std::uint32_t>(1 + (ring - 1) * kSegments + (s % kSegments));
+  };
+  for (int s = 0; s < kSegments; ++s) mesh.triangles.emplace_back(0u, at(1, s), at(1, s + 1));
+  for (int ring = 1; ring < kRings; ++ring)
+    for (int s = 0; s < kSegments; ++s) {
+      mesh.triangles.emplace_back(at(ring, s), at(ring + 1, s), at(ring + 1, s + 1));
+      mesh.triangles.emplace_back(at(ring, s), at(ring + 1, s + 1), at(ring, s + 1));
+    }
+  return mesh;
+}
+
+// Eyeballs sit just behind the eye contour. They are larger than a real eye
+// (about 17 mm radius instead of 12) so that their silhouette covers the
+// whole hole even when turned 30 degrees; the iris is drawn at its real size.
+void build_eyes(GenericFace& face) {
+  constexpr float kRadius = 0.27f;
+  constexpr float kCapAngle = 1.75f;  // ~100 degrees: past the silhouette
+  const int begins[2] = {lm::kEyeRightBegin, lm::kEyeLeftBegin};
+  for (int side = 0; side < 2; ++side) {
+    glm::vec2 centre_xy(0.0f);
+    float front = 1e9f;
+    for (int i = begins[side]; i < begins[side] + 6; ++i) {
+      const glm::vec3 p = face.skin.positions[static_cast<std::size_t>(i)];
+      centre_xy += glm::vec2(p) / 6.0f;
+      front = std::min(front, p.z);
+    }
+    model::EyeLayer& eye = face.eyes[static_cast<std::size_t>(side)];
+    eye.radius = kRadius;
+    eye.cap_angle_rad = kCapAngle;
+    eye.centre = glm::vec3(centre_xy, front - 0.015f - kRadius);
+    eye.mesh = sphere_cap(eye.centre, kRadius, kCapAngle);
+  }
+}
+
+// A dark, curved backdrop behind the lips: what shows when the mouth opens.
+void build_mouth_cavity(GenericFace& face) {
+  constexpr int kColumns = 9, kRows = 5;
+  constexpr float kHalfWidth = 0.56f, kTop = -0.9f, kBottom = -1.42f;
+  Mesh& mesh = face.mouth_cavity;
+  for (int row = 0; row < kRows; ++row)
+    for (int column = 0; column < kColumns; ++column) {
+      const float u = static_cast<float>(column) / (kColumns - 1);
+      const float v = static_cast<float>(row) / (kRows - 1);
+      const glm::vec2 p(-kHalfWidth + 2 * kHalfWidth * u, kBottom + (kTop - kBottom) * v);
+      const float across = p.x / kHalfWidth;
+      const float depth = model::face_depth(p) - 0.14f - 0.12f * (1.0f - across * across);
+      mesh.positions.emplace_back(p, depth);
+      mesh.uvs.emplace_back(u, v);
+    }
+  const auto at = [](int row, int column) { return static_cast<std::uint32_t>(row * kColumns + column); };
+  for (int row = 0; row + 1 < kRows; ++row)
+    for (int column = 0; column + 1 < kColumns; ++column) {
+      mesh.triangles.emplace_back(at(row, column), at(row, column + 1), at(row + 1, column + 1));
+      mesh.triangles.emplace_back(at(row, column), at(row + 1, column + 1), at(row + 1, column));
+    }
+}
+
+}  // namespace
+
+GenericFace generate_generic_face() {
+  GenericFace face;
+  face.texture_frame = kTextureFrame;
+  build_skin(face);
+  build_eyes(face);
+  build_mouth_cavity(face);
+  return face;
+}
+
+}  // namespace fw::facegen

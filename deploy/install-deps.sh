@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# Installs every Debian 12 package facewire needs to build, run and test.
+# Idempotent: packages already present are skipped, and `apt-get update` runs
+# at most once, only when something is missing.
+set -euo pipefail
+
+# Build toolchain and the C++ libraries the modules link.
+build_packages=(
+  build-essential cmake pkg-config git
+  libboost-dev libboost-system-dev            # Asio + Beast (server, client)
+  libopencv-dev opencv-data                   # photo preparation
+  libglm-dev                                  # vector maths (model, physics)
+  libosmesa6-dev libgl-dev mesa-utils         # offscreen GL renderer (llvmpipe)
+  libpng-dev                                  # PNG output of the renderer
+  libdlib-dev libdlib-data                    # face detector + 68-landmark model
+  nlohmann-json3-dev libcli11-dev libspdlog-dev
+  libgtest-dev libgmock-dev googletest
+  libhiredis-dev                              # Redis client (cluster mode)
+  libcgal-dev                                 # constrained triangulation in the face generator
+)
+# What the test suites run besides ctest.
+test_packages=(
+  clang libclang-rt-14-dev                    # libFuzzer targets and sanitizers
+  chromium chromium-driver                    # browser end-to-end tests
+  ffmpeg                                      # recorded room videos
+  redis-server                                # cluster tests against real Redis
+  python3
+)
+
+missing=()
+# Node.js may come from another source than Debian (with its own npm): only
+# ask Debian for it when the commands are absent.
+command -v node >/dev/null || missing+=(nodejs)
+command -v npm >/dev/null || missing+=(npm)
+for pkg in "${build_packages[@]}" "${test_packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$pkg")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#build_packages[@]}+${#test_packages[@]} packages present"
+  exit 0
+fi
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null || { echo "install-deps: run as root or install sudo; missing: ${missing[*]}" >&2; exit 1; }
+  SUDO="sudo"
+fi
+
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
