@@ -75,7 +75,7 @@ void put(RgbaImage& image, int x, int y, glm::vec3 rgb, float alpha) {
 }
 
 glm::vec3 skin_colour(glm::vec2 p, const Appearance& look) {
-  glm::vec3 c = look.skin * (0.95f + 0.08f * value_noise(p * 24.0f) + 0.04f * value_noise(p * 7.0f));
+  glm::vec3 c = look.skin * (0.96f + 0.035f * value_noise(p * 24.0f) + 0.05f * value_noise(p * 6.0f));
   // Warmer cheeks and nose tip, darker toward the ears and under the jaw.
   const glm::vec3 flush(0.08f, -0.03f, -0.02f);
   c += flush * std::exp(-glm::dot(p - glm::vec2(-0.7f, -0.55f), p - glm::vec2(-0.7f, -0.55f)) / 0.06f);
@@ -94,7 +94,8 @@ float hair_cover(glm::vec2 p) {
   const float strands = 0.06f * (value_noise(glm::vec2(p.x * 30.0f, p.y * 3.0f)) - 0.5f);
   float cover = soft_inside(hairline_y + strands - p.y, 0.05f);
   // Hair at the temples, beyond the face outline above the ears.
-  if (p.y > 0.0f) cover = std::max(cover, soft_inside(1.12f - std::abs(p.x), 0.08f));
+  const float temple = soft_inside(1.1f - std::abs(p.x), 0.1f) * std::clamp((p.y + 0.05f) / 0.3f, 0.0f, 1.0f);
+  cover = std::max(cover, temple);
   return cover;
 }
 
@@ -185,8 +186,9 @@ RgbaImage make_mouth_texture(int width, int height) {
       const float v = 1.0f - (static_cast<float>(y) + 0.5f) / static_cast<float>(height);
       const float centre = 1.0f - std::abs(u - 0.5f) * 2.0f;
       glm::vec3 c = glm::vec3(0.22f, 0.06f, 0.06f) * (0.35f + 0.65f * centre);
-      // Upper teeth: a pale band under the upper lip with gaps between teeth.
-      if (v > 0.62f && v < 0.74f && std::abs(u - 0.5f) < 0.3f) {
+      // Upper teeth: a pale band just below the closed lips' line, so a mouth
+      // at rest shows only darkness and an opening one shows teeth at once.
+      if (v > 0.47f && v < 0.59f && std::abs(u - 0.5f) < 0.3f) {
         const float gap = std::abs(std::fmod(u * 14.0f, 1.0f) - 0.5f);
         c = glm::mix(c, glm::vec3(0.85f, 0.82f, 0.74f) * (0.6f + 0.4f * centre), gap < 0.44f ? 0.9f : 0.3f);
       }

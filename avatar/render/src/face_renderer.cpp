@@ -1,0 +1,190 @@
+#include "fw/render/face_renderer.hpp"
+
+#include <algorithm>
+#include <vector>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "fw/render/offscreen_context.hpp"
+#include "gpu_resources.hpp"
+
+namespace fw::embedded {
+extern const std::string_view face_vert;  // shaders/face.vert
+extern const std::string_view face_frag;  // shaders/face.frag
+}  // namespace fw::embedded
+
+namespace fw::render {
+namespace {
+
+constexpr int kMinSize = 16, kMaxSize = 4096;
+constexpr float kSkinSpecular = 0.08f, kEyeSpecular = 0.9f, kMouthSpecular = 0.15f;
+
+struct GpuFace {
+  GpuMesh skin, mouth;
+  std::array<GpuMesh, 2> eyes;
+  std::array<glm::vec3, 2> eye_centres{};
+  Texture skin_texture, eye_texture, mouth_texture;
+};
+
+// Where the uniforms of the one shader program live.
+struct Uniforms {
+  GLint model = -1, view_projection = -1, camera_position = -1, light_direction = -1, specular = -1, texture = -1;
+};
+
+}  // namespace
+
+struct FaceRenderer::Impl {
+  RendererOptions options;
+  std::unique_ptr<OffscreenContext> context;
+  Program program;
+  Uniforms uniforms;
+  // Multisampled target drawn into, then resolved into a plain one to read.
+  Framebuffer draw_framebuffer, resolve_framebuffer;
+  Renderbuffer draw_colour, draw_depth, resolve_colour;
+  std::vector<GpuFace> faces;
+
+  bool set_up_framebuffers(std::string& error);
+  void draw_mesh(const GpuMesh& mesh, const Texture& texture, const glm::mat4& model, float specular);
+};
+
+bool FaceRenderer::Impl::set_up_framebuffers(std::string& error) {
+  GLint max_samples = 0;
+  glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
+  const GLsizei samples = std::clamp(options.samples, 0, max_samples);
+  const GLsizei w = options.width, h = options.height;
+
+  draw_colour = generate<Renderbuffer, glGenRenderbuffers>();
+  glBindRenderbuffer(GL_RENDERBUFFER, draw_colour.get());
+  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_RGBA8, w, h);
+  draw_depth = generate<Renderbuffer, glGenRenderbuffers>();
+  glBindRenderbuffer(GL_RENDERBUFFER, draw_depth.get());
+  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, w, h);
+  draw_framebuffer = generate<Framebuffer, glGenFramebuffers>();
+  glBindFramebuffer(GL_FRAMEBUFFER, draw_framebuffer.get());
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, draw_colour.get());
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, draw_depth.get());
+  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+    error = "the GL driver cannot render into a " + std::to_string(w) + "x" + std::to_string(h) + " framebuffer";
+    return false;
+  }
+  resolve_colour = generate<Renderbuffer, glGenRenderbuffers>();
+  glBindRenderbuffer(GL_RENDERBUFFER, resolve_colour.get());
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, w, h);
+  resolve_framebuffer = generate<Framebuffer, glGenFramebuffers>();
+  glBindFramebuffer(GL_FRAMEBUFFER, resolve_framebuffer.get());
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, resolve_colour.get());
+  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+    error = "the GL driver cannot create the resolve framebuffer";
+    return false;
+  }
+  return true;
+}
+
+void FaceRenderer::Impl::draw_mesh(const GpuMesh& mesh, const Texture& texture, const glm::mat4& model,
+                                   float specular) {
+  glUniformMatrix4fv(uniforms.model, 1, GL_FALSE, glm::value_ptr(model));
+  glUniform1f(uniforms.specular, specular);
+  glBindTexture(GL_TEXTURE_2D, texture.get());
+  glBindVertexArray(mesh.vertex_array.get());
+  glDrawElements(GL_TRIANGLES, mesh.index_count, GL_UNSIGNED_INT, nullptr);
+}
+
+FaceRenderer::FaceRenderer() : impl_(std::make_unique<Impl>()) {}
+FaceRenderer::~FaceRenderer() {
+  // GL objects must go while their context is current, and before it.
+  if (impl_->context) impl_->context->make_current();
+  auto context = std::move(impl_->context);
+  impl_.reset();
+}
+
+std::unique_ptr<FaceRenderer> FaceRenderer::create(const RendererOptions& options, std::string& error) {
+  if (options.width < kMinSize || options.width > kMaxSize || options.height < kMinSize ||
+      options.height > kMaxSize) {
+    error = "image size " + std::to_string(options.width) + "x" + std::to_string(options.height) +
+            " is out of range; use 16..4096 pixels on each side";
+    return nullptr;
+  }
+  std::unique_ptr<FaceRenderer> self(new FaceRenderer());
+  Impl& impl = *self->impl_;
+  impl.options = options;
+  impl.context = OffscreenContext::create(error);
+  if (!impl.context) return nullptr;
+  auto program = build_program(embedded::face_vert, embedded::face_frag, error);
+  if (!program) return nullptr;
+  impl.program = std::move(*program);
+  const GLuint p = impl.program.get();
+  impl.uniforms = {glGetUniformLocation(p, "u_model"),           glGetUniformLocation(p, "u_view_projection"),
+                   glGetUniformLocation(p, "u_camera_position"), glGetUniformLocation(p, "u_light_direction"),
+                   glGetUniformLocation(p, "u_specular"),        glGetUniformLocation(p, "u_texture")};
+  if (!impl.set_up_framebuffers(error)) return nullptr;
+  return self;
+}
+
+FaceId FaceRenderer::add_face(const model::GenericFace& face, const FaceTextures& textures) {
+  impl_->context->make_current();
+  GpuFace gpu;
+  gpu.skin = upload_mesh(face.skin);
+  gpu.mouth = upload_mesh(face.mouth_cavity);
+  for (std::size_t side = 0; side < 2; ++side) {
+    gpu.eyes[side] = upload_mesh(face.eyes[side].mesh);
+    gpu.eye_centres[side] = face.eyes[side].centre;
+  }
+  gpu.skin_texture = upload_texture(textures.skin);
+  gpu.eye_texture = upload_texture(textures.eye);
+  gpu.mouth_texture = upload_texture(textures.mouth);
+  impl_->faces.push_back(std::move(gpu));
+  return static_cast<FaceId>(impl_->faces.size() - 1);
+}
+
+model::RgbaImage FaceRenderer::render(std::span<const FaceDraw> draws, const Camera& camera) {
+  Impl& impl = *impl_;
+  impl.context->make_current();
+  const int w = impl.options.width, h = impl.options.height;
+  glBindFramebuffer(GL_FRAMEBUFFER, impl.draw_framebuffer.get());
+  glViewport(0, 0, w, h);
+  glClearColor(impl.options.background.r, impl.options.background.g, impl.options.background.b, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_CULL_FACE);  // a turned head shows the inside of its rim
+
+  glUseProgram(impl.program.get());
+  glUniformMatrix4fv(impl.uniforms.view_projection, 1, GL_FALSE, glm::value_ptr(camera.view_projection()));
+  glUniform3fv(impl.uniforms.camera_position, 1, glm::value_ptr(camera.position));
+  const glm::vec3 light(0.45f, 0.6f, 0.9f);  // key light above and to the viewer's right
+  glUniform3fv(impl.uniforms.light_direction, 1, glm::value_ptr(light));
+  glUniform1i(impl.uniforms.texture, 0);
+  glActiveTexture(GL_TEXTURE0);
+
+  for (const FaceDraw& draw : draws) {
+    if (draw.face >= impl.faces.size()) continue;  // an id from another renderer: nothing to draw
+    const GpuFace& face = impl.faces[draw.face];
+    impl.draw_mesh(face.skin, face.skin_texture, draw.model, kSkinSpecular);
+    impl.draw_mesh(face.mouth, face.mouth_texture, draw.model, kMouthSpecular);
+    for (std::size_t side = 0; side < 2; ++side) {
+      const glm::vec2 yaw_pitch = draw.eye_yaw_pitch_rad[side];
+      const glm::mat4 eye_model = draw.model * eye_transform(face.eye_centres[side], yaw_pitch.x, yaw_pitch.y);
+      impl.draw_mesh(face.eyes[side], face.eye_texture, eye_model, kEyeSpecular);
+    }
+  }
+  glBindVertexArray(0);
+
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, impl.draw_framebuffer.get());
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, impl.resolve_framebuffer.get());
+  glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, impl.resolve_framebuffer.get());
+  model::RgbaImage image(w, h);
+  std::vector<std::uint8_t> bottom_up(image.pixels.size());
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, bottom_up.data());
+  const std::size_t row = static_cast<std::size_t>(w) * 4;
+  for (int y = 0; y < h; ++y)
+    std::copy_n(bottom_up.data() + static_cast<std::size_t>(h - 1 - y) * row, row, image.at(0, y));
+  return image;
+}
+
+std::string FaceRenderer::renderer_name() { return impl_->context->renderer_name(); }
+int FaceRenderer::width() const { return impl_->options.width; }
+int FaceRenderer::height() const { return impl_->options.height; }
+
+}  // namespace fw::render

@@ -1,0 +1,90 @@
+#include "gpu_resources.hpp"
+
+#include <algorithm>
+#include <vector>
+
+#include "fw/model/mesh.hpp"
+
+namespace fw::render {
+namespace {
+
+std::optional<Shader> compile(GLenum type, std::string_view source, std::string& error) {
+  Shader shader(glCreateShader(type));
+  const GLchar* text = source.data();
+  const auto length = static_cast<GLint>(source.size());
+  glShaderSource(shader.get(), 1, &text, &length);
+  glCompileShader(shader.get());
+  GLint ok = 0;
+  glGetShaderiv(shader.get(), GL_COMPILE_STATUS, &ok);
+  if (ok) return shader;
+  char log[2048] = {};
+  glGetShaderInfoLog(shader.get(), sizeof log, nullptr, log);
+  error = std::string(type == GL_VERTEX_SHADER ? "vertex" : "fragment") + " shader does not compile: " + log;
+  return std::nullopt;
+}
+
+template <typename T>
+Buffer array_buffer(GLuint attribute, const std::vector<T>& data, GLint components) {
+  auto buffer = generate<Buffer, glGenBuffers>();
+  glBindBuffer(GL_ARRAY_BUFFER, buffer.get());
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(T)), data.data(), GL_STATIC_DRAW);
+  glEnableVertexAttribArray(attribute);
+  glVertexAttribPointer(attribute, components, GL_FLOAT, GL_FALSE, 0, nullptr);
+  return buffer;
+}
+
+}  // namespace
+
+std::optional<Program> build_program(std::string_view vertex_source, std::string_view fragment_source,
+                                     std::string& error) {
+  auto vertex = compile(GL_VERTEX_SHADER, vertex_source, error);
+  if (!vertex) return std::nullopt;
+  auto fragment = compile(GL_FRAGMENT_SHADER, fragment_source, error);
+  if (!fragment) return std::nullopt;
+  Program program(glCreateProgram());
+  glAttachShader(program.get(), vertex->get());
+  glAttachShader(program.get(), fragment->get());
+  glLinkProgram(program.get());
+  GLint ok = 0;
+  glGetProgramiv(program.get(), GL_LINK_STATUS, &ok);
+  if (ok) return program;
+  char log[2048] = {};
+  glGetProgramInfoLog(program.get(), sizeof log, nullptr, log);
+  error = std::string("shader program does not link: ") + log;
+  return std::nullopt;
+}
+
+GpuMesh upload_mesh(const model::Mesh& mesh) {
+  GpuMesh gpu;
+  gpu.vertex_array = generate<VertexArray, glGenVertexArrays>();
+  glBindVertexArray(gpu.vertex_array.get());
+  gpu.positions = array_buffer(0, mesh.positions, 3);
+  gpu.normals = array_buffer(1, model::vertex_normals(mesh), 3);
+  gpu.uvs = array_buffer(2, mesh.uvs, 2);
+  gpu.indices = generate<Buffer, glGenBuffers>();
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gpu.indices.get());
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.triangles.size() * sizeof(glm::uvec3)),
+               mesh.triangles.data(), GL_STATIC_DRAW);
+  gpu.index_count = static_cast<GLsizei>(mesh.triangles.size() * 3);
+  glBindVertexArray(0);
+  return gpu;
+}
+
+Texture upload_texture(const model::RgbaImage& image) {
+  std::vector<std::uint8_t> flipped(image.pixels.size());
+  const std::size_t row = static_cast<std::size_t>(image.width) * 4;
+  for (int y = 0; y < image.height; ++y)
+    std::copy_n(image.at(0, y), row, flipped.data() + static_cast<std::size_t>(image.height - 1 - y) * row);
+  auto texture = generate<Texture, glGenTextures>();
+  glBindTexture(GL_TEXTURE_2D, texture.get());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, flipped.data());
+  glGenerateMipmap(GL_TEXTURE_2D);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return texture;
+}
+
+}  // namespace fw::render

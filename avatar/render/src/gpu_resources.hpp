@@ -1,0 +1,30 @@
+#pragma once
+// Uploading the renderer's resources to GL: shader program, meshes, textures.
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "fw/model/image.hpp"
+#include "fw/model/mesh.hpp"
+#include "gl_objects.hpp"
+
+namespace fw::render {
+
+/// Compiles and links a vertex + fragment shader pair; nullopt and `error`
+/// (with the GL info log) on failure.
+std::optional<Program> build_program(std::string_view vertex_source, std::string_view fragment_source,
+                                     std::string& error);
+
+/// A mesh in GL buffers: attribute 0 position, 1 normal, 2 uv.
+struct GpuMesh {
+  VertexArray vertex_array;
+  Buffer positions, normals, uvs, indices;
+  GLsizei index_count = 0;
+};
+GpuMesh upload_mesh(const model::Mesh& mesh);
+
+/// An RGBA texture with mipmaps, clamped at the edges. Rows are flipped on
+/// upload because images run top-down and texture v runs up.
+Texture upload_texture(const model::RgbaImage& image);
+
+}  // namespace fw::render

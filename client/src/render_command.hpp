@@ -1,0 +1,11 @@
+#pragma once
+// `facewire-client render`: one face to a PNG.
+#include <CLI/CLI.hpp>
+
+namespace fw::client {
+
+/// Adds the `render` subcommand to `app`; its callback runs the command and
+/// exits with 0 on success, 2 on bad input, 3 for what is not yet built.
+void add_render_command(CLI::App& app);
+
+}  // namespace fw::client
