@@ -18,11 +18,12 @@ float face_depth(glm::vec2 p) {
   // Base: a head seen from the front is close to an ellipsoid, flatter across
   // the face than around it. Its half width of 1.6 units puts the ears at the
   // silhouette.
-  // The half width of 1.45 and the depth of 1.1 put the jaw angle about 27 mm
-  // and the ears about 45 mm behind the cheeks, as on an adult head.
-  const float half_width = 1.45f;
+  // A half width of 1.42 and a depth of 1.9 put the face outline at ear level
+  // (landmarks 0 and 16) about 33 mm behind the outer eye corners and the
+  // cheeks about 20 mm behind the nose bridge, as on an adult head.
+  const float half_width = 1.42f;
   const float across = std::clamp(p.x / half_width, -0.999f, 0.999f);
-  float z = 1.1f * std::sqrt(1.0f - across * across);
+  float z = 1.9f * std::sqrt(1.0f - across * across);
   // The forehead slopes back above the brows and the jaw under the chin.
   if (p.y > 0.4f) z -= 0.3f * (p.y - 0.4f) * (p.y - 0.4f);
   if (p.y < -1.5f) z -= 0.5f * (p.y + 1.5f) * (p.y + 1.5f);

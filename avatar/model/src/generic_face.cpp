@@ -33,4 +33,6 @@ const GenericFace& generic_face() {
   return face;
 }
 
+std::string_view generic_face_asset_json() { return embedded::generic_face_json; }
+
 }  // namespace fw::model

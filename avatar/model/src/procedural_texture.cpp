@@ -102,11 +102,14 @@ float hair_cover(glm::vec2 p) {
 glm::vec3 face_colour(glm::vec2 p, const Appearance& look) {
   glm::vec3 c = skin_colour(p, look);
 
-  // Lips, a little darker at their inner line.
-  if (inside(p, lm::kOuterLipBegin, lm::kOuterLipEnd) || distance_to_polyline(p, 48, 60) < 0.012f) {
+  // Lips, a little darker at their inner line, with a soft outer edge.
+  const float to_lip_edge = std::min(distance_to_polyline(p, lm::kOuterLipBegin, lm::kOuterLipEnd),
+                                     distance_to_segment(p, landmark(lm::kOuterLipEnd - 1), landmark(lm::kOuterLipBegin)));
+  const float lip_cover =
+      soft_inside(inside(p, lm::kOuterLipBegin, lm::kOuterLipEnd) ? -to_lip_edge : to_lip_edge, 0.02f);
+  if (lip_cover > 0.0f) {
     const float inner = distance_to_polyline(p, lm::kInnerLipBegin, lm::kInnerLipEnd);
-    const float edge = std::min(1.0f, distance_to_polyline(p, 48, 55) / 0.02f);
-    c = glm::mix(c, look.lips * (0.75f + 0.25f * std::min(1.0f, inner / 0.05f)), 0.4f + 0.6f * edge);
+    c = glm::mix(c, look.lips * (0.75f + 0.25f * std::min(1.0f, inner / 0.05f)), 0.85f * lip_cover);
   }
   // Brows, thick at the inner end and tapering outward, with hair texture.
   struct Brow { int begin, end; bool inner_first; };
@@ -186,9 +189,10 @@ RgbaImage make_mouth_texture(int width, int height) {
       const float v = 1.0f - (static_cast<float>(y) + 0.5f) / static_cast<float>(height);
       const float centre = 1.0f - std::abs(u - 0.5f) * 2.0f;
       glm::vec3 c = glm::vec3(0.22f, 0.06f, 0.06f) * (0.35f + 0.65f * centre);
-      // Upper teeth: a pale band just below the closed lips' line, so a mouth
-      // at rest shows only darkness and an opening one shows teeth at once.
-      if (v > 0.47f && v < 0.59f && std::abs(u - 0.5f) < 0.3f) {
+      // Teeth: a pale band a little below the closed lips' line. A camera at
+      // eye level sees through the closed slit to the cavity just below it,
+      // which stays dark; lips that part uncover the band.
+      if (v > 0.36f && v < 0.47f && std::abs(u - 0.5f) < 0.3f) {
         const float gap = std::abs(std::fmod(u * 14.0f, 1.0f) - 0.5f);
         c = glm::mix(c, glm::vec3(0.85f, 0.82f, 0.74f) * (0.6f + 0.4f * centre), gap < 0.44f ? 0.9f : 0.3f);
       }

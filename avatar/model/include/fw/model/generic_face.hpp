@@ -73,4 +73,7 @@ struct GenericFace {
 /// that the test suite has validated.
 const GenericFace& generic_face();
 
+/// The text of the embedded asset, for serving it to web clients as it is.
+std::string_view generic_face_asset_json();
+
 }  // namespace fw::model

@@ -23,8 +23,9 @@ struct Camera {
   static Camera group(int count, float aspect);
 };
 
-/// The point heads turn about: the top of the neck, behind and below the chin.
-inline constexpr glm::vec3 kNeckPivot{0.0f, -1.5f, -0.9f};
+/// The point heads turn about: the top of the neck, below the ears, level
+/// with them in depth (the face surface reaches about z = 2.2 at the nose).
+inline constexpr glm::vec3 kNeckPivot{0.0f, -1.5f, 0.2f};
 
 /// A head's rotation (radians) and translation (model units). Signs follow
 /// codec::FaceParams: yaw turns toward the person's left (the nose moves to

@@ -1,0 +1,208 @@
+#include "fw/render/face_renderer.hpp"
+
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <gtest/gtest.h>
+
+#include "fw/model/procedural_texture.hpp"
+
+namespace fw::render {
+namespace {
+
+using model::RgbaImage;
+
+constexpr int kSize = 256;
+const glm::vec3 kBackground{0.0f, 0.0f, 0.0f};
+
+RgbaImage solid(int w, int h, glm::u8vec3 rgb) {
+  RgbaImage image(w, h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      std::uint8_t* p = image.at(x, y);
+      p[0] = rgb.r, p[1] = rgb.g, p[2] = rgb.b, p[3] = 255;
+    }
+  return image;
+}
+
+// The procedural skin recoloured to one colour, keeping its alpha holes.
+RgbaImage flat_skin(glm::u8vec3 rgb, int size = 128) {
+  RgbaImage skin = model::make_skin_texture(model::generic_face(), model::Appearance{}, size);
+  for (int y = 0; y < skin.height; ++y)
+    for (int x = 0; x < skin.width; ++x) {
+      std::uint8_t* p = skin.at(x, y);
+      p[0] = rgb.r, p[1] = rgb.g, p[2] = rgb.b;
+    }
+  return skin;
+}
+
+// A flat skin with a green mark at the nose tip, for tracking the nose in images.
+RgbaImage skin_with_marked_nose() {
+  RgbaImage skin = flat_skin({200, 150, 130}, 512);
+  const auto& face = model::generic_face();
+  const glm::vec2 tip = model::landmark_template()[model::landmarks::kNoseTip];
+  for (int y = 0; y < skin.height; ++y)
+    for (int x = 0; x < skin.width; ++x) {
+      const glm::vec2 uv((x + 0.5f) / skin.width, 1.0f - (y + 0.5f) / skin.height);
+      // Small, so that foreshortening of the mark on a turned nose cannot
+      // move its centroid by more than a pixel or two.
+      if (glm::length(face.texture_frame.to_model(uv) - tip) < 0.04f) {
+        std::uint8_t* p = skin.at(x, y);
+        p[0] = 0, p[1] = 255, p[2] = 0;
+      }
+    }
+  return skin;
+}
+
+bool is_background(const std::uint8_t* p) { return p[0] == 0 && p[1] == 0 && p[2] == 0; }
+
+// Centroid of the pixels `pick` selects within [low, high); (-1,-1) if none.
+template <typename Pick>
+glm::vec2 centroid(const RgbaImage& image, Pick pick, glm::ivec2 low = glm::ivec2(0),
+                   glm::ivec2 high = glm::ivec2(1 << 20)) {
+  glm::vec2 sum(0.0f);
+  int n = 0;
+  high = glm::min(high, glm::ivec2(image.width, image.height));
+  for (int y = std::max(0, low.y); y < high.y; ++y)
+    for (int x = std::max(0, low.x); x < high.x; ++x)
+      if (pick(image.at(x, y))) sum += glm::vec2(x + 0.5f, y + 0.5f), ++n;
+  return n ? sum / static_cast<float>(n) : glm::vec2(-1.0f);
+}
+
+bool greenish(const std::uint8_t* p) { return p[1] > 120 && p[0] < 80 && p[2] < 80; }
+
+class FaceRendererTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    std::string error;
+    RendererOptions options;
+    options.width = options.height = kSize;
+    options.background = kBackground;
+    renderer_ = FaceRenderer::create(options, error).release();
+    ASSERT_NE(renderer_, nullptr) << error;
+    const auto& face = model::generic_face();
+    const auto look = model::Appearance{};
+    natural_ = renderer_->add_face(face, {model::make_skin_texture(face, look, 256),
+                                          model::make_eye_texture(face.eyes[0], look), model::make_mouth_texture()});
+    marked_ = renderer_->add_face(face, {skin_with_marked_nose(), solid(8, 8, {0, 0, 255}), solid(8, 8, {40, 0, 0})});
+    red_ = renderer_->add_face(face, {flat_skin({255, 0, 0}), solid(8, 8, {0, 0, 255}), solid(8, 8, {40, 0, 0})});
+    blue_ = renderer_->add_face(face, {flat_skin({0, 0, 255}), solid(8, 8, {0, 255, 0}), solid(8, 8, {40, 0, 0})});
+  }
+  static void TearDownTestSuite() { delete renderer_; }
+
+  static RgbaImage render_one(FaceId id, const HeadPose& pose = {}, glm::vec2 gaze = glm::vec2(0.0f)) {
+    const FaceDraw draw{id, head_transform(pose), {gaze, gaze}};
+    return renderer_->render({&draw, 1}, Camera::portrait(1.0f));
+  }
+
+  static inline FaceRenderer* renderer_ = nullptr;
+  static inline FaceId natural_ = 0, marked_ = 0, red_ = 0, blue_ = 0;
+};
+
+TEST_F(FaceRendererTest, RunsOnASoftwareRenderer) {
+  EXPECT_FALSE(renderer_->renderer_name().empty());
+  EXPECT_EQ(renderer_->width(), kSize);
+}
+
+TEST_F(FaceRendererTest, FaceInTheCentreBackgroundInTheCorners) {
+  const RgbaImage image = render_one(natural_);
+  ASSERT_EQ(image.width, kSize);
+  for (auto [x, y] : {std::pair{1, 1}, {kSize - 2, 1}, {1, kSize - 2}, {kSize - 2, kSize - 2}})
+    EXPECT_TRUE(is_background(image.at(x, y))) << x << "," << y;
+  int face_pixels = 0;
+  for (int y = kSize / 4; y < 3 * kSize / 4; ++y)
+    for (int x = kSize / 4; x < 3 * kSize / 4; ++x) face_pixels += !is_background(image.at(x, y));
+  EXPECT_EQ(face_pixels, kSize * kSize / 4) << "the middle of the image is all face";
+  // Lit skin, not black or white: the texture and the light both reached it.
+  const std::uint8_t* cheek = image.at(kSize / 2 + kSize / 8, kSize / 2 + kSize / 16);
+  EXPECT_GT(cheek[0], 100);
+  EXPECT_GT(cheek[0], cheek[2]) << "skin is warmer than it is blue";
+}
+
+TEST_F(FaceRendererTest, NoseMarkLandsWhereTheCameraProjectsTheNoseTip) {
+  const auto& face = model::generic_face();
+  const glm::vec3 tip = face.skin.positions[face.landmark_vertices[model::landmarks::kNoseTip]];
+  for (float yaw_deg : {0.0f, 30.0f, -30.0f}) {
+    HeadPose pose;
+    pose.yaw_rad = glm::radians(yaw_deg);
+    const glm::vec2 seen = centroid(render_one(marked_, pose), greenish);
+    const glm::vec3 expected =
+        project_to_pixel(Camera::portrait(1.0f), glm::vec3(head_transform(pose) * glm::vec4(tip, 1.0f)), kSize, kSize);
+    EXPECT_NEAR(seen.x, expected.x, 3.0f) << "yaw " << yaw_deg;
+    EXPECT_NEAR(seen.y, expected.y, 3.0f) << "yaw " << yaw_deg;
+  }
+}
+
+TEST_F(FaceRendererTest, YawTurnsTheNoseTowardTheFacesLeft) {
+  HeadPose left, right;
+  left.yaw_rad = glm::radians(30.0f);
+  right.yaw_rad = glm::radians(-30.0f);
+  const float centre = centroid(render_one(marked_), greenish).x;
+  EXPECT_GT(centroid(render_one(marked_, left), greenish).x, centre + 10.0f) << "+yaw: viewer's right";
+  EXPECT_LT(centroid(render_one(marked_, right), greenish).x, centre - 10.0f);
+  HeadPose up;
+  up.pitch_rad = glm::radians(20.0f);
+  EXPECT_LT(centroid(render_one(marked_, up), greenish).y, centroid(render_one(marked_), greenish).y - 5.0f)
+      << "+pitch: nose moves up the image";
+}
+
+TEST_F(FaceRendererTest, EyeballShowsThroughTheEyeHole) {
+  const auto& face = model::generic_face();
+  const RgbaImage image = render_one(red_);
+  for (std::size_t side = 0; side < 2; ++side) {
+    const glm::vec3 eye = glm::vec3(face.eyes[side].centre.x, face.eyes[side].centre.y, 0.0f);
+    // The eye opening's middle, on the skin surface in front of the eyeball.
+    const glm::vec3 front(eye.x, eye.y, face.eyes[side].centre.z + face.eyes[side].radius);
+    const glm::vec3 px = project_to_pixel(Camera::portrait(1.0f), front, kSize, kSize);
+    const std::uint8_t* p = image.at(static_cast<int>(px.x), static_cast<int>(px.y));
+    EXPECT_GT(p[2], 100) << "blue eyeball, side " << side;
+    EXPECT_LT(p[0], 60) << "not red skin, side " << side;
+  }
+}
+
+TEST_F(FaceRendererTest, NearerFaceHidesTheFartherWhateverTheDrawOrder) {
+  const glm::mat4 near_place = glm::translate(glm::mat4(1.0f), glm::vec3(0.4f, 0.0f, 1.0f));
+  const glm::mat4 far_place = glm::translate(glm::mat4(1.0f), glm::vec3(-0.4f, 0.0f, -1.0f));
+  const FaceDraw near_red{red_, near_place, {}};
+  const FaceDraw far_blue{blue_, far_place, {}};
+  const Camera camera = Camera::portrait(1.0f);
+  for (const auto& order : {std::array{near_red, far_blue}, std::array{far_blue, near_red}}) {
+    const RgbaImage image = renderer_->render(order, camera);
+    // The forehead of the near face, where both faces overlap on screen.
+    const glm::vec3 px = project_to_pixel(camera, glm::vec3(near_place * glm::vec4(0.0f, 0.7f, 1.0f, 1.0f)), kSize, kSize);
+    const std::uint8_t* p = image.at(static_cast<int>(px.x), static_cast<int>(px.y));
+    EXPECT_GT(p[0], 100) << "red (near) face must win";
+    EXPECT_LT(p[2], 40);
+  }
+}
+
+TEST_F(FaceRendererTest, EyesTurnIndependentlyOfTheHead) {
+  // Inside the left eye opening, the dark pupil and iris follow the gaze.
+  const auto& face = model::generic_face();
+  const Camera camera = Camera::portrait(1.0f);
+  glm::vec2 low(1e9f), high(-1e9f);
+  for (std::uint32_t v : face.eye_holes[static_cast<std::size_t>(model::Side::left)]) {
+    const glm::vec3 px = project_to_pixel(camera, face.skin.positions[v], kSize, kSize);
+    low = glm::min(low, glm::vec2(px));
+    high = glm::max(high, glm::vec2(px));
+  }
+  const auto dark = [](const std::uint8_t* p) { return p[0] + p[1] + p[2] < 200; };
+  const auto pupil_x = [&](glm::vec2 gaze) {
+    return centroid(render_one(natural_, {}, gaze), dark, glm::ivec2(low), glm::ivec2(high) + 1).x;
+  };
+  const float ahead = pupil_x({0.0f, 0.0f});
+  ASSERT_GT(ahead, low.x) << "no dark iris found in the eye opening";
+  EXPECT_GT(pupil_x({0.4f, 0.0f}), ahead + 2.0f) << "looking toward the face's left";
+  EXPECT_LT(pupil_x({-0.4f, 0.0f}), ahead - 2.0f) << "looking toward the face's right";
+}
+
+TEST(FaceRendererCreate, RejectsImpossibleSizes) {
+  std::string error;
+  RendererOptions options;
+  options.width = 8;
+  EXPECT_EQ(FaceRenderer::create(options, error), nullptr);
+  EXPECT_NE(error.find("16..4096"), std::string::npos) << error;
+}
+
+}  // namespace
+}  // namespace fw::render

@@ -1,0 +1,127 @@
+// facewire-server, started for real on a loopback port and spoken to over
+// sockets.
+#include <fstream>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "http_get.hpp"
+#include "run_command.hpp"
+#include "server_process.hpp"
+
+namespace fw::server {
+namespace {
+
+using test::http_exchange;
+using test::http_get;
+
+std::string source_file(const std::string& path) {
+  std::ifstream in(std::string(FW_SOURCE_DIR) + "/" + path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+class ServerTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    server_ = new test::ServerProcess(test::bin("facewire-server"));
+    ASSERT_GT(server_->port(), 0) << "the server did not start";
+  }
+  static void TearDownTestSuite() { delete server_; }
+  static int port() { return server_->port(); }
+  static inline test::ServerProcess* server_ = nullptr;
+};
+
+TEST_F(ServerTest, AnswersHealthChecks) {
+  const auto reply = http_get(port(), "/healthz");
+  EXPECT_EQ(reply.status, 200);
+  EXPECT_EQ(reply.body, "ok\n");
+}
+
+TEST_F(ServerTest, ServesThePage) {
+  const auto reply = http_get(port(), "/");
+  EXPECT_EQ(reply.status, 200);
+  EXPECT_NE(reply.headers.find("text/html"), std::string::npos);
+  EXPECT_EQ(reply.body, source_file("web/index.html"));
+}
+
+TEST_F(ServerTest, ServesTheSameAssetAndShadersAsTheNativeRenderer) {
+  EXPECT_EQ(http_get(port(), "/generic_face.json").body, source_file("avatar/model/assets/generic_face.json"));
+  EXPECT_EQ(http_get(port(), "/shaders/face.vert").body, source_file("avatar/render/shaders/face.vert"));
+  EXPECT_EQ(http_get(port(), "/shaders/face.frag?v=1").body, source_file("avatar/render/shaders/face.frag"));
+}
+
+TEST_F(ServerTest, RevalidatesWithETag) {
+  const auto first = http_get(port(), "/generic_face.json");
+  const auto at = first.headers.find("ETag: ");
+  ASSERT_NE(at, std::string::npos) << first.headers;
+  const std::string etag = first.headers.substr(at + 6, first.headers.find("\r\n", at) - at - 6);
+  const auto second = http_get(port(), "/generic_face.json", "If-None-Match: " + etag + "\r\n");
+  EXPECT_EQ(second.status, 304);
+  EXPECT_TRUE(second.body.empty());
+}
+
+TEST_F(ServerTest, UnknownPathIsNotFound) {
+  const auto reply = http_get(port(), "/secret");
+  EXPECT_EQ(reply.status, 404);
+  EXPECT_NE(reply.body.find("nothing at /secret"), std::string::npos);
+}
+
+TEST_F(ServerTest, OnlyReadsAreAllowed) {
+  const auto reply = http_exchange(port(), "DELETE / HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n");
+  EXPECT_EQ(reply.status, 405);
+  EXPECT_NE(reply.headers.find("Allow: GET, HEAD"), std::string::npos);
+}
+
+TEST_F(ServerTest, MalformedRequestClosesOnlyThatConnection) {
+  const auto reply = http_exchange(port(), "THIS IS NOT HTTP\r\n\r\n");
+  EXPECT_EQ(reply.status, 400);
+  EXPECT_NE(reply.body.find("malformed HTTP request"), std::string::npos) << reply.body;
+  EXPECT_EQ(http_get(port(), "/healthz").status, 200) << "the server goes on";
+}
+
+TEST_F(ServerTest, OversizedHeadersAreRefused) {
+  const auto reply = http_get(port(), "/healthz", "X-Padding: " + std::string(10000, 'a') + "\r\n");
+  EXPECT_EQ(reply.status, 431);
+  EXPECT_NE(reply.body.find("8 KiB"), std::string::npos);
+}
+
+TEST_F(ServerTest, OversizedBodyIsRefused) {
+  const auto reply = http_exchange(
+      port(), "GET / HTTP/1.1\r\nHost: x\r\nContent-Length: 1000000\r\nConnection: close\r\n\r\n" + std::string(70000, 'x'));
+  EXPECT_EQ(reply.status, 413);
+}
+
+TEST(ServerProcess, StopsCleanlyOnSigterm) {
+  test::ServerProcess server(test::bin("facewire-server"));
+  ASSERT_GT(server.port(), 0);
+  EXPECT_EQ(http_get(server.port(), "/healthz").status, 200);
+  EXPECT_EQ(server.terminate(10000), 0);
+}
+
+TEST(ServerCli, BadEndpointIsExplained) {
+  const auto result = test::run_command(test::bin("facewire-server") + " serve --http localhost");
+  EXPECT_EQ(result.status, 2);
+  EXPECT_NE(result.output.find("write it like 127.0.0.1:8080"), std::string::npos) << result.output;
+}
+
+TEST(ServerCli, PortInUseIsExplained) {
+  test::ServerProcess first(test::bin("facewire-server"));
+  ASSERT_GT(first.port(), 0);
+  const auto result = test::run_command(test::bin("facewire-server") + " serve --http 127.0.0.1:" +
+                                        std::to_string(first.port()));
+  EXPECT_EQ(result.status, 2);
+  EXPECT_NE(result.output.find("cannot listen on"), std::string::npos) << result.output;
+}
+
+TEST(ServerCli, UnbuiltSubcommandsSaySo) {
+  for (const char* name : {"prep", "token", "script"}) {
+    const auto result = test::run_command(test::bin("facewire-server") + " " + name);
+    EXPECT_EQ(result.status, 3) << name;
+    EXPECT_NE(result.output.find("not yet built"), std::string::npos) << result.output;
+  }
+}
+
+}  // namespace
+}  // namespace fw::server
