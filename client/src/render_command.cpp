@@ -3,7 +3,7 @@
 #include <cmath>
 #include <iostream>
 #include <numbers>
-#include <regex>
+#include <charconv>
 
 #include "fw/model/generic_face.hpp"
 #include "fw/model/procedural_texture.hpp"
@@ -27,6 +27,17 @@ struct RenderArgs {
   std::exit(status);
 }
 
+// Parses "WIDTHxHEIGHT"; false if it is not two whole numbers around an x.
+bool parse_size(const std::string& text, int& width, int& height) {
+  const auto x = text.find('x');
+  if (x == std::string::npos) return false;
+  const char* begin = text.data();
+  const char* end = begin + text.size();
+  const auto w = std::from_chars(begin, begin + x, width);
+  const auto h = std::from_chars(begin + x + 1, end, height);
+  return w.ec == std::errc() && w.ptr == begin + x && h.ec == std::errc() && h.ptr == end;
+}
+
 float radians(double degrees) { return static_cast<float>(degrees * std::numbers::pi / 180.0); }
 
 void run(const RenderArgs& args) {
@@ -34,13 +45,9 @@ void run(const RenderArgs& args) {
     fail(3, "--avatar is not yet built: avatar packages arrive with photo preparation. Use --generic.");
   if (!args.generic) fail(2, "say what to render: --generic (the generic face)");
 
-  std::smatch match;
-  static const std::regex size_pattern(R"((\d{1,5})x(\d{1,5}))");
-  if (!std::regex_match(args.size, match, size_pattern))
-    fail(2, "--size must look like 512x512 (width x height in pixels), not '" + args.size + "'");
   render::RendererOptions options;
-  options.width = std::stoi(match[1]);
-  options.height = std::stoi(match[2]);
+  if (!parse_size(args.size, options.width, options.height))
+    fail(2, "--size must look like 512x512 (width x height in pixels), not '" + args.size + "'");
   options.samples = args.samples;
 
   std::string error;

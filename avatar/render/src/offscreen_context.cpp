@@ -29,7 +29,9 @@ std::unique_ptr<OffscreenContext> OffscreenContext::create(std::string& error) {
 }
 
 OffscreenContext::~OffscreenContext() {
-  if (impl_ && impl_->context) OSMesaDestroyContext(impl_->context);
+  if (!impl_ || !impl_->context) return;
+  OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);  // release the buffer before the context goes
+  OSMesaDestroyContext(impl_->context);
 }
 
 void OffscreenContext::make_current() {
