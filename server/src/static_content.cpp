@@ -8,6 +8,8 @@
 
 namespace fw::embedded {
 extern const std::string_view web_index_html;    // web/index.html
+extern const std::string_view web_face_preview_js;  // web/face_preview.js
+extern const std::string_view web_mat4_js;          // web/mat4.js
 extern const std::string_view shader_face_vert;  // avatar/render/shaders/face.vert
 extern const std::string_view shader_face_frag;  // avatar/render/shaders/face.frag
 }  // namespace fw::embedded
@@ -23,9 +25,11 @@ struct Route {
 
 const std::string_view kGenericFace = model::generic_face_asset_json();
 
-const std::array<Route, 5> kRoutes = {{
+const std::array<Route, 7> kRoutes = {{
     {"/", "text/html; charset=utf-8", &embedded::web_index_html},
     {"/index.html", "text/html; charset=utf-8", &embedded::web_index_html},
+    {"/face_preview.js", "text/javascript; charset=utf-8", &embedded::web_face_preview_js},
+    {"/mat4.js", "text/javascript; charset=utf-8", &embedded::web_mat4_js},
     {"/generic_face.json", "application/json", &kGenericFace},
     {"/shaders/face.vert", "text/plain; charset=utf-8", &embedded::shader_face_vert},
     {"/shaders/face.frag", "text/plain; charset=utf-8", &embedded::shader_face_frag},

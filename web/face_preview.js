@@ -1,0 +1,210 @@
+// A turning preview of the generic face, drawn with WebGL2 from the very files
+// the native renderer uses: the asset (/generic_face.json) and the GLSL ES
+// 3.00 shaders (/shaders/face.vert, /shaders/face.frag). Textures are painted
+// here with the 2-D canvas, since the page has no photo.
+import { mat4 } from './mat4.js';
+
+const LIPS = [48, 49, 50, 51, 52, 53, 54, 55, 56, 57, 58, 59];
+const EYES = [[36, 37, 38, 39, 40, 41], [42, 43, 44, 45, 46, 47]];
+const BROWS = [[17, 18, 19, 20, 21], [22, 23, 24, 25, 26]];
+
+async function fetchText(url) {
+  const response = await fetch(url);
+  if (!response.ok) throw new Error(`${url}: HTTP ${response.status}`);
+  return response.text();
+}
+
+function compile(gl, type, source) {
+  const shader = gl.createShader(type);
+  gl.shaderSource(shader, source);
+  gl.compileShader(shader);
+  if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS)) {
+    throw new Error(`shader does not compile: ${gl.getShaderInfoLog(shader)}`);
+  }
+  return shader;
+}
+
+function buildProgram(gl, vertexSource, fragmentSource) {
+  const program = gl.createProgram();
+  gl.attachShader(program, compile(gl, gl.VERTEX_SHADER, vertexSource));
+  gl.attachShader(program, compile(gl, gl.FRAGMENT_SHADER, fragmentSource));
+  gl.linkProgram(program);
+  if (!gl.getProgramParameter(program, gl.LINK_STATUS)) {
+    throw new Error(`program does not link: ${gl.getProgramInfoLog(program)}`);
+  }
+  return program;
+}
+
+// Area-weighted vertex normals, as avatar/model computes them.
+function vertexNormals(positions, triangles) {
+  const normals = positions.map(() => [0, 0, 0]);
+  for (const [a, b, c] of triangles) {
+    const [pa, pb, pc] = [positions[a], positions[b], positions[c]];
+    const u = [pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]];
+    const v = [pc[0] - pa[0], pc[1] - pa[1], pc[2] - pa[2]];
+    const n = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]];
+    for (const i of [a, b, c]) for (let k = 0; k < 3; ++k) normals[i][k] += n[k];
+  }
+  return normals.map(([x, y, z]) => {
+    const length = Math.hypot(x, y, z) || 1;
+    return [x / length, y / length, z / length];
+  });
+}
+
+function uploadMesh(gl, mesh) {
+  const vao = gl.createVertexArray();
+  gl.bindVertexArray(vao);
+  const attribute = (location, rows, size) => {
+    gl.bindBuffer(gl.ARRAY_BUFFER, gl.createBuffer());
+    gl.bufferData(gl.ARRAY_BUFFER, new Float32Array(rows.flat()), gl.STATIC_DRAW);
+    gl.enableVertexAttribArray(location);
+    gl.vertexAttribPointer(location, size, gl.FLOAT, false, 0, 0);
+  };
+  attribute(0, mesh.positions, 3);
+  attribute(1, vertexNormals(mesh.positions, mesh.triangles), 3);
+  attribute(2, mesh.uvs, 2);
+  gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, gl.createBuffer());
+  gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, new Uint32Array(mesh.triangles.flat()), gl.STATIC_DRAW);
+  gl.bindVertexArray(null);
+  return { vao, count: mesh.triangles.length * 3 };
+}
+
+function uploadCanvas(gl, canvas) {
+  const texture = gl.createTexture();
+  gl.bindTexture(gl.TEXTURE_2D, texture);
+  gl.pixelStorei(gl.UNPACK_FLIP_Y_WEBGL, true);  // canvas rows run down, v runs up
+  gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA, gl.RGBA, gl.UNSIGNED_BYTE, canvas);
+  gl.generateMipmap(gl.TEXTURE_2D);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR_MIPMAP_LINEAR);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.CLAMP_TO_EDGE);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.CLAMP_TO_EDGE);
+  return texture;
+}
+
+// Skin in the asset's texture frame: skin tone, lips, brows, hair, and
+// transparent eye holes.
+function paintSkin(face, size) {
+  const canvas = document.createElement('canvas');
+  canvas.width = canvas.height = size;
+  const g = canvas.getContext('2d');
+  const { origin, size: frame } = face.texture_frame;
+  const toPixel = ([x, y]) => [((x - origin[0]) / frame) * size, (1 - (y - origin[1]) / frame) * size];
+  const landmark = (i) => toPixel(face.skin.positions[face.landmark_vertices[i]]);
+  const path = (indices) => {
+    g.beginPath();
+    indices.forEach((i, k) => (k ? g.lineTo(...landmark(i)) : g.moveTo(...landmark(i))));
+  };
+  g.fillStyle = '#dba88c';
+  g.fillRect(0, 0, size, size);
+  // Hair above the hairline arc, as the native procedural skin has it.
+  g.fillStyle = '#3b2617';
+  g.beginPath();
+  g.moveTo(...toPixel([origin[0], origin[1] + frame]));
+  for (let x = origin[0]; x <= origin[0] + frame; x += frame / 64) {
+    const across = Math.min(1, Math.abs(x) / 1.18);
+    g.lineTo(...toPixel([x, 0.22 + Math.sqrt(1 - across * across)]));
+  }
+  g.lineTo(...toPixel([origin[0] + frame, origin[1] + frame]));
+  g.fill();
+  g.fillStyle = '#b86060';
+  path(LIPS);
+  g.fill();
+  g.strokeStyle = '#3b2617';
+  g.lineWidth = (0.06 / frame) * size;
+  g.lineCap = 'round';
+  for (const brow of BROWS) {
+    path(brow);
+    g.stroke();
+  }
+  g.globalCompositeOperation = 'destination-out';
+  for (const eye of EYES) {
+    path(eye);
+    g.fill();
+  }
+  return canvas;
+}
+
+// Eyeball texture: the front pole at the centre, angle linear in radius.
+function paintEye(eye, size) {
+  const canvas = document.createElement('canvas');
+  canvas.width = canvas.height = size;
+  const g = canvas.getContext('2d');
+  const perRadian = size / 2 / eye.cap_angle_rad;
+  const iris = Math.asin(5.85 / 63 / eye.radius) * perRadian;
+  g.fillStyle = '#eeeae4';
+  g.fillRect(0, 0, size, size);
+  const disc = (radius, colour) => {
+    g.fillStyle = colour;
+    g.beginPath();
+    g.arc(size / 2, size / 2, radius, 0, 2 * Math.PI);
+    g.fill();
+  };
+  disc(iris, '#4d73a0');
+  disc(iris * 0.35, '#080808');
+  return canvas;
+}
+
+function paintMouth() {
+  const canvas = document.createElement('canvas');
+  canvas.width = canvas.height = 16;
+  const g = canvas.getContext('2d');
+  g.fillStyle = '#3a0f0f';
+  g.fillRect(0, 0, 16, 16);
+  return canvas;
+}
+
+export async function startFacePreview(canvas, status) {
+  const gl = canvas.getContext('webgl2', { antialias: true });
+  if (!gl) throw new Error('this browser has no WebGL2');
+  const [face, vertexSource, fragmentSource] = await Promise.all([
+    fetch('/generic_face.json').then((r) => r.json()),
+    fetchText('/shaders/face.vert'),
+    fetchText('/shaders/face.frag'),
+  ]);
+  const program = buildProgram(gl, vertexSource, fragmentSource);
+  const uniform = (name) => gl.getUniformLocation(program, name);
+  const parts = [
+    { mesh: uploadMesh(gl, face.skin), texture: uploadCanvas(gl, paintSkin(face, 512)), specular: 0.08 },
+    { mesh: uploadMesh(gl, face.mouth_cavity), texture: uploadCanvas(gl, paintMouth()), specular: 0.15 },
+    ...['right', 'left'].map((side) => ({
+      mesh: uploadMesh(gl, face.eyes[side].mesh),
+      texture: uploadCanvas(gl, paintEye(face.eyes[side], 128)),
+      specular: 0.9,
+    })),
+  ];
+
+  // The camera and neck pivot of avatar/render's Camera::portrait and head_transform.
+  const eyePosition = [0, -0.25, 8.2];
+  const viewProjection = mat4.multiply(
+    mat4.perspective(Math.PI / 6, canvas.width / canvas.height, 0.5, 100),
+    mat4.lookAt(eyePosition, [0, -0.25, 0], [0, 1, 0]));
+  const pivot = [0, -1.5, 0.2];
+
+  let frames = 0;
+  const draw = (milliseconds) => {
+    const yaw = 0.45 * Math.sin(milliseconds / 1500);
+    const model = mat4.multiply(mat4.translation(pivot),
+      mat4.multiply(mat4.rotationY(yaw), mat4.translation(pivot.map((v) => -v))));
+    gl.viewport(0, 0, canvas.width, canvas.height);
+    gl.clearColor(0.13, 0.14, 0.17, 1);
+    gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
+    gl.enable(gl.DEPTH_TEST);
+    gl.useProgram(program);
+    gl.uniformMatrix4fv(uniform('u_view_projection'), false, viewProjection);
+    gl.uniformMatrix4fv(uniform('u_model'), false, model);
+    gl.uniform3fv(uniform('u_camera_position'), eyePosition);
+    gl.uniform3fv(uniform('u_light_direction'), [0.45, 0.6, 0.9]);
+    gl.uniform1i(uniform('u_texture'), 0);
+    for (const part of parts) {
+      gl.uniform1f(uniform('u_specular'), part.specular);
+      gl.bindTexture(gl.TEXTURE_2D, part.texture);
+      gl.bindVertexArray(part.mesh.vao);
+      gl.drawElements(gl.TRIANGLES, part.mesh.count, gl.UNSIGNED_INT, 0);
+    }
+    status.textContent = `generic face: ${face.skin.positions.length} vertices, ` +
+      `${face.skin.triangles.length} triangles, drawn with the shared shaders`;
+    canvas.dataset.frames = String(++frames);
+    requestAnimationFrame(draw);
+  };
+  requestAnimationFrame(draw);
+}
