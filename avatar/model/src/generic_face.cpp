@@ -12,12 +12,6 @@ extern const std::string_view generic_face_json;  // assets/generic_face.json, s
 
 namespace fw::model {
 
-std::optional<FaceRegion> face_region_from_name(std::string_view name) {
-  for (std::size_t i = 0; i < kFaceRegionNames.size(); ++i)
-    if (kFaceRegionNames[i] == name) return static_cast<FaceRegion>(i);
-  return std::nullopt;
-}
-
 const GenericFace& generic_face() {
   static const GenericFace face = [] {
     GenericFace parsed;
