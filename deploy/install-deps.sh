@@ -11,7 +11,7 @@ build_packages=(
   libopencv-dev opencv-data                   # photo preparation
   libglm-dev                                  # vector maths (model, physics)
   libosmesa6-dev libgl-dev mesa-utils         # offscreen GL renderer (llvmpipe)
-  libpng-dev                                  # PNG output of the renderer
+  libpng-dev libwebp-dev zlib1g-dev           # image members of avatar packages
   libdlib-dev libdlib-data                    # face detector + 68-landmark model
   nlohmann-json3-dev libcli11-dev libspdlog-dev
   libgtest-dev libgmock-dev googletest

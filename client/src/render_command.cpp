@@ -5,8 +5,11 @@
 #include <numbers>
 #include <charconv>
 
+#include "fw/model/avatar_package.hpp"
+#include "fw/model/file_io.hpp"
 #include "fw/model/generic_face.hpp"
 #include "fw/model/procedural_texture.hpp"
+#include "fw/render/avatar_appearance.hpp"
 #include "fw/render/face_renderer.hpp"
 #include "fw/render/png.hpp"
 
@@ -40,10 +43,28 @@ bool parse_size(const std::string& text, int& width, int& height) {
 
 float radians(double degrees) { return static_cast<float>(degrees * std::numbers::pi / 180.0); }
 
+// The face to draw: a prepared avatar, or the generic face with a procedural skin.
+render::AvatarAppearance load_appearance(const RenderArgs& args) {
+  render::AvatarAppearance appearance;
+  std::string error;
+  if (args.avatar.empty()) {
+    const model::Appearance look;
+    appearance.face = model::generic_face();
+    appearance.textures = {model::make_skin_texture(appearance.face, look),
+                           model::make_eye_texture(appearance.face.eyes[0], look), model::make_mouth_texture()};
+    return appearance;
+  }
+  std::vector<std::uint8_t> bytes;
+  model::AvatarPackage package;
+  if (!model::read_file(args.avatar, model::kMaxPackageBytes, bytes, error)) fail(2, error);
+  if (!model::parse_avatar_package(bytes, package, error)) fail(2, args.avatar + ": " + error);
+  if (!render::load_avatar_appearance(package, appearance, error)) fail(2, args.avatar + ": " + error);
+  return appearance;
+}
+
 void run(const RenderArgs& args) {
-  if (!args.avatar.empty())
-    fail(3, "--avatar is not yet built: avatar packages arrive with photo preparation. Use --generic.");
-  if (!args.generic) fail(2, "say what to render: --generic (the generic face)");
+  if (!args.generic && args.avatar.empty())
+    fail(2, "say what to render: --generic (the generic face) or --avatar NAME.fwa (a prepared avatar)");
 
   render::RendererOptions options;
   if (!parse_size(args.size, options.width, options.height))
@@ -54,11 +75,8 @@ void run(const RenderArgs& args) {
   auto renderer = render::FaceRenderer::create(options, error);
   if (!renderer) fail(2, error);
 
-  const model::GenericFace& face = model::generic_face();
-  const model::Appearance look;
-  const render::FaceId id = renderer->add_face(
-      face, {model::make_skin_texture(face, look), model::make_eye_texture(face.eyes[0], look),
-             model::make_mouth_texture()});
+  const render::AvatarAppearance appearance = load_appearance(args);
+  const render::FaceId id = renderer->add_face(appearance.face, appearance.textures);
   render::HeadPose pose;
   pose.yaw_rad = radians(args.yaw_deg);
   pose.pitch_rad = radians(args.pitch_deg);

@@ -5,7 +5,7 @@
 namespace fw::client {
 
 /// Adds the `render` subcommand to `app`; its callback runs the command and
-/// exits with 0 on success, 2 on bad input, 3 for what is not yet built.
+/// exits with 0 on success, 2 on bad input.
 void add_render_command(CLI::App& app);
 
 }  // namespace fw::client

@@ -4,11 +4,15 @@
 
 #include <CLI/CLI.hpp>
 
+#include "fw/photo/photo_limits.hpp"
+#include "prep_command.hpp"
 #include "serve_command.hpp"
 
 int main(int argc, char** argv) {
+  fw::photo::enforce_decoder_pixel_limit(argv);
   CLI::App app{"facewire server: hosts the avatars' faces and streams them to clients"};
   fw::server::add_serve_command(app);
+  fw::server::add_prep_command(app);
 
   struct Unbuilt {
     const char* name;
@@ -16,7 +20,6 @@ int main(int argc, char** argv) {
     const char* arrives_with;
   };
   const Unbuilt unbuilt[] = {
-      {"prep", "Prepare an avatar package from a photo", "photo preparation"},
       {"token", "Mint a join token", "the room server"},
       {"script", "Parse a file of face-script sentences", "face scripts"}};
   for (const auto& [name, what, arrives_with] : unbuilt) {

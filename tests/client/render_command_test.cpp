@@ -40,6 +40,7 @@ TEST(RenderCommand, BadInputIsExplained) {
   expect_refused("render --generic -o /tmp/x.png --size big", 2, "--size must look like 512x512");
   expect_refused("render --generic -o /tmp/x.png --size 9999x10", 2, "16..4096");
   expect_refused("render -o /tmp/x.png", 2, "--generic");
+  expect_refused("render --avatar /no/such.fwa -o /tmp/x.png", 2, "/no/such.fwa: no such file");
 }
 
 TEST(RenderCommand, UnwritableOutputIsExplainedAndNothingWritten) {
@@ -54,7 +55,6 @@ TEST(RenderCommand, AngleOutOfRangeIsRefused) {
 }
 
 TEST(RenderCommand, UnbuiltPartsSaySoInsteadOfPretending) {
-  expect_refused("render --avatar a.fwa -o /tmp/x.png", 3, "not yet built");
   expect_refused("join ws://127.0.0.1:1/ --room r --name n", 3, "not yet built");
 }
 

@@ -1,0 +1,73 @@
+#pragma once
+// Photo -> avatar package: the one entry point of avatar/photo.
+//
+// Data flow: bytes -> inspection (format, size, completeness) -> decode
+// (EXIF upright) -> face detection on a reduced copy -> 68 landmarks at full
+// resolution -> checks (size, edges, pose, open eyes) -> alignment by the eye
+// centres -> face texture in the generic face's frame -> thin-plate fit of
+// the generic mesh -> eye holes, iris colour, closed-lid layer -> vascular
+// region masks, skin tone -> encoded package.
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "fw/model/avatar_package.hpp"
+#include "fw/model/image.hpp"
+#include "fw/photo/prep_error.hpp"
+
+namespace fw::photo {
+
+struct PrepOptions {
+  int face_index = 0;      ///< which face, by size: 0 = the largest
+  int quality = 80;        ///< WebP quality of the textures, 1..100
+  int texture_size = 256;  ///< face texture side in pixels, 128..512
+};
+
+/// What preparation found, for people and previews.
+struct PrepReport {
+  int faces_found = 0;
+  int face_index = 0;
+  int photo_width = 0, photo_height = 0;  ///< upright
+  std::array<glm::vec2, 68> photo_landmarks{};  ///< photo pixels, upright
+  float inter_ocular_px = 0;
+  float roll_deg = 0;  ///< eye-line angle in the photo
+  float yaw_deg = 0;   ///< estimated head turn
+  std::vector<std::string> warnings;
+  model::RgbaImage face_texture;  ///< the aligned texture as packaged (with eye holes)
+};
+
+struct PreparedAvatar {
+  model::AvatarPackage package;
+  PrepReport report;
+};
+
+class FaceFinder;
+
+/// Holds the loaded landmark model; one per thread (dlib's detector is not
+/// thread-safe), reused for every photo.
+class AvatarPreparer {
+ public:
+  /// Loads dlib's 68-point model from `landmark_model` or the default place
+  /// (see landmark_model.hpp); nullptr and `error` if it cannot.
+  static std::unique_ptr<AvatarPreparer> create(const std::optional<std::filesystem::path>& landmark_model,
+                                                PrepError& error);
+  ~AvatarPreparer();
+
+  /// Prepares one photo (JPEG or PNG bytes). nullopt and `error` (with a
+  /// message for the person) if the photo cannot make an avatar.
+  std::optional<PreparedAvatar> prepare(std::span<const std::uint8_t> photo, const PrepOptions& options,
+                                        PrepError& error);
+
+ private:
+  explicit AvatarPreparer(std::unique_ptr<FaceFinder> finder);
+  std::unique_ptr<FaceFinder> finder_;
+};
+
+}  // namespace fw::photo

@@ -1,0 +1,16 @@
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <span>
+
+#include <opencv2/core.hpp>
+
+#include "fw/photo/prep_error.hpp"
+
+namespace fw::photo {
+
+/// Decodes an inspected JPEG or PNG to 8-bit BGR, turned upright by its EXIF
+/// orientation; grayscale photos come out as three equal channels.
+std::optional<cv::Mat> decode_photo(std::span<const std::uint8_t> bytes, PrepError& error);
+
+}  // namespace fw::photo

@@ -1,0 +1,89 @@
+#include "mesh_fitting.hpp"
+
+#include <set>
+
+#include "fw/model/face_asset.hpp"
+#include "fw/model/fitted_face.hpp"
+
+namespace fw::photo {
+namespace {
+
+// Half the template's closed-lip slit: each inner lip keeps this far from
+// the mid-line between them.
+constexpr float kHalfSlit = 0.006f;
+// A little smoothing so one misplaced landmark bends the mesh gently.
+constexpr float kRegularization = 1e-2f;
+
+// Rounds of untangling allowed before a fold is reported.
+constexpr int kMaxUntangleRounds = 50;
+
+float signed_area(glm::vec2 a, glm::vec2 b, glm::vec2 c) {
+  return 0.5f * ((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y));
+}
+
+// Where strongly different landmark moves meet (a broad smile, say), the
+// spline can fold a triangle over. Moving the free corners of folded
+// triangles to the mean of their neighbours, a few times, opens them again;
+// landmark vertices stay where the landmarks are.
+void untangle(const model::GenericFace& generic, std::vector<glm::vec2>& xy) {
+  std::vector<std::set<std::uint32_t>> neighbours(xy.size());
+  for (const glm::uvec3& t : generic.skin.triangles)
+    for (int k = 0; k < 3; ++k) neighbours[t[k]].insert({t[(k + 1) % 3], t[(k + 2) % 3]});
+  const std::set<std::uint32_t> anchored(generic.landmark_vertices.begin(), generic.landmark_vertices.end());
+  for (int round = 0; round < kMaxUntangleRounds; ++round) {
+    std::set<std::uint32_t> loose;
+    for (const glm::uvec3& t : generic.skin.triangles)
+      if (signed_area(xy[t.x], xy[t.y], xy[t.z]) < 1e-4f)
+        for (int k = 0; k < 3; ++k)
+          if (!anchored.contains(t[k])) loose.insert(t[k]);
+    if (loose.empty()) return;
+    for (std::uint32_t v : loose) {
+      glm::vec2 mean(0.0f);
+      for (std::uint32_t u : neighbours[v]) mean += xy[u];
+      xy[v] = mean / static_cast<float>(neighbours[v].size());
+    }
+  }
+}
+
+}  // namespace
+
+ModelLandmarks landmarks_for_fit(const ModelLandmarks& landmarks) {
+  ModelLandmarks out = landmarks;
+  for (const auto& [upper, lower] : {std::pair{61, 67}, {62, 66}, {63, 65}}) {
+    glm::vec2& u = out[static_cast<std::size_t>(upper)];
+    glm::vec2& l = out[static_cast<std::size_t>(lower)];
+    if (u.y - l.y < 2 * kHalfSlit) {
+      const float middle = 0.5f * (u.y + l.y);
+      u.y = middle + kHalfSlit;
+      l.y = middle - kHalfSlit;
+    }
+  }
+  return out;
+}
+
+std::optional<MeshFit> fit_mesh(const model::GenericFace& generic, const ModelLandmarks& raw, PrepError& error) {
+  const ModelLandmarks target = landmarks_for_fit(raw);
+  MeshFit fit;
+  const auto tmpl = model::landmark_template();
+  if (!fit.warp.fit(tmpl, target, kRegularization)) {
+    error = {PrepErrorCode::undecodable, "the landmarks found are degenerate; use a clear, frontal photo"};
+    return std::nullopt;
+  }
+  fit.fitted_xy.resize(generic.skin.positions.size());
+  for (std::size_t v = 0; v < fit.fitted_xy.size(); ++v) fit.fitted_xy[v] = fit.warp(glm::vec2(generic.skin.positions[v]));
+  for (int i = 0; i < model::kLandmarkCount; ++i)
+    fit.fitted_xy[generic.landmark_vertices[static_cast<std::size_t>(i)]] = target[static_cast<std::size_t>(i)];
+
+  untangle(generic, fit.fitted_xy);
+
+  const auto problems = model::validate_generic_face(model::fit_generic_face(generic, fit.fitted_xy));
+  if (!problems.empty()) {
+    error = {PrepErrorCode::head_turned,
+             "the face's landmarks do not fit a frontal face (" + problems.front() +
+                 "); use a photo facing the camera with a neutral expression and the whole face visible"};
+    return std::nullopt;
+  }
+  return fit;
+}
+
+}  // namespace fw::photo

@@ -1,0 +1,146 @@
+#include "fw/photo/prepare_avatar.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include <opencv2/imgproc.hpp>
+
+#include "colour_masks.hpp"
+#include "decode_photo.hpp"
+#include "eye_layers.hpp"
+#include "face_alignment.hpp"
+#include "face_finder.hpp"
+#include "image_conversion.hpp"
+#include "image_inspection.hpp"
+#include "mesh_fitting.hpp"
+#include "mouth_layer.hpp"
+#include "package_encoding.hpp"
+#include "pose_checks.hpp"
+#include "fw/model/fitted_face.hpp"
+#include "fw/model/procedural_texture.hpp"
+
+namespace fw::photo {
+namespace {
+
+constexpr int kMaskSize = 64;     // vascular masks are smooth: 3.8 units over 64 px is plenty
+constexpr int kEyeTextureSize = 64;
+constexpr int kPreviewSize = 48;
+constexpr int kLosslessWebp = 101;  // OpenCV: WebP quality above 100 means lossless
+
+std::optional<PreparedAvatar> fail(PrepError& error, PrepErrorCode code, std::string message) {
+  error = {code, std::move(message)};
+  return std::nullopt;
+}
+
+// Three masks in one image: the first region in red, then green, then blue.
+cv::Mat pack_masks(const cv::Mat& red, const cv::Mat& green, const cv::Mat& blue) {
+  cv::Mat bgr;
+  cv::merge(std::vector<cv::Mat>{blue, green, red}, bgr);
+  return bgr;
+}
+
+// The face without the rim or much hair: a thumbnail that reads at 48 px.
+cv::Mat make_preview(const cv::Mat& texture, const model::TextureFrame& frame) {
+  const cv::Point2f top_left = model_to_texture_px({-1.3f, 1.3f}, frame, texture.cols);
+  const cv::Point2f bottom_right = model_to_texture_px({1.3f, -1.95f}, frame, texture.cols);
+  const cv::Rect crop = cv::Rect(top_left, bottom_right) & cv::Rect(0, 0, texture.cols, texture.rows);
+  cv::Mat preview;
+  cv::resize(texture(crop), preview, cv::Size(kPreviewSize, kPreviewSize), 0, 0, cv::INTER_AREA);
+  return preview;
+}
+
+}  // namespace
+
+AvatarPreparer::AvatarPreparer(std::unique_ptr<FaceFinder> finder) : finder_(std::move(finder)) {}
+AvatarPreparer::~AvatarPreparer() = default;
+
+std::unique_ptr<AvatarPreparer> AvatarPreparer::create(const std::optional<std::filesystem::path>& landmark_model,
+                                                       PrepError& error) {
+  auto finder = FaceFinder::load(landmark_model, error);
+  if (!finder) return nullptr;
+  return std::unique_ptr<AvatarPreparer>(new AvatarPreparer(std::move(finder)));
+}
+
+std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8_t> bytes, const PrepOptions& options,
+                                                      PrepError& error) {
+  if (options.quality < 1 || options.quality > 100)
+    return fail(error, PrepErrorCode::bad_option, "quality must be 1..100");
+  if (options.texture_size < 128 || options.texture_size > 512)
+    return fail(error, PrepErrorCode::bad_option, "texture size must be 128..512 pixels");
+  if (!inspect_photo(bytes, error)) return std::nullopt;
+  const auto photo = decode_photo(bytes, error);
+  if (!photo) return std::nullopt;
+
+  PreparedAvatar result;
+  PrepReport& report = result.report;
+  report.photo_width = photo->cols;
+  report.photo_height = photo->rows;
+  cv::Mat gray;
+  cv::cvtColor(*photo, gray, cv::COLOR_BGR2GRAY);
+  const std::vector<cv::Rect> faces = finder_->detect(gray);
+  report.faces_found = static_cast<int>(faces.size());
+  if (faces.empty())
+    return fail(error, PrepErrorCode::no_face,
+                "no face found; use a frontal, well-lit photo with the face at least about 100 px wide");
+  if (options.face_index < 0 || options.face_index >= report.faces_found)
+    return fail(error, PrepErrorCode::face_index_out_of_range,
+                "the photo has " + std::to_string(report.faces_found) + " face(s); the face index must be 0.." +
+                    std::to_string(report.faces_found - 1));
+  if (report.faces_found > 1)
+    report.warnings.push_back("found " + std::to_string(report.faces_found) + " faces; using " +
+                              (options.face_index == 0 ? std::string("the largest")
+                                                       : "number " + std::to_string(options.face_index) + " by size") +
+                              " (choose another with --face-index 0.." + std::to_string(report.faces_found - 1) + ")");
+  report.face_index = options.face_index;
+  const cv::Rect box = faces[static_cast<std::size_t>(options.face_index)];
+
+  const PhotoLandmarks photo_landmarks = finder_->landmarks(gray, box);
+  const Alignment alignment = align_by_eyes(photo_landmarks);
+  ModelLandmarks landmarks{};
+  for (std::size_t i = 0; i < landmarks.size(); ++i) landmarks[i] = alignment.to_model(photo_landmarks[i]);
+  std::copy(photo_landmarks.begin(), photo_landmarks.end(), report.photo_landmarks.begin());
+  report.inter_ocular_px = alignment.inter_ocular_px;
+  report.roll_deg = alignment.roll_rad * 180.0f / std::numbers::pi_v<float>;
+  report.yaw_deg = estimate_yaw_deg(landmarks);
+  if (auto problem = check_face(box, photo_landmarks, photo->size(), alignment, landmarks)) {
+    error = *problem;
+    return std::nullopt;
+  }
+
+  const model::GenericFace& generic = model::generic_face();
+  const auto fit = fit_mesh(generic, landmarks, error);
+  if (!fit) return std::nullopt;
+
+  const model::TextureFrame& frame = generic.texture_frame;
+  const int size = options.texture_size;
+  const cv::Mat texture = warp_to_texture(*photo, alignment, frame, size);
+  const auto eyes = eye_polygons_px(landmarks, frame, size);
+  const cv::Mat face_texture = with_eye_holes(texture, eyes);
+  const ClosedLid lid = make_closed_lid(texture, eyes);
+  const auto masks = render_region_masks(fit->warp, frame, kMaskSize);
+
+  model::AvatarPackage& package = result.package;
+  package.generic_face_version = generic.version;
+  package.fitted_vertices = fit->fitted_xy;
+  std::copy(landmarks.begin(), landmarks.end(), package.landmarks.begin());
+  package.skin_tone = estimate_skin_tone(texture, masks);
+  package.iris_colour = sample_iris_colour(texture, eyes);
+  package.face_texture = encode_webp(face_texture, options.quality);
+  package.closed_lid = encode_webp(lid.image, options.quality);
+  package.closed_lid_rect = {lid.uv_rect.x, lid.uv_rect.y, lid.uv_rect.x + lid.uv_rect.width,
+                             lid.uv_rect.y + lid.uv_rect.height};
+  model::Appearance look;
+  look.iris = glm::vec3(package.iris_colour[0], package.iris_colour[1], package.iris_colour[2]) / 255.0f;
+  package.eye = encode_webp(to_bgr_mat(model::make_eye_texture(generic.eyes[0], look, kEyeTextureSize)), options.quality);
+  using R = MaskRegion;
+  const auto mask = [&](R r) { return masks[static_cast<std::size_t>(r)]; };
+  package.mouth = encode_webp(make_mouth_layer(texture, landmarks, model::fit_generic_face(generic, fit->fitted_xy)),
+                               options.quality);
+  package.colour_masks_a = encode_webp(pack_masks(mask(R::forehead), mask(R::cheek_left), mask(R::cheek_right)), kLosslessWebp);
+  package.colour_masks_b = encode_webp(pack_masks(mask(R::nose), mask(R::sides), mask(R::face)), kLosslessWebp);
+  package.preview = encode_webp(make_preview(texture, frame), std::min(options.quality, 60));
+  report.face_texture = to_rgba_image(face_texture);
+  return result;
+}
+
+}  // namespace fw::photo
