@@ -28,11 +28,15 @@ class FaceFinder {
   /// Not thread-safe: dlib's detector keeps scratch state.
   std::vector<cv::Rect> detect(const cv::Mat& gray);
 
-  /// The 68 landmarks of the face in `box`, found on the full-resolution image.
+  /// The 68 landmarks of the face in `box`, found on the full-resolution
+  /// image: a first pass in the detector's box, a second on the face turned
+  /// upright at a fixed size in a box placed from the first pass's eyes.
   PhotoLandmarks landmarks(const cv::Mat& gray, const cv::Rect& box) const;
 
  private:
   FaceFinder();
+  PhotoLandmarks predict(const cv::Mat& gray, const cv::Matx23d& photo_to_patch, cv::Size size,
+                         const cv::Rect2d& box) const;
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

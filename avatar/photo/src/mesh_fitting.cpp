@@ -80,7 +80,7 @@ std::optional<MeshFit> fit_mesh(const model::GenericFace& generic, const ModelLa
   if (!problems.empty()) {
     error = {PrepErrorCode::head_turned,
              "the face's landmarks do not fit a frontal face (" + problems.front() +
-                 "); use a photo facing the camera with a neutral expression and the whole face visible"};
+                 "); use a photo facing the camera, upright, with a neutral expression and the whole face visible"};
     return std::nullopt;
   }
   return fit;

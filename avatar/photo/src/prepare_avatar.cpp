@@ -81,7 +81,7 @@ std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8
   report.faces_found = static_cast<int>(faces.size());
   if (faces.empty())
     return fail(error, PrepErrorCode::no_face,
-                "no face found; use a frontal, well-lit photo with the face at least about 100 px wide");
+                "no face found; use a frontal, upright, well-lit photo with the face at least about 100 px wide");
   if (options.face_index < 0 || options.face_index >= report.faces_found)
     return fail(error, PrepErrorCode::face_index_out_of_range,
                 "the photo has " + std::to_string(report.faces_found) + " face(s); the face index must be 0.." +
