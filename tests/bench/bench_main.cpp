@@ -4,14 +4,18 @@
 
 #include <CLI/CLI.hpp>
 
+#include "fw/photo/photo_limits.hpp"
+#include "prep_bench.hpp"
 #include "render_bench.hpp"
 
 int main(int argc, char** argv) {
+  fw::photo::enforce_decoder_pixel_limit(argv);
   CLI::App app{"facewire benchmarks"};
   app.require_subcommand(1);
   fw::bench::add_render_bench(app);
+  fw::bench::add_prep_bench(app);
   const std::pair<const char*, const char*> unbuilt[] = {
-      {"prep", "photo preparation"}, {"codec", "the codec"}, {"sim", "the physics face"}, {"fanout", "the room server"}};
+      {"codec", "the codec"}, {"sim", "the physics face"}, {"fanout", "the room server"}};
   for (const auto& [name, what] : unbuilt) {
     CLI::App* cmd = app.add_subcommand(name, std::string("Benchmark of ") + what + " (not yet built)");
     cmd->allow_extras();

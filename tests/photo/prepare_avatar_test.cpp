@@ -5,6 +5,7 @@
 #include <cstdlib>
 
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -12,6 +13,8 @@
 #include "fw/model/face_asset.hpp"
 #include "fw/model/fitted_face.hpp"
 #include "fw/model/landmark_template.hpp"
+#include "fw/render/avatar_appearance.hpp"
+#include "fw/render/face_renderer.hpp"
 #include "photo_variants.hpp"
 
 namespace fw::photo {
@@ -227,28 +230,37 @@ TEST_F(PrepareAvatarTest, RefusesAFaceCutOffByTheEdge) {
   }
 }
 
+// A turned head: the astronaut's own avatar, rendered turned 35 degrees.
+cv::Mat render_turned(const model::AvatarPackage& package, float yaw_deg) {
+  render::AvatarAppearance appearance;
+  std::string error;
+  EXPECT_TRUE(render::load_avatar_appearance(package, appearance, error)) << error;
+  render::RendererOptions options;
+  options.width = options.height = 512;
+  options.background = {0.5f, 0.5f, 0.5f};
+  auto renderer = render::FaceRenderer::create(options, error);
+  const render::FaceId id = renderer->add_face(appearance.face, appearance.textures);
+  render::HeadPose pose;
+  pose.yaw_rad = glm::radians(yaw_deg);
+  const render::FaceDraw draw{id, render::head_transform(pose), {}};
+  const model::RgbaImage image = renderer->render({&draw, 1}, render::Camera::portrait(1.0f));
+  cv::Mat bgr;
+  cv::cvtColor(cv::Mat(image.height, image.width, CV_8UC4, const_cast<std::uint8_t*>(image.pixels.data())), bgr,
+               cv::COLOR_RGBA2BGR);
+  return bgr;
+}
+
 TEST_F(PrepareAvatarTest, RefusesAHeadTurnedAway) {
-  // Shift the middle of the face sideways while its outline stays: what a
-  // head turned about 30 degrees looks like to the landmarks.
   PrepError error;
   const auto reference = prepare(test::encode(*original_), error);
-  ASSERT_TRUE(reference.has_value());
-  const glm::vec2 nose = reference->report.photo_landmarks[30];
-  const float width = glm::length(reference->report.photo_landmarks[16] - reference->report.photo_landmarks[0]);
-  cv::Mat map_x(original_->size(), CV_32F), map_y(original_->size(), CV_32F);
-  for (int y = 0; y < original_->rows; ++y)
-    for (int x = 0; x < original_->cols; ++x) {
-      const float d = (static_cast<float>(x) - nose.x) / (0.3f * width);
-      map_x.at<float>(y, x) = static_cast<float>(x) - 0.3f * width * std::exp(-d * d);
-      map_y.at<float>(y, x) = static_cast<float>(y);
-    }
-  cv::Mat turned;
-  cv::remap(*original_, turned, map_x, map_y, cv::INTER_LINEAR, cv::BORDER_REPLICATE);
-  EXPECT_FALSE(prepare(test::encode(turned), error).has_value());
-  EXPECT_TRUE(error.code == PrepErrorCode::head_turned || error.code == PrepErrorCode::no_face) << error.message;
-  if (error.code == PrepErrorCode::head_turned) {
-    EXPECT_NE(error.message.find("use a photo facing the camera"), std::string::npos);
-  }
+  ASSERT_TRUE(reference.has_value()) << error.message;
+  // Facing the camera, the rendered avatar is accepted...
+  EXPECT_TRUE(prepare(test::encode(render_turned(reference->package, 0.0f)), error).has_value()) << error.message;
+  // ...turned well past the limit, it is not.
+  const auto turned = prepare(test::encode(render_turned(reference->package, 40.0f)), error);
+  EXPECT_FALSE(turned.has_value()) << "accepted with an estimated turn of " << turned->report.yaw_deg << " degrees";
+  EXPECT_EQ(error.code, PrepErrorCode::head_turned) << error.message;
+  EXPECT_NE(error.message.find("use a photo facing the camera"), std::string::npos) << error.message;
 }
 
 TEST_F(PrepareAvatarTest, RefusesAHeadTiltedTooFar) {

@@ -9,13 +9,15 @@ namespace fw::test {
 
 struct CommandResult {
   int status = -1;     ///< exit status, or -1 if it did not exit normally
-  std::string output;  ///< stdout and stderr, interleaved
+  std::string output;  ///< stdout, and stderr unless left out
 };
 
-/// Runs `command_line` through the shell with stderr joined to stdout.
-inline CommandResult run_command(const std::string& command_line) {
+/// Runs `command_line` through the shell, capturing stdout and, if
+/// `with_stderr`, stderr interleaved with it (otherwise stderr goes to the
+/// test's own, where ctest shows it on failure).
+inline CommandResult run_command(const std::string& command_line, bool with_stderr = true) {
   CommandResult result;
-  FILE* pipe = ::popen((command_line + " 2>&1").c_str(), "r");
+  FILE* pipe = ::popen((command_line + (with_stderr ? " 2>&1" : "")).c_str(), "r");
   if (!pipe) return result;
   std::array<char, 4096> buffer;
   std::size_t n;

@@ -2,6 +2,8 @@
 
 #include <set>
 
+#include <glm/common.hpp>
+
 #include "fw/model/face_asset.hpp"
 #include "fw/model/fitted_face.hpp"
 
@@ -75,6 +77,10 @@ std::optional<MeshFit> fit_mesh(const model::GenericFace& generic, const ModelLa
     fit.fitted_xy[generic.landmark_vertices[static_cast<std::size_t>(i)]] = target[static_cast<std::size_t>(i)];
 
   untangle(generic, fit.fitted_xy);
+  // The rim may be pushed past the texture's edge by a long or wide face;
+  // keep it on the texture (it only carries hair and the sides of the head).
+  const glm::vec2 low = generic.texture_frame.origin, high = low + generic.texture_frame.size;
+  for (glm::vec2& p : fit.fitted_xy) p = glm::clamp(p, low + 0.01f, high - 0.01f);
 
   const auto problems = model::validate_generic_face(model::fit_generic_face(generic, fit.fitted_xy));
   if (!problems.empty()) {

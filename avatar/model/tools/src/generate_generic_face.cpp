@@ -18,8 +18,9 @@ using model::Mesh;
 namespace lm = model::landmarks;
 
 // The texture square: wide enough for the rim at the ears, tall enough for
-// the rim over the forehead and under the chin.
-constexpr model::TextureFrame kTextureFrame{{-1.9f, -2.15f}, 3.8f};
+// the rim over the forehead and under the chin, with room for faces longer
+// or wider than the template once fitted.
+constexpr model::TextureFrame kTextureFrame{{-2.0f, -2.35f}, 4.0f};
 // How far the rim is pulled back beyond the depth profile: it is the turn of
 // the head toward the ears and the crown, seen only when the head turns.
 constexpr float kRimSetBack = 0.25f;
