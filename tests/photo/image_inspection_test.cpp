@@ -1,5 +1,7 @@
 #include "image_inspection.hpp"
 
+#include <cstdlib>
+
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
 
@@ -49,6 +51,27 @@ TEST(ImageInspection, NamesOtherFormats) {
   EXPECT_FALSE(inspect_photo({reinterpret_cast<const std::uint8_t*>(webp.data()), webp.size()}, error));
   EXPECT_EQ(error.code, PrepErrorCode::unsupported_format);
   EXPECT_NE(error.message.find("WebP"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace fw::photo
+
+namespace fw::photo {
+namespace {
+
+// ctest runs this with OPENCV_IO_MAX_IMAGE_PIXELS as facewire-server sets it
+// for itself: OpenCV itself refuses what the header check would.
+TEST(DecoderPixelLimit, OpenCvRefusesPastFortyMegapixels) {
+  ASSERT_NE(std::getenv("OPENCV_IO_MAX_IMAGE_PIXELS"), nullptr);
+  std::vector<uchar> bytes;
+  cv::imencode(".png", cv::Mat::zeros(6000, 7000, CV_8UC1), bytes);
+  bool refused = false;
+  try {
+    refused = cv::imdecode(bytes, cv::IMREAD_GRAYSCALE).empty();
+  } catch (const cv::Exception&) {
+    refused = true;
+  }
+  EXPECT_TRUE(refused) << "42 megapixels decoded despite the limit";
 }
 
 }  // namespace
