@@ -163,13 +163,15 @@ export async function startFacePreview(canvas, status) {
   ]);
   const program = buildProgram(gl, vertexSource, fragmentSource);
   const uniform = (name) => gl.getUniformLocation(program, name);
+  // Layers as the shader numbers them: 0 skin, 1 eyeball, 2 mouth cavity.
   const parts = [
-    { mesh: uploadMesh(gl, face.skin), texture: uploadCanvas(gl, paintSkin(face, 512)), specular: 0.08 },
-    { mesh: uploadMesh(gl, face.mouth_cavity), texture: uploadCanvas(gl, paintMouth()), specular: 0.15 },
+    { mesh: uploadMesh(gl, face.skin), texture: uploadCanvas(gl, paintSkin(face, 512)), specular: 0.08, layer: 0 },
+    { mesh: uploadMesh(gl, face.mouth_cavity), texture: uploadCanvas(gl, paintMouth()), specular: 0.15, layer: 2 },
     ...['right', 'left'].map((side) => ({
       mesh: uploadMesh(gl, face.eyes[side].mesh),
       texture: uploadCanvas(gl, paintEye(face.eyes[side], 128)),
       specular: 0.9,
+      layer: 1,
     })),
   ];
 
@@ -195,8 +197,12 @@ export async function startFacePreview(canvas, status) {
     gl.uniform3fv(uniform('u_camera_position'), eyePosition);
     gl.uniform3fv(uniform('u_light_direction'), [0.45, 0.6, 0.9]);
     gl.uniform1i(uniform('u_texture'), 0);
+    gl.uniform3f(uniform('u_frame'), face.texture_frame.origin[0], face.texture_frame.origin[1], face.texture_frame.size);
+    // The preview has no closed-lid skin or blood masks: lids open, colour unchanged.
+    gl.uniform4f(uniform('u_closed_lid_rect'), -2, -2, -1, -1);
     for (const part of parts) {
       gl.uniform1f(uniform('u_specular'), part.specular);
+      gl.uniform1i(uniform('u_layer'), part.layer);
       gl.bindTexture(gl.TEXTURE_2D, part.texture);
       gl.bindVertexArray(part.mesh.vao);
       gl.drawElements(gl.TRIANGLES, part.mesh.count, gl.UNSIGNED_INT, 0);

@@ -19,13 +19,14 @@ bool make_prep_preview(const photo::PreparedAvatar& avatar, model::RgbaImage& sh
   options.width = options.height = kPanel;
   auto renderer = render::FaceRenderer::create(options, error);
   if (!renderer) return false;
-  const render::FaceId id = renderer->add_face(appearance.face, appearance.textures);
+  const model::GenericFace& face = appearance.avatar.face;
+  const render::FaceId id = renderer->add_face(face, appearance.textures);
   const render::Camera camera = render::Camera::portrait(1.0f);
 
   sheet = model::RgbaImage(3 * kPanel, kPanel);
   // 1: the aligned texture with the landmarks it was aligned by.
   model::RgbaImage texture = render::resized(avatar.report.face_texture, kPanel, kPanel);
-  const model::TextureFrame& frame = appearance.face.texture_frame;
+  const model::TextureFrame& frame = face.texture_frame;
   for (const glm::vec2& p : avatar.package.landmarks) {
     const glm::vec2 uv = frame.to_uv(p);
     render::draw_dot(texture, {uv.x * kPanel, (1.0f - uv.y) * kPanel}, 2.0f, kLandmarkColour);
@@ -35,8 +36,8 @@ bool make_prep_preview(const photo::PreparedAvatar& avatar, model::RgbaImage& sh
   // 2: the avatar, neutral, with the fitted face's landmark vertices.
   const render::FaceDraw neutral{id, render::head_transform({}), {}};
   model::RgbaImage front = renderer->render({&neutral, 1}, camera);
-  for (std::uint32_t v : appearance.face.landmark_vertices) {
-    const glm::vec3 px = render::project_to_pixel(camera, appearance.face.skin.positions[v], kPanel, kPanel);
+  for (std::uint32_t v : face.landmark_vertices) {
+    const glm::vec3 px = render::project_to_pixel(camera, face.skin.positions[v], kPanel, kPanel);
     render::draw_dot(front, {px.x, px.y}, 1.6f, kLandmarkColour);
   }
   render::paste(sheet, front, kPanel, 0);

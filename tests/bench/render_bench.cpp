@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "fw/model/procedural_texture.hpp"
+#include "fw/render/avatar_appearance.hpp"
 #include "fw/render/face_renderer.hpp"
 
 namespace fw::bench {
@@ -47,8 +48,8 @@ Measured measure(int width, int height, int faces, const RenderBenchArgs& args, 
   for (int i = 0; i < faces; ++i) {
     model::Appearance look;
     look.skin *= 0.7f + 0.3f * static_cast<float>(i % 3) / 2.0f;
-    const auto id = renderer->add_face(face, {model::make_skin_texture(face, look, 256),
-                                              model::make_eye_texture(face.eyes[0], look), model::make_mouth_texture()});
+    const render::AvatarAppearance appearance = render::generic_appearance(look);
+    const auto id = renderer->add_face(face, appearance.textures);
     draws.push_back({id, glm::mat4(1.0f), {}});
   }
   const auto camera = render::Camera::group(faces, static_cast<float>(width) / static_cast<float>(height));

@@ -18,7 +18,7 @@ TEST(RenderCommand, RendersTheGenericFaceToAPng) {
   const auto out = temp("facewire_client_generic.png");
   std::filesystem::remove(out);
   const auto result = run_command(bin("facewire-client") + " render --generic -o " + out.string() +
-                                  " --size 200x160 --yaw 20 --pitch -5 --roll 3");
+                                  " --size 200x160 --head 20,-5,3 --emotion joy=0.7 --au 26=0.3 --gaze 10,5 --lids 0.2,0 --blush cheeks=0.5 --pallor 0.1");
   ASSERT_EQ(result.status, 0) << result.output;
   png_image png{};
   png.version = PNG_IMAGE_VERSION;
@@ -48,10 +48,28 @@ TEST(RenderCommand, UnwritableOutputIsExplainedAndNothingWritten) {
   EXPECT_FALSE(std::filesystem::exists("/no/such/dir/face.png"));
 }
 
-TEST(RenderCommand, AngleOutOfRangeIsRefused) {
-  const auto result = run_command(bin("facewire-client") + " render --generic -o /tmp/x.png --yaw 400");
-  EXPECT_NE(result.status, 0);
-  EXPECT_NE(result.output.find("--yaw"), std::string::npos) << result.output;
+TEST(RenderCommand, BadFaceParametersAreExplained) {
+  expect_refused("render --generic -o /tmp/x.png --head 400,0,0", 2, "--head: 400");
+  expect_refused("render --generic -o /tmp/x.png --gaze 10", 2, "--gaze: expected 2 numbers");
+  expect_refused("render --generic -o /tmp/x.png --emotion boredom=1", 2, "unknown emotion 'boredom'");
+  expect_refused("render --generic -o /tmp/x.png --emotion joy=2", 2, "VALUE from 0 to 1");
+  expect_refused("render --generic -o /tmp/x.png --au 3=0.5", 2, "AU '3' is not one facewire carries");
+  expect_refused("render --generic -o /tmp/x.png --au 26L=0.5", 2, "acts on the midline");
+  expect_refused("render --generic -o /tmp/x.png --blush ears=0.5", 2, "unknown region 'ears'");
+  expect_refused("render --generic -o /tmp/x.png --lids -1,0", 2, "--lids");
+}
+
+TEST(RenderCommand, ContactSheetHasEveryPanel) {
+  const auto out = temp("facewire_client_sheet.png");
+  const auto result = run_command(bin("facewire-client") + " render --generic --sheet --size 64x64 -o " + out.string());
+  ASSERT_EQ(result.status, 0) << result.output;
+  png_image png{};
+  png.version = PNG_IMAGE_VERSION;
+  ASSERT_TRUE(png_image_begin_read_from_file(&png, out.c_str()));
+  EXPECT_EQ(png.width, 5u * 64) << "five panels to a row";
+  EXPECT_EQ(png.height, 3u * 64) << "fifteen panels";
+  png_image_free(&png);
+  std::filesystem::remove(out);
 }
 
 TEST(RenderCommand, UnbuiltPartsSaySoInsteadOfPretending) {

@@ -42,7 +42,8 @@ TEST(FaceAsset, RejectsATruncatedFile) {
 TEST(FaceAsset, RejectsAnotherFormatOrVersion) {
   const std::string text = serialize_face_asset(generic_face());
   EXPECT_NE(parse_error(replaced(text, "facewire-generic-face", "something-else")).find("format"), std::string::npos);
-  const std::string error = parse_error(replaced(text, "\"version\": 1", "\"version\": 99"));
+  const std::string error =
+      parse_error(replaced(text, "\"version\": " + std::to_string(kGenericFaceVersion), "\"version\": 99"));
   EXPECT_NE(error.find("version 99 is not supported"), std::string::npos) << error;
 }
 

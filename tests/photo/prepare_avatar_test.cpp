@@ -239,7 +239,7 @@ cv::Mat render_turned(const model::AvatarPackage& package, float yaw_deg) {
   options.width = options.height = 512;
   options.background = {0.5f, 0.5f, 0.5f};
   auto renderer = render::FaceRenderer::create(options, error);
-  const render::FaceId id = renderer->add_face(appearance.face, appearance.textures);
+  const render::FaceId id = renderer->add_face(appearance.avatar.face, appearance.textures);
   render::HeadPose pose;
   pose.yaw_rad = glm::radians(yaw_deg);
   const render::FaceDraw draw{id, render::head_transform(pose), {}};

@@ -54,6 +54,15 @@ RgbaImage skin_with_marked_nose() {
   return skin;
 }
 
+// Textures with no closed lid and no blood masks: those effects off.
+FaceTextures plain(RgbaImage skin, RgbaImage eye, RgbaImage mouth) {
+  FaceTextures t;
+  t.skin = std::move(skin);
+  t.eye = std::move(eye);
+  t.mouth = std::move(mouth);
+  return t;
+}
+
 bool is_background(const std::uint8_t* p) { return p[0] == 0 && p[1] == 0 && p[2] == 0; }
 
 // Centroid of the pixels `pick` selects within [low, high); (-1,-1) if none.
@@ -82,11 +91,11 @@ class FaceRendererTest : public ::testing::Test {
     ASSERT_NE(renderer_, nullptr) << error;
     const auto& face = model::generic_face();
     const auto look = model::Appearance{};
-    natural_ = renderer_->add_face(face, {model::make_skin_texture(face, look, 256),
-                                          model::make_eye_texture(face.eyes[0], look), model::make_mouth_texture()});
-    marked_ = renderer_->add_face(face, {skin_with_marked_nose(), solid(8, 8, {0, 0, 255}), solid(8, 8, {40, 0, 0})});
-    red_ = renderer_->add_face(face, {flat_skin({255, 0, 0}), solid(8, 8, {0, 0, 255}), solid(8, 8, {40, 0, 0})});
-    blue_ = renderer_->add_face(face, {flat_skin({0, 0, 255}), solid(8, 8, {0, 255, 0}), solid(8, 8, {40, 0, 0})});
+    natural_ = renderer_->add_face(face, plain(model::make_skin_texture(face, look, 256),
+                                              model::make_eye_texture(face.eyes[0], look), model::make_mouth_texture()));
+    marked_ = renderer_->add_face(face, plain(skin_with_marked_nose(), solid(8, 8, {0, 0, 255}), solid(8, 8, {40, 0, 0})));
+    red_ = renderer_->add_face(face, plain(flat_skin({255, 0, 0}), solid(8, 8, {0, 0, 255}), solid(8, 8, {40, 0, 0})));
+    blue_ = renderer_->add_face(face, plain(flat_skin({0, 0, 255}), solid(8, 8, {0, 255, 0}), solid(8, 8, {40, 0, 0})));
   }
   static void TearDownTestSuite() { delete renderer_; }
 

@@ -74,6 +74,34 @@ EyeLayer read_eye(const json& object, const std::string& where) {
   return eye;
 }
 
+// Action units come in FaceParams channel order, each naming its AU and side
+// so that a reordered file is caught.
+void read_action_units(const json& units, GenericFace& face) {
+  if (units.size() != codec::kAuChannelCount)
+    throw AssetError("asset.action_units: expected " + std::to_string(codec::kAuChannelCount) + " units, found " +
+                     std::to_string(units.size()));
+  const std::size_t vertex_count = face.skin.positions.size();
+  for (std::size_t c = 0; c < codec::kAuChannelCount; ++c) {
+    const json& unit = units[c];
+    const std::string where = "action_units[" + std::to_string(c) + "]";
+    const codec::AuChannel expected = codec::kAuChannels[c];
+    const std::string side = member(unit, "side", where).get<std::string>();
+    const auto expected_side = expected.side == codec::AuSide::left ? "left" : expected.side == codec::AuSide::right ? "right" : "both";
+    if (member(unit, "au", where).get<int>() != expected.au || side != expected_side)
+      throw AssetError(where + ": expected AU " + std::to_string(expected.au) + " " + expected_side);
+    Morph& morph = face.action_units[c];
+    morph.vertex_delta.assign(vertex_count, glm::vec3(0.0f));
+    morph.uv_delta.assign(vertex_count, glm::vec2(0.0f));
+    for (const json& move : read_array(unit, "moves", where)) {
+      if (!move.is_array() || move.size() != 6) throw AssetError(where + ".moves: expected [vertex, dx, dy, dz, du, dv]");
+      const std::uint32_t v = read_index(move[0], where);
+      if (v >= vertex_count) throw AssetError(where + ".moves: vertex index out of range");
+      morph.vertex_delta[v] = {read_float(move[1], where), read_float(move[2], where), read_float(move[3], where)};
+      morph.uv_delta[v] = {read_float(move[4], where), read_float(move[5], where)};
+    }
+  }
+}
+
 GenericFace read_face(const json& root) {
   GenericFace face;
   if (member(root, "format", "asset") != "facewire-generic-face")
@@ -117,6 +145,7 @@ GenericFace read_face(const json& root) {
   face.eyes[0] = read_eye(member(eyes, "right", "eyes"), "eyes.right");
   face.eyes[1] = read_eye(member(eyes, "left", "eyes"), "eyes.left");
   face.mouth_cavity = read_mesh(member(root, "mouth_cavity", "asset"), "mouth_cavity");
+  read_action_units(read_array(root, "action_units", "asset"), face);
   return face;
 }
 

@@ -4,6 +4,8 @@
 #include <string>
 #include <utility>
 
+#include <glm/geometric.hpp>
+
 #include "fw/model/face_asset.hpp"
 
 namespace fw::model {
@@ -132,6 +134,20 @@ std::vector<std::string> validate_generic_face(const GenericFace& face) {
     }
   check_skin_triangles(face, problems);
   check_holes(face, problems);
+  for (std::size_t c = 0; c < face.action_units.size(); ++c) {
+    const Morph& m = face.action_units[c];
+    const std::string name = "action unit " + std::to_string(codec::kAuChannels[c].au);
+    if (m.vertex_delta.size() != vertex_count || m.uv_delta.size() != vertex_count) {
+      problems.push_back(name + " does not cover every skin vertex");
+      continue;
+    }
+    // A unit moves skin by centimetres, never by a head's width.
+    for (std::size_t v = 0; v < vertex_count; ++v)
+      if (!(glm::length(m.vertex_delta[v]) < 1.0f) || !(glm::length(m.uv_delta[v]) < 0.25f)) {
+        problems.push_back(name + " moves vertex " + std::to_string(v) + " implausibly far");
+        break;
+      }
+  }
   return problems;
 }
 

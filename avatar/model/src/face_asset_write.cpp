@@ -91,7 +91,26 @@ std::string serialize_face_asset(const GenericFace& face) {
   }
   out << "\n  },\n  \"mouth_cavity\": ";
   write_mesh(out, face.mouth_cavity, "  ");
-  out << "\n}\n";
+  // Action units: only the vertices a unit moves, as [vertex, dx, dy, dz, du, dv].
+  out << ",\n  \"action_units\": [";
+  for (std::size_t c = 0; c < face.action_units.size(); ++c) {
+    const codec::AuChannel channel = codec::kAuChannels[c];
+    const Morph& morph = face.action_units[c];
+    const char* side = channel.side == codec::AuSide::left ? "left" : channel.side == codec::AuSide::right ? "right" : "both";
+    out << (c ? ",\n" : "\n") << "    {\"au\": " << static_cast<int>(channel.au) << ", \"side\": \"" << side
+        << "\", \"moves\": [";
+    bool first = true;
+    for (std::size_t v = 0; v < morph.vertex_delta.size(); ++v) {
+      const glm::vec3 d = morph.vertex_delta[v];
+      const glm::vec2 t = morph.uv_delta[v];
+      if (d == glm::vec3(0.0f) && t == glm::vec2(0.0f)) continue;
+      out << (first ? "\n      [" : ",\n      [") << v << ", " << number(d.x) << ", " << number(d.y) << ", "
+          << number(d.z) << ", " << number(t.x) << ", " << number(t.y) << "]";
+      first = false;
+    }
+    out << "]}";
+  }
+  out << "\n  ]\n}\n";
   return out.str();
 }
 

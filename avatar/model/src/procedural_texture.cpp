@@ -142,7 +142,7 @@ glm::vec3 face_colour(glm::vec2 p, const Appearance& look) {
 
 }  // namespace
 
-RgbaImage make_skin_texture(const GenericFace& face, const Appearance& look, int size) {
+RgbaImage make_skin_texture(const GenericFace& face, const Appearance& look, int size, bool eye_holes) {
   assert(size >= 16);
   RgbaImage image(size, size);
   for (int y = 0; y < size; ++y)
@@ -150,8 +150,14 @@ RgbaImage make_skin_texture(const GenericFace& face, const Appearance& look, int
       const glm::vec2 uv((static_cast<float>(x) + 0.5f) / static_cast<float>(size),
                          1.0f - (static_cast<float>(y) + 0.5f) / static_cast<float>(size));
       const glm::vec2 p = face.texture_frame.to_model(uv);
-      const bool hole = inside(p, lm::kEyeRightBegin, lm::kEyeRightEnd) || inside(p, lm::kEyeLeftBegin, lm::kEyeLeftEnd);
-      put(image, x, y, face_colour(p, look), hole ? 0.0f : 1.0f);
+      const bool in_eye = inside(p, lm::kEyeRightBegin, lm::kEyeRightEnd) || inside(p, lm::kEyeLeftBegin, lm::kEyeLeftEnd);
+      if (in_eye && !eye_holes) {
+        // A closed lid: skin, with the lash line where the lids meet.
+        const float lash = std::abs(p.y - (landmark(lm::kEyeRightBegin).y - 0.03f));
+        put(image, x, y, glm::mix(skin_colour(p, look) * 0.92f, glm::vec3(0.1f), soft_inside(lash - 0.008f, 0.01f)), 1.0f);
+        continue;
+      }
+      put(image, x, y, face_colour(p, look), in_eye ? 0.0f : 1.0f);
     }
   return image;
 }

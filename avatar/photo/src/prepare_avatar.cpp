@@ -5,7 +5,6 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "colour_masks.hpp"
 #include "decode_photo.hpp"
 #include "eye_layers.hpp"
 #include "face_alignment.hpp"
@@ -16,8 +15,10 @@
 #include "mouth_layer.hpp"
 #include "package_encoding.hpp"
 #include "pose_checks.hpp"
+#include "skin_tone.hpp"
 #include "fw/model/fitted_face.hpp"
 #include "fw/model/procedural_texture.hpp"
+#include "fw/model/vascular_masks.hpp"
 
 namespace fw::photo {
 namespace {
@@ -30,13 +31,6 @@ constexpr int kLosslessWebp = 101;  // OpenCV: WebP quality above 100 means loss
 std::optional<PreparedAvatar> fail(PrepError& error, PrepErrorCode code, std::string message) {
   error = {code, std::move(message)};
   return std::nullopt;
-}
-
-// Three masks in one image: the first region in red, then green, then blue.
-cv::Mat pack_masks(const cv::Mat& red, const cv::Mat& green, const cv::Mat& blue) {
-  cv::Mat bgr;
-  cv::merge(std::vector<cv::Mat>{blue, green, red}, bgr);
-  return bgr;
 }
 
 // The face without the rim or much hair: a thumbnail that reads at 48 px.
@@ -117,13 +111,14 @@ std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8
   const auto eyes = eye_polygons_px(landmarks, frame, size);
   const cv::Mat face_texture = with_eye_holes(texture, eyes);
   const ClosedLid lid = make_closed_lid(texture, eyes);
-  const auto masks = render_region_masks(fit->warp, frame, kMaskSize);
+  const ThinPlateSpline& warp = fit->warp;
+  const auto masks = model::render_region_masks([&](glm::vec2 p) { return warp(p); }, frame, kMaskSize);
 
   model::AvatarPackage& package = result.package;
   package.generic_face_version = generic.version;
   package.fitted_vertices = fit->fitted_xy;
   std::copy(landmarks.begin(), landmarks.end(), package.landmarks.begin());
-  package.skin_tone = estimate_skin_tone(texture, masks);
+  package.skin_tone = estimate_skin_tone(texture, masks, kMaskSize);
   package.iris_colour = sample_iris_colour(texture, eyes);
   package.face_texture = encode_webp(face_texture, options.quality);
   package.closed_lid = encode_webp(lid.image, options.quality);
@@ -132,12 +127,11 @@ std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8
   model::Appearance look;
   look.iris = glm::vec3(package.iris_colour[0], package.iris_colour[1], package.iris_colour[2]) / 255.0f;
   package.eye = encode_webp(to_bgr_mat(model::make_eye_texture(generic.eyes[0], look, kEyeTextureSize)), options.quality);
-  using R = MaskRegion;
-  const auto mask = [&](R r) { return masks[static_cast<std::size_t>(r)]; };
   package.mouth = encode_webp(make_mouth_layer(texture, landmarks, model::fit_generic_face(generic, fit->fitted_xy)),
                                options.quality);
-  package.colour_masks_a = encode_webp(pack_masks(mask(R::forehead), mask(R::cheek_left), mask(R::cheek_right)), kLosslessWebp);
-  package.colour_masks_b = encode_webp(pack_masks(mask(R::nose), mask(R::sides), mask(R::face)), kLosslessWebp);
+  const auto packed = model::pack_region_masks(masks, kMaskSize);
+  package.colour_masks_a = encode_webp(to_bgr_mat(packed[0]), kLosslessWebp);
+  package.colour_masks_b = encode_webp(to_bgr_mat(packed[1]), kLosslessWebp);
   package.preview = encode_webp(make_preview(texture, frame), std::min(options.quality, 60));
   report.face_texture = to_rgba_image(face_texture);
   return result;

@@ -23,13 +23,29 @@ struct GpuFace {
   GpuMesh skin, mouth;
   std::array<GpuMesh, 2> eyes;
   std::array<glm::vec3, 2> eye_centres{};
-  Texture skin_texture, eye_texture, mouth_texture;
+  std::vector<glm::uvec3> skin_triangles;  // for normals when the shape changes
+  Texture skin_texture, eye_texture, mouth_texture, closed_lid, masks_a, masks_b;
+  glm::vec4 closed_lid_rect{0.0f};
 };
 
 // Where the uniforms of the one shader program live.
 struct Uniforms {
   GLint model = -1, view_projection = -1, camera_position = -1, light_direction = -1, specular = -1, texture = -1;
+  GLint layer = -1, frame = -1, closed_lid = -1, closed_lid_rect = -1, lid_closure = -1, masks_a = -1, masks_b = -1,
+        blush_a = -1, blush_sides = -1, pallor = -1;
 };
+
+enum Layer : GLint { kSkinLayer = 0, kEyeLayer = 1, kMouthLayer = 2 };
+// Texture units: the part's own texture, then the skin's extra ones.
+enum Unit : GLint { kMainUnit = 0, kClosedLidUnit = 1, kMasksAUnit = 2, kMasksBUnit = 3 };
+
+// A 1x1 black image: "no effect" for a missing closed lid or mask.
+model::RgbaImage or_black(const model::RgbaImage& image) {
+  if (image.width > 0) return image;
+  model::RgbaImage black(1, 1);
+  black.pixels[3] = 255;
+  return black;
+}
 
 }  // namespace
 
@@ -42,9 +58,10 @@ struct FaceRenderer::Impl {
   Framebuffer draw_framebuffer, resolve_framebuffer;
   Renderbuffer draw_colour, draw_depth, resolve_colour;
   std::vector<GpuFace> faces;
+  model::TextureFrame frame;  // every face shares the generic face's frame
 
   bool set_up_framebuffers(std::string& error);
-  void draw_mesh(const GpuMesh& mesh, const Texture& texture, const glm::mat4& model, float specular);
+  void draw_mesh(const GpuMesh& mesh, const Texture& texture, const glm::mat4& model, float specular, Layer layer);
 };
 
 bool FaceRenderer::Impl::set_up_framebuffers(std::string& error) {
@@ -81,9 +98,11 @@ bool FaceRenderer::Impl::set_up_framebuffers(std::string& error) {
 }
 
 void FaceRenderer::Impl::draw_mesh(const GpuMesh& mesh, const Texture& texture, const glm::mat4& model,
-                                   float specular) {
+                                   float specular, Layer layer) {
   glUniformMatrix4fv(uniforms.model, 1, GL_FALSE, glm::value_ptr(model));
   glUniform1f(uniforms.specular, specular);
+  glUniform1i(uniforms.layer, layer);
+  glActiveTexture(GL_TEXTURE0 + kMainUnit);
   glBindTexture(GL_TEXTURE_2D, texture.get());
   glBindVertexArray(mesh.vertex_array.get());
   glDrawElements(GL_TRIANGLES, mesh.index_count, GL_UNSIGNED_INT, nullptr);
@@ -113,9 +132,11 @@ std::unique_ptr<FaceRenderer> FaceRenderer::create(const RendererOptions& option
   if (!program) return nullptr;
   impl.program = std::move(*program);
   const GLuint p = impl.program.get();
-  impl.uniforms = {glGetUniformLocation(p, "u_model"),           glGetUniformLocation(p, "u_view_projection"),
-                   glGetUniformLocation(p, "u_camera_position"), glGetUniformLocation(p, "u_light_direction"),
-                   glGetUniformLocation(p, "u_specular"),        glGetUniformLocation(p, "u_texture")};
+  const auto at = [p](const char* name) { return glGetUniformLocation(p, name); };
+  impl.uniforms = {at("u_model"),      at("u_view_projection"), at("u_camera_position"), at("u_light_direction"),
+                   at("u_specular"),   at("u_texture"),         at("u_layer"),           at("u_frame"),
+                   at("u_closed_lid"), at("u_closed_lid_rect"), at("u_lid_closure"),     at("u_masks_a"),
+                   at("u_masks_b"),    at("u_blush_a"),         at("u_blush_sides"),     at("u_pallor")};
   if (!impl.set_up_framebuffers(error)) return nullptr;
   return self;
 }
@@ -129,11 +150,28 @@ FaceId FaceRenderer::add_face(const model::GenericFace& face, const FaceTextures
     gpu.eyes[side] = upload_mesh(face.eyes[side].mesh);
     gpu.eye_centres[side] = face.eyes[side].centre;
   }
+  gpu.skin_triangles = face.skin.triangles;
   gpu.skin_texture = upload_texture(textures.skin);
   gpu.eye_texture = upload_texture(textures.eye);
   gpu.mouth_texture = upload_texture(textures.mouth);
+  gpu.closed_lid = upload_texture(or_black(textures.closed_lid));
+  gpu.closed_lid_rect = textures.closed_lid.width > 0 ? textures.closed_lid_rect : glm::vec4(0.0f);
+  gpu.masks_a = upload_texture(or_black(textures.masks_a));
+  gpu.masks_b = upload_texture(or_black(textures.masks_b));
   impl_->faces.push_back(std::move(gpu));
+  impl_->frame = face.texture_frame;
   return static_cast<FaceId>(impl_->faces.size() - 1);
+}
+
+void FaceRenderer::set_face_shape(FaceId id, std::span<const glm::vec3> positions, std::span<const glm::vec2> uvs) {
+  if (id >= impl_->faces.size()) return;
+  impl_->context->make_current();
+  GpuFace& face = impl_->faces[id];
+  model::Mesh mesh;
+  mesh.positions.assign(positions.begin(), positions.end());
+  mesh.uvs.assign(uvs.begin(), uvs.end());
+  mesh.triangles = face.skin_triangles;
+  update_mesh(face.skin, mesh);
 }
 
 model::RgbaImage FaceRenderer::render(std::span<const FaceDraw> draws, const Camera& camera) {
@@ -153,18 +191,32 @@ model::RgbaImage FaceRenderer::render(std::span<const FaceDraw> draws, const Cam
   glUniform3fv(impl.uniforms.camera_position, 1, glm::value_ptr(camera.position));
   const glm::vec3 light(0.45f, 0.6f, 0.9f);  // key light above and to the viewer's right
   glUniform3fv(impl.uniforms.light_direction, 1, glm::value_ptr(light));
-  glUniform1i(impl.uniforms.texture, 0);
-  glActiveTexture(GL_TEXTURE0);
+  glUniform1i(impl.uniforms.texture, kMainUnit);
+  glUniform1i(impl.uniforms.closed_lid, kClosedLidUnit);
+  glUniform1i(impl.uniforms.masks_a, kMasksAUnit);
+  glUniform1i(impl.uniforms.masks_b, kMasksBUnit);
+  glUniform3f(impl.uniforms.frame, impl.frame.origin.x, impl.frame.origin.y, impl.frame.size);
 
   for (const FaceDraw& draw : draws) {
     if (draw.face >= impl.faces.size()) continue;  // an id from another renderer: nothing to draw
     const GpuFace& face = impl.faces[draw.face];
-    impl.draw_mesh(face.skin, face.skin_texture, draw.model, kSkinSpecular);
-    impl.draw_mesh(face.mouth, face.mouth_texture, draw.model, kMouthSpecular);
+    glActiveTexture(GL_TEXTURE0 + kClosedLidUnit);
+    glBindTexture(GL_TEXTURE_2D, face.closed_lid.get());
+    glActiveTexture(GL_TEXTURE0 + kMasksAUnit);
+    glBindTexture(GL_TEXTURE_2D, face.masks_a.get());
+    glActiveTexture(GL_TEXTURE0 + kMasksBUnit);
+    glBindTexture(GL_TEXTURE_2D, face.masks_b.get());
+    glUniform4fv(impl.uniforms.closed_lid_rect, 1, glm::value_ptr(face.closed_lid_rect));
+    glUniform2fv(impl.uniforms.lid_closure, 1, glm::value_ptr(draw.lid_closure));
+    glUniform4f(impl.uniforms.blush_a, draw.blush[0], draw.blush[1], draw.blush[2], draw.blush[3]);
+    glUniform1f(impl.uniforms.blush_sides, draw.blush[4]);
+    glUniform1f(impl.uniforms.pallor, draw.pallor);
+    impl.draw_mesh(face.skin, face.skin_texture, draw.model, kSkinSpecular, kSkinLayer);
+    impl.draw_mesh(face.mouth, face.mouth_texture, draw.model, kMouthSpecular, kMouthLayer);
     for (std::size_t side = 0; side < 2; ++side) {
       const glm::vec2 yaw_pitch = draw.eye_yaw_pitch_rad[side];
       const glm::mat4 eye_model = draw.model * eye_transform(face.eye_centres[side], yaw_pitch.x, yaw_pitch.y);
-      impl.draw_mesh(face.eyes[side], face.eye_texture, eye_model, kEyeSpecular);
+      impl.draw_mesh(face.eyes[side], face.eye_texture, eye_model, kEyeSpecular, kEyeLayer);
     }
   }
   glBindVertexArray(0);

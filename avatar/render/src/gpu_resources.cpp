@@ -27,7 +27,7 @@ template <typename T>
 Buffer array_buffer(GLuint attribute, const std::vector<T>& data, GLint components) {
   auto buffer = generate<Buffer, glGenBuffers>();
   glBindBuffer(GL_ARRAY_BUFFER, buffer.get());
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(T)), data.data(), GL_STATIC_DRAW);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(T)), data.data(), GL_DYNAMIC_DRAW);
   glEnableVertexAttribArray(attribute);
   glVertexAttribPointer(attribute, components, GL_FLOAT, GL_FALSE, 0, nullptr);
   return buffer;
@@ -68,6 +68,16 @@ GpuMesh upload_mesh(const model::Mesh& mesh) {
   gpu.index_count = static_cast<GLsizei>(mesh.triangles.size() * 3);
   glBindVertexArray(0);
   return gpu;
+}
+
+void update_mesh(GpuMesh& gpu, const model::Mesh& mesh) {
+  const auto replace = [](const Buffer& buffer, const auto& data) {
+    glBindBuffer(GL_ARRAY_BUFFER, buffer.get());
+    glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(data.size() * sizeof(data[0])), data.data());
+  };
+  replace(gpu.positions, mesh.positions);
+  replace(gpu.normals, model::vertex_normals(mesh));
+  replace(gpu.uvs, mesh.uvs);
 }
 
 Texture upload_texture(const model::RgbaImage& image) {

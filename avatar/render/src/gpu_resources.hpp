@@ -23,6 +23,9 @@ struct GpuMesh {
 };
 GpuMesh upload_mesh(const model::Mesh& mesh);
 
+/// New positions and uvs (and so normals) for a mesh of the same topology.
+void update_mesh(GpuMesh& gpu, const model::Mesh& mesh);
+
 /// An RGBA texture with mipmaps, clamped at the edges. Rows are flipped on
 /// upload because images run top-down and texture v runs up.
 Texture upload_texture(const model::RgbaImage& image);

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "assign_regions.hpp"
+#include "build_action_units.hpp"
 #include "face_points.hpp"
 #include "fw/model/depth_profile.hpp"
 #include "triangulate.hpp"
@@ -133,8 +134,9 @@ void build_eyes(GenericFace& face) {
 
 // A dark, curved backdrop behind the lips: what shows when the mouth opens.
 void build_mouth_cavity(GenericFace& face) {
-  constexpr int kColumns = 9, kRows = 5;
-  constexpr float kHalfWidth = 0.56f, kTop = -0.9f, kBottom = -1.42f;
+  constexpr int kColumns = 9, kRows = 7;
+  // Deep enough below the lips for the widest jaw drop (AU 27).
+  constexpr float kHalfWidth = 0.56f, kTop = -0.9f, kBottom = -1.85f;
   Mesh& mesh = face.mouth_cavity;
   for (int row = 0; row < kRows; ++row)
     for (int column = 0; column < kColumns; ++column) {
@@ -142,7 +144,10 @@ void build_mouth_cavity(GenericFace& face) {
       const float v = static_cast<float>(row) / (kRows - 1);
       const glm::vec2 p(-kHalfWidth + 2 * kHalfWidth * u, kBottom + (kTop - kBottom) * v);
       const float across = p.x / kHalfWidth;
-      const float depth = model::face_depth(p) - 0.14f - 0.12f * (1.0f - across * across);
+      // Below the lips the cavity recedes fast: the jaw, turning open, carries
+      // the chin's skin back, and the cavity must stay behind it.
+      const float depth = model::face_depth(p) - 0.14f - 0.12f * (1.0f - across * across) -
+                          0.9f * std::max(0.0f, -1.15f - p.y);
       mesh.positions.emplace_back(p, depth);
       mesh.uvs.emplace_back(u, v);
     }
@@ -162,6 +167,7 @@ GenericFace generate_generic_face() {
   build_skin(face);
   build_eyes(face);
   build_mouth_cavity(face);
+  face.action_units = build_action_units(face);
   return face;
 }
 

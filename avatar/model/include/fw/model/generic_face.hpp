@@ -11,11 +11,13 @@
 #include <vector>
 
 #include "fw/model/landmark_template.hpp"
+#include "fw/codec/face_params.hpp"
 #include "fw/model/mesh.hpp"
+#include "fw/model/morph.hpp"
 
 namespace fw::model {
 
-inline constexpr int kGenericFaceVersion = 1;
+inline constexpr int kGenericFaceVersion = 2;
 
 /// Named skin regions. Every skin triangle belongs to exactly one. The names
 /// (kFaceRegionNames) are what the asset file stores; the order is fixed.
@@ -66,6 +68,9 @@ struct GenericFace {
   std::vector<std::uint32_t> mouth_slit;
   std::array<EyeLayer, 2> eyes;                             ///< indexed by Side
   Mesh mouth_cavity;                                        ///< drawn behind the mouth slit, uv [0,1]^2
+  /// The action-unit basis: one morph per FaceParams action-unit channel
+  /// (codec::kAuChannels order), defined geometrically on this face.
+  std::array<Morph, codec::kAuChannelCount> action_units;
 };
 
 /// The generic face compiled into this binary (assets/generic_face.json),

@@ -18,15 +18,9 @@
 #include <glm/vec3.hpp>
 
 #include "fw/model/mesh.hpp"
+#include "fw/model/morph.hpp"
 
 namespace fw::model {
-
-/// A morph: how far each skin vertex moves and its texture coordinate slides
-/// at full intensity.
-struct Morph {
-  std::vector<glm::vec3> vertex_delta;  ///< #V, model units
-  std::vector<glm::vec2> uv_delta;      ///< #V, texture uv units
-};
 
 /// The fit's local linear map at each vertex.
 /// @param[in] generic_skin  the generic face's skin (positions and triangles)

@@ -22,7 +22,8 @@ struct Appearance {
 /// eyeballs show through), 255 elsewhere.
 /// @param[in] face  the generic face (texture frame)
 /// @param[in] size  texture width and height in pixels, >= 16
-RgbaImage make_skin_texture(const GenericFace& face, const Appearance& look, int size = 512);
+/// @param[in] eye_holes  false for closed-lid skin: the eyes covered by lid
+RgbaImage make_skin_texture(const GenericFace& face, const Appearance& look, int size = 512, bool eye_holes = true);
 
 /// Eyeball texture for EyeLayer's polar mapping: sclera, iris of a real
 /// size (11.7 mm across) whatever the layer's radius, limbal ring, pupil.

@@ -25,11 +25,17 @@ struct RendererOptions {
 };
 
 /// The textures of one face: skin (with alpha holes at the eyes), eyeball and
-/// mouth interior. See model/procedural_texture.hpp for how they map.
+/// mouth interior (see model/procedural_texture.hpp for how they map), the
+/// closed-lid skin and the vascular masks (model/vascular_masks.hpp). An
+/// empty closed-lid or mask image turns that effect off.
 struct FaceTextures {
   model::RgbaImage skin;
   model::RgbaImage eye;
   model::RgbaImage mouth;
+  model::RgbaImage closed_lid;
+  glm::vec4 closed_lid_rect{0.0f};  ///< (u0, v0, u1, v1) in the texture frame
+  model::RgbaImage masks_a;         ///< forehead, left cheek, right cheek
+  model::RgbaImage masks_b;         ///< nose, sides, whole face
 };
 
 using FaceId = std::uint32_t;
@@ -40,6 +46,9 @@ struct FaceDraw {
   glm::mat4 model{1.0f};  ///< head_transform(...) of this face
   /// Each eye's (yaw, pitch) in radians, indexed by model::Side.
   std::array<glm::vec2, 2> eye_yaw_pitch_rad{};
+  glm::vec2 lid_closure{0.0f};   ///< person's right, left, 0..1 (the closed-lid skin)
+  std::array<float, 5> blush{};  ///< codec::ColourRegion order, 0..1
+  float pallor = 0;              ///< 0..1
 };
 
 class FaceRenderer {
@@ -54,6 +63,10 @@ class FaceRenderer {
   /// Uploads a face's meshes and textures; the id stays valid for the
   /// renderer's life.
   FaceId add_face(const model::GenericFace& face, const FaceTextures& textures);
+
+  /// Replaces a face's skin shape (positions and texture coordinates, #V of
+  /// the face it was added with), e.g. model::reconstruct_face's result.
+  void set_face_shape(FaceId face, std::span<const glm::vec3> positions, std::span<const glm::vec2> uvs);
 
   /// Draws `draws` as seen by `camera` and reads the image back.
   model::RgbaImage render(std::span<const FaceDraw> draws, const Camera& camera);
