@@ -19,6 +19,7 @@ struct PrepArgs {
   std::string landmark_model;
   int face_index = 0;
   int quality = 80;
+  bool no_eye_layer = false;
 };
 
 int prep(const PrepArgs& args) {
@@ -38,6 +39,7 @@ int prep(const PrepArgs& args) {
   photo::PrepOptions options;
   options.face_index = args.face_index;
   options.quality = args.quality;
+  options.eye_layer = !args.no_eye_layer;
   const auto avatar = preparer->prepare(bytes, options, prep_error);
   if (!avatar) return fail(args.photo + ": " + prep_error.message);
   for (const std::string& warning : avatar->report.warnings) std::cerr << "facewire-server prep: warning: " << warning << "\n";
@@ -68,6 +70,8 @@ void add_prep_command(CLI::App& app) {
   cmd->add_option("--face-index", args->face_index, "which face when there are several: 0 = the largest")
       ->check(CLI::Range(0, 99));
   cmd->add_option("--quality", args->quality, "texture quality 1..100")->check(CLI::Range(1, 100))->capture_default_str();
+  cmd->add_flag("--no-eye-layer", args->no_eye_layer,
+                "keep the photo's eyes in the texture (they cannot look around, but are exactly the photo's)");
   cmd->add_option("--landmark-model", args->landmark_model, "dlib 68-point model (default: Debian's libdlib-data)");
   cmd->callback([args] { std::exit(prep(*args)); });
 }

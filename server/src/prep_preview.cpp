@@ -1,6 +1,7 @@
 #include "prep_preview.hpp"
 
 #include "fw/render/avatar_appearance.hpp"
+#include "fw/render/contact_sheet.hpp"
 #include "fw/render/face_renderer.hpp"
 #include "fw/render/image_ops.hpp"
 
@@ -13,6 +14,7 @@ const glm::u8vec3 kLandmarkColour{60, 255, 90};
 }  // namespace
 
 bool make_prep_preview(const photo::PreparedAvatar& avatar, model::RgbaImage& sheet, std::string& error) {
+  constexpr int kSheetColumns = 5, kSheetPanel = 3 * kPanel / kSheetColumns;
   render::AvatarAppearance appearance;
   if (!render::load_avatar_appearance(avatar.package, appearance, error)) return false;
   render::RendererOptions options;
@@ -23,7 +25,13 @@ bool make_prep_preview(const photo::PreparedAvatar& avatar, model::RgbaImage& sh
   const render::FaceId id = renderer->add_face(face, appearance.textures);
   const render::Camera camera = render::Camera::portrait(1.0f);
 
-  sheet = model::RgbaImage(3 * kPanel, kPanel);
+  // Below the three large panels, the contact sheet: every expression,
+  // gaze, a blink, blush and pallor.
+  model::RgbaImage expressions;
+  if (!render::render_contact_sheet(appearance, kSheetPanel, kSheetColumns, expressions, error)) return false;
+  sheet = model::RgbaImage(3 * kPanel, kPanel + expressions.height);
+  for (std::size_t i = 3; i < sheet.pixels.size(); i += 4) sheet.pixels[i] = 255;
+  render::paste(sheet, expressions, 0, kPanel);
   // 1: the aligned texture with the landmarks it was aligned by.
   model::RgbaImage texture = render::resized(avatar.report.face_texture, kPanel, kPanel);
   const model::TextureFrame& frame = face.texture_frame;

@@ -53,6 +53,18 @@ TEST(AvatarPackage, RoundTrips) {
   EXPECT_EQ(serialize_avatar_package(parsed), bytes) << "stable when written again";
 }
 
+TEST(AvatarPackage, TheEyeLayerIsOptional) {
+  AvatarPackage p = sample_package();
+  p.eye.bytes.clear();
+  AvatarPackage parsed;
+  std::string error;
+  ASSERT_TRUE(parse_avatar_package(serialize_avatar_package(p), parsed, error)) << error;
+  EXPECT_TRUE(parsed.eye.bytes.empty());
+  p.mouth.bytes.clear();
+  p.mouth.type.clear();
+  EXPECT_FALSE(parse_avatar_package(serialize_avatar_package(p), parsed, error)) << "other layers are not optional";
+}
+
 TEST(AvatarPackage, EveryTruncationIsAnError) {
   const auto bytes = serialize_avatar_package(sample_package());
   for (std::size_t cut = 0; cut < bytes.size(); cut += 7) {

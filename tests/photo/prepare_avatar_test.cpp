@@ -297,3 +297,44 @@ TEST(AvatarPreparerCreate, SaysWhereTheModelShouldBe) {
 
 }  // namespace
 }  // namespace fw::photo
+
+namespace fw::photo {
+namespace {
+
+TEST_F(PrepareAvatarTest, WithoutAnEyeLayerTheEyesAreThePhotosAndStayPut) {
+  PrepOptions options;
+  options.eye_layer = false;
+  PrepError error;
+  const auto avatar = prepare(test::encode(*original_), error, options);
+  ASSERT_TRUE(avatar.has_value()) << error.message;
+  EXPECT_TRUE(avatar->package.eye.bytes.empty());
+  model::AvatarPackage parsed;
+  std::string parse_error;
+  ASSERT_TRUE(model::parse_avatar_package(model::serialize_avatar_package(avatar->package), parsed, parse_error))
+      << parse_error;
+  render::AvatarAppearance appearance;
+  ASSERT_TRUE(render::load_avatar_appearance(parsed, appearance, parse_error)) << parse_error;
+  render::RendererOptions ro;
+  ro.width = ro.height = 256;
+  ro.background = {0, 0, 0};
+  auto renderer = render::FaceRenderer::create(ro, parse_error);
+  const render::FaceId id = renderer->add_face(appearance.avatar.face, appearance.textures);
+  const auto draw_looking = [&](float yaw) {
+    render::FaceDraw draw{id, glm::mat4(1.0f), {}};
+    draw.eye_yaw_pitch_rad = {glm::vec2(yaw, 0.0f), glm::vec2(yaw, 0.0f)};
+    return renderer->render({&draw, 1}, render::Camera::portrait(1.0f));
+  };
+  const model::RgbaImage left = draw_looking(-0.4f), right = draw_looking(0.4f);
+  EXPECT_EQ(left.pixels, right.pixels) << "pupils fixed: gaze changes nothing";
+  // The eye opening shows the photo (dark iris included), never the black background.
+  const model::EyeLayer& eye = appearance.avatar.face.eyes[1];
+  const glm::vec3 px = render::project_to_pixel(render::Camera::portrait(1.0f),
+                                                eye.centre + glm::vec3(0, 0, eye.radius), 256, 256);
+  for (int dx = -4; dx <= 4; dx += 2) {
+    const std::uint8_t* p = left.at(static_cast<int>(px.x) + dx, static_cast<int>(px.y));
+    EXPECT_GT(p[0] + p[1] + p[2], 0) << dx;
+  }
+}
+
+}  // namespace
+}  // namespace fw::photo

@@ -41,7 +41,8 @@ TEST_F(PrepCommandTest, PreparesTheAstronautAndTheClientRendersHer) {
   EXPECT_LE(std::filesystem::file_size(package), 24u * 1024);
   unsigned w = 0, h = 0;
   ASSERT_TRUE(png_size(sheet, w, h));
-  EXPECT_EQ(w, 3 * h) << "three panels side by side";
+  EXPECT_EQ(w, 960u) << "three panels side by side";
+  EXPECT_EQ(h, 320u + 3 * 192u) << "over three rows of the contact sheet";
 
   const auto client = run_command(bin("facewire-client") + " render --avatar " + package.string() + " -o " +
                                   render.string() + " --size 300x200");

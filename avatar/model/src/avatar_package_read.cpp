@@ -127,7 +127,7 @@ AvatarPackage read_package(std::span<const std::uint8_t> bytes) {
     // Unknown members are skipped: a later minor revision may add some.
   }
   if (at != bytes.size()) throw PackageError("the package has " + std::to_string(bytes.size() - at) + " stray bytes at its end");
-  for (const char* required : {"mesh", "face_texture", "closed_lid", "eye", "mouth", "colour_masks_a", "colour_masks_b", "preview"})
+  for (const char* required : {"mesh", "face_texture", "closed_lid", "mouth", "colour_masks_a", "colour_masks_b", "preview"})
     if (std::find(seen.begin(), seen.end(), required) == seen.end())
       throw PackageError(std::string("the package has no ") + required + " member");
 

@@ -62,8 +62,10 @@ std::vector<std::uint8_t> serialize_avatar_package(const AvatarPackage& package)
                            package.closed_lid_rect.w}},
       {"members", nlohmann::json::array()},
   };
+  // The eye layer is optional (a package without it is shown in non-masking mode).
+  const auto present = [](const Member& m) { return m.name != "eye" || !m.bytes.empty(); };
   for (const Member& m : members)
-    manifest["members"].push_back({{"name", m.name}, {"type", m.type}, {"size", m.bytes.size()}, {"crc32", crc_of(m.bytes)}});
+    if (present(m)) manifest["members"].push_back({{"name", m.name}, {"type", m.type}, {"size", m.bytes.size()}, {"crc32", crc_of(m.bytes)}});
   const std::string text = manifest.dump();
 
   std::vector<std::uint8_t> out(package_layout::kMagic.begin(), package_layout::kMagic.end());
@@ -74,7 +76,8 @@ std::vector<std::uint8_t> serialize_avatar_package(const AvatarPackage& package)
   put_u32(out, static_cast<std::uint32_t>(text.size()));
   put_u32(out, crc_of({reinterpret_cast<const std::uint8_t*>(text.data()), text.size()}));
   out.insert(out.end(), text.begin(), text.end());
-  for (const Member& m : members) out.insert(out.end(), m.bytes.begin(), m.bytes.end());
+  for (const Member& m : members)
+    if (present(m)) out.insert(out.end(), m.bytes.begin(), m.bytes.end());
   return out;
 }
 

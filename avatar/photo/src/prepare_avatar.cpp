@@ -109,7 +109,7 @@ std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8
   const int size = options.texture_size;
   const cv::Mat texture = warp_to_texture(*photo, alignment, frame, size);
   const auto eyes = eye_polygons_px(landmarks, frame, size);
-  const cv::Mat face_texture = with_eye_holes(texture, eyes);
+  const cv::Mat face_texture = options.eye_layer ? with_eye_holes(texture, eyes) : texture;
   const ClosedLid lid = make_closed_lid(texture, eyes);
   const ThinPlateSpline& warp = fit->warp;
   const auto masks = model::render_region_masks([&](glm::vec2 p) { return warp(p); }, frame, kMaskSize);
@@ -126,7 +126,8 @@ std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8
                              lid.uv_rect.y + lid.uv_rect.height};
   model::Appearance look;
   look.iris = glm::vec3(package.iris_colour[0], package.iris_colour[1], package.iris_colour[2]) / 255.0f;
-  package.eye = encode_webp(to_bgr_mat(model::make_eye_texture(generic.eyes[0], look, kEyeTextureSize)), options.quality);
+  if (options.eye_layer)
+    package.eye = encode_webp(to_bgr_mat(model::make_eye_texture(generic.eyes[0], look, kEyeTextureSize)), options.quality);
   package.mouth = encode_webp(make_mouth_layer(texture, landmarks, model::fit_generic_face(generic, fit->fitted_xy)),
                                options.quality);
   const auto packed = model::pack_region_masks(masks, kMaskSize);

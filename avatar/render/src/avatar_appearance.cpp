@@ -19,7 +19,8 @@ bool load_avatar_appearance(const model::AvatarPackage& package, AvatarAppearanc
     return false;
   };
   FaceTextures& t = loaded.textures;
-  if (!decode(package.face_texture, "face_texture", t.skin) || !decode(package.eye, "eye", t.eye) ||
+  const bool eye_layer = !package.eye.bytes.empty();
+  if (!decode(package.face_texture, "face_texture", t.skin) || (eye_layer && !decode(package.eye, "eye", t.eye)) ||
       !decode(package.mouth, "mouth", t.mouth) || !decode(package.closed_lid, "closed_lid", t.closed_lid) ||
       !decode(package.colour_masks_a, "colour_masks_a", t.masks_a) ||
       !decode(package.colour_masks_b, "colour_masks_b", t.masks_b))

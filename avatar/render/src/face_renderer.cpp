@@ -21,6 +21,8 @@ constexpr float kSkinSpecular = 0.08f, kEyeSpecular = 0.9f, kMouthSpecular = 0.1
 
 struct GpuFace {
   GpuMesh skin, mouth;
+  GpuMesh eye_covers;  // non-masking mode only: the eye holes filled, on the skin's vertices
+  bool eye_layer = true;
   std::array<GpuMesh, 2> eyes;
   std::array<glm::vec3, 2> eye_centres{};
   std::vector<glm::uvec3> skin_triangles;  // for normals when the shape changes
@@ -151,8 +153,15 @@ FaceId FaceRenderer::add_face(const model::GenericFace& face, const FaceTextures
     gpu.eye_centres[side] = face.eyes[side].centre;
   }
   gpu.skin_triangles = face.skin.triangles;
+  gpu.eye_layer = textures.eye.width > 0;
+  if (!gpu.eye_layer) {
+    std::vector<glm::uvec3> fans;
+    for (const auto& hole : face.eye_holes)
+      for (std::size_t i = 1; i + 1 < hole.size(); ++i) fans.emplace_back(hole[0], hole[i], hole[i + 1]);
+    gpu.eye_covers = share_vertices(gpu.skin, fans);
+  }
   gpu.skin_texture = upload_texture(textures.skin);
-  gpu.eye_texture = upload_texture(textures.eye);
+  gpu.eye_texture = upload_texture(or_black(textures.eye));
   gpu.mouth_texture = upload_texture(textures.mouth);
   gpu.closed_lid = upload_texture(or_black(textures.closed_lid));
   gpu.closed_lid_rect = textures.closed_lid.width > 0 ? textures.closed_lid_rect : glm::vec4(0.0f);
@@ -213,6 +222,10 @@ model::RgbaImage FaceRenderer::render(std::span<const FaceDraw> draws, const Cam
     glUniform1f(impl.uniforms.pallor, draw.pallor);
     impl.draw_mesh(face.skin, face.skin_texture, draw.model, kSkinSpecular, kSkinLayer);
     impl.draw_mesh(face.mouth, face.mouth_texture, draw.model, kMouthSpecular, kMouthLayer);
+    if (!face.eye_layer) {
+      impl.draw_mesh(face.eye_covers, face.skin_texture, draw.model, kSkinSpecular, kSkinLayer);
+      continue;
+    }
     for (std::size_t side = 0; side < 2; ++side) {
       const glm::vec2 yaw_pitch = draw.eye_yaw_pitch_rad[side];
       const glm::mat4 eye_model = draw.model * eye_transform(face.eye_centres[side], yaw_pitch.x, yaw_pitch.y);

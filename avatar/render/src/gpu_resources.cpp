@@ -70,6 +70,26 @@ GpuMesh upload_mesh(const model::Mesh& mesh) {
   return gpu;
 }
 
+GpuMesh share_vertices(const GpuMesh& mesh, const std::vector<glm::uvec3>& triangles) {
+  GpuMesh shared;
+  shared.vertex_array = generate<VertexArray, glGenVertexArrays>();
+  glBindVertexArray(shared.vertex_array.get());
+  const GLuint buffers[3] = {mesh.positions.get(), mesh.normals.get(), mesh.uvs.get()};
+  const GLint sizes[3] = {3, 3, 2};
+  for (GLuint attribute = 0; attribute < 3; ++attribute) {
+    glBindBuffer(GL_ARRAY_BUFFER, buffers[attribute]);
+    glEnableVertexAttribArray(attribute);
+    glVertexAttribPointer(attribute, sizes[attribute], GL_FLOAT, GL_FALSE, 0, nullptr);
+  }
+  shared.indices = generate<Buffer, glGenBuffers>();
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, shared.indices.get());
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(triangles.size() * sizeof(glm::uvec3)),
+               triangles.data(), GL_STATIC_DRAW);
+  shared.index_count = static_cast<GLsizei>(triangles.size() * 3);
+  glBindVertexArray(0);
+  return shared;
+}
+
 void update_mesh(GpuMesh& gpu, const model::Mesh& mesh) {
   const auto replace = [](const Buffer& buffer, const auto& data) {
     glBindBuffer(GL_ARRAY_BUFFER, buffer.get());

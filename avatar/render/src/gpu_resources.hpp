@@ -23,6 +23,10 @@ struct GpuMesh {
 };
 GpuMesh upload_mesh(const model::Mesh& mesh);
 
+/// More triangles over `mesh`'s vertex buffers (a vertex array of their own
+/// sharing the buffers), so they follow every update_mesh of `mesh`.
+GpuMesh share_vertices(const GpuMesh& mesh, const std::vector<glm::uvec3>& triangles);
+
 /// New positions and uvs (and so normals) for a mesh of the same topology.
 void update_mesh(GpuMesh& gpu, const model::Mesh& mesh);
 

@@ -48,7 +48,9 @@ struct AvatarPackage {
   /// holes filled from the surrounding lids, placed at `closed_lid_rect`.
   PackageImage closed_lid;
   glm::vec4 closed_lid_rect{0.0f};  ///< (u0, v0, u1, v1) in face-texture uv, v up
-  /// Eyeball texture in the EyeLayer mapping (see generic_face.hpp).
+  /// Eyeball texture in the EyeLayer mapping (see generic_face.hpp). Empty
+  /// (and the member absent) for a package without an eye layer: its face
+  /// texture keeps the photo's eyes (non-masking mode).
   PackageImage eye;
   /// Mouth interior over the fitted mouth cavity's uv: what the photo shows
   /// between the lips (teeth, if the person smiles with them), darkness beyond.

@@ -27,7 +27,9 @@ struct RendererOptions {
 /// The textures of one face: skin (with alpha holes at the eyes), eyeball and
 /// mouth interior (see model/procedural_texture.hpp for how they map), the
 /// closed-lid skin and the vascular masks (model/vascular_masks.hpp). An
-/// empty closed-lid or mask image turns that effect off.
+/// empty closed-lid or mask image turns that effect off; an empty eye image
+/// is the non-masking mode: the eye holes are filled with the skin texture
+/// (the photo's own eyes) and no eyeball is drawn.
 struct FaceTextures {
   model::RgbaImage skin;
   model::RgbaImage eye;
