@@ -7,6 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "fw/model/expressions.hpp"
+#include "fw/model/face_reconstruction.hpp"
 #include "fw/model/procedural_texture.hpp"
 #include "fw/render/avatar_appearance.hpp"
 #include "fw/render/face_renderer.hpp"
@@ -30,9 +32,10 @@ struct Measured {
   std::exit(2);
 }
 
-// Renders `faces` heads that keep turning (so no frame repeats the last) for
-// about `seconds`, and reports whole frames per second including read-back,
-// which is what a client pays for every frame.
+// Renders `faces` heads that keep turning and changing expression (so no
+// frame repeats the last) for about `seconds`, and reports whole frames per
+// second including each face's reconstruction and the read-back: what a
+// client pays for every frame.
 Measured measure(int width, int height, int faces, const RenderBenchArgs& args, std::string* renderer_name) {
   render::RendererOptions options;
   options.width = width;
@@ -45,11 +48,12 @@ Measured measure(int width, int height, int faces, const RenderBenchArgs& args, 
 
   const model::GenericFace& face = model::generic_face();
   std::vector<render::FaceDraw> draws;
+  std::vector<render::AvatarAppearance> appearances;
   for (int i = 0; i < faces; ++i) {
     model::Appearance look;
     look.skin *= 0.7f + 0.3f * static_cast<float>(i % 3) / 2.0f;
-    const render::AvatarAppearance appearance = render::generic_appearance(look);
-    const auto id = renderer->add_face(face, appearance.textures);
+    appearances.push_back(render::generic_appearance(look));
+    const auto id = renderer->add_face(face, appearances.back().textures);
     draws.push_back({id, glm::mat4(1.0f), {}});
   }
   const auto camera = render::Camera::group(faces, static_cast<float>(width) / static_cast<float>(height));
@@ -61,10 +65,17 @@ Measured measure(int width, int height, int faces, const RenderBenchArgs& args, 
   double elapsed = 0;
   while (elapsed < args.seconds || m.frames < 3) {
     for (int i = 0; i < faces; ++i) {
-      render::HeadPose pose;
-      pose.yaw_rad = 0.4f * std::sin(0.1f * static_cast<float>(m.frames + 7 * i));
-      pose.pitch_rad = 0.1f * std::cos(0.13f * static_cast<float>(m.frames + 3 * i));
-      draws[static_cast<std::size_t>(i)].model = render::head_transform(pose, render::place_in_row(i, faces));
+      const float t = static_cast<float>(m.frames + 7 * i);
+      codec::FaceParams params;
+      model::apply_expression(static_cast<model::Expression>(i % model::kExpressionCount), 0.5f + 0.5f * std::sin(0.05f * t), params);
+      params.head_yaw_rad = 0.4f * std::sin(0.1f * t);
+      params.head_pitch_rad = 0.1f * std::cos(0.13f * t);
+      params.eye_left = params.eye_right = {0.2f * std::sin(0.07f * t), 0.0f};
+      const auto& appearance = appearances[static_cast<std::size_t>(i)];
+      const model::FaceShape shape = model::reconstruct_face(appearance.avatar, params);
+      renderer->set_face_shape(draws[static_cast<std::size_t>(i)].face, shape.positions, shape.uvs);
+      draws[static_cast<std::size_t>(i)] = render::face_draw(draws[static_cast<std::size_t>(i)].face, params,
+                                                             render::place_in_row(i, faces));
     }
     renderer->render(draws, camera);
     ++m.frames;
