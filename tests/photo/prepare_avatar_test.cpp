@@ -230,20 +230,30 @@ TEST_F(PrepareAvatarTest, RefusesAFaceCutOffByTheEdge) {
   }
 }
 
-// A turned head: the astronaut's own avatar, rendered turned 35 degrees.
-cv::Mat render_turned(const model::AvatarPackage& package, float yaw_deg) {
+// A package's avatar in a renderer of its own, ready to draw.
+struct RenderedAvatar {
   render::AvatarAppearance appearance;
-  std::string error;
-  EXPECT_TRUE(render::load_avatar_appearance(package, appearance, error)) << error;
-  render::RendererOptions options;
-  options.width = options.height = 512;
-  options.background = {0.5f, 0.5f, 0.5f};
-  auto renderer = render::FaceRenderer::create(options, error);
-  const render::FaceId id = renderer->add_face(appearance.avatar.face, appearance.textures);
+  std::unique_ptr<render::FaceRenderer> renderer;
+  render::FaceId id = 0;
+
+  RenderedAvatar(const model::AvatarPackage& package, int size, glm::vec3 background) {
+    std::string error;
+    EXPECT_TRUE(render::load_avatar_appearance(package, appearance, error)) << error;
+    render::RendererOptions options;
+    options.width = options.height = size;
+    options.background = background;
+    renderer = render::FaceRenderer::create(options, error);
+    id = renderer->add_face(appearance.avatar.face, appearance.textures);
+  }
+  model::RgbaImage draw(const render::FaceDraw& d) { return renderer->render({&d, 1}, render::Camera::portrait(1.0f)); }
+};
+
+// A turned head: the astronaut's own avatar, rendered turned.
+cv::Mat render_turned(const model::AvatarPackage& package, float yaw_deg) {
+  RenderedAvatar avatar(package, 512, {0.5f, 0.5f, 0.5f});
   render::HeadPose pose;
   pose.yaw_rad = glm::radians(yaw_deg);
-  const render::FaceDraw draw{id, render::head_transform(pose), {}};
-  const model::RgbaImage image = renderer->render({&draw, 1}, render::Camera::portrait(1.0f));
+  const model::RgbaImage image = avatar.draw({avatar.id, render::head_transform(pose), {}});
   cv::Mat bgr;
   cv::cvtColor(cv::Mat(image.height, image.width, CV_8UC4, const_cast<std::uint8_t*>(image.pixels.data())), bgr,
                cv::COLOR_RGBA2BGR);
@@ -312,22 +322,16 @@ TEST_F(PrepareAvatarTest, WithoutAnEyeLayerTheEyesAreThePhotosAndStayPut) {
   std::string parse_error;
   ASSERT_TRUE(model::parse_avatar_package(model::serialize_avatar_package(avatar->package), parsed, parse_error))
       << parse_error;
-  render::AvatarAppearance appearance;
-  ASSERT_TRUE(render::load_avatar_appearance(parsed, appearance, parse_error)) << parse_error;
-  render::RendererOptions ro;
-  ro.width = ro.height = 256;
-  ro.background = {0, 0, 0};
-  auto renderer = render::FaceRenderer::create(ro, parse_error);
-  const render::FaceId id = renderer->add_face(appearance.avatar.face, appearance.textures);
+  RenderedAvatar rendered(parsed, 256, {0, 0, 0});
   const auto draw_looking = [&](float yaw) {
-    render::FaceDraw draw{id, glm::mat4(1.0f), {}};
+    render::FaceDraw draw{rendered.id, glm::mat4(1.0f), {}};
     draw.eye_yaw_pitch_rad = {glm::vec2(yaw, 0.0f), glm::vec2(yaw, 0.0f)};
-    return renderer->render({&draw, 1}, render::Camera::portrait(1.0f));
+    return rendered.draw(draw);
   };
   const model::RgbaImage left = draw_looking(-0.4f), right = draw_looking(0.4f);
   EXPECT_EQ(left.pixels, right.pixels) << "pupils fixed: gaze changes nothing";
   // The eye opening shows the photo (dark iris included), never the black background.
-  const model::EyeLayer& eye = appearance.avatar.face.eyes[1];
+  const model::EyeLayer& eye = rendered.appearance.avatar.face.eyes[1];
   const glm::vec3 px = render::project_to_pixel(render::Camera::portrait(1.0f),
                                                 eye.centre + glm::vec3(0, 0, eye.radius), 256, 256);
   for (int dx = -4; dx <= 4; dx += 2) {
