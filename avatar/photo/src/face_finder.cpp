@@ -34,8 +34,11 @@ constexpr double kMinConfidence = 0.2;
 // landmarks no longer depend on how the detector happened to frame the face.
 constexpr double kBoxWidthIod = 2.05;
 constexpr double kBoxCentreBelowEyesIod = 0.52;
-// The second pass sees the face upright with this many pixels between the eyes.
-constexpr double kUprightIodPx = 100.0;
+// The second pass sees the face upright at its full resolution, enlarged to
+// at least kMinUprightIodPx between the eyes when smaller (landmarks are
+// whole pixels), and reduced to kMaxUprightIodPx when larger (more detail
+// does not help the predictor, and the patch grows with its square).
+constexpr double kMinUprightIodPx = 100.0, kMaxUprightIodPx = 400.0;
 
 }  // namespace
 
@@ -135,12 +138,13 @@ PhotoLandmarks FaceFinder::landmarks(const cv::Mat& gray, const cv::Rect& box) c
   const glm::vec2 eyes = 0.5f * (left + right);
   const double iod = std::max(1.0, static_cast<double>(glm::length(left - right)));
   const double angle = std::atan2(static_cast<double>(left.y - right.y), static_cast<double>(left.x - right.x));
-  const double s = kUprightIodPx / iod, c = std::cos(-angle) * s, n = std::sin(-angle) * s;
-  const cv::Size size(static_cast<int>(4 * kUprightIodPx), static_cast<int>(4 * kUprightIodPx));
+  const double upright_iod = std::clamp(iod, kMinUprightIodPx, kMaxUprightIodPx);
+  const double s = upright_iod / iod, c = std::cos(-angle) * s, n = std::sin(-angle) * s;
+  const cv::Size size(static_cast<int>(4 * upright_iod), static_cast<int>(4 * upright_iod));
   const cv::Point2d centre(size.width / 2.0, size.height * 0.4);  // eyes a little above the middle
   const cv::Matx23d upright(c, -n, centre.x - (c * eyes.x - n * eyes.y), n, c, centre.y - (n * eyes.x + c * eyes.y));
-  const double width = kBoxWidthIod * kUprightIodPx;
-  const cv::Rect2d canonical(centre.x - width / 2, centre.y + kBoxCentreBelowEyesIod * kUprightIodPx - width / 2, width, width);
+  const double width = kBoxWidthIod * upright_iod;
+  const cv::Rect2d canonical(centre.x - width / 2, centre.y + kBoxCentreBelowEyesIod * upright_iod - width / 2, width, width);
   return predict(gray, upright, size, canonical);
 }
 
