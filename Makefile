@@ -29,6 +29,7 @@ test-asan: deps
 
 bench: build
 	./build/bin/facewire-bench render --json
+	./build/bin/facewire-bench prep --json
 
 # Regenerates the generic face asset after a change to the generator.
 facegen: build
