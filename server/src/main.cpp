@@ -6,6 +6,7 @@
 
 #include "fw/photo/photo_limits.hpp"
 #include "prep_command.hpp"
+#include "script_command.hpp"
 #include "serve_command.hpp"
 
 int main(int argc, char** argv) {
@@ -13,6 +14,7 @@ int main(int argc, char** argv) {
   CLI::App app{"facewire server: hosts the avatars' faces and streams them to clients"};
   fw::server::add_serve_command(app);
   fw::server::add_prep_command(app);
+  fw::server::add_script_command(app);
 
   struct Unbuilt {
     const char* name;
@@ -20,8 +22,7 @@ int main(int argc, char** argv) {
     const char* arrives_with;
   };
   const Unbuilt unbuilt[] = {
-      {"token", "Mint a join token", "the room server"},
-      {"script", "Parse a file of face-script sentences", "face scripts"}};
+      {"token", "Mint a join token", "the room server"}};
   for (const auto& [name, what, arrives_with] : unbuilt) {
     CLI::App* cmd = app.add_subcommand(name, std::string(what) + " (not yet built)");
     cmd->allow_extras();

@@ -116,7 +116,7 @@ TEST(ServerCli, PortInUseIsExplained) {
 }
 
 TEST(ServerCli, UnbuiltSubcommandsSaySo) {
-  for (const char* name : {"token", "script"}) {
+  for (const char* name : {"token"}) {
     const auto result = test::run_command(test::bin("facewire-server") + " " + name);
     EXPECT_EQ(result.status, 3) << name;
     EXPECT_NE(result.output.find("not yet built"), std::string::npos) << result.output;
