@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iostream>
 #include <numbers>
+#include <optional>
 
 #include "face_options.hpp"
 #include "fw/model/avatar_package.hpp"
@@ -24,6 +25,7 @@ struct RenderArgs {
   std::string size = "512x512";
   std::vector<std::string> emotions, action_units, blush;
   std::string gaze, head, lids;
+  std::optional<double> yaw_deg, pitch_deg, roll_deg;
   double pallor = 0;
   bool sheet = false;
   int samples = 4;
@@ -87,6 +89,9 @@ codec::FaceParams face_params(const RenderArgs& args) {
     params.head_pitch_rad = radians(h[1]);
     params.head_roll_rad = radians(h[2]);
   }
+  if (args.yaw_deg) params.head_yaw_rad = radians(*args.yaw_deg);
+  if (args.pitch_deg) params.head_pitch_rad = radians(*args.pitch_deg);
+  if (args.roll_deg) params.head_roll_rad = radians(*args.roll_deg);
   if (std::array<double, 2> l{}; read_tuple(args.lids, "--lids", l, 1.0)) {
     if (l[0] < 0 || l[1] < 0) fail(2, "--lids: closures run from 0 (open) to 1 (closed)");
     params.lid_left = static_cast<float>(l[0]);
@@ -140,7 +145,11 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--au", args->action_units, "N=V: a FACS action unit (1 2 4 5 6 7 9 10 12 14 15 17 20 23 24 25 26 27), "
                                               "N with L or R for one side, V 0..1");
   cmd->add_option("--gaze", args->gaze, "YAW,PITCH of both eyes in degrees; + looks to the face's left and up");
-  cmd->add_option("--head", args->head, "YAW,PITCH,ROLL in degrees; + turns to the face's left, looks up, tilts to its left");
+  auto* head = cmd->add_option("--head", args->head,
+                               "YAW,PITCH,ROLL in degrees; + turns to the face's left, looks up, tilts to its left");
+  cmd->add_option("--yaw", args->yaw_deg, "head yaw alone, degrees")->check(CLI::Range(-70.0, 70.0))->excludes(head);
+  cmd->add_option("--pitch", args->pitch_deg, "head pitch alone, degrees")->check(CLI::Range(-45.0, 45.0))->excludes(head);
+  cmd->add_option("--roll", args->roll_deg, "head roll alone, degrees")->check(CLI::Range(-35.0, 35.0))->excludes(head);
   cmd->add_option("--lids", args->lids, "L,R lid closure of the face's left and right eye, 0 open .. 1 closed");
   cmd->add_option("--blush", args->blush, "REGION=V: forehead, cheek_left, cheek_right, cheeks, nose, sides; V 0..1");
   cmd->add_option("--pallor", args->pallor, "whole-face pallor 0..1")->check(CLI::Range(0.0, 1.0));

@@ -57,6 +57,16 @@ TEST(RenderCommand, BadFaceParametersAreExplained) {
   expect_refused("render --generic -o /tmp/x.png --au 26L=0.5", 2, "acts on the midline");
   expect_refused("render --generic -o /tmp/x.png --blush ears=0.5", 2, "unknown region 'ears'");
   expect_refused("render --generic -o /tmp/x.png --lids -1,0", 2, "--lids");
+  const auto result = run_command(bin("facewire-client") + " render --generic -o /tmp/x.png --yaw 400");
+  EXPECT_NE(result.status, 0);
+  EXPECT_NE(result.output.find("--yaw"), std::string::npos) << result.output;
+}
+
+TEST(RenderCommand, TurnsTheHeadWithSingleAngles) {
+  const auto out = temp("facewire_client_yaw.png");
+  const auto result = run_command(bin("facewire-client") + " render --generic --yaw 30 --pitch -10 --roll 5 --size 64x64 -o " + out.string());
+  EXPECT_EQ(result.status, 0) << result.output;
+  std::filesystem::remove(out);
 }
 
 TEST(RenderCommand, ContactSheetHasEveryPanel) {
