@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include "fw/photo/photo_limits.hpp"
+#include "codec_bench.hpp"
 #include "prep_bench.hpp"
 #include "render_bench.hpp"
 
@@ -14,8 +15,9 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   fw::bench::add_render_bench(app);
   fw::bench::add_prep_bench(app);
+  fw::bench::add_codec_bench(app);
   const std::pair<const char*, const char*> unbuilt[] = {
-      {"codec", "the codec"}, {"sim", "the physics face"}, {"fanout", "the room server"}};
+      {"sim", "the physics face"}, {"fanout", "the room server"}};
   for (const auto& [name, what] : unbuilt) {
     CLI::App* cmd = app.add_subcommand(name, std::string("Benchmark of ") + what + " (not yet built)");
     cmd->allow_extras();

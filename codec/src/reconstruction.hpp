@@ -1,0 +1,54 @@
+#pragma once
+// The face as the decoder knows it between frames (FORMAT.md, "Prediction"):
+// per channel a value in sub-steps, a velocity in sub-steps per tick and the
+// ticks since its last update. The encoder keeps an identical copy, so every
+// residual it sends is against what the viewer sees and errors never
+// accumulate.
+#include <array>
+#include <cstdint>
+
+#include "channel_table.hpp"
+#include "fw/codec/codec.hpp"
+
+namespace fw::codec {
+
+class Reconstruction {
+ public:
+  explicit Reconstruction(std::uint8_t max_extrapolation_ticks = 32) : max_extrapolation_ticks_(max_extrapolation_ticks) {}
+
+  /// Every channel at rest (0), still.
+  void reset();
+  /// Moves time forward by `ticks` (ages saturate at the extrapolation limit).
+  void advance(std::uint32_t ticks);
+  /// Channel `c` as coded, now, in grid steps: its value moved by its
+  /// (damped) velocity for min(age, limit) ticks, clamped to the channel's
+  /// coded range, rounded to the nearest step.
+  std::int32_t shown(std::size_t c) const { return shown_after(c, 0); }
+  /// The same, `extra_ticks` from now without further updates.
+  std::int32_t shown_after(std::size_t c, std::uint32_t extra_ticks) const;
+  ChannelValues shown_all(std::uint32_t extra_ticks = 0) const;
+
+  /// Channel `c` becomes `q` (grid steps, in its coded range) moving at
+  /// `velocity_sub_steps` per tick with damping class `damping`, from now.
+  void set(std::size_t c, std::int32_t q, std::int32_t velocity_sub_steps, int damping = 0);
+  std::int32_t velocity(std::size_t c) const { return channels_[c].velocity; }
+  int damping(std::size_t c) const { return channels_[c].damping; }
+  /// Ticks since channel `c` was last set.
+  std::uint32_t age(std::size_t c) const { return channels_[c].age; }
+  std::uint8_t max_extrapolation_ticks() const { return max_extrapolation_ticks_; }
+  /// Every channel stops where it is shown now (after a lost frame: the face
+  /// holds still instead of moving on a velocity that may have changed).
+  void freeze();
+
+ private:
+  struct Channel {
+    std::int32_t value = 0;     ///< sub-steps
+    std::int32_t velocity = 0;  ///< sub-steps per tick, at the last update
+    std::uint8_t damping = 0;   ///< damping class, 0 .. kDampingClasses-1
+    std::uint32_t age = 0;      ///< ticks since the last update, saturating
+  };
+  std::array<Channel, kChannelCount> channels_{};
+  std::uint8_t max_extrapolation_ticks_;
+};
+
+}  // namespace fw::codec

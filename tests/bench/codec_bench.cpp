@@ -1,0 +1,250 @@
+#include "codec_bench.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "codec_run.hpp"
+#include "fw/codec/codec.hpp"
+#include "synthetic_scene.hpp"
+
+namespace fw::bench {
+namespace {
+
+struct CodecBenchArgs {
+  bool json = false;
+  std::vector<std::string> scene_files;
+  double target_bps = 500;
+  std::uint64_t seed = 1;
+  std::string write_scene_path;
+};
+
+// The reference points the issue compares against.
+constexpr double kPaperBytesPerFrame = 8600;  // behavioral-animation paper, per face per frame
+constexpr double kGoalBps = 500, kGoalGazeDeg = 0.5, kGoalIdleBps = 50;
+
+double round_to(double v, double unit) { return std::round(v / unit) * unit; }
+
+double percentile(std::vector<double> values, double p) {
+  if (values.empty()) return 0;
+  std::sort(values.begin(), values.end());
+  const auto rank = static_cast<std::size_t>(std::ceil(p * static_cast<double>(values.size())));
+  return values[std::min(values.size() - 1, rank == 0 ? 0 : rank - 1)];
+}
+
+struct Rates {
+  double mean = 0;          // bits per second, mean over the avatars
+  double p99 = 0;           // 99th percentile of any avatar's bits in any 1-second window
+  double bits_per_tick = 0;
+  double bits_per_frame = 0;  // per frame that went out
+  double frames_per_second = 0;
+  std::size_t avatars = 0;
+};
+
+Rates rates(const CodecRun& run, bool idle) {
+  Rates r;
+  std::vector<double> windows;
+  double total_bits = 0, ticks = 0, frames = 0;
+  for (const AvatarRun& a : run.avatars) {
+    if (a.idle != idle) continue;
+    ++r.avatars;
+    const double bits = std::accumulate(a.bits_per_tick.begin(), a.bits_per_tick.end(), 0.0);
+    total_bits += bits;
+    ticks += static_cast<double>(a.bits_per_tick.size());
+    frames += static_cast<double>(a.frames);
+    const auto w = static_cast<std::size_t>(run.fps);
+    double sum = 0;
+    for (std::size_t t = 0; t < a.bits_per_tick.size(); ++t) {
+      sum += a.bits_per_tick[t];
+      if (t >= w) sum -= a.bits_per_tick[t - w];
+      if (t + 1 >= w) windows.push_back(sum);
+    }
+  }
+  if (r.avatars == 0 || ticks == 0) return r;
+  r.mean = total_bits / ticks * run.fps;
+  r.p99 = percentile(windows, 0.99);
+  r.bits_per_tick = total_bits / ticks;
+  r.bits_per_frame = frames > 0 ? total_bits / frames : 0;
+  r.frames_per_second = frames / ticks * run.fps;
+  return r;
+}
+
+nlohmann::json scene_entry(const Scene& scene, const CodecBenchArgs& args) {
+  CodecRunOptions options;
+  options.target_bps_per_avatar = args.target_bps;
+  const CodecRun run = run_codec(scene, options);
+  const Rates active = rates(run, false);
+  const Rates idle = rates(run, true);
+  std::uint64_t keys = 0;
+  for (const AvatarRun& a : run.avatars) keys += a.key_frames;
+  nlohmann::json entry = {
+      {"name", scene.name},
+      {"avatars", scene.avatars.size()},
+      {"active_avatars", active.avatars},
+      {"idle_avatars", idle.avatars},
+      {"seconds", round_to(static_cast<double>(scene.tick_count()) / scene.fps, 0.01)},
+      {"fps", scene.fps},
+      {"target_bps_per_avatar", args.target_bps},
+      {"bps_mean_per_avatar", round_to(active.mean, 0.1)},
+      {"bps_p99_per_avatar", round_to(active.p99, 0.1)},
+      {"bits_per_frame_mean", round_to(active.bits_per_tick, 0.01)},
+      {"bits_per_sent_frame_mean", round_to(active.bits_per_frame, 0.1)},
+      {"frames_sent_per_second", round_to(active.frames_per_second, 0.01)},
+      {"key_frames", keys},
+      {"room_frames", run.room_frames},
+      {"room_bytes", run.room_bytes},
+      {"gaze_max_deg", round_to(run.gaze_max_deg, 0.001)},
+      {"eye_in_head_max_deg", round_to(run.eye_in_head_max_deg, 0.001)},
+      {"head_rotation_max_deg", round_to(run.head_rotation_max_deg, 0.001)},
+      {"head_translation_max_mm", round_to(run.head_translation_max_mm, 0.001)},
+      {"au_max_error", round_to(run.au_max_error, 0.0001)},
+      {"au_rms_error", round_to(run.au_rms_error, 0.0001)},
+      {"lid_max_error", round_to(run.lid_max_error, 0.0001)},
+      {"colour_max_error", round_to(run.colour_max_error, 0.0001)},
+      {"decode_mismatches", run.decode_errors},
+  };
+  if (idle.avatars > 0) {
+    entry["idle_bps_mean"] = round_to(idle.mean, 0.1);
+    entry["idle_bps_p99"] = round_to(idle.p99, 0.1);
+  }
+  entry["goal"] = {{"bps_mean_max", kGoalBps},
+                   {"gaze_max_deg", kGoalGazeDeg},
+                   {"idle_bps_max", kGoalIdleBps},
+                   {"bps_met", active.mean <= kGoalBps},
+                   {"gaze_met", run.gaze_max_deg <= kGoalGazeDeg}};
+  if (idle.avatars > 0) entry["goal"]["idle_met"] = idle.mean < kGoalIdleBps;
+
+  // The same scene over an unreliable transport: sequence numbers, periodic
+  // key frames and heartbeats cost extra.
+  options.loss_tolerant = true;
+  const CodecRun lossy = run_codec(scene, options);
+  const Rates lossy_active = rates(lossy, false);
+  const Rates lossy_idle = rates(lossy, true);
+  std::uint64_t lossy_keys = 0;
+  for (const AvatarRun& a : lossy.avatars) lossy_keys += a.key_frames;
+  entry["loss_tolerant"] = {{"bps_mean_per_avatar", round_to(lossy_active.mean, 0.1)},
+                            {"bps_p99_per_avatar", round_to(lossy_active.p99, 0.1)},
+                            {"gaze_max_deg", round_to(lossy.gaze_max_deg, 0.001)},
+                            {"au_max_error", round_to(lossy.au_max_error, 0.0001)},
+                            {"key_frames", lossy_keys},
+                            {"decode_mismatches", lossy.decode_errors}};
+  if (lossy_idle.avatars > 0) entry["loss_tolerant"]["idle_bps_mean"] = round_to(lossy_idle.mean, 0.1);
+  return entry;
+}
+
+nlohmann::json rd_row(const CodecRun& run) {
+  const Rates active = rates(run, false);
+  const Rates idle = rates(run, true);
+  nlohmann::json row = {{"bps_mean_per_avatar", round_to(active.mean, 0.1)},
+                    {"bps_p99_per_avatar", round_to(active.p99, 0.1)},
+                    {"frames_sent_per_second", round_to(active.frames_per_second, 0.01)},
+                    {"gaze_max_deg", round_to(run.gaze_max_deg, 0.001)},
+                    {"head_rotation_max_deg", round_to(run.head_rotation_max_deg, 0.001)},
+                    {"au_max_error", round_to(run.au_max_error, 0.0001)},
+                    {"au_rms_error", round_to(run.au_rms_error, 0.0001)},
+                    {"lid_max_error", round_to(run.lid_max_error, 0.0001)}};
+  if (idle.avatars > 0) row["idle_bps_mean"] = round_to(idle.mean, 0.1);
+  return row;
+}
+
+// Rows over budgets (the rate control at work, levels 3-7 by default), and
+// over fixed quality levels with no budget (what each level costs and gives).
+nlohmann::json rd_table(const Scene& scene) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (const double target : {150.0, 250.0, 350.0, 500.0, 750.0, 1000.0, 2000.0}) {
+    CodecRunOptions options;
+    options.target_bps_per_avatar = target;
+    nlohmann::json row = rd_row(run_codec(scene, options));
+    row["target_bps"] = target;
+    rows.push_back(row);
+  }
+  nlohmann::json levels = nlohmann::json::array();
+  for (int level = 0; level <= codec::kMaxQualityLevel; ++level) {
+    CodecRunOptions options;
+    options.target_bps_per_avatar = 1.0e6;
+    options.min_level = options.max_level = level;
+    nlohmann::json row = rd_row(run_codec(scene, options));
+    row["level"] = level;
+    row["tolerance_factor"] = codec::kLevelFactor[static_cast<std::size_t>(level)];
+    levels.push_back(row);
+  }
+  return {{"scene", scene.name}, {"rows", rows}, {"fixed_levels", levels}};
+}
+
+[[noreturn]] void fail(const std::string& message) {
+  std::cerr << "facewire-bench codec: " << message << "\n";
+  std::exit(2);
+}
+
+void run(const CodecBenchArgs& args) {
+  std::vector<Scene> scenes;
+  if (args.scene_files.empty()) {
+    SyntheticSceneOptions options;
+    options.seed = args.seed;
+    scenes.push_back(make_synthetic_scene(options));
+    if (!args.write_scene_path.empty()) {
+      std::string error;
+      if (!write_scene(scenes.back(), args.write_scene_path, error)) fail(error);
+    }
+  }
+  for (const std::string& path : args.scene_files) {
+    Scene scene;
+    std::string error;
+    if (!read_scene(path, scene, error)) fail(error);
+    scenes.push_back(std::move(scene));
+  }
+  const int fps = scenes.front().fps;
+  nlohmann::json out = {
+      {"benchmark", "codec"},
+      {"format_version", codec::kFormatVersion},
+      {"schema", codec::kFaceParamsSchema},
+      {"channels", codec::kChannelCount},
+      {"stream_header_bytes", codec::write_stream_header({}).size()},
+      {"target_bps_per_avatar", args.target_bps},
+      {"raw_float32_bps_per_avatar", static_cast<double>(codec::kChannelCount) * 32.0 * fps},
+      {"paper_bps_per_avatar", kPaperBytesPerFrame * 8.0 * fps},
+      {"scenes", nlohmann::json::array()},
+  };
+  for (const Scene& scene : scenes) out["scenes"].push_back(scene_entry(scene, args));
+  out["rd_table"] = rd_table(scenes.front());
+  for (const auto& entry : out["scenes"])
+    if (entry["decode_mismatches"].get<std::uint64_t>() != 0 ||
+        entry["loss_tolerant"]["decode_mismatches"].get<std::uint64_t>() != 0)
+      fail("the decoder disagreed with the encoder's reconstruction on scene " + entry["name"].get<std::string>());
+  if (args.json) {
+    std::cout << out.dump() << "\n";
+    return;
+  }
+  for (const auto& e : out["scenes"]) {
+    std::cout << e["name"].get<std::string>() << ": " << e["bps_mean_per_avatar"] << " bit/s mean per active avatar (p99 "
+              << e["bps_p99_per_avatar"] << "), gaze max " << e["gaze_max_deg"] << " deg";
+    if (e.contains("idle_bps_mean")) std::cout << ", idle " << e["idle_bps_mean"] << " bit/s";
+    std::cout << "\n";
+  }
+  std::cout << "raw float32: " << out["raw_float32_bps_per_avatar"] << " bit/s; paper: " << out["paper_bps_per_avatar"]
+            << " bit/s\n";
+}
+
+}  // namespace
+
+void add_codec_bench(CLI::App& app) {
+  auto args = std::make_shared<CodecBenchArgs>();
+  CLI::App* cmd = app.add_subcommand("codec", "Bit rate and distortion of the FaceParams codec");
+  cmd->add_flag("--json", args->json, "print one JSON object");
+  cmd->add_option("--scene", args->scene_files, "scene file(s) (.fwscene) instead of the synthetic scene")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--target-bps", args->target_bps, "bit budget per avatar")
+      ->check(CLI::Range(50.0, 1.0e6))
+      ->capture_default_str();
+  cmd->add_option("--seed", args->seed, "seed of the synthetic scene")->capture_default_str();
+  cmd->add_option("--write-scene", args->write_scene_path, "also write the synthetic scene to this file");
+  cmd->callback([args] { run(*args); });
+}
+
+}  // namespace fw::bench

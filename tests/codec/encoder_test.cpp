@@ -1,0 +1,206 @@
+#include "fw/codec/codec.hpp"
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "synthetic_scene.hpp"
+#include "test_seed.hpp"
+
+namespace fw::codec {
+namespace {
+
+FaceParams random_face(std::mt19937_64& rng) {
+  FaceParams p;
+  for (std::size_t c = 0; c < kChannelCount; ++c) {
+    const ChannelInfo& info = channel_table()[c];
+    std::uniform_real_distribution<float> d(static_cast<float>(info.min_q) * info.step, static_cast<float>(info.max_q) * info.step);
+    set_channel_value(p, c, d(rng));
+  }
+  return p;
+}
+
+const bench::Scene& scene() {
+  static const bench::Scene s = [] {
+    bench::SyntheticSceneOptions o;
+    o.seed = 3;
+    o.active_avatars = 2;
+    o.idle_avatars = 1;
+    o.seconds = 20;
+    return bench::make_synthetic_scene(o);
+  }();
+  return s;
+}
+
+TEST(Encoder, RoundTripsSeededRandomFacesThroughTheDecoder) {
+  const std::uint64_t seed = test::seed("Encoder.RoundTripsSeededRandomFaces");
+  std::mt19937_64 rng(seed);
+  for (const bool loss_tolerant : {false, true}) {
+    EncoderOptions o;
+    o.target_bps = 1e7;  // room for everything
+    o.min_level = 0;
+    o.max_level = 0;
+    o.stream.loss_tolerant = loss_tolerant;
+    Encoder encoder(o);
+    Decoder decoder(o.stream);
+    std::vector<std::uint8_t> frame;
+    for (int t = 0; t < 300; ++t) {
+      const FaceParams face = random_face(rng);
+      ASSERT_TRUE(encoder.encode(face, frame)) << "every channel jumped: a frame every tick";
+      ASSERT_EQ(decoder.decode(frame), DecodeError::ok) << "tick " << t << " seed " << seed;
+      ASSERT_EQ(decoder.quantised(), encoder.reconstruction()) << "tick " << t << " seed " << seed;
+      // Level 0 updates every channel that moved by more than a quarter of
+      // its visible error, to within half a grid step (the eyes through the
+      // head: one step of each).
+      const QuantisedParams exact = quantise(face);
+      const QuantisedParams shown = decoder.quantised();
+      const auto visible = default_visible_error();
+      for (std::size_t c = 0; c < kChannelCount; ++c) {
+        const double allowed = kLevelFactor[0] * visible[c] / channel_table()[c].step + 2;
+        ASSERT_LE(std::abs(shown[c] - exact[c]), allowed) << channel_table()[c].name << " tick " << t << " seed " << seed;
+      }
+    }
+  }
+}
+
+TEST(Encoder, SendsAKeyFrameFirstThenPredictedFramesAndKeysOnDemand) {
+  EncoderOptions o;
+  o.target_bps = 5000;
+  Encoder encoder(o);
+  std::vector<std::uint8_t> frame;
+  const auto& ticks = scene().avatars[0].ticks;
+  ASSERT_TRUE(encoder.encode(ticks[0], frame));
+  EXPECT_EQ(frame[0], 0x11);
+  EXPECT_EQ(encoder.stats().last_type, FrameType::key);
+  int predicted = 0;
+  for (std::size_t t = 1; t < 60; ++t)
+    if (encoder.encode(ticks[t], frame)) {
+      EXPECT_EQ(frame[0], 0x12);
+      ++predicted;
+    }
+  EXPECT_GT(predicted, 3);
+  encoder.force_key_frame();
+  ASSERT_TRUE(encoder.encode(ticks[60], frame)) << "a forced key frame goes out even when nothing changed";
+  EXPECT_EQ(frame[0], 0x11);
+  EXPECT_EQ(encoder.stats().key_interval_ticks, 0) << "reliable streams send keys on demand only";
+}
+
+TEST(Encoder, AStillFaceCostsNothingAfterItsKeyFrameOverAReliableTransport) {
+  Encoder encoder({});
+  std::vector<std::uint8_t> frame;
+  FaceParams face;
+  face.set_au(12, 0.4f);
+  int frames = 0;
+  for (int t = 0; t < 900; ++t) frames += encoder.encode(face, frame) ? 1 : 0;
+  EXPECT_EQ(frames, 1);
+  EXPECT_EQ(encoder.stats().tick, 899u);
+}
+
+TEST(Encoder, LossTolerantStreamsSendHeartbeatsAndPeriodicKeyFrames) {
+  EncoderOptions o;
+  o.stream.loss_tolerant = true;
+  o.stream.max_extrapolation_ticks = 15;
+  o.heartbeat_ticks = 10;
+  o.max_key_interval_ticks = 90;
+  Encoder encoder(o);
+  std::vector<std::uint8_t> frame;
+  FaceParams face;
+  std::vector<int> sent, keys;
+  for (int t = 0; t < 300; ++t) {
+    if (encoder.encode(face, frame)) {
+      sent.push_back(t);
+      if (frame[0] == 0x11) keys.push_back(t);
+      EXPECT_EQ(frame[1], static_cast<std::uint8_t>(sent.size() - 1)) << "sequence numbers count frames";
+    }
+  }
+  for (std::size_t i = 1; i < sent.size(); ++i) EXPECT_LE(sent[i] - sent[i - 1], 10);
+  ASSERT_GE(keys.size(), 4u);
+  for (std::size_t i = 1; i < keys.size(); ++i) EXPECT_LE(keys[i] - keys[i - 1], 90);
+}
+
+// The bits sent in every window of `seconds` stay within the budget plus
+// the bucket's burst reserve.
+void expect_within_budget(const std::vector<double>& bits_per_tick, std::size_t from, std::size_t to, double bps) {
+  const double window_s = 10;
+  const auto w = static_cast<std::size_t>(window_s * 30);
+  for (std::size_t start = from; start + w <= to; start += 30) {
+    double sum = 0;
+    for (std::size_t t = start; t < start + w; ++t) sum += bits_per_tick[t];
+    EXPECT_LE(sum, bps * window_s + 4.5 * bps) << "window at tick " << start << " over " << bps << " bit/s";
+  }
+}
+
+TEST(Encoder, StaysUnderABudgetThatChangesMidStream) {
+  EncoderOptions o;
+  o.target_bps = 1200;
+  Encoder encoder(o);
+  Decoder decoder;
+  std::vector<std::uint8_t> frame;
+  std::vector<double> bits;
+  const auto& ticks = scene().avatars[1].ticks;
+  std::uint32_t since = 0;
+  for (std::size_t t = 0; t < ticks.size(); ++t) {
+    if (t == 300) encoder.set_target_bps(300);
+    const bool sent = encoder.encode(ticks[t], frame);
+    bits.push_back(sent ? 8.0 * static_cast<double>(frame.size()) : 0.0);
+    if (sent) {
+      ASSERT_EQ(decoder.decode(frame), DecodeError::ok);
+      since = 0;
+    } else {
+      ++since;
+    }
+    ASSERT_EQ(decoder.quantised(since), encoder.reconstruction()) << "tick " << t;
+  }
+  expect_within_budget(bits, 0, 300, 1200);
+  expect_within_budget(bits, 300, bits.size(), 300);
+  EXPECT_GT(encoder.stats().level, 3) << "a fifth of the budget: coarser";
+}
+
+TEST(Encoder, KeepsEveryChannelWithinWhatAViewerSeesWhenTheBudgetAllows) {
+  EncoderOptions o;
+  o.target_bps = 20000;
+  o.min_level = o.max_level = 3;
+  const auto visible = default_visible_error();
+  for (const auto& avatar : scene().avatars) {
+    Encoder encoder(o);
+    std::vector<std::uint8_t> frame;
+    double worst_gaze = 0;
+    for (const FaceParams& face : avatar.ticks) {
+      encoder.encode(face, frame);
+      const FaceParams shown = dequantise(encoder.reconstruction());
+      for (std::size_t c = 0; c < kChannelCount; ++c) {
+        if (channel_table()[c].group == ChannelGroup::eyes) continue;
+        ASSERT_LE(std::abs(channel_value(shown, c) - channel_value(face, c)), visible[c] * 1.001f)
+            << channel_table()[c].name << " of " << avatar.name;
+      }
+      worst_gaze = std::max({worst_gaze,
+                             static_cast<double>(std::hypot(shown.eye_left.yaw_rad + shown.head_yaw_rad - face.eye_left.yaw_rad - face.head_yaw_rad,
+                                        shown.eye_left.pitch_rad + shown.head_pitch_rad - face.eye_left.pitch_rad - face.head_pitch_rad)),
+                             static_cast<double>(std::hypot(shown.eye_right.yaw_rad + shown.head_yaw_rad - face.eye_right.yaw_rad - face.head_yaw_rad,
+                                        shown.eye_right.pitch_rad + shown.head_pitch_rad - face.eye_right.pitch_rad - face.head_pitch_rad))});
+    }
+    EXPECT_LE(worst_gaze, visible[35] * 1.001) << avatar.name;
+  }
+}
+
+TEST(Encoder, NeverWritesAFrameOverTheLimitAndSurvivesNonsenseInput) {
+  Encoder encoder({});
+  Decoder decoder;
+  std::vector<std::uint8_t> frame;
+  FaceParams wild;
+  for (float& a : wild.au) a = std::numeric_limits<float>::quiet_NaN();
+  wild.head_yaw_rad = 1e30f;
+  wild.eye_left.yaw_rad = -std::numeric_limits<float>::infinity();
+  for (int t = 0; t < 10; ++t)
+    if (encoder.encode(wild, frame)) {
+      ASSERT_LE(frame.size(), kMaxFrameBytes);
+      ASSERT_EQ(decoder.decode(frame), DecodeError::ok);
+    }
+  EXPECT_EQ(decoder.quantised()[29], 1376);
+  EXPECT_EQ(decoder.quantised()[0], 0) << "NaN is the rest pose";
+}
+
+}  // namespace
+}  // namespace fw::codec
