@@ -1,0 +1,104 @@
+#pragma once
+// A room's avatars simulated together, without any network: behavior
+// (perception of the others, action selection, emotion, eye-head control,
+// vascular episodes) sets each avatar's targets, the physics face turns the
+// action-unit targets into a simulated surface, and the measured surface plus
+// gaze, head, lids and colour make one FaceParams per avatar per tick.
+//
+// The room server runs one per room on its worker pool; `facewire-server
+// simulate` runs one to record scenes. Not thread-safe: one caller at a time
+// (the room's strand).
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "fw/codec/face_params.hpp"
+
+namespace fw::server {
+
+using AvatarId = std::uint32_t;
+
+struct RoomSimulationOptions {
+  std::uint64_t seed = 1;    ///< same seed and inputs, same faces
+  int tick_hz = 30;          ///< ticks per simulated second
+  bool physics = true;       ///< drive the AUs through the physics face
+  bool physics_sleeps = true;  ///< a face at rest stops stepping until a target changes
+};
+
+struct AvatarSetup {
+  std::string name;
+  /// Nobody is at the keyboard: the behavior repertoire runs unattended.
+  /// A person's avatar is autonomous too, but the person's commands win.
+  bool person = true;
+};
+
+/// A person's commands to their own avatar (they override autonomy for their
+/// duration).
+struct ExpressCommand {
+  std::string emotion;      ///< joy, sadness, anger, fear, surprise, disgust, neutral
+  float intensity = 1;      ///< 0 .. 1
+  double seconds = 3;       ///< how long the expression is held
+};
+struct LookAtCommand {
+  AvatarId target = 0;
+  double seconds = 5;
+};
+struct SnubCommand {
+  AvatarId target = 0;
+  double seconds = 10;
+};
+struct FacsCommand {
+  std::string sentence;     ///< a FACS expression sentence (face scripts)
+};
+using AvatarCommand = std::variant<ExpressCommand, LookAtCommand, SnubCommand, FacsCommand>;
+
+/// Something that happened in the room at a tick (recorded in scenes,
+/// logged by the server).
+struct RoomEvent {
+  std::uint32_t tick = 0;
+  AvatarId avatar = 0;
+  std::string what;         ///< e.g. "behavior attentive -> mimicking", "blush start", "chat"
+};
+
+class RoomSimulation {
+ public:
+  explicit RoomSimulation(const RoomSimulationOptions& options);
+  ~RoomSimulation();
+  RoomSimulation(RoomSimulation&&) noexcept;
+  RoomSimulation& operator=(RoomSimulation&&) noexcept;
+
+  /// Seats a new avatar (the first one leads, as in the paper's experiment).
+  AvatarId add_avatar(const AvatarSetup& setup);
+  void remove_avatar(AvatarId avatar);
+  std::vector<AvatarId> avatars() const;
+
+  /// A person's command; an empty string when accepted, else why not (an
+  /// unknown emotion, a target not in the room, a FACS sentence that does
+  /// not parse: the message says what was wrong).
+  std::string command(AvatarId avatar, const AvatarCommand& command);
+  /// A chat line from `avatar`: the others look at the writer, the text
+  /// nudges the writer's emotion.
+  void chat(AvatarId avatar, std::string_view text);
+
+  /// Advances every avatar by one tick.
+  void tick();
+  std::uint32_t tick_index() const;
+
+  /// The avatar's face after the last tick.
+  const codec::FaceParams& face(AvatarId avatar) const;
+  /// Whether the avatar's physics face sleeps (at rest, costs nothing).
+  bool resting(AvatarId avatar) const;
+
+  /// Events since the last call (moved out).
+  std::vector<RoomEvent> take_events();
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace fw::server
