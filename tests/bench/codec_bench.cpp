@@ -12,7 +12,9 @@
 
 #include "codec_run.hpp"
 #include "fw/codec/codec.hpp"
+#include "photo_variants.hpp"
 #include "synthetic_scene.hpp"
+#include "x264_comparison.hpp"
 
 namespace fw::bench {
 namespace {
@@ -22,12 +24,15 @@ struct CodecBenchArgs {
   std::vector<std::string> scene_files;
   double target_bps = 500;
   std::uint64_t seed = 1;
+  double seconds = 60;       // of the synthetic scene
   std::string write_scene_path;
+  bool video = true;         // the x264 comparison (renders and codes video: about a minute)
+  std::string photo;         // the portrait of the rendered avatar
 };
 
 // The reference points the issue compares against.
 constexpr double kPaperBytesPerFrame = 8600;  // behavioral-animation paper, per face per frame
-constexpr double kGoalBps = 500, kGoalGazeDeg = 0.5, kGoalIdleBps = 50;
+constexpr double kGoalBps = 500, kGoalGazeDeg = 0.5, kGoalIdleBps = 50, kGoalRmsMm = 0.5;
 
 double round_to(double v, double unit) { return std::round(v / unit) * unit; }
 
@@ -75,9 +80,38 @@ Rates rates(const CodecRun& run, bool idle) {
   return r;
 }
 
+// The x264 side of the comparison for one avatar of the scene; also sets
+// the scene entry's `x264_over_ours`.
+nlohmann::json x264_entry(const Scene& scene, int avatar, const CodecRun& run, const CodecBenchArgs& args,
+                          nlohmann::json& entry) {
+  const auto& track = scene.avatars[static_cast<std::size_t>(avatar)];
+  const auto& bits = run.avatars[static_cast<std::size_t>(avatar)].bits_per_tick;
+  const double ours_bps = std::accumulate(bits.begin(), bits.end(), 0.0) / static_cast<double>(bits.size()) * run.fps;
+  std::vector<codec::FaceParams> original;
+  for (const codec::FaceParams& p : track.ticks) original.push_back(in_range(p));
+  const X264Comparison c = compare_with_x264(original, run.recorded, ours_bps, run.fps, args.photo);
+  if (!c.skipped.empty()) return {{"avatar", track.name}, {"skipped", c.skipped}};
+  entry["x264_over_ours"] = round_to(c.x264_bps / c.ours_bps, 0.1);
+  return {{"avatar", track.name},
+          {"frames", c.frames},
+          {"size", "256x256"},
+          {"ours_bps", round_to(c.ours_bps, 0.1)},
+          {"ours_psnr_db", round_to(c.ours_psnr_db, 0.01)},
+          {"x264_bps", round_to(c.x264_bps, 1.0)},
+          {"x264_crf", c.x264_crf},
+          {"x264_psnr_db", round_to(c.x264_psnr_db, 0.01)},
+          {"x264_reached_our_psnr", c.x264_reached},
+          {"x264_settings", c.x264_settings}};
+}
+
 nlohmann::json scene_entry(const Scene& scene, const CodecBenchArgs& args) {
   CodecRunOptions options;
   options.target_bps_per_avatar = args.target_bps;
+  // The video comparison follows the first active avatar.
+  int video_avatar = -1;
+  for (std::size_t a = 0; a < scene.avatars.size() && video_avatar < 0; ++a)
+    if (!scene.avatars[a].idle) video_avatar = static_cast<int>(a);
+  if (args.video) options.record_avatar = video_avatar;
   const CodecRun run = run_codec(scene, options);
   const Rates active = rates(run, false);
   const Rates idle = rates(run, true);
@@ -99,6 +133,8 @@ nlohmann::json scene_entry(const Scene& scene, const CodecBenchArgs& args) {
       {"key_frames", keys},
       {"room_frames", run.room_frames},
       {"room_bytes", run.room_bytes},
+      {"rms_mm", round_to(run.vertex_rms_mm, 0.001)},
+      {"max_mm", round_to(run.vertex_max_mm, 0.001)},
       {"gaze_max_deg", round_to(run.gaze_max_deg, 0.001)},
       {"eye_in_head_max_deg", round_to(run.eye_in_head_max_deg, 0.001)},
       {"head_rotation_max_deg", round_to(run.head_rotation_max_deg, 0.001)},
@@ -115,10 +151,13 @@ nlohmann::json scene_entry(const Scene& scene, const CodecBenchArgs& args) {
   }
   entry["goal"] = {{"bps_mean_max", kGoalBps},
                    {"gaze_max_deg", kGoalGazeDeg},
+                   {"rms_mm_max", kGoalRmsMm},
                    {"idle_bps_max", kGoalIdleBps},
                    {"bps_met", active.mean <= kGoalBps},
+                   {"rms_met", run.vertex_rms_mm <= kGoalRmsMm},
                    {"gaze_met", run.gaze_max_deg <= kGoalGazeDeg}};
   if (idle.avatars > 0) entry["goal"]["idle_met"] = idle.mean < kGoalIdleBps;
+  if (args.video && video_avatar >= 0) entry["x264"] = x264_entry(scene, video_avatar, run, args, entry);
 
   // The same scene over an unreliable transport: sequence numbers, periodic
   // key frames and heartbeats cost extra.
@@ -130,6 +169,8 @@ nlohmann::json scene_entry(const Scene& scene, const CodecBenchArgs& args) {
   for (const AvatarRun& a : lossy.avatars) lossy_keys += a.key_frames;
   entry["loss_tolerant"] = {{"bps_mean_per_avatar", round_to(lossy_active.mean, 0.1)},
                             {"bps_p99_per_avatar", round_to(lossy_active.p99, 0.1)},
+                            {"rms_mm", round_to(lossy.vertex_rms_mm, 0.001)},
+                            {"max_mm", round_to(lossy.vertex_max_mm, 0.001)},
                             {"gaze_max_deg", round_to(lossy.gaze_max_deg, 0.001)},
                             {"au_max_error", round_to(lossy.au_max_error, 0.0001)},
                             {"key_frames", lossy_keys},
@@ -144,6 +185,8 @@ nlohmann::json rd_row(const CodecRun& run) {
   nlohmann::json row = {{"bps_mean_per_avatar", round_to(active.mean, 0.1)},
                     {"bps_p99_per_avatar", round_to(active.p99, 0.1)},
                     {"frames_sent_per_second", round_to(active.frames_per_second, 0.01)},
+                    {"rms_mm", round_to(run.vertex_rms_mm, 0.001)},
+                    {"max_mm", round_to(run.vertex_max_mm, 0.001)},
                     {"gaze_max_deg", round_to(run.gaze_max_deg, 0.001)},
                     {"head_rotation_max_deg", round_to(run.head_rotation_max_deg, 0.001)},
                     {"au_max_error", round_to(run.au_max_error, 0.0001)},
@@ -187,6 +230,7 @@ void run(const CodecBenchArgs& args) {
   if (args.scene_files.empty()) {
     SyntheticSceneOptions options;
     options.seed = args.seed;
+    options.seconds = args.seconds;
     scenes.push_back(make_synthetic_scene(options));
     if (!args.write_scene_path.empty()) {
       std::string error;
@@ -243,6 +287,13 @@ void add_codec_bench(CLI::App& app) {
       ->check(CLI::Range(50.0, 1.0e6))
       ->capture_default_str();
   cmd->add_option("--seed", args->seed, "seed of the synthetic scene")->capture_default_str();
+  cmd->add_option("--seconds", args->seconds, "length of the synthetic scene")
+      ->check(CLI::Range(1.0, 3600.0))
+      ->capture_default_str();
+  cmd->add_flag("!--no-video", args->video, "leave out the x264 comparison (it renders and codes video)");
+  args->photo = test::astronaut_path();
+  cmd->add_option("--photo", args->photo, "portrait of the avatar rendered for the x264 comparison")
+      ->capture_default_str();
   cmd->add_option("--write-scene", args->write_scene_path, "also write the synthetic scene to this file");
   cmd->callback([args] { run(*args); });
 }

@@ -6,6 +6,8 @@
 #include <numbers>
 
 #include "fw/codec/codec.hpp"
+#include "fw/model/avatar_model.hpp"
+#include "vertex_error.hpp"
 
 namespace fw::bench {
 namespace {
@@ -64,6 +66,8 @@ struct Distortion {
   }
 };
 
+}  // namespace
+
 // The parameters clamped to the ranges the format carries: distortion is
 // measured against what an exact codec could show, not against out-of-range
 // inputs (the synthetic scene stays in range anyway).
@@ -77,8 +81,6 @@ codec::FaceParams in_range(const codec::FaceParams& p) {
   }
   return q;
 }
-
-}  // namespace
 
 CodecRun run_codec(const Scene& scene, const CodecRunOptions& options) {
   CodecRun run;
@@ -100,6 +102,8 @@ CodecRun run_codec(const Scene& scene, const CodecRunOptions& options) {
   for (std::size_t a = 0; a < n; ++a) run.avatars[a].idle = scene.avatars[a].idle;
 
   Distortion distortion;
+  static const model::AvatarModel generic = model::generic_avatar_model();
+  VertexError vertex_error(generic);
   std::vector<std::vector<std::uint8_t>> frames(n);
   std::vector<codec::RoomEntry> entries;
   std::vector<std::size_t> entry_avatar;
@@ -150,7 +154,11 @@ CodecRun run_codec(const Scene& scene, const CodecRunOptions& options) {
       const codec::Decoder* decoder = room_decoder.avatar(static_cast<std::uint32_t>(a));
       const codec::QuantisedParams shown = decoder ? decoder->quantised(ticks_since_frame[a]) : codec::QuantisedParams{};
       if (shown != encoders[a].reconstruction()) ++run.decode_errors;
-      distortion.add(in_range(scene.avatars[a].ticks[t]), codec::dequantise(shown));
+      const codec::FaceParams original = in_range(scene.avatars[a].ticks[t]);
+      const codec::FaceParams seen = codec::dequantise(shown);
+      distortion.add(original, seen);
+      vertex_error.add(original, seen);
+      if (static_cast<int>(a) == options.record_avatar) run.recorded.push_back(seen);
     }
   }
   run.gaze_max_deg = distortion.gaze;
@@ -161,6 +169,8 @@ CodecRun run_codec(const Scene& scene, const CodecRunOptions& options) {
   run.head_translation_max_mm = distortion.head_mm;
   run.lid_max_error = distortion.lid;
   run.colour_max_error = distortion.colour;
+  run.vertex_rms_mm = vertex_error.rms_mm();
+  run.vertex_max_mm = vertex_error.max_mm();
   return run;
 }
 

@@ -17,6 +17,9 @@ struct CodecRunOptions {
   bool loss_tolerant = false;
   int min_level = codec::EncoderOptions{}.min_level;
   int max_level = codec::EncoderOptions{}.max_level;
+  /// Keep what the viewer sees of this avatar at every tick (for the video
+  /// comparison); -1 keeps nothing.
+  int record_avatar = -1;
 };
 
 struct AvatarRun {
@@ -35,11 +38,18 @@ struct CodecRun {
   double head_translation_max_mm = 0;
   double lid_max_error = 0;
   double colour_max_error = 0;
+  double vertex_rms_mm = 0;        ///< skin vertices, posed, face at 63 mm inter-ocular distance
+  double vertex_max_mm = 0;
+  std::vector<codec::FaceParams> recorded;  ///< options.record_avatar's shown face per tick
   std::uint64_t decode_errors = 0;  ///< must stay 0: the room decoder disagreed or refused a frame
   std::uint64_t room_frames = 0;
   std::uint64_t room_bytes = 0;
   int fps = 30;
 };
+
+/// `p` clamped to the ranges the format carries: distortion is measured
+/// against what an exact codec could show.
+codec::FaceParams in_range(const codec::FaceParams& p);
 
 CodecRun run_codec(const Scene& scene, const CodecRunOptions& options);
 
