@@ -16,7 +16,7 @@ build: deps
 	cmake --build --preset release -j $(JOBS)
 
 run: build
-	./build/bin/facewire-server serve $(SERVER_ARGS)
+	./build/bin/facewire-server serve --tcp 127.0.0.1:8081 $(SERVER_ARGS)
 
 test: build
 	ctest --preset release-all -j $(JOBS)
@@ -34,6 +34,7 @@ bench: build
 # Regenerates the generic face asset after a change to the generator.
 facegen: build
 	./build/bin/facewire-facegen -o avatar/model/assets/generic_face.json
+	./build/bin/facewire-aubasis -i avatar/model/assets/generic_face.json -o avatar/model/assets/generic_face.json
 
 clean:
 	rm -rf build build-debug build-asan

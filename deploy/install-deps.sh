@@ -12,6 +12,7 @@ build_packages=(
   libglm-dev                                  # vector maths (model, physics)
   libosmesa6-dev libgl-dev mesa-utils         # offscreen GL renderer (llvmpipe)
   libpng-dev libwebp-dev zlib1g-dev           # image members of avatar packages
+  libjpeg-dev                                 # photos: the client downsizes them before upload
   libdlib-dev libdlib-data                    # face detector + 68-landmark model
   nlohmann-json3-dev libcli11-dev libspdlog-dev
   libgtest-dev libgmock-dev googletest

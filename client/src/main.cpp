@@ -4,20 +4,21 @@
 
 #include <CLI/CLI.hpp>
 
+#include "join_command.hpp"
 #include "render_command.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"facewire thin client: render avatars, join rooms"};
   app.require_subcommand(1);
   fw::client::add_render_command(app);
+  fw::client::add_join_command(app);
 
-  CLI::App* join = app.add_subcommand("join", "Join a room (not yet built)");
-  join->allow_extras();
-  join->callback([] {
-    std::cerr << "facewire-client join: not yet built; joining rooms arrives with the room server.\n";
-    std::exit(3);
-  });
-
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // CLI11 prints what was wrong; every refused command line exits with 2,
+    // as the commands' own checks do (help exits with 0).
+    return app.exit(e) == 0 ? 0 : 2;
+  }
   return 0;
 }

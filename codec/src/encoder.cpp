@@ -62,6 +62,7 @@ struct Encoder::State {
   std::uint8_t sequence = 0;
   Steps previous{};         ///< the source one tick ago, grid steps
   Steps before_previous{};  ///< two ticks ago
+  Steps sent_source{};      ///< the source when the last frame went out
   int history = 0;          ///< ticks of source history held (0 .. 2)
   EncoderStats stats;
 
@@ -78,7 +79,8 @@ struct Encoder::State {
   // shows, and no heartbeat is due. `priority` gets each channel's error
   // over its tolerance.
   bool select_updates(const Steps& x, const Steps& velocity, int level, std::array<bool, kChannelCount>& update,
-                      std::array<double, kChannelCount>& priority) const {
+                      std::array<double, kChannelCount>& priority, bool& refresh) const {
+    refresh = false;
     Reconstruction view = coding.reconstruction;
     view.advance(ticks_since_frame);
     bool needed = ticks_since_frame >= kMaxTickDelta ||
@@ -102,6 +104,18 @@ struct Encoder::State {
       if (off <= 1.0) continue;
       needed = true;
       if (!update[yaw] && !update[pitch]) update[yaw] = update[pitch] = true;
+    }
+    if (!needed && options.refresh_ticks > 0 && ticks_since_frame >= static_cast<std::uint32_t>(options.refresh_ticks)) {
+      // A refresh: every channel is within its tolerance of the prediction,
+      // but the face moved since the last frame (some channel by half a
+      // grid step or more). The frame carries the channel the prediction
+      // misses most for its tolerance, and everything it misses by a share
+      // of its own, with fresh velocities.
+      bool moved = false;
+      for (std::size_t c = 0; c < kChannelCount && !moved; ++c) moved = std::abs(x[c] - sent_source[c]) >= 0.5;
+      if (!moved) return false;  // the face holds still: nothing to refresh
+      needed = refresh = true;
+      update[static_cast<std::size_t>(std::max_element(priority.begin(), priority.end()) - priority.begin())] = true;
     }
     if (!needed) return false;
     for (std::size_t c = 0; c < kChannelCount; ++c) {
@@ -148,7 +162,7 @@ struct Encoder::State {
 };
 
 Encoder::Encoder(const EncoderOptions& options) : state_(std::make_unique<State>(options)) {
-  assert(options.max_key_interval_ticks >= 1 && options.heartbeat_ticks >= 1);
+  assert(options.max_key_interval_ticks >= 1 && options.heartbeat_ticks >= 1 && options.refresh_ticks >= 0);
 }
 Encoder::~Encoder() = default;
 Encoder::Encoder(Encoder&&) noexcept = default;
@@ -174,7 +188,16 @@ EncoderStats Encoder::stats() const {
   return s;
 }
 
+void Encoder::hold(const FaceParams& params) {
+  std::vector<std::uint8_t> none;
+  encode_tick(params, none, false);
+}
+
 bool Encoder::encode(const FaceParams& params, std::vector<std::uint8_t>& frame) {
+  return encode_tick(params, frame, true);
+}
+
+bool Encoder::encode_tick(const FaceParams& params, std::vector<std::uint8_t>& frame, bool may_send) {
   State& s = *state_;
   frame.clear();
   ++s.offered;
@@ -205,6 +228,7 @@ bool Encoder::encode(const FaceParams& params, std::vector<std::uint8_t>& frame)
   s.before_previous = s.previous;
   s.previous = x;
   s.history = std::min(s.history + 1, 2);
+  if (!may_send) return false;
 
   const double overhead_bits = 8.0 * s.options.container_bytes_per_frame;
   CodingState next = s.coding;
@@ -248,8 +272,13 @@ bool Encoder::encode(const FaceParams& params, std::vector<std::uint8_t>& frame)
     FrameDecision decision = wanted;
     decision.type = FrameType::predicted;
     std::array<double, kChannelCount> priority{};  // error over tolerance
-    if (!s.select_updates(x, velocity, level, decision.update, priority)) return false;
+    bool refresh = false;
+    if (!s.select_updates(x, velocity, level, decision.update, priority, refresh)) return false;
     fits = try_frame(decision, false);
+    // A refresh only spends what the budget has to spare (refresh_bucket_share).
+    if (refresh && (!fits || s.rate.bucket_bits() + 8.0 * static_cast<double>(bytes.size()) + overhead_bits >
+                                 s.options.refresh_bucket_share * s.rate.capacity_bits()))
+      return false;
     if (!fits) {
       // Over budget: keep the channels furthest beyond their tolerance, as
       // many as fit; channels far off (an eye beyond its tolerance, anything
@@ -291,6 +320,7 @@ bool Encoder::encode(const FaceParams& params, std::vector<std::uint8_t>& frame)
 
   const double bits = 8.0 * static_cast<double>(bytes.size()) + overhead_bits;
   s.coding = std::move(next);
+  s.sent_source = x;
   s.rate.on_frame_sent(bits, type == FrameType::key);
   s.ticks_since_frame = 0;
   if (type == FrameType::key) {

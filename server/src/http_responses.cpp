@@ -30,7 +30,7 @@ Response respond_to(const Request& request) {
   const bool head = request.method() == http::verb::head;
   if (request.method() != http::verb::get && !head) {
     Response response = text_response(http::status::method_not_allowed, request.version(), request.keep_alive(),
-                                      "only GET and HEAD are served here\n");
+                                      "only GET and HEAD are served here (uploads: POST /api/avatars)\n");
     response.set(http::field::allow, "GET, HEAD");
     return response;
   }

@@ -1,10 +1,15 @@
 #include "http_session.hpp"
 
 #include <boost/asio/dispatch.hpp>
+#include <boost/asio/post.hpp>
+#include <boost/beast/websocket.hpp>
 #include <spdlog/spdlog.h>
 
 #include "http_responses.hpp"
+#include "photo_preparation.hpp"
+#include "rest_api.hpp"
 #include "server_limits.hpp"
+#include "websocket_session.hpp"
 
 namespace fw::server {
 
@@ -12,11 +17,19 @@ namespace beast = boost::beast;
 namespace http = beast::http;
 namespace net = boost::asio;
 
-HttpSession::HttpSession(net::ip::tcp::socket&& socket, std::shared_ptr<std::atomic<std::size_t>> open_connections)
-    : stream_(std::move(socket)), buffer_(limits::kMaxHeaderBytes + limits::kMaxBodyBytes),
-      open_connections_(std::move(open_connections)) {}
+HttpSession::HttpSession(ServerContext& context, net::ip::tcp::socket&& socket,
+                         std::shared_ptr<std::atomic<std::size_t>> open_connections)
+    : context_(context), stream_(std::move(socket)), buffer_(limits::kMaxHeaderBytes + limits::kMaxBodyBytes),
+      open_connections_(std::move(open_connections)) {
+  beast::error_code ec;
+  peer_address_ = stream_.socket().remote_endpoint(ec).address().to_string();
+  context_.metrics.http_connections.fetch_add(1);
+}
 
-HttpSession::~HttpSession() { --*open_connections_; }
+HttpSession::~HttpSession() {
+  --*open_connections_;
+  context_.metrics.http_connections.fetch_sub(1);
+}
 
 void HttpSession::run() {
   // Sessions run on their own strand (the socket was accepted onto one).
@@ -26,26 +39,78 @@ void HttpSession::run() {
 void HttpSession::do_read() {
   parser_.emplace();
   parser_->header_limit(limits::kMaxHeaderBytes);
-  parser_->body_limit(limits::kMaxBodyBytes);
+  // The body's limit depends on the target: the header is read under the
+  // larger one (Beast checks Content-Length while parsing it), on_header
+  // then holds other requests to theirs.
+  parser_->body_limit(std::max<std::uint64_t>(limits::kMaxBodyBytes, context_.config.max_upload_bytes));
   // A keep-alive connection may idle a while; a started request must finish soon.
   stream_.expires_after(first_request_ ? limits::kRequestTimeout : limits::kIdleTimeout);
   first_request_ = false;
+  // The header first: an upload may be larger than other requests' bodies.
+  http::async_read_header(stream_, buffer_, *parser_,
+                          beast::bind_front_handler(&HttpSession::on_header, shared_from_this()));
+}
+
+bool HttpSession::answer_read_error(beast::error_code ec) {
+  if (ec == http::error::end_of_stream || ec == beast::error::timeout || ec == net::error::operation_aborted ||
+      ec == net::error::connection_reset || ec == net::error::eof) {
+    do_close();
+    return true;
+  }
+  if (ec == http::error::header_limit) {
+    send(error_response(http::status::request_header_fields_too_large, 11,
+                        "request headers exceed 8 KiB; send fewer or shorter headers"));
+    return true;
+  }
+  if (ec == http::error::body_limit) {
+    // Beast may refuse while still parsing the header, before the target is
+    // known here: the message covers both kinds of request.
+    send(error_response(http::status::payload_too_large, 11,
+                        "the request body is too large: uploads (POST /api/avatars) take at most " +
+                            std::to_string(context_.config.max_upload_bytes / 1024) +
+                            " KiB, so send a smaller photo (about 30 KB is plenty); other requests 64 KiB"));
+    return true;
+  }
+  if (ec) {
+    send(error_response(http::status::bad_request, 11, "malformed HTTP request: " + ec.message()));
+    return true;
+  }
+  return false;
+}
+
+void HttpSession::on_header(beast::error_code ec, std::size_t) {
+  if (answer_read_error(ec)) return;
+  const auto& header = parser_->get();
+  upload_ = header.method() == http::verb::post && header.target() == "/api/avatars";
+  const std::size_t limit = upload_ ? context_.config.max_upload_bytes : limits::kMaxBodyBytes;
+  if (parser_->content_length() && *parser_->content_length() > limit)
+    return (void)answer_read_error(http::error::body_limit);
+  parser_->body_limit(limit);  // for chunked bodies
+  if (upload_) stream_.expires_after(limits::kUploadTimeout);
   http::async_read(stream_, buffer_, *parser_, beast::bind_front_handler(&HttpSession::on_read, shared_from_this()));
 }
 
 void HttpSession::on_read(beast::error_code ec, std::size_t) {
-  if (ec == http::error::end_of_stream || ec == beast::error::timeout || ec == net::error::operation_aborted)
-    return do_close();
-  if (ec == http::error::header_limit)
-    return send(error_response(http::status::request_header_fields_too_large, 11,
-                               "request headers exceed 8 KiB; send fewer or shorter headers"));
-  if (ec == http::error::body_limit)
-    return send(error_response(http::status::payload_too_large, 11, "request body exceeds 64 KiB"));
-  if (ec) {
-    if (ec == net::error::connection_reset || ec == net::error::eof) return do_close();
-    return send(error_response(http::status::bad_request, 11, "malformed HTTP request: " + ec.message()));
+  if (answer_read_error(ec)) return;
+  Request request = parser_->release();
+  if (beast::websocket::is_upgrade(request)) {
+    if (request.target() != "/" && request.target() != "/ws")
+      return send(error_response(http::status::not_found, request.version(), "the room protocol is at /ws"));
+    auto session = std::make_shared<WebSocketSession>(context_, std::move(stream_), peer_address_);
+    session->run(std::move(request));
+    return;  // this HttpSession ends here; the connection lives on in the WebSocket session
   }
-  send(respond_to(parser_->release()));
+  if (upload_) {
+    auto self = shared_from_this();
+    context_.photos->upload(std::move(request), peer_address_, [self](Response response) {
+      net::post(self->stream_.get_executor(),
+                [self, response = std::move(response)]() mutable { self->send(std::move(response)); });
+    });
+    return;
+  }
+  if (request.method() == http::verb::get || request.method() == http::verb::head)
+    if (auto response = respond_to_api(context_, request)) return send(std::move(*response));
+  send(respond_to(request));
 }
 
 void HttpSession::send(http::response<http::string_body>&& response) {

@@ -4,7 +4,6 @@
 #include <boost/beast/core/bind_handler.hpp>
 #include <spdlog/spdlog.h>
 
-#include "http_session.hpp"
 #include "server_limits.hpp"
 
 namespace fw::server {
@@ -12,8 +11,9 @@ namespace fw::server {
 namespace net = boost::asio;
 namespace beast = boost::beast;
 
-Listener::Listener(net::io_context& ioc, const net::ip::tcp::endpoint& endpoint, beast::error_code& ec)
-    : ioc_(ioc), acceptor_(net::make_strand(ioc)) {
+Listener::Listener(net::io_context& ioc, const net::ip::tcp::endpoint& endpoint, SessionFactory factory,
+                   beast::error_code& ec)
+    : ioc_(ioc), acceptor_(net::make_strand(ioc)), factory_(std::move(factory)) {
   if (acceptor_.open(endpoint.protocol(), ec)) return;
   if (acceptor_.set_option(net::socket_base::reuse_address(true), ec)) return;
   if (acceptor_.bind(endpoint, ec)) return;
@@ -45,7 +45,7 @@ void Listener::on_accept(beast::error_code ec, net::ip::tcp::socket socket) {
                  socket.remote_endpoint(ec).address().to_string());
   } else {
     ++*open_connections_;
-    std::make_shared<HttpSession>(std::move(socket), open_connections_)->run();
+    factory_(std::move(socket), open_connections_);
   }
   do_accept();
 }

@@ -1,7 +1,8 @@
 #pragma once
-// Accepts TCP connections and starts an HttpSession on each, up to the
-// connection limit.
+// Accepts TCP connections and hands each to a session factory (HTTP or the
+// room protocol over TCP), up to the connection limit.
 #include <atomic>
+#include <functional>
 #include <memory>
 
 #include <boost/asio/io_context.hpp>
@@ -12,8 +13,14 @@ namespace fw::server {
 
 class Listener : public std::enable_shared_from_this<Listener> {
  public:
+  /// Starts a session on an accepted socket (already on its own strand);
+  /// the counter is the listener's open connections, to be decremented
+  /// when the session ends.
+  using SessionFactory =
+      std::function<void(boost::asio::ip::tcp::socket&&, std::shared_ptr<std::atomic<std::size_t>>)>;
   /// Opens, binds and listens; `ec` says why not (port in use, no permission).
-  Listener(boost::asio::io_context& ioc, const boost::asio::ip::tcp::endpoint& endpoint, boost::beast::error_code& ec);
+  Listener(boost::asio::io_context& ioc, const boost::asio::ip::tcp::endpoint& endpoint, SessionFactory factory,
+           boost::beast::error_code& ec);
   void run();
   void stop();
   /// The bound address, with the real port when 0 was asked for.
@@ -25,6 +32,7 @@ class Listener : public std::enable_shared_from_this<Listener> {
 
   boost::asio::io_context& ioc_;
   boost::asio::ip::tcp::acceptor acceptor_;
+  SessionFactory factory_;
   std::shared_ptr<std::atomic<std::size_t>> open_connections_ = std::make_shared<std::atomic<std::size_t>>(0);
 };
 

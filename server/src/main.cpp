@@ -6,8 +6,11 @@
 
 #include "fw/photo/photo_limits.hpp"
 #include "prep_command.hpp"
+#include "render_scene_command.hpp"
 #include "script_command.hpp"
 #include "serve_command.hpp"
+#include "simulate_command.hpp"
+#include "token_command.hpp"
 
 int main(int argc, char** argv) {
   fw::photo::enforce_decoder_pixel_limit(argv);
@@ -15,22 +18,9 @@ int main(int argc, char** argv) {
   fw::server::add_serve_command(app);
   fw::server::add_prep_command(app);
   fw::server::add_script_command(app);
-
-  struct Unbuilt {
-    const char* name;
-    const char* what;
-    const char* arrives_with;
-  };
-  const Unbuilt unbuilt[] = {
-      {"token", "Mint a join token", "the room server"}};
-  for (const auto& [name, what, arrives_with] : unbuilt) {
-    CLI::App* cmd = app.add_subcommand(name, std::string(what) + " (not yet built)");
-    cmd->allow_extras();
-    cmd->callback([name = std::string(name), arrives = std::string(arrives_with)] {
-      std::cerr << "facewire-server " << name << ": not yet built; it arrives with " << arrives << ".\n";
-      std::exit(3);
-    });
-  }
+  fw::server::add_simulate_command(app);
+  fw::server::add_render_scene_command(app);
+  fw::server::add_token_command(app);
 
   try {
     if (argc == 1) app.parse("serve", false);  // no subcommand: serve with the embedded defaults

@@ -1,19 +1,43 @@
 #pragma once
 // Limits on everything a peer sends the server. A request past any of them
-// is answered with an error status and its connection closed.
+// is answered with an error status (HTTP) or a closing message (rooms) and
+// its connection closed; nobody else is affected. PROTOCOL.md, "Limits".
 #include <chrono>
 #include <cstddef>
 
 namespace fw::server::limits {
 
 inline constexpr std::size_t kMaxHeaderBytes = 8 * 1024;
-/// Requests carry no bodies yet (uploads arrive with the room server).
+/// Bodies of requests other than uploads (uploads: ServerConfig::max_upload_bytes).
 inline constexpr std::size_t kMaxBodyBytes = 64 * 1024;
 /// Time allowed to send one whole request, and to take one response.
 inline constexpr std::chrono::seconds kRequestTimeout{15};
+/// Time allowed for an upload's body (a 4 MiB photo at 2.5 Mbit/s).
+inline constexpr std::chrono::seconds kUploadTimeout{15};
 /// An idle keep-alive connection is closed after this.
 inline constexpr std::chrono::seconds kIdleTimeout{30};
-/// Connections served at once; more wait in the kernel's backlog.
+/// Connections served at once on each port; more wait in the kernel's backlog.
 inline constexpr std::size_t kMaxConnections = 2048;
+/// Photo uploads per address and minute (preparing one costs about a second of CPU).
+inline constexpr int kUploadsPerMinute = 6;
+
+// Room connections.
+inline constexpr std::chrono::seconds kHandshakeTimeout{5};
+inline constexpr std::chrono::seconds kSessionIdleTimeout{60};
+/// How long a closing message may take before the socket is closed anyway.
+inline constexpr std::chrono::seconds kCloseTimeout{3};
+inline constexpr double kMessagesPerSecond = 50;
+inline constexpr double kMessageBurst = 100;
+inline constexpr double kUpstreamBytesPerSecond = 64 * 1024;
+inline constexpr double kUpstreamByteBurst = 64 * 1024;
+inline constexpr double kChatLinesPerSecond = 2;
+inline constexpr double kChatBurst = 5;
+/// Kernel send buffer of a room connection (Linux doubles it).
+inline constexpr int kSocketSendBufferBytes = 16 * 1024;
+/// Messages held between a hello and its welcome.
+inline constexpr std::size_t kMaxEarlyMessages = 16;
+/// A connection holding more than this is not reading: it is closed. Room
+/// frames and packages stop at half a second of budget, far below.
+inline constexpr std::size_t kMaxQueuedBytes = 256 * 1024;
 
 }  // namespace fw::server::limits

@@ -65,12 +65,26 @@ TEST(BenchCodec, MeasuresASceneFileAndRefusesABadOne) {
   EXPECT_NE(bad.output.find("not a scene file"), std::string::npos) << bad.output;
 }
 
-TEST(BenchUnbuilt, SaysSoInsteadOfPrintingNumbers) {
-  for (const char* name : {"sim", "fanout"}) {
-    const auto result = test::run_command(test::bin("facewire-bench") + " " + name + " --json");
-    EXPECT_EQ(result.status, 3) << name;
-    EXPECT_NE(result.output.find("not yet built"), std::string::npos) << result.output;
+TEST(BenchSim, PrintsTheModelSizeSpeedBytesAndResidualForBothSolvers) {
+  for (const char* solver : {"massspring", "pbd"}) {
+    const auto result = test::run_command(test::bin("facewire-bench") + " sim --faces 4 --seconds 0.2 --threads 2 --solver " +
+                                          solver + " --json", false);
+    ASSERT_EQ(result.status, 0) << result.output;
+    const auto json = nlohmann::json::parse(result.output, nullptr, false);
+    ASSERT_TRUE(json.is_object()) << result.output;
+    for (const char* key : {"nodes", "springs", "muscles", "elements", "face_frames_per_s", "us_per_face_frame",
+                            "bytes_per_face", "residual_rms_mm"})
+      EXPECT_TRUE(json.contains(key)) << key;
+    EXPECT_GE(json.at("nodes").get<int>(), 1000);
+    EXPECT_GE(json.at("springs").get<int>(), 7000);
+    EXPECT_EQ(json.at("muscles").get<int>(), 42);
+    EXPECT_GE(json.at("elements").get<int>(), 1000);
+    EXPECT_GT(json.at("face_frames_per_s").get<double>(), 0.0);
+    EXPECT_EQ(json.at("solver").get<std::string>(), solver);
   }
+  const auto bad = test::run_command(test::bin("facewire-bench") + " sim --solver verlet --json");
+  EXPECT_EQ(bad.status, 2) << bad.output;
+  EXPECT_NE(bad.output.find("massspring or pbd"), std::string::npos) << bad.output;
 }
 
 // The side-by-side with a video codec: the scene's first active avatar

@@ -23,6 +23,7 @@ struct CodecBenchArgs {
   bool json = false;
   std::vector<std::string> scene_files;
   double target_bps = 500;
+  int refresh_ticks = 0;     // as the room server's streams do: 2
   std::uint64_t seed = 1;
   double seconds = 60;       // of the synthetic scene
   std::string write_scene_path;
@@ -107,6 +108,7 @@ nlohmann::json x264_entry(const Scene& scene, int avatar, const CodecRun& run, c
 nlohmann::json scene_entry(const Scene& scene, const CodecBenchArgs& args) {
   CodecRunOptions options;
   options.target_bps_per_avatar = args.target_bps;
+  options.refresh_ticks = args.refresh_ticks;
   // The video comparison follows the first active avatar.
   int video_avatar = -1;
   for (std::size_t a = 0; a < scene.avatars.size() && video_avatar < 0; ++a)
@@ -125,6 +127,7 @@ nlohmann::json scene_entry(const Scene& scene, const CodecBenchArgs& args) {
       {"seconds", round_to(static_cast<double>(scene.tick_count()) / scene.fps, 0.01)},
       {"fps", scene.fps},
       {"target_bps_per_avatar", args.target_bps},
+      {"refresh_ticks", args.refresh_ticks},
       {"bps_mean_per_avatar", round_to(active.mean, 0.1)},
       {"bps_p99_per_avatar", round_to(active.p99, 0.1)},
       {"bits_per_frame_mean", round_to(active.bits_per_tick, 0.01)},
@@ -281,10 +284,14 @@ void add_codec_bench(CLI::App& app) {
   auto args = std::make_shared<CodecBenchArgs>();
   CLI::App* cmd = app.add_subcommand("codec", "Bit rate and distortion of the FaceParams codec");
   cmd->add_flag("--json", args->json, "print one JSON object");
-  cmd->add_option("--scene", args->scene_files, "scene file(s) (.fwscene) instead of the synthetic scene")
+  cmd->add_option("--scene", args->scene_files, "scene file(s) (.fws from facewire-server simulate, or .fwscene) instead of the synthetic scene")
       ->check(CLI::ExistingFile);
   cmd->add_option("--target-bps", args->target_bps, "bit budget per avatar")
       ->check(CLI::Range(50.0, 1.0e6))
+      ->capture_default_str();
+  cmd->add_option("--refresh-ticks", args->refresh_ticks,
+                  "send a face that moved at least every N ticks, as the room server does with 2 (0: off)")
+      ->check(CLI::Range(0, 300))
       ->capture_default_str();
   cmd->add_option("--seed", args->seed, "seed of the synthetic scene")->capture_default_str();
   cmd->add_option("--seconds", args->seconds, "length of the synthetic scene")

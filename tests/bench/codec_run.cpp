@@ -93,6 +93,7 @@ CodecRun run_codec(const Scene& scene, const CodecRunOptions& options) {
   encoder_options.target_bps = options.target_bps_per_avatar;
   encoder_options.min_level = options.min_level;
   encoder_options.max_level = options.max_level;
+  encoder_options.refresh_ticks = options.refresh_ticks;
   encoder_options.container_bytes_per_frame = 2;  // the room frame entry, about
   std::vector<codec::Encoder> encoders;
   for (std::size_t a = 0; a < n; ++a) encoders.emplace_back(encoder_options);

@@ -8,15 +8,23 @@
 #include <vector>
 
 #include "fw/codec/codec.hpp"
-#include "scene_file.hpp"
+#include "fw/behavior/scene_file.hpp"
 
 namespace fw::bench {
+
+// Scene files moved to avatar/behavior, which records them.
+using behavior::read_scene;
+using behavior::Scene;
+using behavior::SceneAvatar;
+using behavior::write_scene;
 
 struct CodecRunOptions {
   double target_bps_per_avatar = 500;
   bool loss_tolerant = false;
   int min_level = codec::EncoderOptions{}.min_level;
   int max_level = codec::EncoderOptions{}.max_level;
+  /// The encoder's refresh interval in ticks (0: none; the room server uses 2).
+  int refresh_ticks = 0;
   /// Keep what the viewer sees of this avatar at every tick (for the video
   /// comparison); -1 keeps nothing.
   int record_avatar = -1;

@@ -8,9 +8,15 @@
 // keyboard) only rest, breathe, blink and glance about now and then.
 #include <cstdint>
 
-#include "scene_file.hpp"
+#include "fw/behavior/scene_file.hpp"
 
 namespace fw::bench {
+
+// Scene files moved to avatar/behavior, which records them.
+using behavior::read_scene;
+using behavior::Scene;
+using behavior::SceneAvatar;
+using behavior::write_scene;
 
 struct SyntheticSceneOptions {
   std::uint64_t seed = 1;  ///< same seed, same scene, on every run

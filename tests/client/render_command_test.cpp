@@ -82,8 +82,24 @@ TEST(RenderCommand, ContactSheetHasEveryPanel) {
   std::filesystem::remove(out);
 }
 
-TEST(RenderCommand, UnbuiltPartsSaySoInsteadOfPretending) {
-  expect_refused("join ws://127.0.0.1:1/ --room r --name n", 3, "not yet built");
+TEST(JoinCommand, BadInputIsExplainedBeforeConnecting) {
+  expect_refused("join 127.0.0.1:8080 --room r --name n", 2, "a server URL looks like ws://");
+  expect_refused("join ws://127.0.0.1:1/ --room 'a b' --name n", 2, "--room must be");
+  expect_refused("join tcp://127.0.0.1:1 --room r --name n --avatar x.fwa", 2, "--api http://HOST:PORT");
+  expect_refused("join ws://127.0.0.1:1/ --room r --name n --avatar /nonexistent.fwa", 2, "--avatar");
+  expect_refused("join ws://127.0.0.1:1/ --room r --name n --size 15x9", 2, "--size");
+  expect_refused("join ws://127.0.0.1:1/ --room r --name n --y4m /dev/null --size 641x360", 2, "even");
+  expect_refused("join ws://127.0.0.1:1/ --room r --name n --emote glee", 2, "--emote");
+  // Without a display --window says what to use instead.
+  const auto result = run_command("env -u DISPLAY " + bin("facewire-client") + " join ws://127.0.0.1:1/ --room r --name n --window");
+  EXPECT_EQ(result.status, 2);
+  EXPECT_NE(result.output.find("--out DIR"), std::string::npos) << result.output;
+}
+
+TEST(JoinCommand, GivesUpWhenNoServerAnswers) {
+  const auto result = run_command(bin("facewire-client") + " join ws://127.0.0.1:1/ --room r --name n --join-timeout 1 -q");
+  EXPECT_EQ(result.status, 1) << result.output;
+  EXPECT_NE(result.output.find("could not join room r"), std::string::npos) << result.output;
 }
 
 }  // namespace

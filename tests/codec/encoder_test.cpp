@@ -98,6 +98,66 @@ TEST(Encoder, AStillFaceCostsNothingAfterItsKeyFrameOverAReliableTransport) {
   EXPECT_EQ(encoder.stats().tick, 899u);
 }
 
+TEST(Encoder, RefreshesASlowlyMovingFaceAtLeastEveryRefreshInterval) {
+  // A head that turns by half a degree a second (with no extrapolation at
+  // the decoder) reaches its tolerance every ten ticks or so: without
+  // refreshes it is sent that often, with them whenever it has moved by half
+  // a grid step (0.05 degree) once three ticks have passed (every third or
+  // fourth tick), each frame bringing the decoder closer; a face that holds
+  // still is not refreshed.
+  auto run = [](int refresh_ticks, bool drifting, double& worst_error_rad) {
+    EncoderOptions options;
+    options.refresh_ticks = refresh_ticks;
+    options.stream.max_extrapolation_ticks = 0;  // the decoder holds: what it shows is what was sent
+    Encoder encoder(options);
+    Decoder decoder(options.stream);
+    std::vector<std::uint8_t> frame;
+    int frames = 0;
+    worst_error_rad = 0;
+    for (int t = 0; t < 300; ++t) {
+      FaceParams face;
+      face.head_yaw_rad = drifting ? 0.5f * 3.14159265f / 180.0f * static_cast<float>(t) / 30.0f : 0.0f;
+      if (encoder.encode(face, frame)) {
+        ++frames;
+        EXPECT_EQ(decoder.decode(frame), DecodeError::ok);
+      }
+      if (t >= 30) worst_error_rad = std::max<double>(worst_error_rad, std::abs(decoder.face().head_yaw_rad - face.head_yaw_rad));
+    }
+    return frames;
+  };
+  double error_without = 0, error_with = 0, error_still = 0;
+  const int without = run(0, true, error_without);
+  const int with = run(3, true, error_with);
+  EXPECT_LE(without, 40);
+  EXPECT_GE(with, 75);
+  EXPECT_LT(error_with, error_without);
+  EXPECT_EQ(run(3, false, error_still), 1);  // the key frame only
+}
+
+TEST(Encoder, HeldTicksCarryNoFrameButCountInTheFramesTickDelta) {
+  // A sender that bundles frames on every third tick holds the other two:
+  // frames then come only on the sending ticks, and the decoder's clock
+  // (the sum of the frames' tick deltas) stays the sender's.
+  Encoder encoder({});
+  Decoder decoder;
+  std::vector<std::uint8_t> frame;
+  std::uint32_t last_sent_tick = 0;
+  for (std::uint32_t t = 0; t < 300; ++t) {
+    FaceParams face;
+    face.head_yaw_rad = 0.3f * std::sin(static_cast<float>(t) / 20.0f);
+    if (t % 3 != 0) {
+      encoder.hold(face);
+      EXPECT_FALSE(encoder.stats().sent);
+      continue;
+    }
+    if (!encoder.encode(face, frame)) continue;
+    ASSERT_EQ(decoder.decode(frame), DecodeError::ok);
+    last_sent_tick = t;
+    EXPECT_EQ(decoder.tick(), t + 1) << "at tick " << t;  // the key frame's delta counts its own tick
+  }
+  EXPECT_GT(last_sent_tick, 250u);
+}
+
 TEST(Encoder, LossTolerantStreamsSendHeartbeatsAndPeriodicKeyFrames) {
   EncoderOptions o;
   o.stream.loss_tolerant = true;

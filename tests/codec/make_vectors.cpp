@@ -11,7 +11,7 @@
 #include <iostream>
 
 #include "golden_vectors.hpp"
-#include "scene_file.hpp"
+#include "fw/behavior/scene_file.hpp"
 
 namespace {
 
@@ -36,14 +36,14 @@ int main(int argc, char** argv) {
     const auto messages = encode_vector(spec);
     const auto decoded = decode_vector(spec, messages);
     const auto stream = to_stream_file(messages);
-    fw::bench::Scene scene;
+    fw::behavior::Scene scene;
     scene.name = spec.name;
     for (std::size_t a = 0; a < spec.inputs.size(); ++a)
       scene.avatars.push_back({"avatar-" + std::to_string(a), false, spec.inputs[a]});
     std::string error;
     if (!write_file(dir / (spec.name + ".fwc"), std::string(stream.begin(), stream.end())) ||
         !write_file(dir / (spec.name + ".json"), to_json(spec, messages, decoded).dump(1) + "\n") ||
-        !fw::bench::write_scene(scene, (dir / (spec.name + ".fwscene")).string(), error)) {
+        !fw::behavior::write_scene(scene, (dir / (spec.name + ".fwscene")).string(), error)) {
       std::cerr << "codec_make_vectors: cannot write " << spec.name << " into " << dir << " " << error << "\n";
       return 1;
     }

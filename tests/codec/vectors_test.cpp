@@ -9,7 +9,7 @@
 
 #include "frame_reader.hpp"
 #include "golden_vectors.hpp"
-#include "scene_file.hpp"
+#include "fw/behavior/scene_file.hpp"
 
 namespace fw::codec {
 namespace {
@@ -37,9 +37,9 @@ class GoldenVector : public ::testing::TestWithParam<vectors::VectorSpec> {
     ASSERT_TRUE(vectors::from_stream_file(read_bytes(kDir / (spec.name + ".fwc")), bytes));
     ASSERT_EQ(bytes.size(), json_["messages"].size());
     for (std::size_t i = 0; i < bytes.size(); ++i) messages_.push_back({json_["messages"][i]["tick"].get<int>(), bytes[i]});
-    bench::Scene scene;
+    behavior::Scene scene;
     std::string error;
-    ASSERT_TRUE(bench::read_scene((kDir / (spec.name + ".fwscene")).string(), scene, error)) << error;
+    ASSERT_TRUE(behavior::read_scene((kDir / (spec.name + ".fwscene")).string(), scene, error)) << error;
     spec_ = spec;
     spec_.inputs.clear();
     for (const auto& a : scene.avatars) spec_.inputs.push_back(a.ticks);

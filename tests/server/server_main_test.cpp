@@ -115,12 +115,17 @@ TEST(ServerCli, PortInUseIsExplained) {
   EXPECT_NE(result.output.find("cannot listen on"), std::string::npos) << result.output;
 }
 
-TEST(ServerCli, UnbuiltSubcommandsSaySo) {
-  for (const char* name : {"token"}) {
-    const auto result = test::run_command(test::bin("facewire-server") + " " + name);
-    EXPECT_EQ(result.status, 3) << name;
-    EXPECT_NE(result.output.find("not yet built"), std::string::npos) << result.output;
-  }
+TEST(ServerCli, TokenNeedsASecret) {
+  const auto result = test::run_command("env -u FACEWIRE_AUTH_SECRET " + test::bin("facewire-server") + " token --room a");
+  EXPECT_EQ(result.status, 2);
+  EXPECT_NE(result.output.find("--auth-secret"), std::string::npos) << result.output;
+}
+
+TEST(ServerCli, TokenIsMinted) {
+  const auto result =
+      test::run_command(test::bin("facewire-server") + " token --room a --name Ann --ttl 60 --auth-secret s3cret");
+  EXPECT_EQ(result.status, 0) << result.output;
+  EXPECT_EQ(result.output.rfind("fw1.", 0), 0u) << result.output;
 }
 
 }  // namespace

@@ -43,6 +43,12 @@ class ServerProcess {
   ServerProcess& operator=(const ServerProcess&) = delete;
 
   int port() const { return port_; }
+  /// The server's process id (the shell execs it), e.g. to read /proc/PID.
+  pid_t pid() const { return pid_; }
+
+  /// The next line the server prints on stdout (e.g. its TCP address), or
+  /// "" after `timeout_ms`.
+  std::string next_stdout_line(int timeout_ms) { return read_line(timeout_ms); }
 
   /// Sends SIGTERM and waits up to `timeout_ms`; the exit status, or -1.
   int terminate(int timeout_ms) {

@@ -170,6 +170,16 @@ struct EncoderOptions {
   /// lost frame is noticed within this many ticks even when nothing moves.
   /// Keep it at or below stream.max_extrapolation_ticks.
   int heartbeat_ticks = 15;
+  /// A face that moves at all is sent at least this often, in ticks, even
+  /// while every channel stays within its tolerance of the prediction: its
+  /// smallest changes then arrive at this rate instead of waiting to add up.
+  /// 0: frames only when the viewer would see a difference (the least bits).
+  int refresh_ticks = 0;
+  /// A refresh goes out only while the rate control's bucket stays under
+  /// this share of its capacity (1/3: a second of budget), so that it
+  /// spends what is spare and never delays a frame the viewer would miss;
+  /// 1 lets refreshes use the whole budget (more frames, coarser gaze).
+  double refresh_bucket_share = 1.0 / 3.0;
 };
 
 inline constexpr int kMaxQualityLevel = 7;
@@ -203,6 +213,11 @@ class Encoder {
   ///                     frame); left empty when this tick is skipped
   /// @return whether a frame was produced
   bool encode(const FaceParams& params, std::vector<std::uint8_t>& frame);
+  /// Offers the face of a tick that carries no frame of this stream (its
+  /// sender bundles frames on fewer ticks, or its link is congested): the
+  /// clock, the budget and the motion estimate move on as if the tick had
+  /// been skipped for lack of budget. Call it instead of encode().
+  void hold(const FaceParams& params);
 
   /// Changes the bit budget from the next tick on.
   void set_target_bps(double bits_per_second);
@@ -215,6 +230,7 @@ class Encoder {
   const EncoderOptions& options() const;
 
  private:
+  bool encode_tick(const FaceParams& params, std::vector<std::uint8_t>& frame, bool may_send);
   struct State;
   std::unique_ptr<State> state_;
 };

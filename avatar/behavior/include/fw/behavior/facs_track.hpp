@@ -1,0 +1,34 @@
+#pragma once
+// A FACS expression sentence (face scripts: ClearAllFrame BeginKeyFrame ...
+// Animate N ... end) as a timed track of action-unit targets a person's
+// command plays on their avatar.
+#include <array>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "fw/codec/face_params.hpp"
+
+namespace fw::behavior {
+
+using AuTargets = std::array<float, codec::kAuChannelCount>;
+
+struct AuTrack {
+  /// A script step (Animate N / Hold N count steps) lasts this long.
+  static constexpr double kStepS = 0.1;
+  /// The last pose is held this long, then released over kReleaseS.
+  static constexpr double kHoldS = 1.5, kReleaseS = 0.5;
+
+  std::vector<double> times_s;   ///< key times, increasing, from 0
+  std::vector<AuTargets> poses;  ///< pose at each key
+
+  double length_s() const { return times_s.empty() ? 0 : times_s.back(); }
+  /// Targets `t_s` into the track (linear between keys).
+  AuTargets at(double t_s) const;
+};
+
+/// The track of the first expression sentence in `sentence`; false and
+/// `error` (the script's first error, or "no expression sentence") if none.
+bool facs_track(std::string_view sentence, AuTrack& track, std::string& error);
+
+}  // namespace fw::behavior

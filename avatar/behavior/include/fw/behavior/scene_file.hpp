@@ -1,0 +1,60 @@
+#pragma once
+// Scenes: the FaceParams of every avatar of a room at every tick, unquantised,
+// plus what happened (behavior changes, blushes, chat, commands). The room
+// simulation (`facewire-server simulate`) records them, the codec benchmark
+// measures on them, `facewire-server render-scene` turns them into video.
+// Format: codec/FORMAT.md, "Appendix A. Scene files". Version 2 adds seats,
+// presence and events; version 1 files (faces only) are still read, and a
+// scene with nothing version 2 adds is still written as version 1.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fw/behavior/seat_layout.hpp"
+#include "fw/codec/face_params.hpp"
+
+namespace fw::behavior {
+
+inline constexpr std::size_t kMaxSceneAvatars = 64;
+inline constexpr std::size_t kMaxSceneTicks = 30 * 3600;  ///< an hour at 30 fps
+inline constexpr std::size_t kMaxSceneEvents = 1'000'000;
+inline constexpr std::size_t kMaxSceneEventBytes = 255;
+inline constexpr std::size_t kMaxSceneNameBytes = 64;
+inline constexpr std::uint32_t kPresentToTheEnd = 0xFFFFFFFFu;
+
+struct SceneAvatar {
+  std::string name;
+  bool idle = false;  ///< nobody at the keyboard: the face rests, blinks, breathes (the codec budgets it less)
+  std::vector<codec::FaceParams> ticks;  ///< one face per tick (neutral while absent)
+  /// In the room from this tick until (excluding) that one.
+  std::uint32_t joined_tick = 0;
+  std::uint32_t left_tick = kPresentToTheEnd;
+  std::optional<Seat> seat{};  ///< where the room seated it (version 2)
+
+  bool present(std::size_t tick) const { return tick >= joined_tick && tick < left_tick; }
+};
+
+struct SceneEvent {
+  std::uint32_t tick = 0;
+  std::uint16_t avatar = 0;  ///< index into Scene::avatars
+  std::string what;          ///< at most kMaxSceneEventBytes
+};
+
+struct Scene {
+  std::string name;
+  int fps = 30;
+  std::vector<SceneAvatar> avatars;  ///< all with the same number of ticks
+  std::vector<SceneEvent> events;    ///< in tick order
+
+  std::size_t tick_count() const { return avatars.empty() ? 0 : avatars.front().ticks.size(); }
+};
+
+/// Writes `scene` to `path`; false (with `error` saying why) on failure.
+bool write_scene(const Scene& scene, const std::string& path, std::string& error);
+/// Reads a scene of version 1 or 2; its name is the file name without the
+/// extension. Every count is checked against the limits and the file size
+/// before anything is allocated.
+bool read_scene(const std::string& path, Scene& scene, std::string& error);
+
+}  // namespace fw::behavior

@@ -1,0 +1,62 @@
+#pragma once
+// Where the avatars of a room sit and where the parts of their heads are, in
+// one room frame, so that the angle from one face's eyes to another's is the
+// one the renderer shows.
+//
+// Room frame: millimetres; x to the viewer's right, y up, z toward the
+// viewer: the renderer's world frame times kMillimetresPerUnit. A seat holds
+// a head in its model frame (the generic face's, in millimetres: x toward the
+// person's left, y up, z out of the face) turned by `facing_yaw_rad` about y
+// and moved to `origin_mm`. The renderer places a face there with
+// translate(origin_mm / kMillimetresPerUnit) * rotate_y(facing_yaw_rad).
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace fw::behavior {
+
+struct Seat {
+  glm::vec3 origin_mm{0.0f};  ///< where the head's model origin stands
+  float facing_yaw_rad = 0;   ///< same sign as head yaw: positive turns toward the person's left
+};
+
+/// The seats of a room of `count` avatars: an arc open toward the viewer,
+/// every seat facing the arc's centre, neighbours kSeatSpacingMm apart and
+/// at most kSeatAngleRad apart on the arc; a single seat faces the viewer.
+inline constexpr float kSeatSpacingMm = 420.0f;
+inline constexpr float kSeatAngleRad = 0.8726646f;  ///< 50 degrees
+std::vector<Seat> seat_layout(int count);
+
+/// Head pose (the head's rotation about the neck pivot, FaceParams' signs).
+struct HeadPose {
+  float yaw_rad = 0, pitch_rad = 0, roll_rad = 0;
+  glm::vec3 translation_mm{0.0f};
+};
+
+/// Points of the generic head in its model frame (millimetres): the neck
+/// pivot the head turns about, each eye's rotation centre, the mouth.
+struct HeadGeometry {
+  glm::vec3 neck_pivot_mm;
+  glm::vec3 eye_mm[2];  ///< indexed like model::Side: person's right, left
+  glm::vec3 eye_mid_mm;
+  glm::vec3 mouth_mm;
+  float interocular_mm;
+};
+const HeadGeometry& head_geometry();
+
+/// A point of the head's model frame, with the head at `pose`, in the seat's
+/// frame (the head's model frame at rest).
+glm::vec3 head_to_seat(const HeadPose& pose, glm::vec3 p_head_mm);
+/// A point of the seat frame in the room frame and back.
+glm::vec3 seat_to_room(const Seat& seat, glm::vec3 p_seat_mm);
+glm::vec3 room_to_seat(const Seat& seat, glm::vec3 p_room_mm);
+
+/// Yaw and pitch (FaceParams' signs) of direction `d` in a seat frame; 0,0 is
+/// straight ahead out of the face.
+struct YawPitch {
+  float yaw_rad = 0, pitch_rad = 0;
+};
+YawPitch direction_angles(glm::vec3 d);
+glm::vec3 direction_from_angles(YawPitch a);
+
+}  // namespace fw::behavior

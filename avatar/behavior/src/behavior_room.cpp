@@ -1,0 +1,321 @@
+#include "fw/behavior/behavior_room.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <map>
+#include <utility>
+
+#include <glm/geometric.hpp>
+
+#include "fw/behavior/blinking.hpp"
+#include "fw/behavior/chat_appraisal.hpp"
+#include "fw/behavior/emotion_state.hpp"
+#include "fw/behavior/eye_head.hpp"
+#include "fw/behavior/facs_track.hpp"
+#include "fw/behavior/vascular_episode.hpp"
+
+namespace fw::behavior {
+namespace {
+
+constexpr double kMimicTimeConstantS = 0.3;
+constexpr double kChatAttentionS = 2.5;
+constexpr double kMaxCommandS = 600;
+
+std::uint64_t mix(std::uint64_t x) {  // splitmix64: one independent stream per face and part
+  x += 0x9E3779B97F4A7C15ull;
+  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+  return x ^ (x >> 31);
+}
+
+}  // namespace
+
+struct BehaviorRoom::Impl {
+  struct Face {
+    Face(FaceId face_id, std::string face_name, std::uint64_t seed, const BehaviorRoomOptions& o)
+        : id(face_id), name(std::move(face_name)), mind(mix(seed + 1)),
+          eyes({mix(seed + 2), o.micro_movements, o.head_noise}), blink(mix(seed + 3)) {}
+    FaceId id;
+    std::string name;
+    std::uint64_t joined = 0;  ///< join order: the earliest present leads
+    std::size_t seat = 0;
+    ActionSelection mind;
+    EmotionState emotion;
+    EyeHeadController eyes;
+    Blinking blink;
+    VascularState vascular;
+    std::optional<AuTrack> facs;
+    double facs_t_s = 0;
+    FaceSnapshot snapshot;
+    codec::FaceParams params;
+    Routine shown_routine = Routine::visual_search;
+    std::optional<FaceId> shown_attend;
+    bool shown_leader = false;
+  };
+
+  BehaviorRoomOptions options;
+  std::vector<Face> faces;  ///< in join order
+  std::vector<Seat> seats;
+  std::uint32_t tick = 0;
+  std::uint64_t joins = 0;
+  std::vector<BehaviorEvent> events;
+
+  double dt() const { return 1.0 / options.tick_hz; }
+
+  Face* find(FaceId id) {
+    for (Face& f : faces)
+      if (f.id == id) return &f;
+    return nullptr;
+  }
+  const Face& get(FaceId id) const {
+    for (const Face& f : faces)
+      if (f.id == id) return f;
+    assert(false && "no such face in the room");
+    std::abort();
+  }
+  std::string name_of(FaceId id) {
+    const Face* f = find(id);
+    return f ? f->name : std::string("#") + std::to_string(id);
+  }
+  void event(FaceId id, std::string what) { events.push_back({id, std::move(what)}); }
+
+  void lay_out() {
+    const int count = options.seats > 0 ? options.seats : static_cast<int>(faces.size());
+    seats = seat_layout(std::max(count, 1));
+    if (options.seats <= 0)
+      for (std::size_t i = 0; i < faces.size(); ++i) faces[i].seat = i;
+    for (Face& f : faces) {
+      f.snapshot.seat = seats[f.seat];
+      refresh_snapshot(f);
+    }
+    // The first face present leads (section 6.1).
+    for (std::size_t i = 0; i < faces.size(); ++i) {
+      Face& f = faces[i];
+      const bool leads = i == 0;
+      f.mind.set_leader(leads, faces.front().id);
+      if (leads && !f.shown_leader) event(f.id, "leads");
+      f.shown_leader = leads;
+    }
+  }
+
+  void refresh_snapshot(Face& f) {
+    FaceSnapshot& s = f.snapshot;
+    s.id = f.id;
+    const HeadPose head = f.eyes.head();
+    s.eye_mid_room_mm = seat_to_room(s.seat, f.eyes.eye_position_seat());
+    s.mouth_room_mm = seat_to_room(s.seat, head_to_seat(head, head_geometry().mouth_mm));
+    const glm::vec3 dir_seat = direction_from_angles(f.eyes.gaze());
+    s.gaze_direction_room = glm::normalize(seat_to_room(s.seat, dir_seat) - s.seat.origin_mm);
+    s.head_yaw_rad = head.yaw_rad;
+    s.emotion = f.emotion.point();
+    s.emotion_template = classify(s.emotion);
+  }
+
+  void step_face(Face& f, const std::vector<FaceSnapshot>& room) {
+    const double dt_s = dt();
+    const std::vector<PerceivedFace> seen = perceive(f.snapshot, room);
+    const Intent intent = f.mind.step(dt_s, seen, f.eyes.gaze(), f.emotion.performing());
+    if (intent.perform) f.emotion.express(*intent.perform, intent.perform_envelope);
+    bool mimicking = false;
+    for (const PerceivedFace& p : seen) {
+      if (intent.mimic && p.id == *intent.mimic) {
+        f.emotion.follow(p.emotion, dt_s, kMimicTimeConstantS);
+        mimicking = true;
+      }
+    }
+    f.emotion.step(dt_s, mimicking);
+
+    glm::vec3 target = intent.look_seat_mm;
+    if (intent.attend) {
+      for (const FaceSnapshot& s : room)
+        if (s.id == *intent.attend) target = room_to_seat(f.snapshot.seat, s.eye_mid_room_mm);
+    }
+    f.eyes.look_at(target);
+    f.eyes.step(dt_s);
+    f.blink.step(dt_s, f.eyes.saccade_started_rad());
+    const EmotionPoint point = f.emotion.point();
+    if (auto started = f.vascular.step(dt_s, attending_count(f.id, room), point[static_cast<std::size_t>(Primary::fear)],
+                                       point[static_cast<std::size_t>(Primary::surprise)]))
+      event(f.id, *started);
+
+    codec::FaceParams p;
+    float expression_lids = 0;
+    p.au = emotion_action_units(point, &expression_lids);
+    if (f.facs) {
+      // The person's FACS sentence wins over the autonomous expression.
+      f.facs_t_s += dt_s;
+      p.au = f.facs->at(f.facs_t_s);
+      if (f.facs_t_s >= f.facs->length_s()) f.facs.reset();
+    }
+    f.eyes.write(p);
+    const float pitch_lids = lid_follows_pitch(f.eyes.eye().pitch_rad);
+    p.lid_left = p.lid_right = std::max(f.blink.closure(), std::min(1.0f, expression_lids + pitch_lids));
+    f.vascular.write(p);
+    f.params = p;
+
+    if (intent.routine != f.shown_routine || intent.attend != f.shown_attend) {
+      std::string what = std::string("behavior ") + std::string(routine_name(f.shown_routine)) + " -> " +
+                         std::string(routine_name(intent.routine));
+      if (intent.attend) {
+        what += " (";
+        what += name_of(*intent.attend);
+        what += ")";
+      }
+      // Visual search hops between faces every second: log its start only.
+      if (intent.routine != f.shown_routine || intent.routine != Routine::visual_search) event(f.id, what);
+      f.shown_routine = intent.routine;
+      f.shown_attend = intent.attend;
+    }
+  }
+
+  void step() {
+    std::vector<FaceSnapshot> room;
+    room.reserve(faces.size());
+    for (const Face& f : faces) room.push_back(f.snapshot);
+    for (Face& f : faces) step_face(f, room);
+    for (Face& f : faces) refresh_snapshot(f);
+    // Who looks at whom, from the gaze just computed.
+    std::vector<FaceSnapshot> now;
+    for (const Face& f : faces) now.push_back(f.snapshot);
+    for (Face& f : faces)
+      f.snapshot.looking_at = face_on_gaze(f.id, f.snapshot.eye_mid_room_mm, f.snapshot.gaze_direction_room, now);
+    ++tick;
+  }
+};
+
+BehaviorRoom::BehaviorRoom(const BehaviorRoomOptions& options) : impl_(std::make_unique<Impl>()) {
+  impl_->options = options;
+  impl_->options.tick_hz = std::clamp(options.tick_hz, 1, 240);
+  impl_->options.seats = std::clamp(options.seats, 0, kMaxFaces);
+  impl_->lay_out();
+}
+BehaviorRoom::~BehaviorRoom() = default;
+BehaviorRoom::BehaviorRoom(BehaviorRoom&&) noexcept = default;
+BehaviorRoom& BehaviorRoom::operator=(BehaviorRoom&&) noexcept = default;
+
+bool BehaviorRoom::add(FaceId id, std::string name) {
+  Impl& r = *impl_;
+  const int limit = r.options.seats > 0 ? r.options.seats : kMaxFaces;
+  if (r.find(id) || static_cast<int>(r.faces.size()) >= limit) return false;
+  r.faces.emplace_back(id, std::move(name), mix(r.options.seed ^ (std::uint64_t{id} << 20)), r.options);
+  Impl::Face& f = r.faces.back();
+  f.joined = r.joins++;
+  if (r.options.seats > 0) {
+    // The first free seat.
+    for (std::size_t s = 0; s < static_cast<std::size_t>(r.options.seats); ++s) {
+      if (std::none_of(r.faces.begin(), r.faces.end() - 1, [&](const Impl::Face& o) { return o.seat == s; })) {
+        f.seat = s;
+        break;
+      }
+    }
+  }
+  r.event(id, "joins");
+  r.lay_out();
+  return true;
+}
+
+void BehaviorRoom::remove(FaceId id) {
+  Impl& r = *impl_;
+  if (!r.find(id)) return;
+  std::erase_if(r.faces, [&](const Impl::Face& f) { return f.id == id; });
+  r.event(id, "leaves");
+  r.lay_out();
+}
+
+bool BehaviorRoom::contains(FaceId id) const { return impl_->find(id) != nullptr; }
+
+std::vector<FaceId> BehaviorRoom::faces() const {
+  std::vector<FaceId> ids;
+  for (const auto& f : impl_->faces) ids.push_back(f.id);
+  return ids;
+}
+
+namespace {
+std::string check_seconds(double seconds) {
+  if (!(seconds > 0 && seconds <= kMaxCommandS)) return "seconds must be more than 0 and at most 600";
+  return {};
+}
+}  // namespace
+
+std::string BehaviorRoom::look_at(FaceId face, FaceId target, double seconds) {
+  Impl::Face* f = impl_->find(face);
+  if (!f) return std::string("no avatar ") + std::to_string(face) + " in this room";
+  if (!impl_->find(target) || target == face) return std::string("avatar ") + std::to_string(target) + " is not another face in this room";
+  if (auto e = check_seconds(seconds); !e.empty()) return e;
+  f->mind.look_at(target, seconds);
+  impl_->event(face, std::string("command look at ") + impl_->name_of(target));
+  return {};
+}
+
+std::string BehaviorRoom::snub(FaceId face, FaceId target, double seconds) {
+  Impl::Face* f = impl_->find(face);
+  if (!f) return std::string("no avatar ") + std::to_string(face) + " in this room";
+  if (!impl_->find(target) || target == face) return std::string("avatar ") + std::to_string(target) + " is not another face in this room";
+  if (auto e = check_seconds(seconds); !e.empty()) return e;
+  f->mind.snub(target, seconds);
+  impl_->event(face, std::string("command snub ") + impl_->name_of(target));
+  return {};
+}
+
+std::string BehaviorRoom::express(FaceId face, std::string_view emotion, float intensity, double seconds) {
+  Impl::Face* f = impl_->find(face);
+  if (!f) return std::string("no avatar ") + std::to_string(face) + " in this room";
+  if (auto e = check_seconds(seconds); !e.empty()) return e;
+  if (!(intensity >= 0 && intensity <= 1)) return "intensity must be between 0 and 1";
+  if (emotion == "neutral") {
+    f->emotion.reset();
+  } else {
+    const auto primary = primary_from_name(emotion);
+    if (!primary)
+      return std::string("unknown emotion '") + std::string(emotion) +
+             "' (use joy, sadness, anger, fear, surprise, disgust or neutral)";
+    f->emotion.reset();
+    f->emotion.express(*primary, envelope_for(seconds, intensity, 0.6f));
+  }
+  f->mind.hold_expression(seconds + 1.0);
+  impl_->event(face, std::string("command express ") + std::string(emotion));
+  return {};
+}
+
+std::string BehaviorRoom::facs(FaceId face, std::string_view sentence) {
+  Impl::Face* f = impl_->find(face);
+  if (!f) return std::string("no avatar ") + std::to_string(face) + " in this room";
+  AuTrack track;
+  std::string error;
+  if (!facs_track(sentence, track, error)) return error;
+  f->facs = std::move(track);
+  f->facs_t_s = 0;
+  f->mind.hold_expression(f->facs->length_s());
+  impl_->event(face, "command facs");
+  return {};
+}
+
+void BehaviorRoom::chat(FaceId face, std::string_view text) {
+  Impl::Face* f = impl_->find(face);
+  if (!f) return;
+  const EmotionPoint delta = appraise_chat(text);
+  f->emotion.nudge(delta);
+  const auto strongest = std::max_element(delta.begin(), delta.end());
+  if (*strongest >= 0.3f)
+    f->emotion.express(static_cast<Primary>(strongest - delta.begin()), envelope_for(2.0, *strongest, 0.5f));
+  for (Impl::Face& other : impl_->faces)
+    if (other.id != face) other.mind.draw_attention(face, kChatAttentionS);
+  impl_->event(face, std::string("chat (") + label(classify(delta)) + ")");
+}
+
+void BehaviorRoom::tick() { impl_->step(); }
+std::uint32_t BehaviorRoom::tick_index() const { return impl_->tick; }
+double BehaviorRoom::dt_s() const { return impl_->dt(); }
+const codec::FaceParams& BehaviorRoom::face(FaceId id) const { return impl_->get(id).params; }
+const FaceSnapshot& BehaviorRoom::snapshot(FaceId id) const { return impl_->get(id).snapshot; }
+Routine BehaviorRoom::routine(FaceId id) const { return impl_->get(id).mind.routine(); }
+std::optional<FaceId> BehaviorRoom::attending(FaceId id) const { return impl_->get(id).mind.attending(); }
+bool BehaviorRoom::leader(FaceId id) const { return impl_->get(id).mind.leader(); }
+Seat BehaviorRoom::seat(FaceId id) const { return impl_->get(id).snapshot.seat; }
+YawPitch BehaviorRoom::gaze(FaceId id) const { return impl_->get(id).eyes.gaze(); }
+int BehaviorRoom::blinks(FaceId id) const { return impl_->get(id).blink.count(); }
+
+std::vector<BehaviorEvent> BehaviorRoom::take_events() { return std::exchange(impl_->events, {}); }
+
+}  // namespace fw::behavior

@@ -1,0 +1,78 @@
+#include "fw/behavior/seat_layout.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "fw/model/generic_face.hpp"
+#include "fw/model/landmark_template.hpp"
+
+namespace fw::behavior {
+
+std::vector<Seat> seat_layout(int count) {
+  std::vector<Seat> seats(static_cast<std::size_t>(std::max(count, 0)));
+  if (count <= 1) return seats;
+  // Spread at most 270 degrees so that a large room stays an open ring.
+  const float step = std::min(kSeatAngleRad, 4.712389f / static_cast<float>(count - 1));
+  const float radius = 0.5f * kSeatSpacingMm / std::sin(0.5f * step);
+  const glm::vec3 centre(0.0f, 0.0f, radius);
+  for (int i = 0; i < count; ++i) {
+    const float phi = (static_cast<float>(i) - 0.5f * static_cast<float>(count - 1)) * step;
+    seats[static_cast<std::size_t>(i)].origin_mm = centre + radius * glm::vec3(std::sin(phi), 0.0f, -std::cos(phi));
+    seats[static_cast<std::size_t>(i)].facing_yaw_rad = -phi;  // toward the centre
+  }
+  return seats;
+}
+
+const HeadGeometry& head_geometry() {
+  static const HeadGeometry geometry = [] {
+    const model::GenericFace& face = model::generic_face();
+    const float mm = model::kMillimetresPerUnit;
+    HeadGeometry g{};
+    // Same point as fw::render::kNeckPivot: the top of the neck, below the ears.
+    g.neck_pivot_mm = glm::vec3(0.0f, -1.5f, 0.2f) * mm;
+    for (int side = 0; side < 2; ++side) g.eye_mm[side] = face.eyes[static_cast<std::size_t>(side)].centre * mm;
+    g.eye_mid_mm = 0.5f * (g.eye_mm[0] + g.eye_mm[1]);
+    g.interocular_mm = glm::length(g.eye_mm[0] - g.eye_mm[1]);
+    glm::vec3 mouth(0.0f);
+    for (std::uint32_t v : face.mouth_slit) mouth += face.skin.positions[v];
+    if (!face.mouth_slit.empty()) mouth /= static_cast<float>(face.mouth_slit.size());
+    g.mouth_mm = mouth * mm;
+    return g;
+  }();
+  return geometry;
+}
+
+glm::vec3 head_to_seat(const HeadPose& pose, glm::vec3 p) {
+  // The renderer's head_transform: roll, then pitch, then yaw about the pivot.
+  const glm::vec3 pivot = head_geometry().neck_pivot_mm;
+  glm::mat4 m = glm::translate(glm::mat4(1.0f), pose.translation_mm + pivot);
+  m = glm::rotate(m, pose.yaw_rad, glm::vec3(0, 1, 0));
+  m = glm::rotate(m, -pose.pitch_rad, glm::vec3(1, 0, 0));
+  m = glm::rotate(m, -pose.roll_rad, glm::vec3(0, 0, 1));
+  return glm::vec3(m * glm::vec4(p - pivot, 1.0f));
+}
+
+glm::vec3 seat_to_room(const Seat& seat, glm::vec3 p) {
+  const float c = std::cos(seat.facing_yaw_rad), s = std::sin(seat.facing_yaw_rad);
+  return seat.origin_mm + glm::vec3(c * p.x + s * p.z, p.y, -s * p.x + c * p.z);
+}
+
+glm::vec3 room_to_seat(const Seat& seat, glm::vec3 p) {
+  const glm::vec3 d = p - seat.origin_mm;
+  const float c = std::cos(seat.facing_yaw_rad), s = std::sin(seat.facing_yaw_rad);
+  return {c * d.x - s * d.z, d.y, s * d.x + c * d.z};
+}
+
+YawPitch direction_angles(glm::vec3 d) {
+  const float horizontal = std::sqrt(d.x * d.x + d.z * d.z);
+  return {std::atan2(d.x, d.z), std::atan2(d.y, horizontal)};
+}
+
+glm::vec3 direction_from_angles(YawPitch a) {
+  return {std::sin(a.yaw_rad) * std::cos(a.pitch_rad), std::sin(a.pitch_rad), std::cos(a.yaw_rad) * std::cos(a.pitch_rad)};
+}
+
+}  // namespace fw::behavior

@@ -1,0 +1,53 @@
+#pragma once
+// Many faces stepped in parallel (the behavioral-animation paper, sec. 3.2,
+// spreads one face over the processors; a server with hundreds of avatars
+// does better giving each thread whole faces: no sharing, no locks inside a
+// step). A fixed pool of threads sized to the machine; the caller's thread
+// works too and the call returns when every face is done.
+#include <atomic>
+#include <condition_variable>
+#include <cstddef>
+#include <functional>
+#include <mutex>
+#include <span>
+#include <thread>
+#include <vector>
+
+#include "fw/physics/face_simulation.hpp"
+
+namespace fw::physics {
+
+class FacePool {
+ public:
+  /// @param[in] threads  threads in all, the caller's included; 0 = one per hardware thread
+  explicit FacePool(unsigned threads = 0);
+  ~FacePool();
+  FacePool(const FacePool&) = delete;
+  FacePool& operator=(const FacePool&) = delete;
+
+  unsigned thread_count() const { return static_cast<unsigned>(workers_.size()) + 1; }
+
+  /// Steps every face that is not at rest by `dt_seconds`.
+  void step_all(std::span<FaceSimulation> faces, double dt_seconds);
+  void step_all(std::span<FaceSimulation* const> faces, double dt_seconds);
+
+  /// Runs job(i) for every i in [0, count), spread over the threads; returns
+  /// when all are done. Jobs must not call back into the pool.
+  void for_each(std::size_t count, const std::function<void(std::size_t)>& job);
+
+ private:
+  void work();
+  void drain();
+
+  std::vector<std::thread> workers_;
+  std::mutex mutex_;
+  std::condition_variable wake_, done_;
+  const std::function<void(std::size_t)>* job_ = nullptr;
+  std::size_t count_ = 0;
+  std::atomic<std::size_t> next_{0};
+  std::size_t busy_ = 0;
+  std::size_t generation_ = 0;
+  bool stopping_ = false;
+};
+
+}  // namespace fw::physics

@@ -1,0 +1,135 @@
+#pragma once
+// One avatar's physics face: the tissue model's state, one array per
+// quantity, stepped by a mass-spring or a position-based-dynamics solver.
+// The server composes behavior and physics per avatar per tick:
+//
+//   FaceSimulation sim(face, {.solver = Solver::mass_spring, .seed = 7});
+//   sim.set_action_units(targets);     // FACS intensities -> muscle activations
+//   if (!sim.at_rest()) sim.step(1.0 / 30);
+//   FaceMeasurement m = sim.measure(); // the surface projected onto the AU basis
+//
+// Time is passed in; there are no globals; the same options, seed and calls
+// give the same result. Not thread-safe: one caller at a time (FacePool steps
+// many faces in parallel, each on one thread).
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "fw/codec/face_params.hpp"
+#include "fw/model/avatar_model.hpp"
+#include "fw/model/generic_face.hpp"
+#include "fw/physics/facial_muscles.hpp"
+#include "fw/physics/tissue_model.hpp"
+
+namespace fw::physics {
+
+enum class Solver : std::uint8_t {
+  mass_spring,  ///< viscoelastic units, muscle forces, semi-implicit Euler sub-steps (Lee et al. 1995)
+  pbd,          ///< position-based dynamics: distance, bending, area and volume constraints (Müller et al. 2007)
+};
+
+struct SimulationOptions {
+  Solver solver = Solver::mass_spring;
+  std::uint64_t seed = 1;
+  /// Each face's muscles are this share stronger or weaker than the table,
+  /// drawn from the seed (real faces differ); 0 for the reference face.
+  float individual_variation = 0.0f;
+  /// Longest sub-step, seconds; a mass-spring step never exceeds the
+  /// model's stable bound either. 1/120 s is the paper's four per frame.
+  double max_substep_s = 1.0 / 120.0;
+  /// Muscle excitation-contraction lag: first-order time constants, seconds.
+  float activation_time_s = 0.08f;
+  float deactivation_time_s = 0.12f;
+  /// Acceleration pulling the tissue down (-y), model units per s^2; 0 takes
+  /// the neutral mesh as the shape already balanced under gravity.
+  float gravity = 0.0f;
+  int pbd_iterations = 1;  ///< constraint passes per PBD sub-step
+};
+
+/// The simulated surface as FaceParams' action-unit part.
+struct FaceMeasurement {
+  std::array<float, codec::kAuChannelCount> action_units{};  ///< least squares, each in [0,1]
+  float residual_rms_mm = 0;  ///< RMS over the skin vertices of what the AUs do not explain
+};
+
+class FaceSimulation {
+ public:
+  /// A simulation of `face` measured against its own action units.
+  explicit FaceSimulation(const model::GenericFace& face, const SimulationOptions& options = {});
+  /// A simulation of an avatar's fitted face, measured against its cloned morphs.
+  explicit FaceSimulation(const model::AvatarModel& avatar, const SimulationOptions& options = {});
+  /// A simulation sharing a tissue model with others (faces of one avatar model).
+  explicit FaceSimulation(std::shared_ptr<const TissueModel> model, const SimulationOptions& options = {});
+
+  /// New AU intensity targets (kAuChannels order; clamped to [0,1], NaN = 0),
+  /// turned into muscle activations by au_muscle_map.hpp. Wakes a resting face
+  /// if they differ from the last ones.
+  void set_action_units(const std::array<float, codec::kAuChannelCount>& targets);
+  /// Drives the muscles directly (each clamped to [0,1]), bypassing the AU table.
+  void set_muscle_activations(const std::array<float, kMuscleCount>& targets);
+
+  /// Advances by `dt_seconds` (one rendered frame; internally several
+  /// sub-steps). dt is clamped to [0, 1] s; a non-finite dt is ignored. A face
+  /// at rest only advances its clock.
+  void step(double dt_seconds);
+
+  /// True when nothing moves, the muscles and the jaw have reached their
+  /// targets and the targets have not changed: stepping would change nothing.
+  bool at_rest() const { return at_rest_; }
+
+  /// Projects the current surface onto the AU basis (least squares with the
+  /// weights kept in [0,1], warm-started from the last measurement).
+  FaceMeasurement measure();
+
+  // Inspection, for tests, tools and benchmarks.
+  const TissueModel& model() const { return *model_; }
+  const SimulationOptions& options() const { return options_; }
+  double time_s() const { return time_s_; }
+  glm::vec3 node_position(std::size_t node) const { return {x_[node], y_[node], z_[node]}; }
+  /// The skin vertices (epidermis nodes), model units.
+  std::vector<glm::vec3> surface() const;
+  float jaw_angle_rad() const { return jaw_angle_; }
+  const std::array<float, kMuscleCount>& muscle_activations() const { return activation_; }
+  /// Sum of 1/2 m v^2 over the moving nodes.
+  double kinetic_energy() const;
+  /// Volume of element `e` now, cubic model units.
+  float element_volume(std::size_t e) const;
+  /// Height of moving node `node` above the skull plane under it, model units.
+  float height_above_skull(std::size_t node) const;
+  /// Sub-steps that step(dt) takes.
+  int substeps_for(double dt_seconds) const;
+  /// Bytes of state this simulation owns (the shared model not counted).
+  std::size_t state_bytes() const;
+
+ private:
+  void substep(float h);
+  void update_muscles_and_jaw(float h);
+  void place_bone(float h);
+  void mass_spring_substep(float h);
+  void pbd_substep(float h);
+  void resolve_skull();
+  glm::vec3 jaw_turned(const glm::vec3& p, float share) const;
+
+  std::shared_ptr<const TissueModel> model_;
+  SimulationOptions options_;
+
+  std::array<float, kMuscleCount> strength_{};
+  std::array<float, kMuscleCount> target_{}, activation_{};
+  std::array<float, codec::kAuChannelCount> au_targets_{};
+  float jaw_angle_ = 0, jaw_speed_ = 0, jaw_target_ = 0;
+  float jaw_cos_ = 1, jaw_sin_ = 0;
+  double time_s_ = 0;
+  bool at_rest_ = true;
+  float max_speed2_ = 0;
+  // One array per quantity, #nodes each (bone nodes included, so springs
+  // index them directly); f doubles as the previous positions in PBD.
+  std::vector<float> x_, y_, z_, vx_, vy_, vz_, fx_, fy_, fz_;
+  std::vector<glm::vec3> skull_normal_;  ///< #V, turned with the jaw
+  std::array<float, codec::kAuChannelCount> last_weights_{};
+};
+
+}  // namespace fw::physics

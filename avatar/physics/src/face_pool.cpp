@@ -1,0 +1,84 @@
+#include "fw/physics/face_pool.hpp"
+
+#include <algorithm>
+
+namespace fw::physics {
+namespace {
+
+// Faces handed out per grab: enough to make the atomic negligible, few
+// enough that the threads finish together.
+constexpr std::size_t kChunk = 4;
+
+}  // namespace
+
+FacePool::FacePool(unsigned threads) {
+  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+  for (unsigned i = 1; i < threads; ++i) workers_.emplace_back([this] { work(); });
+}
+
+FacePool::~FacePool() {
+  {
+    std::lock_guard lock(mutex_);
+    stopping_ = true;
+  }
+  wake_.notify_all();
+  for (std::thread& t : workers_) t.join();
+}
+
+void FacePool::drain() {
+  for (;;) {
+    const std::size_t begin = next_.fetch_add(kChunk, std::memory_order_relaxed);
+    if (begin >= count_) return;
+    const std::size_t end = std::min(count_, begin + kChunk);
+    for (std::size_t i = begin; i < end; ++i) (*job_)(i);
+  }
+}
+
+void FacePool::work() {
+  std::size_t seen = 0;
+  for (;;) {
+    {
+      std::unique_lock lock(mutex_);
+      wake_.wait(lock, [&] { return stopping_ || generation_ != seen; });
+      if (stopping_) return;
+      seen = generation_;
+    }
+    drain();
+    {
+      std::lock_guard lock(mutex_);
+      if (--busy_ == 0) done_.notify_one();
+    }
+  }
+}
+
+void FacePool::for_each(std::size_t count, const std::function<void(std::size_t)>& job) {
+  if (count == 0) return;
+  if (workers_.empty() || count <= kChunk) {
+    for (std::size_t i = 0; i < count; ++i) job(i);
+    return;
+  }
+  {
+    std::lock_guard lock(mutex_);
+    job_ = &job;
+    count_ = count;
+    next_.store(0, std::memory_order_relaxed);
+    busy_ = workers_.size();
+    ++generation_;
+  }
+  wake_.notify_all();
+  drain();
+  std::unique_lock lock(mutex_);
+  done_.wait(lock, [&] { return busy_ == 0; });
+  job_ = nullptr;
+}
+
+void FacePool::step_all(std::span<FaceSimulation> faces, double dt_seconds) {
+  // A face at rest only advances its clock inside step().
+  for_each(faces.size(), [&](std::size_t i) { faces[i].step(dt_seconds); });
+}
+
+void FacePool::step_all(std::span<FaceSimulation* const> faces, double dt_seconds) {
+  for_each(faces.size(), [&](std::size_t i) { faces[i]->step(dt_seconds); });
+}
+
+}  // namespace fw::physics

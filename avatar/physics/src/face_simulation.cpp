@@ -1,0 +1,232 @@
+#include "fw/physics/face_simulation.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "fw/model/landmark_template.hpp"
+#include "fw/physics/au_muscle_map.hpp"
+#include "fw/physics/au_projection.hpp"
+#include "fw/physics/prism_volume.hpp"
+#include "fw/physics/skull_contact.hpp"
+
+namespace fw::physics {
+namespace {
+
+// Thresholds under which a face counts as at rest: the skin moves slower
+// than 0.006 mm/s and every muscle is within 0.01 % of its target.
+constexpr float kRestSpeed = 1e-4f;
+constexpr float kRestActivation = 1e-4f;
+constexpr double kMaxStepS = 1.0;
+// The jaw: a critically damped turn toward the angle its muscles hold.
+constexpr float kJawOmega = 20.0f;
+
+// SplitMix64: a fixed, portable generator, so a seed means the same face
+// on every platform.
+std::uint64_t splitmix64(std::uint64_t& state) {
+  std::uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
+}  // namespace
+
+FaceSimulation::FaceSimulation(const model::GenericFace& face, const SimulationOptions& options)
+    : FaceSimulation(build_tissue_model(face, face.action_units), options) {}
+
+FaceSimulation::FaceSimulation(const model::AvatarModel& avatar, const SimulationOptions& options)
+    : FaceSimulation(build_tissue_model(avatar.face, avatar.morphs), options) {}
+
+FaceSimulation::FaceSimulation(std::shared_ptr<const TissueModel> model, const SimulationOptions& options)
+    : model_(std::move(model)), options_(options) {
+  assert(model_);
+  const TissueModel& m = *model_;
+  x_ = m.rest_x;
+  y_ = m.rest_y;
+  z_ = m.rest_z;
+  for (auto* v : {&vx_, &vy_, &vz_, &fx_, &fy_, &fz_}) v->assign(m.node_count, 0.0f);
+  skull_normal_ = m.skull_normal;
+  // The neutral mesh is the shape at rest without gravity; with it, the
+  // tissue has somewhere to go.
+  at_rest_ = options_.gravity == 0.0f;
+  std::uint64_t state = options_.seed;
+  for (std::size_t i = 0; i < kMuscleCount; ++i) {
+    const double u = double(splitmix64(state) >> 11) / double(1ULL << 53) * 2.0 - 1.0;  // [-1, 1)
+    strength_[i] = m.muscles[i].strength * (1.0f + options_.individual_variation * static_cast<float>(u));
+  }
+}
+
+void FaceSimulation::set_action_units(const std::array<float, codec::kAuChannelCount>& targets) {
+  au_targets_ = targets;
+  set_muscle_activations(physics::muscle_activations(targets));
+}
+
+void FaceSimulation::set_muscle_activations(const std::array<float, kMuscleCount>& targets) {
+  for (std::size_t i = 0; i < kMuscleCount; ++i) {
+    const float t = std::isfinite(targets[i]) ? std::clamp(targets[i], 0.0f, 1.0f) : 0.0f;
+    if (t != target_[i]) at_rest_ = false;
+    target_[i] = t;
+  }
+  float jaw = 0.0f;
+  for (std::size_t i = 0; i < kMuscleCount; ++i) jaw += 0.5f * target_[i] * model_->muscles[i].jaw_angle_rad;
+  jaw_target_ = std::clamp(jaw, model_->jaw_min_rad, model_->jaw_max_rad);
+}
+
+int FaceSimulation::substeps_for(double dt_seconds) const {
+  double h = options_.max_substep_s > 0.0 ? options_.max_substep_s : 1.0 / 120.0;
+  if (options_.solver == Solver::mass_spring) h = std::min(h, double(model_->stable_substep_s));
+  return std::max(1, static_cast<int>(std::ceil(std::clamp(dt_seconds, 0.0, kMaxStepS) / h - 1e-9)));
+}
+
+void FaceSimulation::step(double dt_seconds) {
+  if (!std::isfinite(dt_seconds) || dt_seconds <= 0.0) return;
+  dt_seconds = std::min(dt_seconds, kMaxStepS);
+  time_s_ += dt_seconds;
+  if (at_rest_) return;
+  const int n = substeps_for(dt_seconds);
+  const float h = static_cast<float>(dt_seconds / n);
+  for (int i = 0; i < n; ++i) substep(h);
+  bool settled = max_speed2_ < kRestSpeed * kRestSpeed && std::abs(jaw_speed_) < kRestSpeed &&
+                 std::abs(jaw_angle_ - jaw_target_) < kRestActivation;
+  for (std::size_t i = 0; i < kMuscleCount && settled; ++i)
+    settled = std::abs(activation_[i] - target_[i]) < kRestActivation;
+  at_rest_ = settled;
+}
+
+void FaceSimulation::substep(float h) {
+  update_muscles_and_jaw(h);
+  place_bone(h);
+  if (options_.solver == Solver::mass_spring) mass_spring_substep(h);
+  else pbd_substep(h);
+}
+
+void FaceSimulation::update_muscles_and_jaw(float h) {
+  const float rise = 1.0f - std::exp(-h / std::max(options_.activation_time_s, 1e-4f));
+  const float fall = 1.0f - std::exp(-h / std::max(options_.deactivation_time_s, 1e-4f));
+  for (std::size_t i = 0; i < kMuscleCount; ++i) {
+    const float gap = target_[i] - activation_[i];
+    activation_[i] += gap * (gap > 0.0f ? rise : fall);
+  }
+  // Semi-implicit: the speed first, then the angle with the new speed.
+  jaw_speed_ += h * (kJawOmega * kJawOmega * (jaw_target_ - jaw_angle_) - 2.0f * kJawOmega * jaw_speed_);
+  jaw_angle_ = std::clamp(jaw_angle_ + h * jaw_speed_, model_->jaw_min_rad, model_->jaw_max_rad);
+  jaw_cos_ = std::cos(jaw_angle_);
+  jaw_sin_ = std::sin(jaw_angle_);
+}
+
+glm::vec3 FaceSimulation::jaw_turned(const glm::vec3& p, float share) const {
+  const TissueModel& m = *model_;
+  const float qy = p.y - m.jaw_hinge.y, qz = p.z - m.jaw_hinge.z;
+  const glm::vec3 turned(p.x, m.jaw_hinge.y + jaw_cos_ * qy - jaw_sin_ * qz, m.jaw_hinge.z + jaw_sin_ * qy + jaw_cos_ * qz);
+  return p + share * (turned - p);
+}
+
+// The bone layer follows the mandible by each column's share; its speed is
+// kept so that the dampers joined to it see the motion.
+void FaceSimulation::place_bone(float h) {
+  const TissueModel& m = *model_;
+  const std::size_t base = m.moving_node_count;
+  for (std::uint16_t v : m.jaw_columns) {
+    const std::size_t i = base + v;
+    const float share = m.jaw_share[v];
+    const glm::vec3 p = jaw_turned({m.rest_x[i], m.rest_y[i], m.rest_z[i]}, share);
+    vx_[i] = (p.x - x_[i]) / h;
+    vy_[i] = (p.y - y_[i]) / h;
+    vz_[i] = (p.z - z_[i]) / h;
+    x_[i] = p.x;
+    y_[i] = p.y;
+    z_[i] = p.z;
+    const glm::vec3 n = m.skull_normal[v];
+    const glm::vec3 turned = glm::vec3(n.x, jaw_cos_ * n.y - jaw_sin_ * n.z, jaw_sin_ * n.y + jaw_cos_ * n.z);
+    skull_normal_[v] = glm::normalize(n + share * (turned - n));
+  }
+  // The pinned outline follows its bone.
+  for (std::uint16_t i : m.pinned_nodes) {
+    const float share = m.jaw_share[i % m.vertex_count];
+    if (share <= 0.0f) continue;
+    const glm::vec3 p = jaw_turned({m.rest_x[i], m.rest_y[i], m.rest_z[i]}, share);
+    vx_[i] = (p.x - x_[i]) / h;
+    vy_[i] = (p.y - y_[i]) / h;
+    vz_[i] = (p.z - z_[i]) / h;
+    x_[i] = p.x;
+    y_[i] = p.y;
+    z_[i] = p.z;
+  }
+}
+
+void FaceSimulation::resolve_skull() {
+  const TissueModel& m = *model_;
+  const std::size_t nv = m.vertex_count, bone = m.moving_node_count;
+  for (std::size_t layer = 0; layer < kMovingLayerCount; ++layer) {
+    const float share = m.layer_min_height[layer];
+    for (std::size_t v = 0; v < nv; ++v) {
+      const std::size_t i = layer * nv + v, b = bone + v;
+      if (m.inverse_mass[i] == 0.0f) continue;
+      glm::vec3 p(x_[i], y_[i], z_[i]), vel(vx_[i], vy_[i], vz_[i]);
+      if (!resolve_skull_contact({x_[b], y_[b], z_[b]}, skull_normal_[v], share * m.column_thickness[v], p, vel))
+        continue;
+      x_[i] = p.x, y_[i] = p.y, z_[i] = p.z;
+      vx_[i] = vel.x, vy_[i] = vel.y, vz_[i] = vel.z;
+    }
+  }
+}
+
+FaceMeasurement FaceSimulation::measure() {
+  const TissueModel& m = *model_;
+  const std::size_t n = m.vertex_count;
+  // The displacement (3 #V floats) goes into the force scratch array, which
+  // both solvers rewrite at the start of every sub-step: no allocation.
+  float* d = fx_.data();
+  assert(fx_.size() >= 3 * n);
+  for (std::size_t v = 0; v < n; ++v) {
+    d[3 * v + 0] = x_[v] - m.rest_x[v];
+    d[3 * v + 1] = y_[v] - m.rest_y[v];
+    d[3 * v + 2] = z_[v] - m.rest_z[v];
+  }
+  FaceMeasurement out;
+  const double residual2 =
+      project_onto_basis(m.basis, std::span<const float>(d, 3 * n), last_weights_);
+  out.action_units = last_weights_;
+  out.residual_rms_mm = static_cast<float>(std::sqrt(residual2 / double(n)) * model::kMillimetresPerUnit);
+  return out;
+}
+
+std::vector<glm::vec3> FaceSimulation::surface() const {
+  std::vector<glm::vec3> out(model_->vertex_count);
+  for (std::size_t v = 0; v < out.size(); ++v) out[v] = node_position(v);
+  return out;
+}
+
+double FaceSimulation::kinetic_energy() const {
+  const TissueModel& m = *model_;
+  const auto& inverse_mass = options_.solver == Solver::mass_spring ? m.explicit_inverse_mass : m.inverse_mass;
+  double sum = 0.0;
+  for (std::size_t i = 0; i < m.moving_node_count; ++i) {
+    if (inverse_mass[i] == 0.0f) continue;  // held: moves only with the bone
+    sum += (double(vx_[i]) * vx_[i] + double(vy_[i]) * vy_[i] + double(vz_[i]) * vz_[i]) / inverse_mass[i];
+  }
+  return 0.5 * sum;
+}
+
+float FaceSimulation::element_volume(std::size_t e) const {
+  PrismNodes p;
+  const auto nodes = model_->element(e);
+  for (std::size_t k = 0; k < 6; ++k) p[k] = node_position(nodes[k]);
+  return prism_volume(p);
+}
+
+float FaceSimulation::height_above_skull(std::size_t node) const {
+  const std::size_t v = node % model_->vertex_count;
+  return glm::dot(node_position(node) - node_position(model_->moving_node_count + v), skull_normal_[v]);
+}
+
+std::size_t FaceSimulation::state_bytes() const {
+  std::size_t bytes = sizeof(*this);
+  for (const auto* v : {&x_, &y_, &z_, &vx_, &vy_, &vz_, &fx_, &fy_, &fz_}) bytes += v->capacity() * sizeof(float);
+  return bytes + skull_normal_.capacity() * sizeof(glm::vec3);
+}
+
+}  // namespace fw::physics

@@ -1,0 +1,38 @@
+#pragma once
+// The mass-spring solver's two hot loops as free kernels over flat arrays:
+// the viscoelastic units and the prism volumes. Each walks its elements in
+// blocks: first every element's force is computed into a small local block
+// (no writes to shared nodes, so the compiler vectorises it, with gathers
+// where the CPU has them), then the block is added onto the nodes.
+#include <cstddef>
+
+#include "fw/physics/tissue_model.hpp"
+
+namespace fw::physics::detail {
+
+struct NodeArrays {
+  const float* x;
+  const float* y;
+  const float* z;
+  const float* vx;
+  const float* vy;
+  const float* vz;
+  float* fx;
+  float* fy;
+  float* fz;
+};
+
+/// Per spring kind: F = k1 (L - slack L0) + k2_extra max(0, L - knee L0) + c dL/dt.
+struct SpringKindTable {
+  float k1[kSpringKindCount];
+  float k2_extra[kSpringKindCount];
+  float slack[kSpringKindCount];
+  float knee[kSpringKindCount];
+  float damping[kSpringKindCount];
+};
+SpringKindTable spring_kind_table(const TissueMaterial& material);
+
+void add_spring_forces(const TissueModel& model, const SpringKindTable& table, const NodeArrays& nodes);
+void add_volume_forces(const TissueModel& model, const NodeArrays& nodes);
+
+}  // namespace fw::physics::detail

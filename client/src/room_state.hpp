@@ -1,0 +1,74 @@
+#pragma once
+// What the network side knows of the room, shared with the render loop:
+// the avatars, their decoders, their packages, the link statistics and the
+// room's events. One mutex guards all of it; both sides hold it briefly
+// (decoding a room frame, reading the faces of one output frame).
+#include <chrono>
+#include <cstdint>
+#include <deque>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fw/codec/codec.hpp"
+#include "fw/codec/messages.hpp"
+#include "link_stats.hpp"
+#include "room_view.hpp"
+
+namespace fw::client {
+
+struct RoomAvatar {
+  codec::AvatarInfo info;
+  /// When its last frame was decoded: the face is extrapolated from there.
+  std::chrono::steady_clock::time_point last_frame_at{};
+  /// The newest complete package (preview, then full), and which it is.
+  std::shared_ptr<const std::vector<std::uint8_t>> package;
+  std::optional<codec::PackageChunk::Quality> package_quality;
+  std::uint64_t package_serial = 0;  ///< grows with every new package, so the renderer sees a change
+};
+
+/// A line for the summary and for tests: chat lines and presence changes.
+struct RoomEventRecord {
+  std::string kind;  ///< "chat", "joined", "left"
+  std::string name;
+  std::string text;  ///< chat only
+};
+
+class RoomState {
+ public:
+  std::mutex mutex;
+
+  bool joined = false;       ///< a welcome arrived on the current connection
+  std::uint32_t you = 0;
+  std::string room;
+  int tick_hz = 30;
+  std::map<std::uint32_t, RoomAvatar> avatars;
+  codec::RoomDecoder decoder;
+  LinkStats stats;
+  std::optional<codec::LinkStats> server_link;  ///< the server's last word on this link
+  std::deque<RoomEventRecord> events;           ///< the last kMaxEvents
+  /// Set when the client must stop: the server refused it for good (bad
+  /// token, room full, ...), with what to do.
+  std::optional<std::string> fatal_error;
+
+  static constexpr std::size_t kMaxEvents = 200;
+
+  void record(RoomEventRecord event) {
+    events.push_back(std::move(event));
+    if (events.size() > kMaxEvents) events.pop_front();
+  }
+  std::string name_of(std::uint32_t avatar) const {
+    const auto it = avatars.find(avatar);
+    return it == avatars.end() ? "avatar " + std::to_string(avatar) : it->second.info.name;
+  }
+
+  /// Each avatar's face now (extrapolated from its last frame), in seat
+  /// order (avatar id: the order they joined in). Avatars none of whose
+  /// frames arrived yet are left out.
+  std::vector<AvatarFace> faces(std::chrono::steady_clock::time_point now) const;
+};
+
+}  // namespace fw::client

@@ -1,0 +1,25 @@
+#include "room_summary.hpp"
+
+namespace fw::client {
+
+nlohmann::json room_summary(const RoomState& state, std::chrono::steady_clock::time_point now) {
+  nlohmann::json summary = state.stats.summary(now);
+  summary["room"] = state.room;
+  summary["you"] = state.you;
+  summary["avatars_in_room"] = state.avatars.size();
+  std::size_t packages = 0;
+  for (const auto& [id, avatar] : state.avatars) packages += avatar.package ? 1 : 0;
+  summary["avatars_with_package"] = packages;
+  nlohmann::json events = nlohmann::json::array();
+  for (const RoomEventRecord& event : state.events)
+    events.push_back({{"kind", event.kind}, {"name", event.name}, {"text", event.text}});
+  summary["events"] = events;
+  if (state.server_link)
+    summary["server_link"] = {{"target_bps", state.server_link->target_bps},
+                              {"drain_bps", state.server_link->drain_bps},
+                              {"queued_bytes", state.server_link->queued_bytes},
+                              {"skipped_ticks", state.server_link->skipped_ticks}};
+  return summary;
+}
+
+}  // namespace fw::client

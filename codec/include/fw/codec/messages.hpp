@@ -1,0 +1,302 @@
+#pragma once
+// The room protocol's session messages (server/PROTOCOL.md is the normative
+// description; this header is its C++ API): hello, welcome, presence, chat,
+// commands, package chunks, rate, ping/pong, link statistics, closing and
+// timed room frames, plus the length prefix that delimits messages on TCP.
+//
+// Every message is one WebSocket binary message, or one length-prefixed frame
+// on TCP. A session message's first byte is 0x80 | MessageType; the codec's
+// own messages (stream header 0x10, room frame 0x13, resync request 0x14)
+// travel on the same connection unchanged, and classify() tells them apart.
+//
+// Readers are bounded: every string, count and number has a limit, nothing
+// is allocated past it, and bad bytes give a MessageError, never an exception.
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace fw::codec {
+
+/// The session protocol's version, carried in hello and welcome. A server
+/// answers a hello of another version with Closing{unsupported_version}.
+inline constexpr std::uint16_t kProtocolVersion = 1;
+
+/// The low seven bits of a session message's first byte. Values never change.
+enum class MessageType : std::uint8_t {
+  hello = 1,             ///< up: first message of a connection
+  welcome = 2,           ///< down: the answer to hello (room state)
+  presence = 3,          ///< down: an avatar joined or left
+  chat = 4,              ///< both: a chat line
+  command = 5,           ///< up: a command to one's own avatar
+  command_result = 6,    ///< down: whether a command was accepted
+  package_chunk = 7,     ///< down: a piece of an avatar package
+  set_rate = 8,          ///< up: a new downstream budget
+  ping = 9,              ///< up: clock and round-trip probe
+  pong = 10,             ///< down: the answer to ping
+  link_stats = 11,       ///< down: what the server measures of the link
+  closing = 12,          ///< down: why the server closes the connection (last message)
+  timed_room_frame = 13, ///< down: a codec room frame with its tick and server time
+};
+inline constexpr std::uint8_t kSessionMessageBit = 0x80;
+
+/// What a message on the connection is, from its first byte.
+enum class MessageKind : std::uint8_t {
+  invalid,         ///< empty, or a first byte no message starts with
+  stream_header,   ///< codec stream header (0x10)
+  room_frame,      ///< codec room frame (0x13)
+  resync_request,  ///< codec resync request (0x14)
+  session,         ///< 0x80 | MessageType (a known type)
+};
+MessageKind classify(std::span<const std::uint8_t> message);
+/// The session message's type; only meaningful when classify() says session.
+MessageType session_type(std::span<const std::uint8_t> message);
+
+/// Why a message was refused. Values never change; new codes get new numbers.
+enum class MessageError : std::uint8_t {
+  ok = 0,
+  empty = 1,                ///< zero bytes
+  not_session_message = 2,  ///< the first byte's high bit is clear (a codec message, or garbage)
+  unknown_type = 3,         ///< 0x80 | a type this version does not know
+  wrong_type = 4,           ///< a known type, but not the one this call reads
+  truncated = 5,            ///< a field runs past the end of the message
+  too_large = 6,            ///< over the message's size limit
+  string_too_long = 7,      ///< a string over its field's limit
+  bad_text = 8,             ///< a string that is not UTF-8, or holds control characters
+  value_out_of_range = 9,   ///< a number outside what its field allows
+  trailing_bytes = 10,      ///< bytes after the last field
+  too_many_entries = 11,    ///< a list over its limit
+  unsupported_version = 12, ///< a hello or welcome of another protocol version
+  bad_flags = 13,           ///< reserved flag bits set
+};
+/// A sentence for a person: what was wrong with the message.
+std::string_view describe(MessageError error);
+
+// ---------------------------------------------------------------------------
+// Limits (PROTOCOL.md, "Limits").
+
+inline constexpr std::size_t kMaxUpstreamMessageBytes = 8 * 1024;
+/// A 64 KiB codec room frame plus the timed frame's prefix fits.
+inline constexpr std::size_t kMaxDownstreamMessageBytes = 64 * 1024 + 64;
+inline constexpr std::size_t kMaxRoomNameBytes = 64;
+inline constexpr std::size_t kMaxDisplayNameBytes = 32;
+inline constexpr std::size_t kMaxAssetIdBytes = 64;
+inline constexpr std::size_t kMaxTokenBytes = 512;
+inline constexpr std::size_t kMaxChatBytes = 500;
+inline constexpr std::size_t kMaxEmotionBytes = 16;
+inline constexpr std::size_t kMaxSentenceBytes = 4096;
+inline constexpr std::size_t kMaxReasonBytes = 120;
+inline constexpr std::size_t kMaxWelcomeAvatars = 64;
+inline constexpr std::size_t kMaxPackageBytes = 8 * 1024 * 1024;
+inline constexpr std::size_t kMaxChunkBytes = 16 * 1024;
+inline constexpr std::uint32_t kMaxBitsPerSecond = 100'000'000;
+inline constexpr std::uint32_t kMaxCommandMs = 600'000;
+inline constexpr std::uint32_t kMaxAvatarIdValue = (1u << 21) - 1;  ///< as codec::kMaxAvatarId
+
+// ---------------------------------------------------------------------------
+// Messages.
+
+/// Up, first message of a connection.
+struct Hello {
+  std::uint16_t protocol_version = kProtocolVersion;
+  std::string room;    ///< 1 .. 64 bytes
+  std::string name;    ///< display name, 1 .. 32 bytes
+  std::string avatar;  ///< asset id of an uploaded package; empty: the server makes a procedural face
+  std::string token;   ///< join token; empty when the server needs none
+  /// Downstream budget in bits per second, every byte of every message
+  /// counted; 0: the server's default.
+  std::uint32_t max_bps = 0;
+  /// Room frames arrive as timed room frames (tick and server time, for
+  /// latency measurements) instead of bare codec room frames.
+  bool timestamps = false;
+  /// No package chunks on this connection (the client fetches packages over HTTP).
+  bool no_packages = false;
+  /// The client holds its own avatar's package (it uploaded the package
+  /// itself): none of its own avatar's packages come back down.
+  bool own_package = false;
+};
+
+/// One avatar in the room.
+struct AvatarInfo {
+  std::uint32_t id = 0;  ///< the room-frame avatar id
+  std::string name;
+  std::string asset;     ///< asset id (GET /api/packages/ASSET)
+  std::uint32_t preview_bytes = 0;  ///< size of the preview package, 0 if none
+  std::uint32_t full_bytes = 0;     ///< size of the full package
+  bool person = true;               ///< false for the room's autonomous avatars
+};
+
+/// Down, the answer to hello; the codec stream header follows it.
+struct Welcome {
+  std::uint16_t protocol_version = kProtocolVersion;
+  std::uint32_t you = 0;       ///< the joining connection's own avatar id
+  std::string room;
+  std::uint8_t tick_hz = 30;   ///< simulation ticks per second
+  std::uint32_t max_bps = 0;   ///< the downstream budget the server starts with
+  std::vector<AvatarInfo> avatars;  ///< everybody in the room, the joiner included
+};
+
+/// Down: an avatar joined (with everything about it) or left (id only).
+struct Presence {
+  enum class Change : std::uint8_t { joined = 0, left = 1 };
+  Change change = Change::joined;
+  AvatarInfo avatar;
+};
+
+/// Up: a line typed by the person (`from` ignored). Down: from an avatar.
+struct Chat {
+  std::uint32_t from = 0;
+  std::string text;  ///< 1 .. 500 bytes of UTF-8
+};
+
+/// Up: a command to one's own avatar.
+struct Command {
+  enum class Kind : std::uint8_t { express = 0, look_at = 1, snub = 2, facs = 3 };
+  std::uint32_t request_id = 0;  ///< echoed in the result
+  Kind kind = Kind::express;
+  std::string emotion;           ///< express: joy, sadness, anger, fear, surprise, disgust, neutral
+  float intensity = 1;           ///< express: 0 .. 1 (carried in hundredths)
+  std::uint32_t target = 0;      ///< look_at, snub: an avatar id
+  std::uint32_t duration_ms = 3000;  ///< express, look_at, snub: 0 .. 600000
+  std::string sentence;          ///< facs: a FACS expression sentence
+};
+
+/// Down: the answer to a command.
+struct CommandResult {
+  std::uint32_t request_id = 0;
+  std::string error;  ///< empty: accepted; else why not (at most 120 bytes)
+};
+
+/// Down: a piece of an avatar's package. The preview (about 1 KB) comes
+/// first, the full package after it; chunks of one package arrive in order.
+struct PackageChunk {
+  enum class Quality : std::uint8_t { preview = 0, full = 1 };
+  std::uint32_t avatar = 0;
+  Quality quality = Quality::preview;
+  std::uint32_t total_bytes = 0;  ///< the whole package, 1 .. kMaxPackageBytes
+  std::uint32_t offset = 0;       ///< where `data` goes
+  std::vector<std::uint8_t> data; ///< 1 .. kMaxChunkBytes, offset + size <= total
+};
+
+/// Up: a new downstream budget (0: the server's default).
+struct SetRate {
+  std::uint32_t max_bps = 0;
+};
+
+/// Up: a probe; the server answers at once with a Pong.
+struct Ping {
+  std::uint32_t nonce = 0;
+  std::uint64_t client_time_us = 0;
+};
+struct Pong {
+  std::uint32_t nonce = 0;
+  std::uint64_t client_time_us = 0;  ///< echoed
+  std::uint64_t server_time_us = 0;  ///< the server's monotonic clock (as in TimedRoomFrame)
+};
+
+/// Down, about once a second: what the server measures of this subscriber.
+struct LinkStats {
+  std::uint32_t target_bps = 0;   ///< what the rate control aims at now
+  std::uint32_t drain_bps = 0;    ///< what actually left the server (last second)
+  std::uint32_t queued_bytes = 0; ///< waiting to be written
+  std::uint32_t skipped_ticks = 0;///< ticks dropped because the link was full (since the start)
+};
+
+/// Down, the last message before the server closes the connection.
+enum class CloseCode : std::uint16_t {
+  normal = 0,               ///< the client left
+  protocol_error = 1,       ///< a malformed message
+  message_too_large = 2,
+  unsupported_version = 3,
+  unauthorized = 4,         ///< missing, bad or expired token, or one for another room
+  room_full = 5,
+  rate_limited = 6,         ///< too many messages or bytes from the client
+  handshake_timeout = 7,    ///< no hello in time
+  idle_timeout = 8,         ///< nothing from the client in time
+  shutting_down = 9,        ///< the server drains
+  bad_request = 10,         ///< a well-formed hello the server cannot serve (bad name, unknown avatar)
+  server_full = 11,
+};
+struct Closing {
+  CloseCode code = CloseCode::normal;
+  std::string reason;  ///< at most 120 bytes, for a person
+};
+
+/// Down, instead of a bare room frame when the hello asked for timestamps.
+struct TimedRoomFrame {
+  std::uint32_t tick = 0;            ///< the room's tick index
+  std::uint64_t server_time_us = 0;  ///< server monotonic clock when the tick was simulated
+  std::span<const std::uint8_t> room_frame;  ///< the codec room frame (a view into the message)
+};
+
+// Writers append one whole message to `out` (which they do not clear).
+// Preconditions (field limits) are asserted: callers validate user input.
+void write_message(const Hello& message, std::vector<std::uint8_t>& out);
+void write_message(const Welcome& message, std::vector<std::uint8_t>& out);
+void write_message(const Presence& message, std::vector<std::uint8_t>& out);
+void write_message(const Chat& message, std::vector<std::uint8_t>& out);
+void write_message(const Command& message, std::vector<std::uint8_t>& out);
+void write_message(const CommandResult& message, std::vector<std::uint8_t>& out);
+void write_message(const PackageChunk& message, std::vector<std::uint8_t>& out);
+void write_message(const SetRate& message, std::vector<std::uint8_t>& out);
+void write_message(const Ping& message, std::vector<std::uint8_t>& out);
+void write_message(const Pong& message, std::vector<std::uint8_t>& out);
+void write_message(const LinkStats& message, std::vector<std::uint8_t>& out);
+void write_message(const Closing& message, std::vector<std::uint8_t>& out);
+void write_message(const TimedRoomFrame& message, std::vector<std::uint8_t>& out);
+
+// Readers parse one whole message; on error the output holds no meaning.
+MessageError read_message(std::span<const std::uint8_t> bytes, Hello& message);
+MessageError read_message(std::span<const std::uint8_t> bytes, Welcome& message);
+MessageError read_message(std::span<const std::uint8_t> bytes, Presence& message);
+MessageError read_message(std::span<const std::uint8_t> bytes, Chat& message);
+MessageError read_message(std::span<const std::uint8_t> bytes, Command& message);
+MessageError read_message(std::span<const std::uint8_t> bytes, CommandResult& message);
+MessageError read_message(std::span<const std::uint8_t> bytes, PackageChunk& message);
+MessageError read_message(std::span<const std::uint8_t> bytes, SetRate& message);
+MessageError read_message(std::span<const std::uint8_t> bytes, Ping& message);
+MessageError read_message(std::span<const std::uint8_t> bytes, Pong& message);
+MessageError read_message(std::span<const std::uint8_t> bytes, LinkStats& message);
+MessageError read_message(std::span<const std::uint8_t> bytes, Closing& message);
+/// `message.room_frame` views into `bytes`; the room frame itself is not
+/// checked here (read_room_frame does that).
+MessageError read_message(std::span<const std::uint8_t> bytes, TimedRoomFrame& message);
+
+// ---------------------------------------------------------------------------
+// TCP framing: every message is preceded by its length as an unsigned LEB128
+// varint of 1 .. 3 bytes (PROTOCOL.md, "Framing").
+
+inline constexpr std::size_t kMaxLengthPrefixBytes = 3;
+
+/// Appends the length prefix of a `message_bytes`-long message, then nothing else.
+void write_length_prefix(std::size_t message_bytes, std::vector<std::uint8_t>& out);
+/// Appends prefix and message.
+void write_tcp_frame(std::span<const std::uint8_t> message, std::vector<std::uint8_t>& out);
+
+/// Splits a TCP byte stream into messages. Feed it what the socket delivers;
+/// take messages out with next(). Holds at most one message plus what the
+/// last feed brought.
+class TcpDeframer {
+ public:
+  /// @param[in] max_message_bytes  longer messages are an error (too_large)
+  explicit TcpDeframer(std::size_t max_message_bytes);
+
+  void feed(std::span<const std::uint8_t> bytes);
+  enum class Status { message, need_more, error };
+  /// The next whole message (valid until the next feed or next call), or
+  /// need_more, or error (`error()` says which; the stream is unusable after it).
+  Status next(std::span<const std::uint8_t>& message);
+  MessageError error() const { return error_; }
+  /// Bytes fed and not yet returned.
+  std::size_t buffered() const { return buffer_.size() - consumed_; }
+
+ private:
+  std::size_t max_message_bytes_;
+  std::vector<std::uint8_t> buffer_;
+  std::size_t consumed_ = 0;
+  MessageError error_ = MessageError::ok;
+};
+
+}  // namespace fw::codec

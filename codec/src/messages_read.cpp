@@ -1,0 +1,243 @@
+// Session message readers (server/PROTOCOL.md, "Messages"). Each checks the
+// first byte and the size limit, reads its fields through a ByteReader whose
+// error flag sticks, then checks once that nothing was cut and nothing follows.
+#include "message_fields.hpp"
+
+namespace fw::codec {
+namespace {
+
+using namespace message_fields;
+
+/// The result of a reader whose fields were read: the first field error,
+/// else a cut, else trailing bytes.
+MessageError finish(const ByteReader& r, MessageError error) {
+  if (error != MessageError::ok) return error;
+  if (r.failed()) return MessageError::truncated;
+  if (r.remaining() != 0) return MessageError::trailing_bytes;
+  return MessageError::ok;
+}
+
+void fail(MessageError& error, MessageError why) {
+  if (error == MessageError::ok) error = why;
+}
+
+std::uint32_t read_bounded(ByteReader& r, std::size_t max_varint_bytes, std::uint32_t max, MessageError& error) {
+  const std::uint32_t value = r.varint(max_varint_bytes);
+  if (!r.failed() && value > max) fail(error, MessageError::value_out_of_range);
+  return value;
+}
+
+void read_avatar_info(ByteReader& r, AvatarInfo& a, MessageError& error) {
+  a.id = read_bounded(r, 3, kMaxAvatarIdValue, error);
+  const std::uint8_t flags = r.u8();
+  if (!r.failed() && (flags & ~1u) != 0) fail(error, MessageError::bad_flags);
+  a.person = (flags & 1u) != 0;
+  read_string(r, kMaxDisplayNameBytes, a.name, error);
+  read_string(r, kMaxAssetIdBytes, a.asset, error);
+  a.preview_bytes = read_bounded(r, 4, kMaxPackageBytes, error);
+  a.full_bytes = read_bounded(r, 4, kMaxPackageBytes, error);
+}
+
+}  // namespace
+
+MessageError read_message(std::span<const std::uint8_t> bytes, Hello& m) {
+  ByteReader r(bytes);
+  if (auto e = check_first_byte(r, bytes.size(), MessageType::hello, kMaxUpstreamMessageBytes); e != MessageError::ok)
+    return e;
+  m.protocol_version = r.u16_le();
+  if (r.failed()) return MessageError::truncated;
+  // Another version may lay out the rest differently: stop here.
+  if (m.protocol_version != kProtocolVersion) return MessageError::unsupported_version;
+  MessageError error = MessageError::ok;
+  const std::uint8_t flags = r.u8();
+  if (!r.failed() && (flags & ~7u) != 0) fail(error, MessageError::bad_flags);
+  m.timestamps = (flags & 1u) != 0;
+  m.no_packages = (flags & 2u) != 0;
+  m.own_package = (flags & 4u) != 0;
+  m.max_bps = read_bounded(r, 4, kMaxBitsPerSecond, error);
+  read_string(r, kMaxRoomNameBytes, m.room, error);
+  read_string(r, kMaxDisplayNameBytes, m.name, error);
+  read_string(r, kMaxAssetIdBytes, m.avatar, error);
+  read_string(r, kMaxTokenBytes, m.token, error);
+  return finish(r, error);
+}
+
+MessageError read_message(std::span<const std::uint8_t> bytes, Welcome& m) {
+  ByteReader r(bytes);
+  if (auto e = check_first_byte(r, bytes.size(), MessageType::welcome, kMaxDownstreamMessageBytes);
+      e != MessageError::ok)
+    return e;
+  m.protocol_version = r.u16_le();
+  if (r.failed()) return MessageError::truncated;
+  if (m.protocol_version != kProtocolVersion) return MessageError::unsupported_version;
+  MessageError error = MessageError::ok;
+  m.you = read_bounded(r, 3, kMaxAvatarIdValue, error);
+  read_string(r, kMaxRoomNameBytes, m.room, error);
+  m.tick_hz = r.u8();
+  if (!r.failed() && m.tick_hz == 0) fail(error, MessageError::value_out_of_range);
+  m.max_bps = read_bounded(r, 4, kMaxBitsPerSecond, error);
+  const std::uint32_t count = r.varint(2);
+  m.avatars.clear();
+  if (!r.failed() && count > kMaxWelcomeAvatars) return error == MessageError::ok ? MessageError::too_many_entries : error;
+  for (std::uint32_t i = 0; i < count && !r.failed() && error == MessageError::ok; ++i)
+    read_avatar_info(r, m.avatars.emplace_back(), error);
+  return finish(r, error);
+}
+
+MessageError read_message(std::span<const std::uint8_t> bytes, Presence& m) {
+  ByteReader r(bytes);
+  if (auto e = check_first_byte(r, bytes.size(), MessageType::presence, kMaxDownstreamMessageBytes);
+      e != MessageError::ok)
+    return e;
+  MessageError error = MessageError::ok;
+  const std::uint8_t change = r.u8();
+  if (!r.failed() && change > 1) fail(error, MessageError::value_out_of_range);
+  m.change = static_cast<Presence::Change>(change);
+  read_avatar_info(r, m.avatar, error);
+  return finish(r, error);
+}
+
+MessageError read_message(std::span<const std::uint8_t> bytes, Chat& m) {
+  ByteReader r(bytes);
+  if (auto e = check_first_byte(r, bytes.size(), MessageType::chat, kMaxDownstreamMessageBytes); e != MessageError::ok)
+    return e;
+  MessageError error = MessageError::ok;
+  m.from = read_bounded(r, 3, kMaxAvatarIdValue, error);
+  read_string(r, kMaxChatBytes, m.text, error);
+  return finish(r, error);
+}
+
+MessageError read_message(std::span<const std::uint8_t> bytes, Command& m) {
+  ByteReader r(bytes);
+  if (auto e = check_first_byte(r, bytes.size(), MessageType::command, kMaxUpstreamMessageBytes);
+      e != MessageError::ok)
+    return e;
+  MessageError error = MessageError::ok;
+  m.request_id = r.varint(5);
+  const std::uint8_t kind = r.u8();
+  if (r.failed()) return MessageError::truncated;
+  if (kind > static_cast<std::uint8_t>(Command::Kind::facs)) return MessageError::value_out_of_range;
+  m.kind = static_cast<Command::Kind>(kind);
+  m.emotion.clear();
+  m.sentence.clear();
+  switch (m.kind) {
+    case Command::Kind::express: {
+      read_string(r, kMaxEmotionBytes, m.emotion, error);
+      const std::uint8_t percent = r.u8();
+      if (!r.failed() && percent > 100) fail(error, MessageError::value_out_of_range);
+      m.intensity = static_cast<float>(percent) / 100.0f;
+      m.duration_ms = read_bounded(r, 3, kMaxCommandMs, error);
+      break;
+    }
+    case Command::Kind::look_at:
+    case Command::Kind::snub:
+      m.target = read_bounded(r, 3, kMaxAvatarIdValue, error);
+      m.duration_ms = read_bounded(r, 3, kMaxCommandMs, error);
+      break;
+    case Command::Kind::facs:
+      read_string(r, kMaxSentenceBytes, m.sentence, error, /*allow_layout=*/true);
+      break;
+  }
+  return finish(r, error);
+}
+
+MessageError read_message(std::span<const std::uint8_t> bytes, CommandResult& m) {
+  ByteReader r(bytes);
+  if (auto e = check_first_byte(r, bytes.size(), MessageType::command_result, kMaxDownstreamMessageBytes);
+      e != MessageError::ok)
+    return e;
+  MessageError error = MessageError::ok;
+  m.request_id = r.varint(5);
+  read_string(r, kMaxReasonBytes, m.error, error);
+  return finish(r, error);
+}
+
+MessageError read_message(std::span<const std::uint8_t> bytes, PackageChunk& m) {
+  ByteReader r(bytes);
+  if (auto e = check_first_byte(r, bytes.size(), MessageType::package_chunk, kMaxDownstreamMessageBytes);
+      e != MessageError::ok)
+    return e;
+  MessageError error = MessageError::ok;
+  m.avatar = read_bounded(r, 3, kMaxAvatarIdValue, error);
+  const std::uint8_t quality = r.u8();
+  if (!r.failed() && quality > 1) fail(error, MessageError::value_out_of_range);
+  m.quality = static_cast<PackageChunk::Quality>(quality);
+  m.total_bytes = read_bounded(r, 4, kMaxPackageBytes, error);
+  m.offset = r.varint(4);
+  if (r.failed()) return MessageError::truncated;
+  if (error != MessageError::ok) return error;
+  const std::size_t size = r.remaining();
+  if (m.total_bytes == 0 || size == 0 || size > kMaxChunkBytes ||
+      static_cast<std::uint64_t>(m.offset) + size > m.total_bytes)
+    return MessageError::value_out_of_range;
+  const auto data = r.bytes(size);
+  m.data.assign(data.begin(), data.end());
+  return finish(r, error);
+}
+
+MessageError read_message(std::span<const std::uint8_t> bytes, SetRate& m) {
+  ByteReader r(bytes);
+  if (auto e = check_first_byte(r, bytes.size(), MessageType::set_rate, kMaxUpstreamMessageBytes);
+      e != MessageError::ok)
+    return e;
+  MessageError error = MessageError::ok;
+  m.max_bps = read_bounded(r, 4, kMaxBitsPerSecond, error);
+  return finish(r, error);
+}
+
+MessageError read_message(std::span<const std::uint8_t> bytes, Ping& m) {
+  ByteReader r(bytes);
+  if (auto e = check_first_byte(r, bytes.size(), MessageType::ping, kMaxUpstreamMessageBytes); e != MessageError::ok)
+    return e;
+  m.nonce = read_u32_le(r);
+  m.client_time_us = read_u64_le(r);
+  return finish(r, MessageError::ok);
+}
+
+MessageError read_message(std::span<const std::uint8_t> bytes, Pong& m) {
+  ByteReader r(bytes);
+  if (auto e = check_first_byte(r, bytes.size(), MessageType::pong, kMaxDownstreamMessageBytes); e != MessageError::ok)
+    return e;
+  m.nonce = read_u32_le(r);
+  m.client_time_us = read_u64_le(r);
+  m.server_time_us = read_u64_le(r);
+  return finish(r, MessageError::ok);
+}
+
+MessageError read_message(std::span<const std::uint8_t> bytes, LinkStats& m) {
+  ByteReader r(bytes);
+  if (auto e = check_first_byte(r, bytes.size(), MessageType::link_stats, kMaxDownstreamMessageBytes);
+      e != MessageError::ok)
+    return e;
+  m.target_bps = r.varint(5);
+  m.drain_bps = r.varint(5);
+  m.queued_bytes = r.varint(5);
+  m.skipped_ticks = r.varint(5);
+  return finish(r, MessageError::ok);
+}
+
+MessageError read_message(std::span<const std::uint8_t> bytes, Closing& m) {
+  ByteReader r(bytes);
+  if (auto e = check_first_byte(r, bytes.size(), MessageType::closing, kMaxDownstreamMessageBytes);
+      e != MessageError::ok)
+    return e;
+  MessageError error = MessageError::ok;
+  m.code = static_cast<CloseCode>(r.u16_le());  // unknown codes pass: a newer server may add some
+  read_string(r, kMaxReasonBytes, m.reason, error);
+  return finish(r, error);
+}
+
+MessageError read_message(std::span<const std::uint8_t> bytes, TimedRoomFrame& m) {
+  ByteReader r(bytes);
+  if (auto e = check_first_byte(r, bytes.size(), MessageType::timed_room_frame, kMaxDownstreamMessageBytes);
+      e != MessageError::ok)
+    return e;
+  m.tick = r.varint(5);
+  m.server_time_us = read_u64_le(r);
+  if (r.failed()) return MessageError::truncated;
+  if (r.remaining() == 0) return MessageError::truncated;
+  m.room_frame = r.bytes(r.remaining());
+  return MessageError::ok;
+}
+
+}  // namespace fw::codec

@@ -1,0 +1,164 @@
+// Session message writers (server/PROTOCOL.md, "Messages").
+#include <cassert>
+#include <cmath>
+
+#include "message_fields.hpp"
+
+namespace fw::codec {
+namespace {
+
+using namespace message_fields;
+
+void write_avatar_info(ByteWriter& w, const AvatarInfo& a) {
+  assert(a.id <= kMaxAvatarIdValue && a.name.size() <= kMaxDisplayNameBytes && a.asset.size() <= kMaxAssetIdBytes);
+  assert(a.preview_bytes <= kMaxPackageBytes && a.full_bytes <= kMaxPackageBytes);
+  w.varint(a.id);
+  w.u8(a.person ? 1 : 0);
+  write_string(w, a.name);
+  write_string(w, a.asset);
+  w.varint(a.preview_bytes);
+  w.varint(a.full_bytes);
+}
+
+}  // namespace
+
+void write_message(const Hello& m, std::vector<std::uint8_t>& out) {
+  assert(m.room.size() <= kMaxRoomNameBytes && m.name.size() <= kMaxDisplayNameBytes);
+  assert(m.avatar.size() <= kMaxAssetIdBytes && m.token.size() <= kMaxTokenBytes && m.max_bps <= kMaxBitsPerSecond);
+  ByteWriter w(out);
+  w.u8(first_byte(MessageType::hello));
+  w.u16_le(m.protocol_version);
+  w.u8(static_cast<std::uint8_t>((m.timestamps ? 1 : 0) | (m.no_packages ? 2 : 0) | (m.own_package ? 4 : 0)));
+  w.varint(m.max_bps);
+  write_string(w, m.room);
+  write_string(w, m.name);
+  write_string(w, m.avatar);
+  write_string(w, m.token);
+}
+
+void write_message(const Welcome& m, std::vector<std::uint8_t>& out) {
+  assert(m.you <= kMaxAvatarIdValue && m.room.size() <= kMaxRoomNameBytes && m.tick_hz > 0);
+  assert(m.avatars.size() <= kMaxWelcomeAvatars && m.max_bps <= kMaxBitsPerSecond);
+  ByteWriter w(out);
+  w.u8(first_byte(MessageType::welcome));
+  w.u16_le(m.protocol_version);
+  w.varint(m.you);
+  write_string(w, m.room);
+  w.u8(m.tick_hz);
+  w.varint(m.max_bps);
+  w.varint(static_cast<std::uint32_t>(m.avatars.size()));
+  for (const AvatarInfo& a : m.avatars) write_avatar_info(w, a);
+}
+
+void write_message(const Presence& m, std::vector<std::uint8_t>& out) {
+  ByteWriter w(out);
+  w.u8(first_byte(MessageType::presence));
+  w.u8(static_cast<std::uint8_t>(m.change));
+  write_avatar_info(w, m.avatar);
+}
+
+void write_message(const Chat& m, std::vector<std::uint8_t>& out) {
+  assert(m.from <= kMaxAvatarIdValue && m.text.size() <= kMaxChatBytes);
+  ByteWriter w(out);
+  w.u8(first_byte(MessageType::chat));
+  w.varint(m.from);
+  write_string(w, m.text);
+}
+
+void write_message(const Command& m, std::vector<std::uint8_t>& out) {
+  assert(m.duration_ms <= kMaxCommandMs);
+  ByteWriter w(out);
+  w.u8(first_byte(MessageType::command));
+  w.varint(m.request_id);
+  w.u8(static_cast<std::uint8_t>(m.kind));
+  switch (m.kind) {
+    case Command::Kind::express: {
+      assert(m.emotion.size() <= kMaxEmotionBytes);
+      write_string(w, m.emotion);
+      const float clamped = std::isfinite(m.intensity) ? std::fmin(1.0f, std::fmax(0.0f, m.intensity)) : 0.0f;
+      w.u8(static_cast<std::uint8_t>(std::lround(clamped * 100.0f)));
+      w.varint(m.duration_ms);
+      break;
+    }
+    case Command::Kind::look_at:
+    case Command::Kind::snub:
+      assert(m.target <= kMaxAvatarIdValue);
+      w.varint(m.target);
+      w.varint(m.duration_ms);
+      break;
+    case Command::Kind::facs:
+      assert(m.sentence.size() <= kMaxSentenceBytes);
+      write_string(w, m.sentence);
+      break;
+  }
+}
+
+void write_message(const CommandResult& m, std::vector<std::uint8_t>& out) {
+  assert(m.error.size() <= kMaxReasonBytes);
+  ByteWriter w(out);
+  w.u8(first_byte(MessageType::command_result));
+  w.varint(m.request_id);
+  write_string(w, m.error);
+}
+
+void write_message(const PackageChunk& m, std::vector<std::uint8_t>& out) {
+  assert(m.avatar <= kMaxAvatarIdValue && m.total_bytes >= 1 && m.total_bytes <= kMaxPackageBytes);
+  assert(!m.data.empty() && m.data.size() <= kMaxChunkBytes && m.offset + m.data.size() <= m.total_bytes);
+  ByteWriter w(out);
+  w.u8(first_byte(MessageType::package_chunk));
+  w.varint(m.avatar);
+  w.u8(static_cast<std::uint8_t>(m.quality));
+  w.varint(m.total_bytes);
+  w.varint(m.offset);
+  w.bytes(m.data);
+}
+
+void write_message(const SetRate& m, std::vector<std::uint8_t>& out) {
+  assert(m.max_bps <= kMaxBitsPerSecond);
+  ByteWriter w(out);
+  w.u8(first_byte(MessageType::set_rate));
+  w.varint(m.max_bps);
+}
+
+void write_message(const Ping& m, std::vector<std::uint8_t>& out) {
+  ByteWriter w(out);
+  w.u8(first_byte(MessageType::ping));
+  write_u32_le(w, m.nonce);
+  write_u64_le(w, m.client_time_us);
+}
+
+void write_message(const Pong& m, std::vector<std::uint8_t>& out) {
+  ByteWriter w(out);
+  w.u8(first_byte(MessageType::pong));
+  write_u32_le(w, m.nonce);
+  write_u64_le(w, m.client_time_us);
+  write_u64_le(w, m.server_time_us);
+}
+
+void write_message(const LinkStats& m, std::vector<std::uint8_t>& out) {
+  ByteWriter w(out);
+  w.u8(first_byte(MessageType::link_stats));
+  w.varint(m.target_bps);
+  w.varint(m.drain_bps);
+  w.varint(m.queued_bytes);
+  w.varint(m.skipped_ticks);
+}
+
+void write_message(const Closing& m, std::vector<std::uint8_t>& out) {
+  assert(m.reason.size() <= kMaxReasonBytes);
+  ByteWriter w(out);
+  w.u8(first_byte(MessageType::closing));
+  w.u16_le(static_cast<std::uint16_t>(m.code));
+  write_string(w, m.reason);
+}
+
+void write_message(const TimedRoomFrame& m, std::vector<std::uint8_t>& out) {
+  assert(!m.room_frame.empty());
+  ByteWriter w(out);
+  w.u8(first_byte(MessageType::timed_room_frame));
+  w.varint(m.tick);
+  write_u64_le(w, m.server_time_us);
+  w.bytes(m.room_frame);
+}
+
+}  // namespace fw::codec

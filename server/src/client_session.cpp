@@ -1,0 +1,318 @@
+#include "client_session.hpp"
+
+#include <boost/asio/post.hpp>
+#include <spdlog/spdlog.h>
+
+#include "join_token.hpp"
+#include "monotonic_clock.hpp"
+#include "room.hpp"
+#include "room_registry.hpp"
+#include "server_limits.hpp"
+
+namespace fw::server {
+
+namespace net = boost::asio;
+using codec::CloseCode;
+using codec::MessageError;
+
+ClientSession::ClientSession(ServerContext& context, net::any_io_executor executor, std::string peer)
+    : context_(context), executor_(std::move(executor)), peer_(std::move(peer)), clock_(executor_),
+      message_tokens_(limits::kMessageBurst), byte_tokens_(limits::kUpstreamByteBurst), chat_tokens_(limits::kChatBurst) {}
+
+ClientSession::~ClientSession() {
+  if (counted_) context_.metrics.connections.fetch_sub(1);
+}
+
+void ClientSession::start() {
+  context_.metrics.connections.fetch_add(1);
+  counted_ = true;
+  context_.rooms->add_session(shared_from_this());
+  opened_ = last_heard_ = last_refill_ = std::chrono::steady_clock::now();
+  on_clock();
+  start_reading();
+}
+
+// --- sending --------------------------------------------------------------
+
+void ClientSession::deliver(SharedBytes message) {
+  queued_bytes_.fetch_add(message->size(), std::memory_order_relaxed);
+  net::post(executor_, [self = shared_from_this(), message = std::move(message)]() mutable {
+    self->do_deliver(std::move(message));
+  });
+}
+
+void ClientSession::do_deliver(SharedBytes message) {
+  if (state_ == State::closing || state_ == State::closed) {
+    queued_bytes_.fetch_sub(message->size(), std::memory_order_relaxed);
+    return;
+  }
+  if (queued_bytes_.load(std::memory_order_relaxed) > limits::kMaxQueuedBytes) {
+    // Room frames and packages stop long before this; only a peer that
+    // reads nothing while the room chats gets here. Its memory is bounded.
+    queued_bytes_.fetch_sub(message->size(), std::memory_order_relaxed);
+    spdlog::info("{}: not reading ({} bytes waiting); closing", peer_, queued_bytes_.load());
+    state_ = State::closed;
+    shutdown_transport(CloseCode::rate_limited, "the connection does not read what the server sends", true);
+    return;
+  }
+  queue_.push_back(std::move(message));
+  if (!writing_) write_next();
+}
+
+void ClientSession::write_next() {
+  if (queue_.empty()) {
+    writing_ = false;
+    if (state_ == State::closing) {
+      state_ = State::closed;
+      shutdown_transport(close_code_, close_reason_, false);
+    }
+    return;
+  }
+  writing_ = true;
+  start_write(queue_.front());
+}
+
+void ClientSession::on_write_done(bool ok, std::size_t bytes) {
+  if (!queue_.empty()) {
+    queued_bytes_.fetch_sub(queue_.front()->size(), std::memory_order_relaxed);
+    queue_.pop_front();
+  }
+  if (!ok) {
+    writing_ = false;
+    on_transport_closed();
+    return;
+  }
+  bytes_written_.fetch_add(bytes, std::memory_order_relaxed);
+  context_.metrics.bytes_sent.fetch_add(bytes, std::memory_order_relaxed);
+  write_next();
+}
+
+// --- closing --------------------------------------------------------------
+
+void ClientSession::close(CloseCode code, std::string reason) {
+  net::post(executor_, [self = shared_from_this(), code, reason = std::move(reason)]() mutable {
+    self->do_close(code, std::move(reason));
+  });
+}
+
+void ClientSession::do_close(CloseCode code, std::string reason) {
+  if (state_ == State::closing || state_ == State::closed) return;
+  if (reason.size() > codec::kMaxReasonBytes) reason.resize(codec::kMaxReasonBytes);
+  spdlog::debug("{}: closing ({}): {}", peer_, static_cast<int>(code), reason);
+  // Whatever still waits is dropped: the closing message goes out next, alone.
+  while (queue_.size() > (writing_ ? 1u : 0u)) {
+    queued_bytes_.fetch_sub(queue_.back()->size(), std::memory_order_relaxed);
+    queue_.pop_back();
+  }
+  const auto closing = encode_shared(codec::Closing{code, reason});
+  queued_bytes_.fetch_add(closing->size(), std::memory_order_relaxed);
+  queue_.push_back(closing);
+  state_ = State::closing;
+  close_code_ = code;
+  close_reason_ = reason;
+  closing_since_ = std::chrono::steady_clock::now();
+  if (!writing_) write_next();
+}
+
+void ClientSession::on_transport_error(CloseCode code, const std::string& reason) {
+  if (code == CloseCode::protocol_error || code == CloseCode::message_too_large)
+    context_.metrics.protocol_errors.fetch_add(1);
+  do_close(code, reason);
+}
+
+void ClientSession::on_transport_closed() {
+  state_ = State::closed;
+  if (transport_gone_) return;
+  transport_gone_ = true;
+  // A seat is given back here once taken; a hello still on its way to the
+  // room keeps room_, so that joined() can give that seat back.
+  if (room_ && seated_) {
+    room_->leave(avatar_);
+    room_.reset();
+  }
+  clock_.cancel();
+  context_.rooms->remove_session(this);
+}
+
+void ClientSession::protocol_error(CloseCode code, const std::string& what) {
+  spdlog::info("{}: {}", peer_, what);
+  on_transport_error(code, what);
+}
+
+// --- receiving ------------------------------------------------------------
+
+bool ClientSession::take_token(double& tokens, double cost) {
+  if (tokens < cost) return false;
+  tokens -= cost;
+  return true;
+}
+
+void ClientSession::note_received(std::size_t bytes) {
+  context_.metrics.bytes_received.fetch_add(bytes, std::memory_order_relaxed);
+}
+
+void ClientSession::on_message(std::span<const std::uint8_t> message) {
+  if (state_ == State::closing || state_ == State::closed) return;
+  last_heard_ = std::chrono::steady_clock::now();
+  const auto now = last_heard_;
+  const double elapsed = std::chrono::duration<double>(now - last_refill_).count();
+  last_refill_ = now;
+  message_tokens_ = std::min(limits::kMessageBurst, message_tokens_ + elapsed * limits::kMessagesPerSecond);
+  byte_tokens_ = std::min(limits::kUpstreamByteBurst, byte_tokens_ + elapsed * limits::kUpstreamBytesPerSecond);
+  chat_tokens_ = std::min(limits::kChatBurst, chat_tokens_ + elapsed * limits::kChatLinesPerSecond);
+  if (!take_token(message_tokens_, 1) || !take_token(byte_tokens_, static_cast<double>(message.size())))
+    return protocol_error(CloseCode::rate_limited, "too many messages; at most 50 a second and 64 KiB a second");
+  switch (state_) {
+    case State::greeting: return handle_hello(message);
+    case State::joining:
+      if (early_messages_.size() >= limits::kMaxEarlyMessages)
+        return protocol_error(CloseCode::rate_limited, "too many messages before the welcome; wait for it");
+      early_messages_.emplace_back(message.begin(), message.end());
+      return;
+    case State::joined: return handle_joined_message(message);
+    default: return;
+  }
+}
+
+void ClientSession::handle_hello(std::span<const std::uint8_t> message) {
+  codec::Hello hello;
+  const MessageError error = codec::read_message(message, hello);
+  if (error == MessageError::unsupported_version)
+    return protocol_error(CloseCode::unsupported_version,
+                          "this server speaks protocol version " + std::to_string(codec::kProtocolVersion) +
+                              " only; update the client");
+  if (error != MessageError::ok)
+    return protocol_error(CloseCode::protocol_error,
+                          "the first message must be a hello: " + std::string(codec::describe(error)));
+  const auto refuse = [&](CloseCode code, const std::string& why) {
+    context_.metrics.rejected_joins.fetch_add(1);
+    spdlog::info("{}: hello refused: {}", peer_, why);
+    do_close(code, why);
+  };
+  if (context_.draining.load()) return refuse(CloseCode::shutting_down, "the server is shutting down; try again soon");
+  if (!is_valid_room_name(hello.room))
+    return refuse(CloseCode::bad_request, "room names are 1 to 64 characters of A-Z a-z 0-9 _ - .");
+  if (hello.name.empty()) return refuse(CloseCode::bad_request, "a display name is needed (1 to 32 bytes)");
+  if (!context_.config.auth_secret.empty()) {
+    const auto now = std::chrono::duration_cast<std::chrono::seconds>(
+                         std::chrono::system_clock::now().time_since_epoch())
+                         .count();
+    const std::string why = check_join_token(hello.token, context_.config.auth_secret, hello.room, hello.name, now);
+    if (!why.empty()) return refuse(CloseCode::unauthorized, why);
+  }
+  std::optional<StoredAvatar> avatar;
+  if (hello.avatar.empty()) {
+    // No package: a procedural face, chosen by the name so it stays the same.
+    const auto& faces = context_.demo_avatars;
+    avatar = faces[std::hash<std::string>{}(hello.name) % faces.size()];
+  } else {
+    avatar = context_.store->get(hello.avatar);
+    if (!avatar)
+      return refuse(CloseCode::bad_request, "unknown avatar '" + hello.avatar.substr(0, 64) +
+                                                "'; upload it first (POST /api/avatars)");
+  }
+  room_ = context_.rooms->find_or_create(hello.room);
+  if (!room_) return refuse(CloseCode::server_full, "the server holds its maximum number of rooms; try later");
+  const auto& config = context_.config;
+  StreamSettings stream;
+  stream.tick_hz = config.tick_hz;
+  stream.budget_bps = std::min(hello.max_bps == 0 ? config.default_client_bps : hello.max_bps, config.max_client_bps);
+  stream.timestamps = hello.timestamps;
+  stream.packages = !hello.no_packages;
+  stream.own_package = hello.own_package && !hello.avatar.empty();
+  state_ = State::joining;
+  room_->join(JoinRequest{hello.name, *avatar, stream, shared_from_this()});
+}
+
+void ClientSession::joined(std::uint32_t avatar) {
+  net::post(executor_, [self = shared_from_this(), avatar] {
+    if (self->state_ != State::joining) {
+      // Closed while the room seated us: give the seat back.
+      if (self->room_) self->room_->leave(avatar);
+      self->room_.reset();
+      return;
+    }
+    self->seated_ = true;
+    self->avatar_ = avatar;
+    self->state_ = State::joined;
+    auto early = std::move(self->early_messages_);
+    for (const auto& message : early) self->handle_joined_message(message);
+  });
+}
+
+void ClientSession::handle_joined_message(std::span<const std::uint8_t> message) {
+  if (state_ != State::joined) return;
+  const auto bad = [&](MessageError error, const char* what) {
+    protocol_error(error == MessageError::too_large ? CloseCode::message_too_large : CloseCode::protocol_error,
+                   std::string("malformed ") + what + ": " + std::string(codec::describe(error)));
+  };
+  switch (codec::classify(message)) {
+    case codec::MessageKind::resync_request: {
+      std::vector<std::uint32_t> ids;
+      if (const auto e = codec::read_resync_request(message, ids); e != codec::DecodeError::ok)
+        return protocol_error(CloseCode::protocol_error, "malformed resync request: " + std::string(codec::describe(e)));
+      room_->resync(avatar_, std::move(ids));
+      return;
+    }
+    case codec::MessageKind::session: break;
+    default:
+      return protocol_error(CloseCode::protocol_error, "a message no client sends (first byte " +
+                                                           std::to_string(message.empty() ? 0 : message[0]) + ")");
+  }
+  switch (codec::session_type(message)) {
+    case codec::MessageType::chat: {
+      codec::Chat chat;
+      if (const auto e = codec::read_message(message, chat); e != MessageError::ok) return bad(e, "chat");
+      if (chat.text.empty()) return;
+      if (!take_token(chat_tokens_, 1))
+        return protocol_error(CloseCode::rate_limited, "too many chat lines; at most 2 a second");
+      room_->chat(avatar_, std::move(chat.text));
+      return;
+    }
+    case codec::MessageType::command: {
+      codec::Command command;
+      if (const auto e = codec::read_message(message, command); e != MessageError::ok) return bad(e, "command");
+      room_->command(avatar_, std::move(command));
+      return;
+    }
+    case codec::MessageType::set_rate: {
+      codec::SetRate rate;
+      if (const auto e = codec::read_message(message, rate); e != MessageError::ok) return bad(e, "set rate");
+      room_->set_rate(avatar_, rate.max_bps);
+      return;
+    }
+    case codec::MessageType::ping: {
+      codec::Ping ping;
+      if (const auto e = codec::read_message(message, ping); e != MessageError::ok) return bad(e, "ping");
+      auto pong = encode_shared(codec::Pong{ping.nonce, ping.client_time_us, monotonic_us()});
+      queued_bytes_.fetch_add(pong->size(), std::memory_order_relaxed);  // as deliver() does
+      do_deliver(std::move(pong));
+      return;
+    }
+    default:
+      return protocol_error(CloseCode::protocol_error, "a message only the server sends, or a second hello");
+  }
+}
+
+// --- the clock: time-outs ---------------------------------------------------
+
+void ClientSession::on_clock() {
+  const auto now = std::chrono::steady_clock::now();
+  if (state_ == State::greeting && now - opened_ > limits::kHandshakeTimeout) {
+    context_.metrics.rejected_joins.fetch_add(1);
+    do_close(CloseCode::handshake_timeout, "no hello within 5 s of connecting");
+  } else if (state_ == State::joined && now - last_heard_ > limits::kSessionIdleTimeout) {
+    do_close(CloseCode::idle_timeout, "nothing heard for 60 s; send a ping every 20 s");
+  } else if (state_ == State::closing && now - closing_since_ > limits::kCloseTimeout) {
+    state_ = State::closed;  // the peer does not take the closing message
+    shutdown_transport(close_code_, close_reason_, true);
+  }
+  if (state_ == State::closed && !writing_) return;
+  clock_.expires_after(std::chrono::seconds(1));
+  clock_.async_wait([weak = weak_from_this()](const boost::system::error_code& ec) {
+    if (ec) return;
+    if (auto self = weak.lock()) self->on_clock();
+  });
+}
+
+}  // namespace fw::server

@@ -1,0 +1,91 @@
+#pragma once
+// The protocol side of one room connection, whatever carries it
+// (WebSocketSession, TcpSession): the hello and its checks, dispatching
+// upstream messages to the room, limits and time-outs, and the bounded
+// send queue the room delivers into. Runs on the connection's strand;
+// deliver(), close() and joined() may be called from any thread.
+#include <atomic>
+#include <chrono>
+#include <deque>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <boost/asio/any_io_executor.hpp>
+#include <boost/asio/steady_timer.hpp>
+
+#include "fw/codec/messages.hpp"
+#include "room_connection.hpp"
+#include "server_context.hpp"
+
+namespace fw::server {
+
+class Room;
+
+class ClientSession : public RoomConnection, public std::enable_shared_from_this<ClientSession> {
+ public:
+  ClientSession(ServerContext& context, boost::asio::any_io_executor executor, std::string peer);
+  ~ClientSession() override;
+
+  void deliver(SharedBytes message) override;
+  std::size_t queued_bytes() const override { return queued_bytes_.load(std::memory_order_relaxed); }
+  std::uint64_t bytes_written() const override { return bytes_written_.load(std::memory_order_relaxed); }
+  void close(codec::CloseCode code, std::string reason) override;
+  void joined(std::uint32_t avatar) override;
+
+ protected:
+  /// The transport is connected: start the clock and read.
+  void start();
+  /// One whole upstream message.
+  void on_message(std::span<const std::uint8_t> message);
+  /// The transport refused or lost the connection; `code` and `reason` are
+  /// for the log and, if the peer is still there, the closing message.
+  void on_transport_error(codec::CloseCode code, const std::string& reason);
+  /// The transport is gone (read error, EOF, shut down).
+  void on_transport_closed();
+  void on_write_done(bool ok, std::size_t bytes);
+  void note_received(std::size_t bytes);
+
+  virtual void start_reading() = 0;
+  /// Writes one message; calls on_write_done when finished. One at a time.
+  virtual void start_write(const SharedBytes& message) = 0;
+  /// Ends the connection after the closing message went out, or at once
+  /// (`abort`: a write is stuck on a peer that does not read).
+  virtual void shutdown_transport(codec::CloseCode code, const std::string& reason, bool abort) = 0;
+
+  ServerContext& context_;
+  boost::asio::any_io_executor executor_;
+  std::string peer_;
+
+ private:
+  void do_deliver(SharedBytes message);
+  void write_next();
+  void do_close(codec::CloseCode code, std::string reason);
+  void handle_hello(std::span<const std::uint8_t> message);
+  void handle_joined_message(std::span<const std::uint8_t> message);
+  void protocol_error(codec::CloseCode code, const std::string& what);
+  void on_clock();
+  /// Takes `cost` from a bucket the clock refills; false if it holds less.
+  static bool take_token(double& tokens, double cost);
+
+  enum class State { greeting, joining, joined, closing, closed };
+  State state_ = State::greeting;
+  std::shared_ptr<Room> room_;
+  std::uint32_t avatar_ = 0;
+  bool seated_ = false;  ///< the room seated avatar_
+  std::vector<std::vector<std::uint8_t>> early_messages_;  ///< sent between hello and welcome
+  std::deque<SharedBytes> queue_;
+  bool writing_ = false;
+  std::atomic<std::size_t> queued_bytes_{0};
+  std::atomic<std::uint64_t> bytes_written_{0};
+  boost::asio::steady_timer clock_;
+  std::chrono::steady_clock::time_point opened_, last_heard_, closing_since_, last_refill_;
+  double message_tokens_, byte_tokens_, chat_tokens_;
+  bool counted_ = false;
+  bool transport_gone_ = false;
+  codec::CloseCode close_code_ = codec::CloseCode::normal;
+  std::string close_reason_;
+};
+
+}  // namespace fw::server

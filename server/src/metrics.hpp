@@ -1,0 +1,40 @@
+#pragma once
+// The server's counters and the tick-duration histogram, rendered in the
+// Prometheus text format at /metrics. Lock-free: every thread adds.
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <string>
+
+namespace fw::server {
+
+struct Metrics {
+  std::atomic<std::int64_t> connections{0};        ///< room connections (WebSocket and TCP)
+  std::atomic<std::int64_t> http_connections{0};
+  std::atomic<std::int64_t> rooms{0};
+  std::atomic<std::int64_t> avatars{0};
+  std::atomic<std::uint64_t> bytes_sent{0};
+  std::atomic<std::uint64_t> bytes_received{0};
+  std::atomic<std::uint64_t> room_frames_sent{0};
+  std::atomic<std::uint64_t> avatar_frames_sent{0};
+  std::atomic<std::uint64_t> package_bytes_sent{0};
+  std::atomic<std::uint64_t> skipped_ticks{0};      ///< subscriber ticks dropped: the link was full
+  std::atomic<std::uint64_t> late_ticks{0};         ///< room ticks that started after their time
+  std::atomic<std::uint64_t> protocol_errors{0};
+  std::atomic<std::uint64_t> rejected_joins{0};
+  std::atomic<std::uint64_t> uploads{0};
+  std::atomic<std::uint64_t> chat_lines{0};
+
+  /// Upper bounds of the tick-duration buckets in seconds (simulation and
+  /// encoding of one room tick).
+  static constexpr std::array<double, 10> kTickBuckets = {0.0005, 0.001, 0.002, 0.005, 0.01,
+                                                          0.02,   0.033, 0.05,  0.1,   0.25};
+  std::array<std::atomic<std::uint64_t>, kTickBuckets.size() + 1> tick_counts{};
+  std::atomic<std::uint64_t> tick_sum_us{0};
+
+  void observe_tick(double seconds);
+  /// The whole exposition, one family after another.
+  std::string render() const;
+};
+
+}  // namespace fw::server

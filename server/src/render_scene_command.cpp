@@ -1,0 +1,161 @@
+#include "render_scene_command.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "fw/behavior/scene_file.hpp"
+#include "fw/model/face_reconstruction.hpp"
+#include "fw/model/landmark_template.hpp"
+#include "fw/render/avatar_appearance.hpp"
+#include "fw/render/camera.hpp"
+#include "fw/render/face_renderer.hpp"
+#include "fw/render/png.hpp"
+#include "y4m_writer.hpp"
+
+namespace fw::server {
+namespace {
+
+struct RenderSceneArgs {
+  std::string scene;
+  std::string out_dir;
+  std::string y4m;
+  std::string size = "960x540";
+  int every = 1;
+  double from_s = 0;
+  double to_s = 1e9;
+};
+
+[[noreturn]] void fail(const std::string& message) {
+  std::cerr << "facewire-server render-scene: " << message << "\n";
+  std::exit(2);
+}
+
+bool parse_size(const std::string& text, int& width, int& height) {
+  const auto x = text.find('x');
+  if (x == std::string::npos) return false;
+  const char* begin = text.data();
+  const auto w = std::from_chars(begin, begin + x, width);
+  const auto h = std::from_chars(begin + x + 1, begin + text.size(), height);
+  return w.ec == std::errc() && w.ptr == begin + x && h.ec == std::errc() && h.ptr == begin + text.size();
+}
+
+// A different look per avatar, so a viewer tells them apart.
+model::Appearance look(std::size_t i) {
+  static const model::Appearance looks[] = {
+      {{0.86f, 0.66f, 0.55f}, {0.23f, 0.15f, 0.09f}, {0.30f, 0.45f, 0.62f}, {0.72f, 0.38f, 0.38f}},
+      {{0.62f, 0.44f, 0.33f}, {0.08f, 0.06f, 0.05f}, {0.28f, 0.18f, 0.10f}, {0.58f, 0.30f, 0.28f}},
+      {{0.93f, 0.78f, 0.68f}, {0.72f, 0.52f, 0.25f}, {0.35f, 0.55f, 0.35f}, {0.80f, 0.45f, 0.45f}},
+      {{0.45f, 0.30f, 0.22f}, {0.05f, 0.04f, 0.04f}, {0.20f, 0.12f, 0.07f}, {0.45f, 0.24f, 0.22f}},
+      {{0.80f, 0.60f, 0.45f}, {0.45f, 0.20f, 0.10f}, {0.40f, 0.40f, 0.30f}, {0.70f, 0.36f, 0.34f}},
+  };
+  model::Appearance a = looks[i % std::size(looks)];
+  if (i >= std::size(looks)) a.hair *= 0.8f;  // beyond the palette: vary the hair
+  return a;
+}
+
+// Frames every seat: the heads' extent across and the nearest one in depth.
+render::Camera frame_seats(const behavior::Scene& scene, float aspect) {
+  render::Camera camera = render::Camera::portrait(aspect);
+  float lo = 1e9f, hi = -1e9f, front = -1e9f;
+  for (const behavior::SceneAvatar& a : scene.avatars) {
+    const glm::vec3 o = a.seat.value_or(behavior::Seat{}).origin_mm / model::kMillimetresPerUnit;
+    lo = std::min(lo, o.x - 1.7f);
+    hi = std::max(hi, o.x + 1.7f);
+    front = std::max(front, o.z);
+  }
+  const float half_tan = std::tan(camera.fov_y_rad / 2);
+  const float for_width = (hi - lo) / (2 * half_tan * aspect);
+  const float for_height = 4.6f / (2 * half_tan);
+  const float cx = 0.5f * (lo + hi);
+  camera.target = {cx, -0.25f, front - 1.0f};
+  camera.position = {cx, 0.2f, front + 2.2f + std::max(for_width, for_height)};
+  return camera;
+}
+
+void run(const RenderSceneArgs& args) {
+  if (args.out_dir.empty() == args.y4m.empty()) fail("give --out DIR for PNG frames or --y4m FILE (- for stdout), one of them");
+  int width = 0, height = 0;
+  if (!parse_size(args.size, width, height) || width < 16 || height < 16 || width > 4096 || height > 4096 ||
+      width % 2 || height % 2)
+    fail("--size must look like 960x540 (even width x height, 16 to 4096 pixels), not '" + args.size + "'");
+  behavior::Scene scene;
+  std::string error;
+  if (!behavior::read_scene(args.scene, scene, error)) fail(error);
+  const std::vector<behavior::Seat> layout = behavior::seat_layout(static_cast<int>(scene.avatars.size()));
+  for (std::size_t i = 0; i < scene.avatars.size(); ++i)
+    if (!scene.avatars[i].seat) scene.avatars[i].seat = layout[i];  // a version 1 scene: the default arc
+
+  render::RendererOptions options;
+  options.width = width;
+  options.height = height;
+  auto renderer = render::FaceRenderer::create(options, error);
+  if (!renderer) fail(error);
+  std::vector<render::AvatarAppearance> appearances;
+  std::vector<render::FaceId> ids;
+  for (std::size_t i = 0; i < scene.avatars.size(); ++i) {
+    appearances.push_back(render::generic_appearance(look(i)));
+    ids.push_back(renderer->add_face(appearances.back().avatar.face, appearances.back().textures));
+  }
+  const render::Camera camera = frame_seats(scene, static_cast<float>(width) / static_cast<float>(height));
+
+  std::unique_ptr<Y4mWriter> y4m;
+  const int fps = std::max(1, static_cast<int>(std::lround(static_cast<double>(scene.fps) / args.every)));
+  if (!args.y4m.empty()) {
+    y4m = Y4mWriter::create(args.y4m, width, height, fps, error);
+    if (!y4m) fail(error);
+  } else {
+    std::filesystem::create_directories(args.out_dir);
+  }
+  const auto first = static_cast<std::size_t>(std::max(0.0, args.from_s) * scene.fps);
+  const auto last = std::min(scene.tick_count(), static_cast<std::size_t>(std::min(args.to_s, 1e7) * scene.fps));
+  std::size_t frames = 0;
+  for (std::size_t t = first; t < last; t += static_cast<std::size_t>(args.every)) {
+    std::vector<render::FaceDraw> draws;
+    for (std::size_t i = 0; i < scene.avatars.size(); ++i) {
+      const behavior::SceneAvatar& a = scene.avatars[i];
+      if (!a.present(t)) continue;
+      const codec::FaceParams& params = a.ticks[t];
+      const model::FaceShape shape = model::reconstruct_face(appearances[i].avatar, params);
+      renderer->set_face_shape(ids[i], shape.positions, shape.uvs);
+      // The seat, as behavior::seat_layout.hpp defines it for the renderer.
+      const glm::mat4 place = glm::rotate(glm::translate(glm::mat4(1.0f), a.seat->origin_mm / model::kMillimetresPerUnit),
+                                          a.seat->facing_yaw_rad, glm::vec3(0, 1, 0));
+      draws.push_back(render::face_draw(ids[i], params, place));
+    }
+    const model::RgbaImage image = renderer->render(draws, camera);
+    if (y4m) {
+      if (!y4m->write(image, error)) fail(error);
+    } else {
+      char name[32];
+      std::snprintf(name, sizeof name, "frame_%06zu.png", frames);
+      if (!render::write_png(image, std::filesystem::path(args.out_dir) / name, error)) fail(error);
+    }
+    ++frames;
+  }
+  std::cerr << "facewire-server render-scene: " << frames << " frames of " << scene.avatars.size() << " faces at "
+            << fps << " fps\n";
+}
+
+}  // namespace
+
+void add_render_scene_command(CLI::App& app) {
+  auto args = std::make_shared<RenderSceneArgs>();
+  CLI::App* cmd = app.add_subcommand("render-scene", "Render a recorded room scene (.fws) to PNG frames or a Y4M video");
+  cmd->add_option("scene", args->scene, "scene file from facewire-server simulate")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--out", args->out_dir, "directory for frame_000000.png ...");
+  cmd->add_option("--y4m", args->y4m, "Y4M video file, or - for stdout (| ffplay -)");
+  cmd->add_option("--size", args->size, "WIDTHxHEIGHT in pixels, both even")->capture_default_str();
+  cmd->add_option("--every", args->every, "render every Nth tick")->check(CLI::Range(1, 1000))->capture_default_str();
+  cmd->add_option("--from", args->from_s, "start at this second")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--to", args->to_s, "stop at this second")->check(CLI::NonNegativeNumber);
+  cmd->callback([args] { run(*args); });
+}
+
+}  // namespace fw::server

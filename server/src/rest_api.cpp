@@ -1,0 +1,86 @@
+#include "rest_api.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include "room_registry.hpp"
+
+namespace fw::server {
+
+namespace http = boost::beast::http;
+
+namespace {
+
+Response plain(http::status status, const Request& request, std::string body) {
+  Response response{status, request.version()};
+  response.set(http::field::server, "facewire");
+  response.set(http::field::content_type, "text/plain; charset=utf-8");
+  response.keep_alive(request.keep_alive());
+  response.body() = std::move(body);
+  response.prepare_payload();
+  return response;
+}
+
+}  // namespace
+
+Response json_response(http::status status, unsigned version, bool keep_alive, std::string body) {
+  Response response{status, version};
+  response.set(http::field::server, "facewire");
+  response.set(http::field::content_type, "application/json");
+  response.keep_alive(keep_alive);
+  response.body() = std::move(body);
+  response.prepare_payload();
+  return response;
+}
+
+std::optional<Response> respond_to_api(ServerContext& context, const Request& request) {
+  const std::string_view target(request.target().data(), request.target().size());
+  const std::string_view path = target.substr(0, target.find('?'));
+  const std::string_view query = target.find('?') == std::string_view::npos ? "" : target.substr(target.find('?') + 1);
+  if (path == "/readyz") {
+    if (context.ready.load() && !context.draining.load()) return plain(http::status::ok, request, "ready\n");
+    return plain(http::status::service_unavailable, request,
+                 context.draining.load() ? "draining\n" : "starting\n");
+  }
+  if (path == "/metrics") {
+    Response response = plain(http::status::ok, request, context.metrics.render());
+    response.set(http::field::content_type, "text/plain; version=0.0.4; charset=utf-8");
+    return response;
+  }
+  if (path == "/api/rooms") {
+    nlohmann::json rooms = nlohmann::json::array();
+    for (const RoomSummary& room : context.rooms->list())
+      rooms.push_back({{"name", room.name}, {"avatars", room.avatars}, {"persons", room.persons}});
+    return json_response(http::status::ok, request.version(), request.keep_alive(),
+                         nlohmann::json{{"rooms", rooms}}.dump() + "\n");
+  }
+  constexpr std::string_view kPackages = "/api/packages/";
+  if (path.substr(0, kPackages.size()) == kPackages) {
+    const std::string asset(path.substr(kPackages.size()));
+    const auto avatar = context.store->get(asset);
+    if (!avatar)
+      return plain(http::status::not_found, request,
+                   "no avatar package '" + asset.substr(0, 64) + "'; upload one with POST /api/avatars\n");
+    const bool preview = query == "quality=preview";
+    const auto& bytes = preview ? *avatar->preview : *avatar->full;
+    const std::string etag = "\"" + asset + (preview ? "p" : "") + "\"";
+    Response response{request[http::field::if_none_match] == etag ? http::status::not_modified : http::status::ok,
+                      request.version()};
+    response.set(http::field::server, "facewire");
+    response.set(http::field::etag, etag);
+    response.set(http::field::cache_control, "public, max-age=31536000, immutable");  // the id is the content's hash
+    response.keep_alive(request.keep_alive());
+    if (response.result() == http::status::ok) {
+      response.set(http::field::content_type, "application/x-facewire-avatar");
+      if (request.method() == http::verb::head) {
+        response.content_length(bytes.size());
+      } else {
+        response.body().assign(bytes.begin(), bytes.end());
+        response.prepare_payload();
+      }
+    }
+    return response;
+  }
+  return std::nullopt;
+}
+
+}  // namespace fw::server

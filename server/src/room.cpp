@@ -1,0 +1,239 @@
+#include "room.hpp"
+
+#include <boost/asio/post.hpp>
+#include <spdlog/spdlog.h>
+
+#include "monotonic_clock.hpp"
+#include "room_registry.hpp"
+
+namespace fw::server {
+
+namespace net = boost::asio;
+
+namespace {
+
+/// `text` cut to at most `max` bytes without splitting a UTF-8 sequence.
+std::string clip_utf8(std::string text, std::size_t max) {
+  if (text.size() <= max) return text;
+  std::size_t end = max;
+  while (end > 0 && (static_cast<unsigned char>(text[end]) & 0xC0) == 0x80) --end;
+  text.resize(end);
+  return text;
+}
+
+AvatarCommand to_simulation(const codec::Command& c) {
+  const double seconds = c.duration_ms / 1000.0;
+  switch (c.kind) {
+    case codec::Command::Kind::express: return ExpressCommand{c.emotion, c.intensity, seconds};
+    case codec::Command::Kind::look_at: return LookAtCommand{c.target, seconds};
+    case codec::Command::Kind::snub: return SnubCommand{c.target, seconds};
+    case codec::Command::Kind::facs: break;
+  }
+  return FacsCommand{c.sentence};
+}
+
+}  // namespace
+
+Room::Room(ServerContext& context, std::string name, bool persistent, std::uint64_t seed)
+    : context_(context), name_(std::move(name)), persistent_(persistent), strand_(net::make_strand(*context.workers)),
+      timer_(strand_),
+      simulation_(RoomSimulationOptions{seed, context.config.tick_hz, context.config.physics,
+                                        context.config.physics_sleeps}) {
+  context_.metrics.rooms.fetch_add(1);
+}
+
+Room::~Room() {
+  context_.metrics.rooms.fetch_sub(1);
+  context_.metrics.avatars.fetch_sub(static_cast<std::int64_t>(avatar_count_.load()));
+}
+
+void Room::start() {
+  net::post(strand_, [self = shared_from_this()] {
+    self->next_tick_ = std::chrono::steady_clock::now();
+    self->schedule_tick();
+  });
+}
+
+void Room::close() {
+  net::post(strand_, [self = shared_from_this()] {
+    self->closed_ = true;
+    self->timer_.cancel();
+    for (auto& [id, member] : self->members_)
+      if (member.stream) member.stream->connection()->close(codec::CloseCode::shutting_down, "the room closed");
+    self->members_.clear();
+  });
+}
+
+void Room::then(std::function<void()> done) {
+  net::post(strand_, [self = shared_from_this(), done = std::move(done)] { done(); });
+}
+
+void Room::join(JoinRequest request) {
+  net::post(strand_, [self = shared_from_this(), request = std::move(request)]() mutable {
+    self->do_join(std::move(request));
+  });
+}
+
+void Room::leave(std::uint32_t avatar) {
+  net::post(strand_, [self = shared_from_this(), avatar] { self->do_leave(avatar); });
+}
+
+void Room::chat(std::uint32_t avatar, std::string text) {
+  net::post(strand_, [self = shared_from_this(), avatar, text = std::move(text)] {
+    if (self->closed_ || !self->members_.count(avatar)) return;
+    self->simulation_.chat(avatar, text);
+    self->context_.metrics.chat_lines.fetch_add(1, std::memory_order_relaxed);
+    self->broadcast(encode_shared(codec::Chat{avatar, text}));
+  });
+}
+
+void Room::command(std::uint32_t avatar, codec::Command command) {
+  net::post(strand_, [self = shared_from_this(), avatar, command = std::move(command)] {
+    auto it = self->members_.find(avatar);
+    if (self->closed_ || it == self->members_.end() || !it->second.stream) return;
+    std::string error = self->simulation_.command(avatar, to_simulation(command));
+    const auto result = encode_shared(codec::CommandResult{command.request_id, clip_utf8(std::move(error), codec::kMaxReasonBytes)});
+    it->second.stream->charge(result->size());
+    it->second.stream->connection()->deliver(result);
+  });
+}
+
+void Room::resync(std::uint32_t avatar, std::vector<std::uint32_t> avatars) {
+  net::post(strand_, [self = shared_from_this(), avatar, avatars = std::move(avatars)] {
+    auto it = self->members_.find(avatar);
+    if (it != self->members_.end() && it->second.stream) it->second.stream->force_key_frames(avatars);
+  });
+}
+
+void Room::set_rate(std::uint32_t avatar, std::uint32_t bps) {
+  net::post(strand_, [self = shared_from_this(), avatar, bps] {
+    auto it = self->members_.find(avatar);
+    if (it == self->members_.end() || !it->second.stream) return;
+    const auto& config = self->context_.config;
+    it->second.stream->set_budget(std::min(bps == 0 ? config.default_client_bps : bps, config.max_client_bps));
+  });
+}
+
+void Room::do_join(JoinRequest request) {
+  if (closed_) {
+    // The room emptied and closed while this hello was on its way: seat the
+    // joiner in its successor.
+    if (request.connection) {
+      if (auto room = context_.rooms->find_or_create(name_)) return room->join(std::move(request));
+      request.connection->close(codec::CloseCode::server_full, "the server holds its maximum number of rooms");
+    }
+    return;
+  }
+  if (members_.size() >= context_.config.room_size) {
+    context_.metrics.rejected_joins.fetch_add(1);
+    if (request.connection)
+      request.connection->close(codec::CloseCode::room_full,
+                                "room '" + name_ + "' is full (" + std::to_string(context_.config.room_size) +
+                                    " avatars); try another room");
+    return;
+  }
+  const bool person = request.connection != nullptr;
+  const std::uint32_t id = simulation_.add_avatar(AvatarSetup{request.name, person});
+  Member member;
+  member.info = {id, request.name, request.avatar.asset,
+                 static_cast<std::uint32_t>(request.avatar.preview ? request.avatar.preview->size() : 0),
+                 static_cast<std::uint32_t>(request.avatar.full ? request.avatar.full->size() : 0), person};
+  member.avatar = request.avatar;
+
+  const auto joined = encode_shared(codec::Presence{codec::Presence::Change::joined, member.info});
+  for (auto& [other_id, other] : members_) {
+    if (!other.stream) continue;
+    other.stream->connection()->deliver(joined);
+    other.stream->charge(joined->size());
+    other.stream->add_avatar(id, member.avatar.preview, member.avatar.full);
+  }
+  if (person) {
+    codec::Welcome welcome;
+    welcome.you = id;
+    welcome.room = name_;
+    welcome.tick_hz = static_cast<std::uint8_t>(context_.config.tick_hz);
+    welcome.max_bps = request.stream.budget_bps;
+    for (const auto& [other_id, other] : members_)
+      if (welcome.avatars.size() + 1 < codec::kMaxWelcomeAvatars) welcome.avatars.push_back(other.info);
+    welcome.avatars.push_back(member.info);
+    const auto welcome_bytes = encode_shared(welcome);
+    request.connection->deliver(welcome_bytes);
+    member.stream = std::make_unique<SubscriberStream>(request.stream, request.connection, context_.metrics);
+    member.stream->charge(welcome_bytes->size());
+    for (const auto& [other_id, other] : members_) member.stream->add_avatar(other_id, other.avatar.preview, other.avatar.full);
+    // A client that uploaded its package holds it: its own face costs its link nothing.
+    if (request.stream.own_package) member.stream->add_avatar(id, nullptr, nullptr);
+    else member.stream->add_avatar(id, member.avatar.preview, member.avatar.full);
+    request.connection->joined(id);
+    person_count_.fetch_add(1);
+  }
+  members_.emplace(id, std::move(member));
+  avatar_count_.fetch_add(1);
+  context_.metrics.avatars.fetch_add(1);
+  spdlog::info("room {}: {} joined as avatar {} ({})", name_, request.name, id, person ? "person" : "autonomous");
+}
+
+void Room::do_leave(std::uint32_t avatar) {
+  auto it = members_.find(avatar);
+  if (it == members_.end()) return;
+  const bool person = it->second.stream != nullptr;
+  spdlog::info("room {}: {} left", name_, it->second.info.name);
+  codec::AvatarInfo info;
+  info.id = avatar;
+  info.person = person;
+  members_.erase(it);
+  simulation_.remove_avatar(avatar);
+  avatar_count_.fetch_sub(1);
+  context_.metrics.avatars.fetch_sub(1);
+  if (person) person_count_.fetch_sub(1);
+  const auto left = encode_shared(codec::Presence{codec::Presence::Change::left, info});
+  for (auto& [id, member] : members_) {
+    if (!member.stream) continue;
+    member.stream->remove_avatar(avatar);
+    member.stream->connection()->deliver(left);
+    member.stream->charge(left->size());
+  }
+  if (person_count_.load() == 0 && !persistent_) context_.rooms->remove_if_empty(shared_from_this());
+}
+
+void Room::broadcast(const SharedBytes& message, std::uint32_t except) {
+  for (auto& [id, member] : members_) {
+    if (id == except || !member.stream) continue;
+    member.stream->charge(message->size());
+    member.stream->connection()->deliver(message);
+  }
+}
+
+void Room::schedule_tick() {
+  const auto period = std::chrono::microseconds(1'000'000 / context_.config.tick_hz);
+  next_tick_ += period;
+  const auto now = std::chrono::steady_clock::now();
+  if (next_tick_ < now - period) {
+    // More than a tick behind (an overloaded pool): keep the pace from now
+    // instead of running a burst of ticks to catch up.
+    context_.metrics.late_ticks.fetch_add(1, std::memory_order_relaxed);
+    next_tick_ = now;
+  }
+  timer_.expires_at(next_tick_);
+  timer_.async_wait([self = shared_from_this()](const boost::system::error_code& ec) {
+    if (ec || self->closed_) return;
+    self->on_tick();
+    self->schedule_tick();
+  });
+}
+
+void Room::on_tick() {
+  const auto start = std::chrono::steady_clock::now();
+  simulation_.tick();
+  for (const RoomEvent& event : simulation_.take_events())
+    spdlog::debug("room {}: tick {} avatar {}: {}", name_, event.tick, event.avatar, event.what);
+  faces_.clear();
+  for (const auto& [id, member] : members_) faces_.push_back({id, &simulation_.face(id)});
+  const std::uint64_t now_us = monotonic_us();
+  const std::uint32_t tick = simulation_.tick_index();
+  for (auto& [id, member] : members_)
+    if (member.stream) member.stream->tick(tick, now_us, faces_);
+  context_.metrics.observe_tick(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+}
+
+}  // namespace fw::server

@@ -1,0 +1,89 @@
+#pragma once
+// One room: its avatars, their simulation (behavior + physics) and a
+// SubscriberStream per connected person. Everything runs on the room's
+// strand on the worker pool, never in an I/O handler: sessions post their
+// requests here, and the tick timer simulates, encodes and hands finished
+// messages to the connections.
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <boost/asio/steady_timer.hpp>
+#include <boost/asio/strand.hpp>
+#include <boost/asio/thread_pool.hpp>
+
+#include "avatar_store.hpp"
+#include "fw/codec/messages.hpp"
+#include "room_connection.hpp"
+#include "room_simulation.hpp"
+#include "server_context.hpp"
+#include "subscriber_stream.hpp"
+
+namespace fw::server {
+
+struct JoinRequest {
+  std::string name;
+  StoredAvatar avatar;
+  StreamSettings stream;
+  std::shared_ptr<RoomConnection> connection;  ///< null for the room's own autonomous avatars
+};
+
+class Room : public std::enable_shared_from_this<Room> {
+ public:
+  Room(ServerContext& context, std::string name, bool persistent, std::uint64_t seed);
+  ~Room();
+
+  const std::string& name() const { return name_; }
+  bool persistent() const { return persistent_; }
+  std::size_t avatar_count() const { return avatar_count_.load(); }
+  std::size_t person_count() const { return person_count_.load(); }
+
+  /// Starts the tick timer.
+  void start();
+  /// Stops ticking and drops the simulation; later requests are ignored.
+  void close();
+
+  // Requests; each runs later on the room's strand.
+  /// Seats the joiner (welcome, stream header, presence to the others, then
+  /// connection->joined), or closes its connection (room full).
+  void join(JoinRequest request);
+  /// Runs `done` on the room's strand once everything asked of the room
+  /// before this call has been done (the joins of the demo room, say).
+  void then(std::function<void()> done);
+  void leave(std::uint32_t avatar);
+  void chat(std::uint32_t avatar, std::string text);
+  void command(std::uint32_t avatar, codec::Command command);
+  void resync(std::uint32_t avatar, std::vector<std::uint32_t> avatars);
+  void set_rate(std::uint32_t avatar, std::uint32_t bps);
+
+ private:
+  struct Member {
+    codec::AvatarInfo info;
+    StoredAvatar avatar;
+    std::unique_ptr<SubscriberStream> stream;  ///< null for autonomous avatars
+  };
+  void do_join(JoinRequest request);
+  void do_leave(std::uint32_t avatar);
+  void broadcast(const SharedBytes& message, std::uint32_t except = UINT32_MAX);
+  void schedule_tick();
+  void on_tick();
+
+  ServerContext& context_;
+  std::string name_;
+  bool persistent_;
+  boost::asio::strand<boost::asio::thread_pool::executor_type> strand_;
+  boost::asio::steady_timer timer_;
+  RoomSimulation simulation_;
+  std::map<std::uint32_t, Member> members_;
+  std::vector<AvatarFace> faces_;
+  std::chrono::steady_clock::time_point next_tick_;
+  bool closed_ = false;
+  std::atomic<std::size_t> avatar_count_{0};
+  std::atomic<std::size_t> person_count_{0};
+};
+
+}  // namespace fw::server

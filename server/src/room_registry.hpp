@@ -1,0 +1,55 @@
+#pragma once
+// All rooms by name: created on first join (up to the room limit), removed
+// when their last person leaves (except persistent ones, like the lobby).
+// Also the set of open sessions, so that a drain can tell each to leave.
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "server_context.hpp"
+
+namespace fw::server {
+
+class Room;
+class ClientSession;
+
+struct RoomSummary {
+  std::string name;
+  std::size_t avatars = 0;
+  std::size_t persons = 0;
+};
+
+class RoomRegistry {
+ public:
+  explicit RoomRegistry(ServerContext& context);
+  ~RoomRegistry();
+
+  /// The room called `name`, created (and started) if needed; null when the
+  /// server already holds its maximum number of rooms.
+  std::shared_ptr<Room> find_or_create(const std::string& name, bool persistent = false);
+  /// Closes and forgets `room` if nobody is in it any more.
+  void remove_if_empty(const std::shared_ptr<Room>& room);
+  std::vector<RoomSummary> list() const;
+
+  void add_session(const std::shared_ptr<ClientSession>& session);
+  void remove_session(const ClientSession* session);
+  std::size_t session_count() const;
+  /// Tells every open session that the server shuts down.
+  void close_all_sessions();
+  /// Stops every room.
+  void close_all_rooms();
+
+ private:
+  ServerContext& context_;
+  mutable std::mutex mutex_;
+  std::map<std::string, std::shared_ptr<Room>> rooms_;
+  std::map<const ClientSession*, std::weak_ptr<ClientSession>> sessions_;
+  std::uint64_t next_seed_ = 1;
+};
+
+/// Whether `name` is 1 .. 64 characters of A-Z a-z 0-9 _ - . (PROTOCOL.md, hello).
+bool is_valid_room_name(std::string_view name);
+
+}  // namespace fw::server

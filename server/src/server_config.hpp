@@ -1,0 +1,32 @@
+#pragma once
+// Everything `facewire-server serve` can be told, with its defaults: flags,
+// FACEWIRE_* environment variables and a config file (serve_command.cpp).
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+namespace fw::server {
+
+struct ServerConfig {
+  std::string http = "127.0.0.1:8080";
+  std::string tcp;               ///< empty: no TCP port
+  std::string data = "facewire-data";  ///< avatar store directory
+  int io_threads = 2;
+  int workers = 2;               ///< room ticks and encoding
+  int tick_hz = 30;
+  std::size_t room_size = 16;
+  std::size_t max_rooms = 1000;
+  std::uint32_t default_client_bps = 64000;
+  std::uint32_t max_client_bps = 1'000'000;
+  std::size_t max_upload_bytes = 4 * 1024 * 1024;
+  std::string auth_secret;       ///< empty: no tokens needed
+  bool demo_room = true;         ///< the "lobby" with three autonomous avatars
+  bool physics = true;
+  bool physics_sleeps = true;
+  double drain_seconds = 10;
+  std::string log_level = "info";
+  bool log_json = false;
+  std::string landmark_model;    ///< for photo uploads; empty: the default place
+};
+
+}  // namespace fw::server

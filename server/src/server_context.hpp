@@ -1,0 +1,34 @@
+#pragma once
+// What every part of a running server shares: its configuration, metrics,
+// avatar store, rooms, the worker pool rooms tick on, and whether it drains.
+#include <atomic>
+#include <memory>
+#include <vector>
+
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/thread_pool.hpp>
+
+#include "avatar_store.hpp"
+#include "metrics.hpp"
+#include "server_config.hpp"
+
+namespace fw::server {
+
+class RoomRegistry;
+class PhotoPreparation;
+
+struct ServerContext {
+  ServerConfig config;
+  Metrics metrics;
+  boost::asio::io_context* io = nullptr;       ///< network I/O
+  boost::asio::thread_pool* workers = nullptr; ///< room ticks, encoding
+  AvatarStore* store = nullptr;
+  RoomRegistry* rooms = nullptr;
+  PhotoPreparation* photos = nullptr;
+  /// Procedural faces for clients that join without a package (and the lobby).
+  std::vector<StoredAvatar> demo_avatars;
+  std::atomic<bool> ready{false};     ///< /readyz: listening and the demo room seated
+  std::atomic<bool> draining{false};  ///< SIGTERM: no new joins, sessions told to leave
+};
+
+}  // namespace fw::server

@@ -1,0 +1,254 @@
+#include "subscriber_stream.hpp"
+
+#include <algorithm>
+
+namespace fw::server {
+namespace {
+
+constexpr double kFloorBps = 2400;
+/// The parameter stream's share of the budget while previews, then full
+/// packages, are still on their way; the rest (and whatever the faces leave
+/// unused) carries them. A face is not shown before its preview arrives, so
+/// previews come first.
+constexpr double kParamShareWithPreviews = 0.5;
+constexpr double kParamShareWithPackages = 0.7;
+constexpr double kParamShare = 0.95;
+/// Unspent budget is kept for at most this long, so that no second carries
+/// more than 1.1 seconds' worth.
+constexpr double kCreditSeconds = 0.1;
+constexpr std::size_t kMinChunkBytes = 64;
+/// A face that moves is sent this often (frames per second) even while its
+/// motion stays within what the prediction shows, so that a viewer sees it
+/// alive at 10 frames a second or more on any link whose budget allows it
+/// (above 10, because a refresh the budget refuses waits for the next).
+constexpr int kRefreshHz = 15;
+/// Under this budget per avatar, frames are bundled on the refresh ticks.
+constexpr double kBundleBelowBps = 2000;
+/// Budget follows need: once a second, a face held under this frame rate by
+/// its budget (its rate control's bucket filling) gets a larger share of the
+/// stream, one above it a smaller one, within [kMinWeight, kMaxWeight] of an
+/// equal share. A busy face then moves as often as a calm one.
+constexpr double kFairFps = 12.0;
+constexpr double kMinWeight = 0.5, kMaxWeight = 2.5;
+/// What the stream aims at, as a share of the client's budget: the rest
+/// absorbs what no count here sees (rounding, a late tick, IP headers a
+/// client may count).
+constexpr double kHeadroom = 0.97;
+
+}  // namespace
+
+SubscriberStream::SubscriberStream(const StreamSettings& settings, std::shared_ptr<RoomConnection> connection,
+                                   Metrics& metrics)
+    : settings_(settings), connection_(std::move(connection)), metrics_(metrics),
+      effective_bps_(std::max<double>(kFloorBps, settings.budget_bps * kHeadroom)) {
+  // The stream header opens the codec stream (after the welcome the room sent).
+  send(share(codec::write_stream_header({})));
+}
+
+void SubscriberStream::add_avatar(std::uint32_t avatar, SharedBytes preview, SharedBytes full) {
+  codec::EncoderOptions options;
+  options.stream.tick_rate_hz = static_cast<std::uint8_t>(settings_.tick_hz);
+  options.refresh_ticks = std::max(1, settings_.tick_hz / kRefreshHz);
+  options.refresh_bucket_share = 1.0;  // a live face at 10+ frames/s first, its finest detail second
+  // Frames of one tick share a room frame: its first byte, the message's
+  // framing and, when asked for, the timestamp are split among them; each
+  // entry adds its id and length.
+  const double shared_bytes = 1.0 + 4.0 + (settings_.timestamps ? 13.0 : 0.0);
+  options.container_bytes_per_frame = 2.0 + shared_bytes / static_cast<double>(encoders_.size() + 1);
+  encoders_.emplace(avatar, codec::Encoder(options));
+  if (settings_.packages) {
+    // Previews go before every full package, whoever joined first.
+    const auto first_full = std::find_if(packages_.begin(), packages_.end(), [](const PackageSend& p) {
+      return p.quality == codec::PackageChunk::Quality::full && p.offset == 0;
+    });
+    if (preview && !preview->empty()) {
+      packages_.insert(first_full, {avatar, codec::PackageChunk::Quality::preview, preview, 0});
+      awaiting_preview_.insert(avatar);  // its frames would draw nothing yet
+    }
+    if (full && !full->empty()) packages_.push_back({avatar, codec::PackageChunk::Quality::full, full, 0});
+  }
+  retarget_encoders();
+}
+
+void SubscriberStream::remove_avatar(std::uint32_t avatar) {
+  encoders_.erase(avatar);
+  fairness_.erase(avatar);
+  awaiting_preview_.erase(avatar);
+  // A package half sent stays: the chunks already out need their end to be
+  // parsed, and the client drops it with the avatar anyway. Unstarted ones go.
+  std::erase_if(packages_, [avatar](const PackageSend& p) { return p.avatar == avatar && p.offset == 0; });
+  retarget_encoders();
+}
+
+void SubscriberStream::force_key_frames(std::span<const std::uint32_t> avatars) {
+  if (avatars.empty()) {
+    for (auto& [id, encoder] : encoders_) encoder.force_key_frame();
+    return;
+  }
+  for (const std::uint32_t id : avatars)
+    if (auto it = encoders_.find(id); it != encoders_.end()) it->second.force_key_frame();
+}
+
+void SubscriberStream::set_budget(std::uint32_t bps) {
+  settings_.budget_bps = bps;
+  effective_bps_ = std::max<double>(kFloorBps, bps * kHeadroom);
+  retarget_encoders();
+}
+
+void SubscriberStream::charge(std::size_t bytes) { credit_bytes_ -= static_cast<double>(bytes); }
+
+std::uint32_t SubscriberStream::bundle_ticks() const {
+  const std::size_t streaming = std::max<std::size_t>(1, encoders_.size() - awaiting_preview_.size());
+  const bool thin = effective_bps_ / static_cast<double>(streaming) < kBundleBelowBps;
+  return thin ? static_cast<std::uint32_t>(std::max(1, settings_.tick_hz / kRefreshHz)) : 1;
+}
+
+void SubscriberStream::retarget_encoders() {
+  const std::size_t streaming = encoders_.size() - awaiting_preview_.size();
+  if (streaming == 0) return;
+  const double share = !awaiting_preview_.empty() ? kParamShareWithPreviews
+                       : packages_.empty()        ? kParamShare
+                                                  : kParamShareWithPackages;
+  double weights = 0;
+  for (const auto& [id, encoder] : encoders_)
+    if (!awaiting_preview_.count(id)) weights += weight_of(id);
+  for (auto& [id, encoder] : encoders_) encoder.set_target_bps(effective_bps_ * share * weight_of(id) / weights);
+}
+
+std::size_t SubscriberStream::send(SharedBytes message) {
+  const std::size_t bytes = message->size() + connection_->framing_bytes(message->size());
+  credit_bytes_ -= static_cast<double>(bytes);
+  connection_->deliver(std::move(message));
+  return bytes;
+}
+
+void SubscriberStream::tick(std::uint32_t tick, std::uint64_t now_us, std::span<const AvatarFace> faces) {
+  if (second_start_us_ == 0) {
+    second_start_us_ = now_us;
+    written_at_second_start_ = connection_->bytes_written();
+  }
+  if (now_us - second_start_us_ >= 1'000'000) once_a_second(now_us);
+
+  const double bytes_per_second = effective_bps_ / 8.0;
+  credit_bytes_ = std::min(credit_bytes_ + bytes_per_second / settings_.tick_hz,
+                           std::max(bytes_per_second * kCreditSeconds, static_cast<double>(kMinChunkBytes) + 16));
+
+  // Latest value wins: a connection still holding half a second of data
+  // gets nothing new this tick. The encoders hold (no frame), so the next
+  // frame starts from what the client really has.
+  const std::size_t queued = connection_->queued_bytes();
+  const bool congested = static_cast<double>(queued) > std::max(512.0, bytes_per_second / 2);
+  if (congested) {
+    ++skipped_ticks_;
+    congested_this_second_ = true;
+    metrics_.skipped_ticks.fetch_add(1, std::memory_order_relaxed);
+  }
+  // On a thin budget the avatars' frames go out together on every
+  // bundle_ticks-th tick: one room frame (and one message header) carries
+  // them all, instead of one nearly empty room frame per tick.
+  const bool send_tick = !congested && tick % bundle_ticks() == 0;
+
+  frames_.resize(std::max(frames_.size(), faces.size()));
+  std::vector<codec::RoomEntry> entries;
+  entries.reserve(faces.size());
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    auto it = encoders_.find(faces[i].id);
+    if (it == encoders_.end() || awaiting_preview_.count(faces[i].id)) continue;
+    if (!send_tick) it->second.hold(*faces[i].face);
+    else if (it->second.encode(*faces[i].face, frames_[i])) entries.push_back({faces[i].id, frames_[i]});
+  }
+  if (congested) return;
+  for (std::size_t start = 0; start < entries.size(); start += codec::kMaxRoomAvatars) {
+    const std::size_t count = std::min(codec::kMaxRoomAvatars, entries.size() - start);
+    send_room_frames(tick, now_us, std::span(entries).subspan(start, count));
+  }
+  send_package_chunks();
+}
+
+void SubscriberStream::send_room_frames(std::uint32_t tick, std::uint64_t now_us,
+                                        std::span<const codec::RoomEntry> entries) {
+  frame_.clear();
+  codec::write_room_frame(entries, frame_);
+  std::vector<std::uint8_t> message;
+  if (settings_.timestamps) {
+    codec::write_message(codec::TimedRoomFrame{tick, now_us, frame_}, message);
+  } else {
+    message = frame_;
+  }
+  metrics_.room_frames_sent.fetch_add(1, std::memory_order_relaxed);
+  metrics_.avatar_frames_sent.fetch_add(entries.size(), std::memory_order_relaxed);
+  send(share(std::move(message)));
+}
+
+void SubscriberStream::send_package_chunks() {
+  // Chunks small enough that a room frame behind one waits at most a
+  // quarter of a second on a link that just carries the budget.
+  const std::size_t max_chunk = std::clamp<std::size_t>(static_cast<std::size_t>(effective_bps_ / 8 / 4),
+                                                        kMinChunkBytes, codec::kMaxChunkBytes);
+  while (!packages_.empty() && credit_bytes_ >= static_cast<double>(kMinChunkBytes) + 16) {
+    PackageSend& p = packages_.front();
+    const std::size_t left = p.bytes->size() - p.offset;
+    const std::size_t size =
+        std::min({left, max_chunk, static_cast<std::size_t>(credit_bytes_) - 16});
+    codec::PackageChunk chunk;
+    chunk.avatar = p.avatar;
+    chunk.quality = p.quality;
+    chunk.total_bytes = static_cast<std::uint32_t>(p.bytes->size());
+    chunk.offset = static_cast<std::uint32_t>(p.offset);
+    chunk.data.assign(p.bytes->begin() + static_cast<std::ptrdiff_t>(p.offset),
+                      p.bytes->begin() + static_cast<std::ptrdiff_t>(p.offset + size));
+    p.offset += size;
+    metrics_.package_bytes_sent.fetch_add(size, std::memory_order_relaxed);
+    send(encode_shared(chunk));
+    if (p.offset == p.bytes->size()) {
+      const bool preview = p.quality == codec::PackageChunk::Quality::preview;
+      if (preview) awaiting_preview_.erase(p.avatar);  // the face can be drawn: stream it
+      packages_.pop_front();
+      if (preview || packages_.empty()) retarget_encoders();
+    }
+  }
+}
+
+double SubscriberStream::weight_of(std::uint32_t avatar) const {
+  const auto it = fairness_.find(avatar);
+  return it == fairness_.end() ? 1.0 : it->second.weight;
+}
+
+void SubscriberStream::rebalance(double seconds) {
+  for (const auto& [id, encoder] : encoders_) {
+    if (awaiting_preview_.count(id)) continue;
+    Fairness& f = fairness_[id];
+    const codec::EncoderStats stats = encoder.stats();
+    const double fps = static_cast<double>(stats.frames_sent - f.frames_at_second_start) / seconds;
+    f.frames_at_second_start = stats.frames_sent;
+    const bool held_back = stats.bucket_bits > 0.3 * stats.bucket_capacity_bits;
+    if (fps < kFairFps && held_back) f.weight = std::min(kMaxWeight, f.weight * 1.2);
+    else if (fps > kFairFps || !held_back) f.weight = std::max(kMinWeight, f.weight / 1.1);
+  }
+}
+
+void SubscriberStream::once_a_second(std::uint64_t now_us) {
+  const std::uint64_t written = connection_->bytes_written();
+  const double seconds = static_cast<double>(now_us - second_start_us_) / 1e6;
+  const double drain_bps = static_cast<double>(written - written_at_second_start_) * 8.0 / seconds;
+  const double requested = std::max<double>(kFloorBps, settings_.budget_bps * kHeadroom);
+  rebalance(seconds);
+  if (congested_this_second_) {
+    // What really left is what the link carries: aim a little under it.
+    effective_bps_ = std::clamp(drain_bps * 0.85, kFloorBps, requested);
+  } else if (effective_bps_ < requested) {
+    effective_bps_ = std::min(requested, effective_bps_ * 1.15 + 800);
+  }
+  retarget_encoders();
+  codec::LinkStats stats;
+  stats.target_bps = static_cast<std::uint32_t>(effective_bps_);
+  stats.drain_bps = static_cast<std::uint32_t>(drain_bps);
+  stats.queued_bytes = static_cast<std::uint32_t>(connection_->queued_bytes());
+  stats.skipped_ticks = skipped_ticks_;
+  send(encode_shared(stats));
+  second_start_us_ = now_us;
+  written_at_second_start_ = written;
+  congested_this_second_ = false;
+}
+
+}  // namespace fw::server

@@ -1,0 +1,99 @@
+#pragma once
+// One subscriber's view of its room: an Encoder per avatar, the packages it
+// still has to receive, and the rate control that keeps everything it is
+// sent under its budget. Owned and called by the room, on the room's strand.
+//
+// Every tick: if the connection still holds more than half a second of
+// budget, the tick is skipped for this subscriber (the encoders hold, so
+// nothing is lost: the next frame predicts from what the client has);
+// otherwise every avatar's face is offered to its encoder and the frames
+// that come out go in one room frame. On a thin budget only every second
+// tick (15 Hz) carries frames, so that one room frame bundles them all. Package chunks fill what the budget
+// leaves, previews first; an avatar's frames start once its preview is
+// there (before, the client could not draw them). Once a second the budget follows what actually
+// drained: down when ticks were skipped, back up toward the client's own.
+#include <cstdint>
+#include <deque>
+#include <map>
+#include <memory>
+#include <set>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "fw/codec/codec.hpp"
+#include "fw/codec/face_params.hpp"
+#include "metrics.hpp"
+#include "room_connection.hpp"
+
+namespace fw::server {
+
+struct StreamSettings {
+  int tick_hz = 30;
+  std::uint32_t budget_bps = 64000;  ///< the client's, already capped by the server
+  bool timestamps = false;
+  bool packages = true;
+  bool own_package = false;  ///< the subscriber holds its own avatar's package
+};
+
+struct AvatarFace {
+  std::uint32_t id = 0;
+  const codec::FaceParams* face = nullptr;
+};
+
+class SubscriberStream {
+ public:
+  SubscriberStream(const StreamSettings& settings, std::shared_ptr<RoomConnection> connection, Metrics& metrics);
+
+  void add_avatar(std::uint32_t avatar, SharedBytes preview, SharedBytes full);
+  void remove_avatar(std::uint32_t avatar);
+  /// The client lost track of these avatars (a resync request); empty: all.
+  void force_key_frames(std::span<const std::uint32_t> avatars);
+  /// A new budget from the client (0: the server's default, resolved by the caller).
+  void set_budget(std::uint32_t bps);
+  /// Charges a message the room sent outside the stream (chat, presence).
+  void charge(std::size_t bytes);
+
+  void tick(std::uint32_t tick, std::uint64_t now_us, std::span<const AvatarFace> faces);
+
+  const std::shared_ptr<RoomConnection>& connection() const { return connection_; }
+  std::uint32_t target_bps() const { return static_cast<std::uint32_t>(effective_bps_); }
+
+ private:
+  struct PackageSend {
+    std::uint32_t avatar;
+    codec::PackageChunk::Quality quality;
+    SharedBytes bytes;
+    std::size_t offset = 0;
+  };
+  void send_room_frames(std::uint32_t tick, std::uint64_t now_us, std::span<const codec::RoomEntry> entries);
+  void send_package_chunks();
+  void once_a_second(std::uint64_t now_us);
+  void retarget_encoders();
+  std::uint32_t bundle_ticks() const;
+  double weight_of(std::uint32_t avatar) const;
+  void rebalance(double seconds);
+  std::size_t send(SharedBytes message);
+
+  StreamSettings settings_;
+  std::shared_ptr<RoomConnection> connection_;
+  Metrics& metrics_;
+  std::map<std::uint32_t, codec::Encoder> encoders_;
+  struct Fairness {
+    double weight = 1.0;  ///< the avatar's share of the parameter budget, relative to an equal one
+    std::uint64_t frames_at_second_start = 0;
+  };
+  std::map<std::uint32_t, Fairness> fairness_;
+  std::deque<PackageSend> packages_;
+  std::set<std::uint32_t> awaiting_preview_;  ///< avatars whose preview is not complete yet
+  double effective_bps_;
+  double credit_bytes_ = 0;     ///< what the budget allows to send now
+  std::uint64_t second_start_us_ = 0;
+  std::uint64_t written_at_second_start_ = 0;
+  bool congested_this_second_ = false;
+  std::uint32_t skipped_ticks_ = 0;
+  std::vector<std::uint8_t> frame_;
+  std::vector<std::vector<std::uint8_t>> frames_;
+};
+
+}  // namespace fw::server

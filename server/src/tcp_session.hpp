@@ -1,0 +1,34 @@
+#pragma once
+// A room connection over plain TCP: every message preceded by its length
+// (PROTOCOL.md, "Framing on TCP"), for native clients.
+#include <array>
+
+#include <boost/asio/ip/tcp.hpp>
+#include <boost/asio/steady_timer.hpp>
+
+#include "client_session.hpp"
+#include "fw/codec/messages.hpp"
+
+namespace fw::server {
+
+class TcpSession : public ClientSession {
+ public:
+  TcpSession(ServerContext& context, boost::asio::ip::tcp::socket&& socket, std::string peer);
+  void run();
+  std::size_t framing_bytes(std::size_t message_bytes) const override;
+
+ private:
+  void start_reading() override;
+  void start_write(const SharedBytes& message) override;
+  void shutdown_transport(codec::CloseCode code, const std::string& reason, bool abort) override;
+  void on_read(boost::system::error_code ec, std::size_t bytes);
+
+  boost::asio::ip::tcp::socket socket_;
+  boost::asio::steady_timer linger_;
+  std::array<std::uint8_t, 4096> read_buffer_{};
+  std::vector<std::uint8_t> prefix_;
+  codec::TcpDeframer deframer_{codec::kMaxUpstreamMessageBytes};
+  bool shut_ = false;
+};
+
+}  // namespace fw::server

@@ -1,0 +1,105 @@
+#include "websocket_session.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include "server_limits.hpp"
+
+namespace fw::server {
+
+namespace beast = boost::beast;
+namespace websocket = beast::websocket;
+using codec::CloseCode;
+
+namespace {
+
+websocket::close_code close_code_for(CloseCode code) {
+  switch (code) {
+    case CloseCode::normal: return websocket::close_code::normal;
+    case CloseCode::shutting_down: return websocket::close_code::going_away;
+    case CloseCode::message_too_large: return websocket::close_code::too_big;
+    case CloseCode::unauthorized:
+    case CloseCode::rate_limited:
+    case CloseCode::room_full:
+    case CloseCode::server_full:
+    case CloseCode::handshake_timeout:
+    case CloseCode::idle_timeout: return websocket::close_code::policy_error;
+    default: return websocket::close_code::protocol_error;
+  }
+}
+
+}  // namespace
+
+WebSocketSession::WebSocketSession(ServerContext& context, beast::tcp_stream&& stream, std::string peer)
+    : ClientSession(context, stream.get_executor(), std::move(peer)), ws_(std::move(stream)) {}
+
+std::size_t WebSocketSession::framing_bytes(std::size_t message_bytes) const {
+  return message_bytes < 126 ? 2 : message_bytes < 65536 ? 4 : 10;  // server frames are not masked
+}
+
+void WebSocketSession::run(beast::http::request<beast::http::string_body> request) {
+  beast::get_lowest_layer(ws_).expires_never();  // the websocket's own time-outs from here on
+  beast::error_code ignored;
+  beast::get_lowest_layer(ws_).socket().set_option(
+      boost::asio::socket_base::send_buffer_size(limits::kSocketSendBufferBytes), ignored);  // as TcpSession
+  websocket::stream_base::timeout timeout{};
+  timeout.handshake_timeout = limits::kHandshakeTimeout;
+  timeout.idle_timeout = websocket::stream_base::none();  // the session's idle clock decides
+  timeout.keep_alive_pings = false;
+  ws_.set_option(timeout);
+  ws_.read_message_max(codec::kMaxUpstreamMessageBytes);
+  ws_.binary(true);
+  ws_.set_option(websocket::stream_base::decorator(
+      [](websocket::response_type& response) { response.set(beast::http::field::server, "facewire"); }));
+  auto self = std::static_pointer_cast<WebSocketSession>(shared_from_this());
+  ws_.async_accept(request, [self](beast::error_code ec) {
+    if (ec) {
+      spdlog::debug("{}: websocket handshake: {}", self->peer_, ec.message());
+      return;
+    }
+    self->start();
+  });
+}
+
+void WebSocketSession::start_reading() {
+  ws_.async_read(buffer_, beast::bind_front_handler(&WebSocketSession::on_read,
+                                                    std::static_pointer_cast<WebSocketSession>(shared_from_this())));
+}
+
+void WebSocketSession::on_read(beast::error_code ec, std::size_t bytes) {
+  if (ec == websocket::error::message_too_big) {
+    // Beast has answered with close code 1009 already; the closing message
+    // cannot follow on a closed stream, so this only counts and logs it.
+    on_transport_error(CloseCode::message_too_large, "a message over 8 KiB");
+    return on_transport_closed();
+  }
+  if (ec) return on_transport_closed();
+  note_received(bytes);
+  if (!ws_.got_binary()) {
+    on_transport_error(CloseCode::protocol_error, "a text message; the protocol sends binary messages only");
+  } else {
+    const auto data = buffer_.cdata();
+    on_message({static_cast<const std::uint8_t*>(data.data()), data.size()});
+  }
+  buffer_.consume(buffer_.size());
+  start_reading();  // reading on lets the close handshake complete
+}
+
+void WebSocketSession::start_write(const SharedBytes& message) {
+  auto self = std::static_pointer_cast<WebSocketSession>(shared_from_this());
+  ws_.async_write(boost::asio::buffer(*message), [self, message](beast::error_code ec, std::size_t bytes) {
+    self->on_write_done(!ec, bytes + self->framing_bytes(bytes));
+  });
+}
+
+void WebSocketSession::shutdown_transport(CloseCode code, const std::string& reason, bool abort) {
+  if (abort) {
+    beast::error_code ignored;
+    beast::get_lowest_layer(ws_).socket().close(ignored);
+    return on_transport_closed();
+  }
+  auto self = std::static_pointer_cast<WebSocketSession>(shared_from_this());
+  websocket::close_reason why(close_code_for(code), reason.substr(0, 120));
+  ws_.async_close(why, [self](beast::error_code) { self->on_transport_closed(); });
+}
+
+}  // namespace fw::server

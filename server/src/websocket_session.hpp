@@ -1,0 +1,30 @@
+#pragma once
+// A room connection over WebSocket: one protocol message per binary
+// WebSocket message (PROTOCOL.md, "Transports"). Created by HttpSession
+// when a request asks for the upgrade.
+#include <boost/beast/core.hpp>
+#include <boost/beast/http.hpp>
+#include <boost/beast/websocket.hpp>
+
+#include "client_session.hpp"
+
+namespace fw::server {
+
+class WebSocketSession : public ClientSession {
+ public:
+  WebSocketSession(ServerContext& context, boost::beast::tcp_stream&& stream, std::string peer);
+  /// Answers the upgrade request, then runs the protocol.
+  void run(boost::beast::http::request<boost::beast::http::string_body> request);
+  std::size_t framing_bytes(std::size_t message_bytes) const override;
+
+ private:
+  void start_reading() override;
+  void start_write(const SharedBytes& message) override;
+  void shutdown_transport(codec::CloseCode code, const std::string& reason, bool abort) override;
+  void on_read(boost::beast::error_code ec, std::size_t bytes);
+
+  boost::beast::websocket::stream<boost::beast::tcp_stream> ws_;
+  boost::beast::flat_buffer buffer_;
+};
+
+}  // namespace fw::server

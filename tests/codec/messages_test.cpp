@@ -1,0 +1,269 @@
+#include "fw/codec/messages.hpp"
+
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "fw/codec/codec.hpp"
+#include "test_seed.hpp"
+
+namespace fw::codec {
+namespace {
+
+template <class M>
+std::vector<std::uint8_t> bytes_of(const M& message) {
+  std::vector<std::uint8_t> out;
+  write_message(message, out);
+  return out;
+}
+
+TEST(Messages, HelloRoundTrips) {
+  Hello hello;
+  hello.room = "lobby";
+  hello.name = "Zoë";
+  hello.avatar = "a1b2c3";
+  hello.token = "tok.en";
+  hello.max_bps = 9600;
+  hello.timestamps = true;
+  hello.own_package = true;
+  const auto bytes = bytes_of(hello);
+  EXPECT_EQ(bytes[0], 0x81);
+  EXPECT_EQ(classify(bytes), MessageKind::session);
+  EXPECT_EQ(session_type(bytes), MessageType::hello);
+  Hello back;
+  ASSERT_EQ(read_message(bytes, back), MessageError::ok);
+  EXPECT_EQ(back.room, "lobby");
+  EXPECT_EQ(back.name, "Zoë");
+  EXPECT_EQ(back.avatar, "a1b2c3");
+  EXPECT_EQ(back.token, "tok.en");
+  EXPECT_EQ(back.max_bps, 9600u);
+  EXPECT_TRUE(back.timestamps);
+  EXPECT_FALSE(back.no_packages);
+  EXPECT_TRUE(back.own_package);
+}
+
+TEST(Messages, HelloOfAnotherVersionIsRefusedBeforeItsFields) {
+  std::vector<std::uint8_t> bytes = {0x81, 0x02, 0x00, 0xFF};  // version 2, then bytes v1 would refuse
+  Hello back;
+  EXPECT_EQ(read_message(bytes, back), MessageError::unsupported_version);
+}
+
+TEST(Messages, WelcomeAndPresenceCarryAvatars) {
+  Welcome welcome;
+  welcome.you = 7;
+  welcome.room = "lobby";
+  welcome.max_bps = 12000;
+  welcome.avatars = {{0, "Ada", "abc", 1100, 40000, false}, {7, "Bo", "def", 0, 50000, true}};
+  Welcome back;
+  ASSERT_EQ(read_message(bytes_of(welcome), back), MessageError::ok);
+  EXPECT_EQ(back.you, 7u);
+  ASSERT_EQ(back.avatars.size(), 2u);
+  EXPECT_EQ(back.avatars[0].name, "Ada");
+  EXPECT_FALSE(back.avatars[0].person);
+  EXPECT_EQ(back.avatars[0].preview_bytes, 1100u);
+  EXPECT_EQ(back.avatars[1].full_bytes, 50000u);
+
+  Presence left{Presence::Change::left, {7, "Bo", "", 0, 0, true}};
+  Presence presence_back;
+  ASSERT_EQ(read_message(bytes_of(left), presence_back), MessageError::ok);
+  EXPECT_EQ(presence_back.change, Presence::Change::left);
+  EXPECT_EQ(presence_back.avatar.id, 7u);
+}
+
+TEST(Messages, CommandsOfEveryKindRoundTrip) {
+  Command express{.request_id = 3, .kind = Command::Kind::express, .emotion = "joy", .intensity = 0.7f,
+                  .target = 0, .duration_ms = 2500, .sentence = ""};
+  Command back;
+  ASSERT_EQ(read_message(bytes_of(express), back), MessageError::ok);
+  EXPECT_EQ(back.emotion, "joy");
+  EXPECT_FLOAT_EQ(back.intensity, 0.7f);
+  EXPECT_EQ(back.duration_ms, 2500u);
+
+  Command snub{.request_id = 4, .kind = Command::Kind::snub, .emotion = "", .intensity = 1, .target = 12,
+               .duration_ms = 10000, .sentence = ""};
+  ASSERT_EQ(read_message(bytes_of(snub), back), MessageError::ok);
+  EXPECT_EQ(back.kind, Command::Kind::snub);
+  EXPECT_EQ(back.target, 12u);
+
+  Command facs{.request_id = 5, .kind = Command::Kind::facs, .emotion = "", .intensity = 1, .target = 0,
+               .duration_ms = 0, .sentence = "ClearAllFrame\nBeginKeyFrame\n\tAU12 0.8\n"};
+  ASSERT_EQ(read_message(bytes_of(facs), back), MessageError::ok);
+  EXPECT_EQ(back.sentence, facs.sentence);
+}
+
+TEST(Messages, SmallMessagesRoundTrip) {
+  Chat chat{3, "hello, room"};
+  Chat chat_back;
+  ASSERT_EQ(read_message(bytes_of(chat), chat_back), MessageError::ok);
+  EXPECT_EQ(chat_back.text, "hello, room");
+  EXPECT_EQ(chat_back.from, 3u);
+
+  CommandResult result{9, "unknown emotion 'glee'"};
+  CommandResult result_back;
+  ASSERT_EQ(read_message(bytes_of(result), result_back), MessageError::ok);
+  EXPECT_EQ(result_back.error, result.error);
+
+  Ping ping{42, 123456789012ull};
+  Pong pong{42, 123456789012ull, 987654321ull};
+  Pong pong_back;
+  ASSERT_EQ(read_message(bytes_of(pong), pong_back), MessageError::ok);
+  EXPECT_EQ(pong_back.server_time_us, 987654321ull);
+  Ping ping_back;
+  ASSERT_EQ(read_message(bytes_of(ping), ping_back), MessageError::ok);
+  EXPECT_EQ(ping_back.client_time_us, 123456789012ull);
+
+  LinkStats stats{9600, 8000, 12, 3};
+  LinkStats stats_back;
+  ASSERT_EQ(read_message(bytes_of(stats), stats_back), MessageError::ok);
+  EXPECT_EQ(stats_back.drain_bps, 8000u);
+
+  Closing closing{CloseCode::unauthorized, "token is for room 'a'"};
+  Closing closing_back;
+  ASSERT_EQ(read_message(bytes_of(closing), closing_back), MessageError::ok);
+  EXPECT_EQ(closing_back.code, CloseCode::unauthorized);
+
+  SetRate rate{4800};
+  SetRate rate_back;
+  ASSERT_EQ(read_message(bytes_of(rate), rate_back), MessageError::ok);
+  EXPECT_EQ(rate_back.max_bps, 4800u);
+}
+
+TEST(Messages, PackageChunksStayInsideTheirPackage) {
+  PackageChunk chunk{.avatar = 2, .quality = PackageChunk::Quality::full, .total_bytes = 10, .offset = 6,
+                     .data = {1, 2, 3, 4}};
+  auto bytes = bytes_of(chunk);
+  PackageChunk back;
+  ASSERT_EQ(read_message(bytes, back), MessageError::ok);
+  EXPECT_EQ(back.offset, 6u);
+  EXPECT_EQ(back.data, chunk.data);
+  bytes.push_back(5);  // now offset + size > total
+  EXPECT_EQ(read_message(bytes, back), MessageError::value_out_of_range);
+}
+
+TEST(Messages, TimedRoomFrameWrapsACodecRoomFrame) {
+  const std::vector<std::uint8_t> frame = {0x11, 0xAB, 0xCD};  // not decoded here
+  std::vector<std::uint8_t> room;
+  const RoomEntry entry{5, frame};
+  write_room_frame({&entry, 1}, room);
+  TimedRoomFrame timed{1234, 5555, room};
+  const auto bytes = bytes_of(timed);
+  TimedRoomFrame back;
+  ASSERT_EQ(read_message(bytes, back), MessageError::ok);
+  EXPECT_EQ(back.tick, 1234u);
+  EXPECT_EQ(back.server_time_us, 5555u);
+  std::vector<RoomEntry> entries;
+  ASSERT_EQ(read_room_frame(back.room_frame, entries), DecodeError::ok);
+  ASSERT_EQ(entries.size(), 1u);
+  EXPECT_EQ(entries[0].avatar_id, 5u);
+}
+
+TEST(Messages, ClassifyTellsCodecMessagesFromSessionMessages) {
+  std::vector<std::uint8_t> resync;
+  write_resync_request({}, resync);
+  EXPECT_EQ(classify(resync), MessageKind::resync_request);
+  EXPECT_EQ(classify(write_stream_header({})), MessageKind::stream_header);
+  EXPECT_EQ(classify(std::vector<std::uint8_t>{0x13, 0x00, 0x01}), MessageKind::room_frame);
+  EXPECT_EQ(classify(std::vector<std::uint8_t>{0x11}), MessageKind::invalid);  // bare key frames do not travel alone
+  EXPECT_EQ(classify(std::vector<std::uint8_t>{0x80}), MessageKind::invalid);
+  EXPECT_EQ(classify(std::vector<std::uint8_t>{0xFF}), MessageKind::invalid);
+  EXPECT_EQ(classify(std::vector<std::uint8_t>{}), MessageKind::invalid);
+}
+
+TEST(Messages, BadBytesGiveTheirError) {
+  Chat chat;
+  EXPECT_EQ(read_message(std::vector<std::uint8_t>{}, chat), MessageError::empty);
+  EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x13}, chat), MessageError::not_session_message);
+  EXPECT_EQ(read_message(std::vector<std::uint8_t>{0xF0}, chat), MessageError::unknown_type);
+  EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x81}, chat), MessageError::wrong_type);
+  EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x84, 0x01, 0x05, 'a'}, chat), MessageError::truncated);
+  EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x84, 0x01, 0x01, 'a', 'b'}, chat), MessageError::trailing_bytes);
+  EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x84, 0x01, 0x01, 0x07}, chat), MessageError::bad_text);
+  EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x84, 0x01, 0x02, 0xC0, 0x80}, chat), MessageError::bad_text);
+  std::vector<std::uint8_t> long_chat = {0x84, 0x01, 0xF5, 0x03};  // 501 bytes
+  long_chat.resize(long_chat.size() + 501, 'x');
+  EXPECT_EQ(read_message(long_chat, chat), MessageError::string_too_long);
+  std::vector<std::uint8_t> huge(kMaxUpstreamMessageBytes + 1, 'x');
+  huge[0] = 0x81;
+  Hello hello;
+  EXPECT_EQ(read_message(huge, hello), MessageError::too_large);
+  Command command;
+  EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x85, 0x01, 0x09}, command), MessageError::value_out_of_range);
+  EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x85, 0x01, 0x00, 0x03, 'j', 'o', 'y', 101, 0x00}, command),
+            MessageError::value_out_of_range);
+  for (int e = 0; e <= 13; ++e) EXPECT_FALSE(describe(static_cast<MessageError>(e)).empty());
+}
+
+TEST(Messages, EveryReaderSurvivesRandomBytes) {
+  std::mt19937_64 rng(test::seed("Messages.EveryReaderSurvivesRandomBytes"));
+  std::vector<std::uint8_t> bytes;
+  for (int i = 0; i < 20000; ++i) {
+    bytes.resize(rng() % 64);
+    for (auto& b : bytes) b = static_cast<std::uint8_t>(rng());
+    if (!bytes.empty()) bytes[0] = static_cast<std::uint8_t>(0x80 | (1 + rng() % 13));
+    Hello a; Welcome b; Presence c; Chat d; Command e; CommandResult f; PackageChunk g;
+    SetRate h; Ping k; Pong l; LinkStats m; Closing n; TimedRoomFrame o;
+    (void)read_message(bytes, a); (void)read_message(bytes, b); (void)read_message(bytes, c);
+    (void)read_message(bytes, d); (void)read_message(bytes, e); (void)read_message(bytes, f);
+    (void)read_message(bytes, g); (void)read_message(bytes, h); (void)read_message(bytes, k);
+    (void)read_message(bytes, l); (void)read_message(bytes, m); (void)read_message(bytes, n);
+    (void)read_message(bytes, o);
+    EXPECT_LE(b.avatars.size(), kMaxWelcomeAvatars);
+  }
+}
+
+TEST(TcpFraming, SplitsAStreamFedByteByByte) {
+  std::vector<std::uint8_t> stream;
+  const std::vector<std::uint8_t> small = {0x84, 0x00, 0x01, 'x'};
+  std::vector<std::uint8_t> large(300, 0x42);
+  write_tcp_frame(small, stream);
+  write_tcp_frame(large, stream);
+  EXPECT_EQ(stream[0], 4);
+  EXPECT_EQ(stream[5], 0xAC);  // 300 = 0b10'0101100 -> 0xAC 0x02
+  EXPECT_EQ(stream[6], 0x02);
+  TcpDeframer deframer(kMaxUpstreamMessageBytes);
+  std::vector<std::vector<std::uint8_t>> got;
+  for (const std::uint8_t b : stream) {
+    deframer.feed({&b, 1});
+    std::span<const std::uint8_t> message;
+    while (deframer.next(message) == TcpDeframer::Status::message) got.emplace_back(message.begin(), message.end());
+  }
+  ASSERT_EQ(got.size(), 2u);
+  EXPECT_EQ(got[0], small);
+  EXPECT_EQ(got[1], large);
+  EXPECT_EQ(deframer.buffered(), 0u);
+}
+
+TEST(TcpFraming, RefusesOversizedEmptyAndOverlongLengths) {
+  std::span<const std::uint8_t> message;
+  {
+    TcpDeframer deframer(100);
+    std::vector<std::uint8_t> prefix;
+    write_length_prefix(101, prefix);
+    deframer.feed(prefix);
+    EXPECT_EQ(deframer.next(message), TcpDeframer::Status::error);
+    EXPECT_EQ(deframer.error(), MessageError::too_large);
+  }
+  {
+    TcpDeframer deframer(100);
+    const std::uint8_t zero = 0;
+    deframer.feed({&zero, 1});
+    EXPECT_EQ(deframer.next(message), TcpDeframer::Status::error);
+    EXPECT_EQ(deframer.error(), MessageError::empty);
+  }
+  {
+    TcpDeframer deframer(100);
+    const std::vector<std::uint8_t> overlong = {0x85, 0x00};
+    deframer.feed(overlong);
+    EXPECT_EQ(deframer.next(message), TcpDeframer::Status::error);
+  }
+  {
+    TcpDeframer deframer(kMaxDownstreamMessageBytes);
+    const std::vector<std::uint8_t> four_bytes = {0xFF, 0xFF, 0xFF, 0x01};
+    deframer.feed(four_bytes);
+    EXPECT_EQ(deframer.next(message), TcpDeframer::Status::error);
+    EXPECT_EQ(deframer.error(), MessageError::too_large);
+  }
+}
+
+}  // namespace
+}  // namespace fw::codec
