@@ -1,15 +1,25 @@
 #include "fw/model/file_io.hpp"
 
 #include <filesystem>
+#include <string>
+
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 
 namespace fw::model {
 namespace {
 
-const std::filesystem::path kDir = std::filesystem::temp_directory_path() / "facewire_file_io_test";
+// Each test gets its own directory: ctest runs them as parallel processes, and
+// a shared one let one test see the other's temporary file mid-write.
+std::filesystem::path test_dir() {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  return std::filesystem::temp_directory_path() /
+         ("facewire_file_io_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+}
 
 TEST(FileIo, WritesAtomicallyAndReadsBack) {
+  const auto kDir = test_dir();
   std::filesystem::create_directories(kDir);
   const std::vector<std::uint8_t> data = {1, 2, 3, 4, 5};
   std::string error;
@@ -23,6 +33,7 @@ TEST(FileIo, WritesAtomicallyAndReadsBack) {
 }
 
 TEST(FileIo, RefusesTooLargeAndMissingFiles) {
+  const auto kDir = test_dir();
   std::filesystem::create_directories(kDir);
   std::string error;
   ASSERT_TRUE(write_file_atomically(kDir / "big.bin", std::vector<std::uint8_t>(50, 7), error));
