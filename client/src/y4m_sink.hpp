@@ -1,34 +1,24 @@
 #pragma once
-// Room frames as a YUV4MPEG2 stream (4:2:0, BT.601 full range, the
-// C420jpeg layout), which ffplay, mpv and ffmpeg read from a file or a
-// pipe: `facewire-client join ... --y4m - | ffplay -`.
-#include <cstdio>
-#include <cstdint>
+// Room frames as a YUV4MPEG2 stream for ffplay, mpv or ffmpeg:
+// `facewire-client join ... --y4m - | ffplay -`.
+#include <memory>
 #include <string>
-#include <vector>
 
+#include "fw/render/y4m_writer.hpp"
 #include "frame_sink.hpp"
 
 namespace fw::client {
 
 class Y4mSink : public FrameSink {
  public:
-  /// Opens `path` ("-" for stdout) for frames of width x height (both even)
-  /// at `fps` frames per second.
+  /// Opens `path` ("-" for stdout) for frames of width x height at `fps`;
+  /// the error names the flag to change.
   static std::unique_ptr<Y4mSink> create(const std::string& path, int width, int height, int fps, std::string& error);
-  ~Y4mSink() override;
-  bool write(const model::RgbaImage& frame, std::string& error) override;
+  bool write(const model::RgbaImage& frame, std::string& error) override { return writer_->write(frame, error); }
 
  private:
-  Y4mSink(std::FILE* file, bool owned, int width, int height) : file_(file), owned_(owned), width_(width), height_(height) {}
-  std::FILE* file_;
-  bool owned_;
-  int width_, height_;
-  std::vector<std::uint8_t> planes_;
+  explicit Y4mSink(std::unique_ptr<render::Y4mWriter> writer) : writer_(std::move(writer)) {}
+  std::unique_ptr<render::Y4mWriter> writer_;
 };
-
-/// The three planes (Y full size, then Cb and Cr at half size each way) of
-/// an RGBA image with even width and height; alpha is ignored.
-void rgba_to_i420(const model::RgbaImage& image, std::vector<std::uint8_t>& planes);
 
 }  // namespace fw::client

@@ -38,6 +38,19 @@ void PhotoPreparation::upload(Request request, std::string peer_address, std::fu
   boost::asio::post(pool_, [this, request = std::move(request), done = std::move(done)] { done(handle(request)); });
 }
 
+namespace {
+
+// A photo that cannot make an avatar: 413 when it is too large, else 422,
+// with the preparation's message for the person.
+Response prep_refusal(const Request& request, const photo::PrepError& prep_error) {
+  const bool too_big = prep_error.code == photo::PrepErrorCode::too_many_bytes ||
+                       prep_error.code == photo::PrepErrorCode::too_many_pixels;
+  return error_response(too_big ? http::status::payload_too_large : http::status::unprocessable_entity,
+                        request.version(), prep_error.message);
+}
+
+}  // namespace
+
 Response PhotoPreparation::handle(const Request& request) {
   const auto error = [&](http::status status, const std::string& message) {
     return error_response(status, request.version(), message);
@@ -49,6 +62,7 @@ Response PhotoPreparation::handle(const Request& request) {
   std::vector<std::uint8_t> package;
   if (type == "image/jpeg" || type == "image/png") {
     photo::PrepError prep_error;
+    if (!photo::AvatarPreparer::check_photo(bytes, prep_error)) return prep_refusal(request, prep_error);
     if (!preparer_) {
       const auto model = context_.config.landmark_model.empty()
                              ? std::nullopt
@@ -59,11 +73,7 @@ Response PhotoPreparation::handle(const Request& request) {
                                                             "; upload a prepared .fwa package instead");
     }
     const auto prepared = preparer_->prepare(bytes, photo::PrepOptions{}, prep_error);
-    if (!prepared) {
-      const bool too_big = prep_error.code == photo::PrepErrorCode::too_many_bytes ||
-                           prep_error.code == photo::PrepErrorCode::too_many_pixels;
-      return error(too_big ? http::status::payload_too_large : http::status::unprocessable_entity, prep_error.message);
-    }
+    if (!prepared) return prep_refusal(request, prep_error);
     package = model::serialize_avatar_package(prepared->package);
   } else if (type == "application/x-facewire-avatar" || type == "application/octet-stream") {
     package.assign(bytes.begin(), bytes.end());

@@ -17,7 +17,7 @@
 #include "fw/render/camera.hpp"
 #include "fw/render/face_renderer.hpp"
 #include "fw/render/png.hpp"
-#include "y4m_writer.hpp"
+#include "fw/render/y4m_writer.hpp"
 
 namespace fw::server {
 namespace {
@@ -105,10 +105,10 @@ void run(const RenderSceneArgs& args) {
   }
   const render::Camera camera = frame_seats(scene, static_cast<float>(width) / static_cast<float>(height));
 
-  std::unique_ptr<Y4mWriter> y4m;
+  std::unique_ptr<render::Y4mWriter> y4m;
   const int fps = std::max(1, static_cast<int>(std::lround(static_cast<double>(scene.fps) / args.every)));
   if (!args.y4m.empty()) {
-    y4m = Y4mWriter::create(args.y4m, width, height, fps, error);
+    y4m = render::Y4mWriter::create(args.y4m, width, height, fps, error);
     if (!y4m) fail(error);
   } else {
     std::filesystem::create_directories(args.out_dir);

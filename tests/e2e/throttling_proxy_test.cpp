@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include "loopback_socket.hpp"
+
 namespace fw::test {
 namespace {
 
@@ -34,20 +36,7 @@ struct Listener {
   int accept_one() const { return ::accept(fd, nullptr, nullptr); }
 };
 
-int connect_to(int port) {
-  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-  timeval timeout{20, 0};
-  ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &timeout, sizeof timeout);
-  sockaddr_in address{};
-  address.sin_family = AF_INET;
-  address.sin_port = htons(static_cast<std::uint16_t>(port));
-  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  if (::connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0) {
-    ::close(fd);
-    return -1;
-  }
-  return fd;
-}
+int connect_to(int port) { return test::connect_loopback(port, 20); }
 
 std::vector<std::uint8_t> pattern(std::size_t n) {
   std::vector<std::uint8_t> bytes(n);

@@ -175,6 +175,18 @@ TEST_F(PrepareAvatarTest, RefusesWhatIsNotAnImage) {
   expect_refused({}, PrepErrorCode::not_an_image, "not an image");
 }
 
+TEST_F(PrepareAvatarTest, TheCheckWithoutTheModelRefusesWhatPrepareRefusesFromTheHeader) {
+  PrepError error;
+  const std::string text = "not a png";
+  EXPECT_FALSE(AvatarPreparer::check_photo(std::vector<std::uint8_t>(text.begin(), text.end()), error));
+  EXPECT_EQ(error.code, PrepErrorCode::not_an_image);
+  std::vector<std::uint8_t> big = test::encode(*original_);
+  big.resize(10 * 1000 * 1000 + 1, 0);
+  EXPECT_FALSE(AvatarPreparer::check_photo(big, error));
+  EXPECT_EQ(error.code, PrepErrorCode::too_many_bytes);
+  EXPECT_TRUE(AvatarPreparer::check_photo(test::encode(*original_), error)) << error.message;
+}
+
 TEST_F(PrepareAvatarTest, NamesUnsupportedFormats) {
   expect_refused(test::encode(*original_, ".bmp"), PrepErrorCode::unsupported_format, "BMP image; facewire reads JPEG and PNG");
   const std::string gif = "GIF89a\x01\x00\x01\x00\x00\x00\x00;";

@@ -1,12 +1,13 @@
 #pragma once
 // A minimal HTTP/1.1 client over a plain socket, so tests see exactly the
 // bytes the server sends (and can send bytes no library would).
-#include <arpa/inet.h>
-#include <netinet/in.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <cstdlib>
 #include <string>
+
+#include "loopback_socket.hpp"
 
 namespace fw::test {
 
@@ -20,17 +21,8 @@ struct HttpReply {
 /// 5 seconds pass.
 inline HttpReply http_exchange(int port, const std::string& raw) {
   HttpReply reply;
-  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-  timeval timeout{5, 0};
-  ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &timeout, sizeof timeout);
-  sockaddr_in address{};
-  address.sin_family = AF_INET;
-  address.sin_port = htons(static_cast<std::uint16_t>(port));
-  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  if (::connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0) {
-    ::close(fd);
-    return reply;
-  }
+  const int fd = connect_loopback(port, 5);
+  if (fd < 0) return reply;
   ::send(fd, raw.data(), raw.size(), MSG_NOSIGNAL);
   std::string received;
   char buffer[8192];

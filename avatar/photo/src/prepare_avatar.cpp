@@ -55,6 +55,10 @@ std::unique_ptr<AvatarPreparer> AvatarPreparer::create(const std::optional<std::
   return std::unique_ptr<AvatarPreparer>(new AvatarPreparer(std::move(finder)));
 }
 
+bool AvatarPreparer::check_photo(std::span<const std::uint8_t> photo, PrepError& error) {
+  return inspect_photo(photo, error).has_value();
+}
+
 std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8_t> bytes, const PrepOptions& options,
                                                       PrepError& error) {
   if (options.quality < 1 || options.quality > 100)

@@ -124,21 +124,27 @@ glm::vec3 FaceSimulation::jaw_turned(const glm::vec3& p, float share) const {
   return p + share * (turned - p);
 }
 
-// The bone layer follows the mandible by each column's share; its speed is
-// kept so that the dampers joined to it see the motion.
+// Moves node i to its rest place turned by `share` of the jaw, keeping the
+// speed of that move so that the dampers joined to it see the motion.
+void FaceSimulation::move_node_with_jaw(std::size_t i, float share, float h) {
+  const TissueModel& m = *model_;
+  const glm::vec3 p = jaw_turned({m.rest_x[i], m.rest_y[i], m.rest_z[i]}, share);
+  vx_[i] = (p.x - x_[i]) / h;
+  vy_[i] = (p.y - y_[i]) / h;
+  vz_[i] = (p.z - z_[i]) / h;
+  x_[i] = p.x;
+  y_[i] = p.y;
+  z_[i] = p.z;
+}
+
+// The bone layer follows the mandible by each column's share.
 void FaceSimulation::place_bone(float h) {
   const TissueModel& m = *model_;
   const std::size_t base = m.moving_node_count;
   for (std::uint16_t v : m.jaw_columns) {
     const std::size_t i = base + v;
     const float share = m.jaw_share[v];
-    const glm::vec3 p = jaw_turned({m.rest_x[i], m.rest_y[i], m.rest_z[i]}, share);
-    vx_[i] = (p.x - x_[i]) / h;
-    vy_[i] = (p.y - y_[i]) / h;
-    vz_[i] = (p.z - z_[i]) / h;
-    x_[i] = p.x;
-    y_[i] = p.y;
-    z_[i] = p.z;
+    move_node_with_jaw(i, share, h);
     const glm::vec3 n = m.skull_normal[v];
     const glm::vec3 turned = glm::vec3(n.x, jaw_cos_ * n.y - jaw_sin_ * n.z, jaw_sin_ * n.y + jaw_cos_ * n.z);
     skull_normal_[v] = glm::normalize(n + share * (turned - n));
@@ -147,13 +153,7 @@ void FaceSimulation::place_bone(float h) {
   for (std::uint16_t i : m.pinned_nodes) {
     const float share = m.jaw_share[i % m.vertex_count];
     if (share <= 0.0f) continue;
-    const glm::vec3 p = jaw_turned({m.rest_x[i], m.rest_y[i], m.rest_z[i]}, share);
-    vx_[i] = (p.x - x_[i]) / h;
-    vy_[i] = (p.y - y_[i]) / h;
-    vz_[i] = (p.z - z_[i]) / h;
-    x_[i] = p.x;
-    y_[i] = p.y;
-    z_[i] = p.z;
+    move_node_with_jaw(i, share, h);
   }
 }
 

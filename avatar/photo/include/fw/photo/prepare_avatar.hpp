@@ -63,6 +63,12 @@ class AvatarPreparer {
                                                 PrepError& error);
   ~AvatarPreparer();
 
+  /// Checks what can be checked without the landmark model: the format
+  /// signature, the header's size, the byte and pixel limits. A server calls
+  /// it first so that a file that is no photo is refused at once, not after
+  /// the model has loaded. prepare() runs the same check.
+  static bool check_photo(std::span<const std::uint8_t> photo, PrepError& error);
+
   /// Prepares one photo (JPEG or PNG bytes). nullopt and `error` (with a
   /// message for the person) if the photo cannot make an avatar.
   std::optional<PreparedAvatar> prepare(std::span<const std::uint8_t> photo, const PrepOptions& options,

@@ -109,6 +109,7 @@ class FaceSimulation {
   void substep(float h);
   void update_muscles_and_jaw(float h);
   void place_bone(float h);
+  void move_node_with_jaw(std::size_t i, float share, float h);
   void mass_spring_substep(float h);
   void pbd_substep(float h);
   void resolve_skull();
