@@ -299,10 +299,15 @@ bool Encoder::encode_tick(const FaceParams& params, std::vector<std::uint8_t>& f
           eyes = eyes || channel_table()[order[i]].group == ChannelGroup::eyes;
         }
         // The eyes go together: half a gaze update would leave the other eye,
-        // or the other axis, where it was.
+        // or the other axis, where it was. A head far off goes with them: an
+        // eye is coded as gaze in the world and shown as gaze minus the head
+        // the decoder holds, so under a stale head it looks the wrong way.
         if (eyes)
-          for (const std::size_t c : order)
-            if (channel_table()[c].group == ChannelGroup::eyes) reduced.update[c] = true;
+          for (const std::size_t c : order) {
+            const ChannelGroup group = channel_table()[c].group;
+            if (group == ChannelGroup::eyes || (group == ChannelGroup::head_rotation && priority[c] > kUrgentPriority))
+              reduced.update[c] = true;
+          }
         return try_frame(reduced, urgent);
       };
       for (std::size_t keep = order.size() / 2; keep >= 1 && !fits; keep /= 2) fits = try_first(keep, false);

@@ -218,6 +218,37 @@ TEST(Encoder, StaysUnderABudgetThatChangesMidStream) {
   EXPECT_GT(encoder.stats().level, 3) << "a fifth of the budget: coarser";
 }
 
+TEST(Encoder, UnderATightBudgetAGazeShiftBringsTheHeadAlong) {
+  // A busy face (every action unit moving) keeps the bucket full, so frames
+  // are cut down to their most urgent channels. Then the head turns 0.9 rad
+  // while the eyes counter-rotate: the eyes are coded as gaze in the world,
+  // so a frame that moves them without the head would show them turned
+  // away from where they look.
+  EncoderOptions o;
+  o.target_bps = 300;
+  Encoder encoder(o);
+  std::vector<std::uint8_t> frame;
+  auto busy = [](int t) {
+    FaceParams p;
+    for (std::size_t c = 0; c < kAuChannelCount; ++c)
+      p.au[c] = 0.5f + 0.45f * static_cast<float>(std::sin(0.2 * t + 0.7 * static_cast<double>(c)));
+    return p;
+  };
+  for (int t = 0; t < 150; ++t) encoder.encode(busy(t), frame);
+  bool eyes_moved = false;
+  for (int t = 150; t < 240 && !eyes_moved; ++t) {
+    FaceParams p = busy(t);
+    p.head_yaw_rad = 0.9f;
+    p.eye_left.yaw_rad = p.eye_right.yaw_rad = -0.3f;
+    if (!encoder.encode(p, frame)) continue;
+    const FaceParams shown = dequantise(encoder.reconstruction());
+    eyes_moved = std::abs(shown.eye_left.yaw_rad + shown.head_yaw_rad - 0.6f) < 0.1f;
+    if (std::abs(shown.eye_left.yaw_rad) > 0.01f || std::abs(shown.head_yaw_rad) > 0.01f)
+      EXPECT_NEAR(shown.head_yaw_rad, 0.9f, 0.05f) << "tick " << t << ": the eyes moved without the head";
+  }
+  EXPECT_TRUE(eyes_moved) << "the gaze shift never went out";
+}
+
 TEST(Encoder, KeepsEveryChannelWithinWhatAViewerSeesWhenTheBudgetAllows) {
   EncoderOptions o;
   o.target_bps = 20000;
