@@ -29,6 +29,10 @@ std::string Metrics::render() const {
   family("facewire_dropped_ticks_total", "counter", "Subscriber ticks skipped because the link was full.",
          skipped_ticks.load());
   family("facewire_late_ticks_total", "counter", "Room ticks that could not keep their schedule.", late_ticks.load());
+  family("facewire_physics_share", "gauge", "Share of faces allowed the physics face; under 1 when the server sheds load.",
+         physics_share.load());
+  family("facewire_kinematic_faces", "gauge", "Faces following their targets without the physics face, under load.",
+         kinematic_faces.load());
   family("facewire_protocol_errors_total", "counter", "Connections closed for malformed messages.",
          protocol_errors.load());
   family("facewire_rejected_joins_total", "counter", "Hellos refused (token, room full, bad request).",

@@ -20,6 +20,8 @@ struct Metrics {
   std::atomic<std::uint64_t> package_bytes_sent{0};
   std::atomic<std::uint64_t> skipped_ticks{0};      ///< subscriber ticks dropped: the link was full
   std::atomic<std::uint64_t> late_ticks{0};         ///< room ticks that started after their time
+  std::atomic<double> physics_share{1.0};           ///< share of faces allowed the physics face (PhysicsGovernor)
+  std::atomic<std::int64_t> kinematic_faces{0};     ///< faces following their targets without physics, under load
   std::atomic<std::uint64_t> protocol_errors{0};
   std::atomic<std::uint64_t> rejected_joins{0};
   std::atomic<std::uint64_t> uploads{0};

@@ -44,6 +44,7 @@ Room::Room(ServerContext& context, std::string name, bool persistent, std::uint6
 
 Room::~Room() {
   context_.metrics.rooms.fetch_sub(1);
+  context_.metrics.kinematic_faces.fetch_sub(static_cast<std::int64_t>(kinematic_faces_));
   context_.metrics.avatars.fetch_sub(static_cast<std::int64_t>(avatar_count_.load()));
 }
 
@@ -224,7 +225,18 @@ void Room::schedule_tick() {
 
 void Room::on_tick() {
   const auto start = std::chrono::steady_clock::now();
+  // How late this tick starts tells the governor whether the pool keeps up;
+  // its answer is how many of this room's faces run physics (level of detail).
+  context_.physics_lod.observe_tick(next_tick_, start,
+                                    std::chrono::microseconds(1'000'000 / context_.config.tick_hz));
+  const double share = context_.physics_lod.share();
+  simulation_.set_physics_share(share);
+  context_.metrics.physics_share.store(share, std::memory_order_relaxed);
   simulation_.tick();
+  const std::size_t kinematic = context_.config.physics ? avatar_count_.load() - simulation_.physics_faces() : 0;
+  context_.metrics.kinematic_faces.fetch_add(static_cast<std::int64_t>(kinematic) -
+                                             static_cast<std::int64_t>(kinematic_faces_));
+  kinematic_faces_ = kinematic;
   for (const RoomEvent& event : simulation_.take_events())
     spdlog::debug("room {}: tick {} avatar {}: {}", name_, event.tick, event.avatar, event.what);
   faces_.clear();

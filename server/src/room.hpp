@@ -81,6 +81,7 @@ class Room : public std::enable_shared_from_this<Room> {
   std::map<std::uint32_t, Member> members_;
   std::vector<AvatarFace> faces_;
   std::chrono::steady_clock::time_point next_tick_;
+  std::size_t kinematic_faces_ = 0;  ///< this room's share of Metrics::kinematic_faces
   bool closed_ = false;
   std::atomic<std::size_t> avatar_count_{0};
   std::atomic<std::size_t> person_count_{0};

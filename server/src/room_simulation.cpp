@@ -1,6 +1,8 @@
 #include "room_simulation.hpp"
 
+#include <algorithm>
 #include <cassert>
+#include <cmath>
 #include <map>
 #include <memory>
 #include <type_traits>
@@ -24,11 +26,35 @@ using AuTargets = std::array<float, codec::kAuChannelCount>;
 // measured surface, projected on the AU basis, is what the face shows. A face
 // at rest (muscles at their targets, nothing moving) is neither stepped nor
 // measured again while its targets stay the same.
+//
+// Under load (RoomSimulation::set_physics_share) a face may instead follow
+// its targets kinematically: each AU approaches its target with the muscles'
+// activation time constants. That track is kept always (29 numbers), so a
+// face that gets physics back blends from it into the physics output.
 struct PhysicsFace {
   std::unique_ptr<physics::FaceSimulation> simulation;
-  AuTargets shown{};
+  AuTargets shown{};      ///< the physics face's last measurement
+  AuTargets kinematic{};  ///< the targets followed without tissue
+  double blend = 1;       ///< weight of the physics output: 0 .. 1
+  double catching_up_s = 0;  ///< time the physics face has had to catch up since it came back
   bool resting = true;
 };
+
+// A face that gets physics back shows its kinematic track until the tissue,
+// stepped again from where it was left, is this close to it (or for at most
+// kCatchUpS), and then blends over RoomSimulation::kPhysicsBlendS.
+constexpr float kCloseEnough = 0.1f;
+constexpr double kCatchUpS = 1.0;
+
+// The activation time constants of avatar/physics (80 ms up, 120 ms down).
+constexpr double kRiseS = 0.08, kFallS = 0.12;
+
+void follow_kinematically(PhysicsFace& face, const AuTargets& targets, double dt_s) {
+  for (std::size_t c = 0; c < targets.size(); ++c) {
+    const double tau = targets[c] > face.kinematic[c] ? kRiseS : kFallS;
+    face.kinematic[c] += static_cast<float>((1.0 - std::exp(-dt_s / tau)) * (targets[c] - face.kinematic[c]));
+  }
+}
 
 // Every avatar is drawn as the generic face, so they share its tissue model.
 std::shared_ptr<const physics::TissueModel> generic_tissue() {
@@ -52,6 +78,40 @@ AuTargets step_physics(PhysicsFace& face, const AuTargets& targets, double dt_s,
   }
   face.resting = sim.at_rest();
   return face.shown;
+}
+
+// One tick of a face's action units: physics when it may, else kinematic,
+// blending after a change from kinematic to physics.
+AuTargets step_action_units(PhysicsFace& face, const AuTargets& targets, double dt_s, std::uint64_t seed,
+                            const RoomSimulationOptions& options, bool physics_allowed) {
+  follow_kinematically(face, targets, dt_s);
+  if (!physics_allowed) {
+    face.blend = 0;
+    face.catching_up_s = 0;
+    face.resting = face.kinematic == targets;
+    return face.kinematic;
+  }
+  const AuTargets physical = step_physics(face, targets, dt_s, seed, options);
+  if (face.blend >= 1) return physical;
+  face.resting = false;  // still catching up or blending
+  float gap = 0;
+  for (std::size_t c = 0; c < physical.size(); ++c) gap = std::max(gap, std::abs(physical[c] - face.kinematic[c]));
+  face.catching_up_s += dt_s;
+  if (face.blend == 0 && gap > kCloseEnough && face.catching_up_s < kCatchUpS) return face.kinematic;
+  face.blend = std::min(1.0, face.blend + dt_s / RoomSimulation::kPhysicsBlendS);
+  AuTargets mixed;
+  for (std::size_t c = 0; c < mixed.size(); ++c)
+    mixed[c] = static_cast<float>(face.blend * physical[c] + (1.0 - face.blend) * face.kinematic[c]);
+  return mixed;
+}
+
+// Where a face stands in the queue for physics under load: 0 .. 1, fixed.
+double physics_rank(std::uint64_t key) {
+  key += 0x9E3779B97F4A7C15ull;  // splitmix64
+  key = (key ^ (key >> 30)) * 0xBF58476D1CE4E5B9ull;
+  key = (key ^ (key >> 27)) * 0x94D049BB133111EBull;
+  key ^= key >> 31;
+  return static_cast<double>(key >> 11) * 0x1.0p-53;
 }
 // ---------------------------------------------------------------------------
 
@@ -77,6 +137,8 @@ struct RoomSimulation::State {
   std::map<AvatarId, Avatar> avatars;
   AvatarId next_id = 1;
   std::vector<RoomEvent> events;
+  double physics_share = 1;
+  std::size_t physics_faces = 0;
 
   // Events of a tick carry that tick's index; those of calls between ticks
   // the index of the tick they first act on.
@@ -132,13 +194,24 @@ void RoomSimulation::chat(AvatarId avatar, std::string_view text) {
 void RoomSimulation::tick() {
   State& s = *state_;
   s.room.tick();
+  s.physics_faces = 0;
   for (auto& [id, a] : s.avatars) {
     a.face = s.room.face(id);
-    if (s.options.physics) a.face.au = step_physics(a.physics, a.face.au, s.room.dt_s(), s.options.seed ^ id, s.options);
-    else a.physics.resting = true;  // no physics face to step
+    if (!s.options.physics) {
+      a.physics.resting = true;  // no physics face to step
+      continue;
+    }
+    const std::uint64_t seed = s.options.seed ^ id;
+    const bool allowed = s.physics_share >= 1.0 || physics_rank(seed) < s.physics_share;
+    a.face.au = step_action_units(a.physics, a.face.au, s.room.dt_s(), seed, s.options, allowed);
+    s.physics_faces += allowed ? 1 : 0;
   }
   s.collect_events(true);
 }
+
+void RoomSimulation::set_physics_share(double share) { state_->physics_share = std::clamp(share, 0.0, 1.0); }
+
+std::size_t RoomSimulation::physics_faces() const { return state_->physics_faces; }
 
 std::uint32_t RoomSimulation::tick_index() const { return state_->room.tick_index(); }
 

@@ -88,6 +88,19 @@ class RoomSimulation {
   /// nudges the writer's emotion.
   void chat(AvatarId avatar, std::string_view text);
 
+  /// Level of detail under load: the share (0 .. 1) of the room's faces that
+  /// run the physics face from the next tick on. The others follow their
+  /// action-unit targets kinematically (the muscles' activation time
+  /// constants, no tissue). A face that gets physics back keeps that track
+  /// until its tissue has caught up with it (at most a second) and then
+  /// blends into the physics output over kPhysicsBlendS, so nothing jumps. Which faces keep physics is
+  /// fixed per face (a hash of the seed and its id), so a face does not
+  /// flicker between the two. Default 1.
+  void set_physics_share(double share);
+  /// Faces that ran the physics face in the last tick (awake or asleep).
+  std::size_t physics_faces() const;
+  static constexpr double kPhysicsBlendS = 0.3;
+
   /// Advances every avatar by one tick.
   void tick();
   std::uint32_t tick_index() const;

@@ -50,6 +50,7 @@ int serve(const ServerConfig& config) {
   configure_logging(config.log_level, config.log_json);
   ServerContext context;
   context.config = config;
+  context.physics_lod.set_enabled(config.physics && config.physics_lod);
   std::string error;
   AvatarStore store(config.data, error);
   if (!error.empty()) {
@@ -102,8 +103,9 @@ int serve(const ServerConfig& config) {
   const char* faces = !config.physics           ? "behavior only, no physics face"
                       : config.physics_sleeps ? "physics face, asleep at rest"
                                               : "physics face, always awake";
-  spdlog::info("ready: rooms tick at {} Hz on {} worker thread(s), {}; data in {}", config.tick_hz, config.workers,
-               faces, config.data);
+  const char* lod = config.physics && config.physics_lod ? ", shed under load" : "";
+  spdlog::info("ready: rooms tick at {} Hz on {} worker thread(s), {}{}; data in {}", config.tick_hz, config.workers,
+               faces, lod, config.data);
 
   // SIGTERM drains: no new joins, every session told to leave, then stop
   // when they are gone or the drain time is up.
@@ -189,6 +191,8 @@ CLI::App* add_serve_command(CLI::App& app) {
   cmd->add_flag("!--no-demo-room", config->demo_room, "do not open the demo room 'lobby'");
   cmd->add_flag("!--no-physics", config->physics, "drive faces by behavior only (no physics face)");
   cmd->add_flag("!--physics-always-awake", config->physics_sleeps, "faces at rest keep stepping (for benchmarks)");
+  cmd->add_flag("!--no-physics-lod", config->physics_lod,
+                "never shed physics under load (rooms then tick late instead; for benchmarks)");
   cmd->add_option("--drain-seconds", config->drain_seconds, "on SIGTERM, how long connections get to leave")
       ->check(CLI::Range(0.0, 600.0))
       ->capture_default_str();

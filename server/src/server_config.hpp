@@ -23,6 +23,7 @@ struct ServerConfig {
   bool demo_room = true;         ///< the "lobby" with three autonomous avatars
   bool physics = true;
   bool physics_sleeps = true;
+  bool physics_lod = true;       ///< shed physics (faces follow targets kinematically) when ticks run late
   double drain_seconds = 10;
   std::string log_level = "info";
   bool log_json = false;

@@ -10,6 +10,7 @@
 
 #include "avatar_store.hpp"
 #include "metrics.hpp"
+#include "physics_governor.hpp"
 #include "server_config.hpp"
 
 namespace fw::server {
@@ -20,6 +21,7 @@ class PhotoPreparation;
 struct ServerContext {
   ServerConfig config;
   Metrics metrics;
+  PhysicsGovernor physics_lod;  ///< physics level of detail under load (config.physics_lod)
   boost::asio::io_context* io = nullptr;       ///< network I/O
   boost::asio::thread_pool* workers = nullptr; ///< room ticks, encoding
   AvatarStore* store = nullptr;

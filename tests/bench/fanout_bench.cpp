@@ -25,6 +25,7 @@
 
 #include "fw/codec/codec.hpp"
 #include "fw/codec/messages.hpp"
+#include "http_get.hpp"
 #include "server_process.hpp"
 
 namespace fw::bench {
@@ -43,6 +44,7 @@ struct FanoutArgs {
   double warmup_seconds = 3;
   bool json = false;
   std::string physics = "sleeping";  // sleeping, awake, off
+  std::string physics_lod = "on";    // on: the server sheds physics under load (its default); off: never
   int client_threads = 1;
   int server_threads = 2;
   int server_workers = 2;
@@ -248,6 +250,14 @@ double status_mb(pid_t pid, const std::string& key) {
   return 0;
 }
 
+// A sample's value from a Prometheus text exposition (`name value` lines).
+double metric_value(const std::string& exposition, const std::string& name, double missing) {
+  std::istringstream lines(exposition);
+  for (std::string line; std::getline(lines, line);)
+    if (line.rfind(name + " ", 0) == 0) return std::stod(line.substr(name.size() + 1));
+  return missing;
+}
+
 double percentile(std::vector<float> values, double p) {
   if (values.empty()) return -1;
   const auto index = std::min(values.size() - 1, static_cast<std::size_t>(p / 100.0 * static_cast<double>(values.size())));
@@ -286,6 +296,7 @@ void run(const FanoutArgs& args) {
                             std::to_string(args.server_threads) + " --workers " + std::to_string(args.server_workers);
   if (args.physics == "awake") server_args += " --physics-always-awake";
   if (args.physics == "off") server_args += " --no-physics";
+  if (args.physics_lod == "off") server_args += " --no-physics-lod";
   test::ServerProcess server(server_binary, server_args);
   if (server.port() == 0) fail("facewire-server did not start (" + server_binary + " " + server_args + ")");
   const pid_t server_pid = server.pid();
@@ -320,6 +331,10 @@ void run(const FanoutArgs& args) {
   const double window = std::chrono::duration<double>(Clock::now() - window_start).count();
   const double server_cpu = cpu_seconds(server_pid) - cpu_before, bench_cpu = cpu_seconds(::getpid()) - bench_cpu_before;
   const double rss_mb = status_mb(server_pid, "VmRSS"), rss_peak_mb = status_mb(server_pid, "VmHWM");
+  // How much physics the server kept at the end of the window.
+  const std::string metrics = test::http_get(server.port(), "/metrics").body;
+  const double physics_share = metric_value(metrics, "facewire_physics_share", 1.0);
+  const double kinematic_faces = metric_value(metrics, "facewire_kinematic_faces", 0.0);
 
   work.reset();
   io.stop();
@@ -345,6 +360,9 @@ void run(const FanoutArgs& args) {
       {"per_room", args.per_room},
       {"seconds", round2(window)},
       {"physics", args.physics},
+      {"physics_lod", args.physics_lod},
+      {"physics_share_end", round2(physics_share)},
+      {"kinematic_faces_end", kinematic_faces},
       {"clients", clients},
       {"clients_joined", totals.joined.load()},
       {"clients_held", held},
@@ -386,6 +404,10 @@ void add_fanout_bench(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--physics", args->physics, "sleeping (faces at rest stop stepping), awake (always step), off")
       ->check(CLI::IsMember({"sleeping", "awake", "off"}))
+      ->capture_default_str();
+  cmd->add_option("--physics-lod", args->physics_lod,
+                  "on: the server sheds physics when its ticks run late (its default); off: it never does")
+      ->check(CLI::IsMember({"on", "off"}))
       ->capture_default_str();
   cmd->add_option("--client-threads", args->client_threads, "threads running the clients")->check(CLI::Range(1, 16))->capture_default_str();
   cmd->add_option("--server-threads", args->server_threads, "the server's --threads")->check(CLI::Range(1, 64))->capture_default_str();

@@ -1,0 +1,98 @@
+// server/src/room_simulation.cpp with the physics face on: its level of
+// detail under load. (Commands and events without physics are tested in
+// tests/behavior/simulate_command_test.cpp.)
+#include "room_simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace fw::server {
+namespace {
+
+RoomSimulation room_with_physics(std::uint64_t seed = 11) {
+  RoomSimulationOptions o;
+  o.seed = seed;
+  return RoomSimulation(o);
+}
+
+// "face 3" (built by appending: GCC 12 warns falsely about "f" + to_string).
+std::string face_name(int i) {
+  std::string name = "face ";
+  name += std::to_string(i);
+  return name;
+}
+
+// AU 12 (lip-corner puller), both sides.
+float smile(const codec::FaceParams& face) { return face.au_intensity(12); }
+
+TEST(RoomSimulationLevelOfDetail, EveryFaceRunsPhysicsByDefault) {
+  RoomSimulation room = room_with_physics();
+  for (int i = 0; i < 4; ++i) room.add_avatar({face_name(i), false});
+  room.tick();
+  EXPECT_EQ(room.physics_faces(), 4u);
+}
+
+TEST(RoomSimulationLevelOfDetail, WithoutPhysicsFacesStillFollowTheirTargets) {
+  RoomSimulation room = room_with_physics();
+  const AvatarId a = room.add_avatar({"a", true});
+  room.set_physics_share(0);
+  ASSERT_EQ(room.command(a, ExpressCommand{"joy", 1, 3}), "");
+  for (int i = 0; i < 45; ++i) room.tick();
+  EXPECT_EQ(room.physics_faces(), 0u);
+  EXPECT_GT(smile(room.face(a)), 0.5f);
+}
+
+TEST(RoomSimulationLevelOfDetail, ASharePicksTheSameFacesEveryTick) {
+  RoomSimulation room = room_with_physics();
+  for (int i = 0; i < 16; ++i) room.add_avatar({face_name(i), false});
+  room.set_physics_share(0.5);
+  std::set<std::size_t> counts;
+  for (int i = 0; i < 30; ++i) {
+    room.tick();
+    counts.insert(room.physics_faces());
+  }
+  ASSERT_EQ(counts.size(), 1u) << "the same faces keep physics";
+  EXPECT_GT(*counts.begin(), 2u);
+  EXPECT_LT(*counts.begin(), 14u);
+}
+
+TEST(RoomSimulationLevelOfDetail, GettingPhysicsBackBlendsWithoutAJumpOrADip) {
+  // The same expression with and without the switch. While the expression
+  // is held, the face that gets physics back neither jumps nor sags toward
+  // the neutral face its tissue was left in, and it ends where physics puts
+  // the face that never lost it.
+  constexpr int kSwitchTick = 20;
+  auto run = [](bool switching, std::vector<float>& track) {
+    RoomSimulation room = room_with_physics();
+    const AvatarId a = room.add_avatar({"a", true});
+    EXPECT_EQ(room.command(a, ExpressCommand{"surprise", 1, 4}), "");
+    if (switching) room.set_physics_share(0);
+    for (int i = 0; i < 90; ++i) {
+      if (switching && i == kSwitchTick) room.set_physics_share(1);
+      room.tick();
+      track.push_back(room.face(a).au_intensity(26));
+    }
+    return room.face(a);
+  };
+  std::vector<float> steady_track, switching_track;
+  const codec::FaceParams steady = run(false, steady_track);
+  const codec::FaceParams switched = run(true, switching_track);
+  float steady_step = 0;
+  for (std::size_t i = 1; i < steady_track.size(); ++i)
+    steady_step = std::max(steady_step, std::abs(steady_track[i] - steady_track[i - 1]));
+  const float at_switch = switching_track[kSwitchTick - 1];
+  const float floor = std::min(at_switch, steady_track.back()) - 0.05f;
+  for (std::size_t i = kSwitchTick; i < 90; ++i) {
+    EXPECT_LE(std::abs(switching_track[i] - switching_track[i - 1]), steady_step * 1.5f + 0.01f) << "tick " << i;
+    EXPECT_GE(switching_track[i], floor) << "tick " << i << ": the face sags toward its stale tissue";
+  }
+  for (std::size_t c = 0; c < steady.au.size(); ++c) EXPECT_NEAR(switched.au[c], steady.au[c], 0.05f) << "channel " << c;
+}
+
+}  // namespace
+}  // namespace fw::server
