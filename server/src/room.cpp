@@ -233,7 +233,7 @@ void Room::on_tick() {
   simulation_.set_physics_share(share);
   context_.metrics.physics_share.store(share, std::memory_order_relaxed);
   simulation_.tick();
-  const std::size_t kinematic = context_.config.physics ? avatar_count_.load() - simulation_.physics_faces() : 0;
+  const std::size_t kinematic = simulation_.kinematic_faces();
   context_.metrics.kinematic_faces.fetch_add(static_cast<std::int64_t>(kinematic) -
                                              static_cast<std::int64_t>(kinematic_faces_));
   kinematic_faces_ = kinematic;

@@ -138,7 +138,7 @@ struct RoomSimulation::State {
   AvatarId next_id = 1;
   std::vector<RoomEvent> events;
   double physics_share = 1;
-  std::size_t physics_faces = 0;
+  std::size_t physics_faces = 0, kinematic_faces = 0;
 
   // Events of a tick carry that tick's index; those of calls between ticks
   // the index of the tick they first act on.
@@ -194,7 +194,7 @@ void RoomSimulation::chat(AvatarId avatar, std::string_view text) {
 void RoomSimulation::tick() {
   State& s = *state_;
   s.room.tick();
-  s.physics_faces = 0;
+  s.physics_faces = s.kinematic_faces = 0;
   for (auto& [id, a] : s.avatars) {
     a.face = s.room.face(id);
     if (!s.options.physics) {
@@ -204,7 +204,7 @@ void RoomSimulation::tick() {
     const std::uint64_t seed = s.options.seed ^ id;
     const bool allowed = s.physics_share >= 1.0 || physics_rank(seed) < s.physics_share;
     a.face.au = step_action_units(a.physics, a.face.au, s.room.dt_s(), seed, s.options, allowed);
-    s.physics_faces += allowed ? 1 : 0;
+    ++(allowed ? s.physics_faces : s.kinematic_faces);
   }
   s.collect_events(true);
 }
@@ -212,6 +212,7 @@ void RoomSimulation::tick() {
 void RoomSimulation::set_physics_share(double share) { state_->physics_share = std::clamp(share, 0.0, 1.0); }
 
 std::size_t RoomSimulation::physics_faces() const { return state_->physics_faces; }
+std::size_t RoomSimulation::kinematic_faces() const { return state_->kinematic_faces; }
 
 std::uint32_t RoomSimulation::tick_index() const { return state_->room.tick_index(); }
 

@@ -97,8 +97,10 @@ class RoomSimulation {
   /// fixed per face (a hash of the seed and its id), so a face does not
   /// flicker between the two. Default 1.
   void set_physics_share(double share);
-  /// Faces that ran the physics face in the last tick (awake or asleep).
+  /// Faces that ran the physics face in the last tick (awake or asleep),
+  /// and faces that followed their targets without it.
   std::size_t physics_faces() const;
+  std::size_t kinematic_faces() const;
   static constexpr double kPhysicsBlendS = 0.3;
 
   /// Advances every avatar by one tick.

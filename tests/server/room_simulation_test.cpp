@@ -35,6 +35,7 @@ TEST(RoomSimulationLevelOfDetail, EveryFaceRunsPhysicsByDefault) {
   for (int i = 0; i < 4; ++i) room.add_avatar({face_name(i), false});
   room.tick();
   EXPECT_EQ(room.physics_faces(), 4u);
+  EXPECT_EQ(room.kinematic_faces(), 0u);
 }
 
 TEST(RoomSimulationLevelOfDetail, WithoutPhysicsFacesStillFollowTheirTargets) {
@@ -44,6 +45,7 @@ TEST(RoomSimulationLevelOfDetail, WithoutPhysicsFacesStillFollowTheirTargets) {
   ASSERT_EQ(room.command(a, ExpressCommand{"joy", 1, 3}), "");
   for (int i = 0; i < 45; ++i) room.tick();
   EXPECT_EQ(room.physics_faces(), 0u);
+  EXPECT_EQ(room.kinematic_faces(), 1u);
   EXPECT_GT(smile(room.face(a)), 0.5f);
 }
 
@@ -55,6 +57,7 @@ TEST(RoomSimulationLevelOfDetail, ASharePicksTheSameFacesEveryTick) {
   for (int i = 0; i < 30; ++i) {
     room.tick();
     counts.insert(room.physics_faces());
+    ASSERT_EQ(room.physics_faces() + room.kinematic_faces(), 16u);
   }
   ASSERT_EQ(counts.size(), 1u) << "the same faces keep physics";
   EXPECT_GT(*counts.begin(), 2u);
