@@ -72,10 +72,20 @@ int group_shift(int level, std::size_t group) {
 }
 
 CodedRange coded_range(std::size_t channel) {
-  const ChannelInfo& info = channel_table()[channel];
-  if (info.base < 0) return {info.min_q, info.max_q};
-  const ChannelInfo& base = channel_table()[static_cast<std::size_t>(info.base)];
-  return {info.min_q + base.min_q, info.max_q + base.max_q};
+  // Worked out once: the reconstruction asks for every channel every tick.
+  static const std::array<CodedRange, kChannelCount> ranges = [] {
+    std::array<CodedRange, kChannelCount> r{};
+    for (std::size_t c = 0; c < kChannelCount; ++c) {
+      const ChannelInfo& info = channel_table()[c];
+      r[c] = {info.min_q, info.max_q};
+      if (info.base >= 0) {
+        const ChannelInfo& base = channel_table()[static_cast<std::size_t>(info.base)];
+        r[c] = {info.min_q + base.min_q, info.max_q + base.max_q};
+      }
+    }
+    return r;
+  }();
+  return ranges[channel];
 }
 
 std::int32_t max_velocity(std::size_t channel) {

@@ -81,15 +81,17 @@ struct Encoder::State {
   bool select_updates(const Steps& x, const Steps& velocity, int level, std::array<bool, kChannelCount>& update,
                       std::array<double, kChannelCount>& priority, bool& refresh) const {
     refresh = false;
-    Reconstruction view = coding.reconstruction;
-    view.advance(ticks_since_frame);
+    // What the decoder shows now: the last frame's state extrapolated by
+    // the ticks since (the same as advancing a copy, without the copy).
+    const Reconstruction& view = coding.reconstruction;
     bool needed = ticks_since_frame >= kMaxTickDelta ||
                   (options.stream.loss_tolerant && ticks_since_frame >= static_cast<std::uint32_t>(options.heartbeat_ticks));
     Steps error{};
     for (std::size_t c = 0; c < kChannelCount; ++c) {
       const double limit = tolerance(c, level);
-      error[c] = x[c] - view.shown(c);
-      const double error_ahead = x[c] + velocity[c] * kLookaheadTicks - view.shown_after(c, kLookaheadTicks);
+      error[c] = x[c] - view.shown_after(c, ticks_since_frame);
+      const double error_ahead =
+          x[c] + velocity[c] * kLookaheadTicks - view.shown_after(c, ticks_since_frame + kLookaheadTicks);
       needed = needed || std::abs(error[c]) > limit;
       priority[c] = std::abs(error[c]) / limit;
       update[c] = std::abs(error[c]) > kUpdateShare * limit || std::abs(error_ahead) > limit;

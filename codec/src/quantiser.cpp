@@ -47,10 +47,6 @@ double to_steps(float value, std::size_t channel) {
   return steps;
 }
 
-std::int32_t round_nearest(double x) {
-  return static_cast<std::int32_t>(x >= 0 ? std::floor(x + 0.5) : -std::floor(-x + 0.5));
-}
-
 std::int32_t clamp_coded(std::int64_t q, std::size_t channel) {
   const CodedRange range = coded_range(channel);
   if (q < range.min) return range.min;

@@ -2,6 +2,7 @@
 // FaceParams fields <-> grid steps (FORMAT.md, "Channels"), and the rounding
 // the coded units use. channel_value(), quantise() and dequantise() are
 // declared in codec.hpp.
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 
@@ -22,7 +23,10 @@ constexpr std::int32_t round_to_units(std::int32_t q, int shift) {
 }
 
 /// Nearest integer to `x`, halves away from zero (finite |x| < 2^30).
-std::int32_t round_nearest(double x);
+/// Inline: the encoder calls it for every channel of every tick.
+inline std::int32_t round_nearest(double x) {
+  return static_cast<std::int32_t>(x >= 0 ? std::floor(x + 0.5) : -std::floor(-x + 0.5));
+}
 
 /// `q` clamped to the channel's coded range.
 std::int32_t clamp_coded(std::int64_t q, std::size_t channel);
