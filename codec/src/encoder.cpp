@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <optional>
 
 #include "channel_table.hpp"
 #include "coding_state.hpp"
@@ -233,14 +234,16 @@ bool Encoder::encode_tick(const FaceParams& params, std::vector<std::uint8_t>& f
   if (!may_send) return false;
 
   const double overhead_bits = 8.0 * s.options.container_bytes_per_frame;
-  CodingState next = s.coding;
+  // The state after the frame being tried: copied only when a frame is
+  // tried (most ticks send none, and the adaptive models take kilobytes).
+  std::optional<CodingState> next;
   std::vector<std::uint8_t> bytes;
   // Writes `decision` into `next` and `bytes`; whether the budget takes it.
   FrameType type = FrameType::predicted;
   auto try_frame = [&](const FrameDecision& decision, bool urgent) {
     next = s.coding;
     bytes.clear();
-    write_frame(next, s.options.stream, s.sequence, decision, bytes);
+    write_frame(*next, s.options.stream, s.sequence, decision, bytes);
     type = decision.type;
     if (bytes.size() > kMaxFrameBytes) {
       // Models that learned small changes can make a sudden whole-face
@@ -250,7 +253,7 @@ bool Encoder::encode_tick(const FaceParams& params, std::vector<std::uint8_t>& f
       key.type = FrameType::key;
       next = s.coding;
       bytes.clear();
-      write_frame(next, s.options.stream, s.sequence, key, bytes);
+      write_frame(*next, s.options.stream, s.sequence, key, bytes);
       type = FrameType::key;
     }
     return s.rate.allows(8.0 * static_cast<double>(bytes.size()) + overhead_bits, urgent);
@@ -326,7 +329,7 @@ bool Encoder::encode_tick(const FaceParams& params, std::vector<std::uint8_t>& f
   }
 
   const double bits = 8.0 * static_cast<double>(bytes.size()) + overhead_bits;
-  s.coding = std::move(next);
+  s.coding = std::move(*next);
   s.sent_source = x;
   s.rate.on_frame_sent(bits, type == FrameType::key);
   s.ticks_since_frame = 0;
