@@ -48,6 +48,8 @@ constexpr double kCatchUpS = 1.0;
 
 // The activation time constants of avatar/physics (80 ms up, 120 ms down).
 constexpr double kRiseS = 0.08, kFallS = 0.12;
+// Under the codec's finest action-unit step (1/256).
+constexpr float kKinematicRestGap = 1.0f / 512.0f;
 
 void follow_kinematically(PhysicsFace& face, const AuTargets& targets, double dt_s) {
   for (std::size_t c = 0; c < targets.size(); ++c) {
@@ -88,7 +90,11 @@ AuTargets step_action_units(PhysicsFace& face, const AuTargets& targets, double 
   if (!physics_allowed) {
     face.blend = 0;
     face.catching_up_s = 0;
-    face.resting = face.kinematic == targets;
+    // At rest once every unit is within a visible step of its target (an
+    // exponential approach in floats need never land exactly).
+    face.resting = true;
+    for (std::size_t c = 0; c < targets.size(); ++c)
+      face.resting = face.resting && std::abs(targets[c] - face.kinematic[c]) < kKinematicRestGap;
     return face.kinematic;
   }
   const AuTargets physical = step_physics(face, targets, dt_s, seed, options);

@@ -47,6 +47,16 @@ TEST(RoomSimulationLevelOfDetail, WithoutPhysicsFacesStillFollowTheirTargets) {
   EXPECT_EQ(room.physics_faces(), 0u);
   EXPECT_EQ(room.kinematic_faces(), 1u);
   EXPECT_GT(smile(room.face(a)), 0.5f);
+  room.remove_avatar(a);
+  const AvatarId b = room.add_avatar({"b", true});
+  for (int i = 0; i < 3 * 30; ++i) room.tick();
+  // A face that has held still for a while rests, though it never had physics.
+  bool rested = false;
+  for (int i = 0; i < 10 * 30 && !rested; ++i) {
+    room.tick();
+    rested = room.resting(b);
+  }
+  EXPECT_TRUE(rested);
 }
 
 TEST(RoomSimulationLevelOfDetail, ASharePicksTheSameFacesEveryTick) {
