@@ -11,7 +11,7 @@ void Metrics::observe_tick(double seconds) {
   tick_sum_us.fetch_add(static_cast<std::uint64_t>(seconds * 1e6), std::memory_order_relaxed);
 }
 
-std::string Metrics::render() const {
+std::string Metrics::render(double physics_share) const {
   std::ostringstream out;
   const auto family = [&](const char* name, const char* type, const char* help, auto value) {
     out << "# HELP " << name << " " << help << "\n# TYPE " << name << " " << type << "\n"
@@ -30,7 +30,7 @@ std::string Metrics::render() const {
          skipped_ticks.load());
   family("facewire_late_ticks_total", "counter", "Room ticks that could not keep their schedule.", late_ticks.load());
   family("facewire_physics_share", "gauge", "Share of faces allowed the physics face; under 1 when the server sheds load.",
-         physics_share.load());
+         physics_share);
   family("facewire_kinematic_faces", "gauge", "Faces following their targets without the physics face, under load.",
          kinematic_faces.load());
   family("facewire_protocol_errors_total", "counter", "Connections closed for malformed messages.",

@@ -20,7 +20,6 @@ struct Metrics {
   std::atomic<std::uint64_t> package_bytes_sent{0};
   std::atomic<std::uint64_t> skipped_ticks{0};      ///< subscriber ticks dropped: the link was full
   std::atomic<std::uint64_t> late_ticks{0};         ///< room ticks that started after their time
-  std::atomic<double> physics_share{1.0};           ///< share of faces allowed the physics face (PhysicsGovernor)
   std::atomic<std::int64_t> kinematic_faces{0};     ///< faces following their targets without physics, under load
   std::atomic<std::uint64_t> protocol_errors{0};
   std::atomic<std::uint64_t> rejected_joins{0};
@@ -35,8 +34,9 @@ struct Metrics {
   std::atomic<std::uint64_t> tick_sum_us{0};
 
   void observe_tick(double seconds);
-  /// The whole exposition, one family after another.
-  std::string render() const;
+  /// The whole exposition, one family after another. `physics_share` is the
+  /// PhysicsGovernor's, which owns it.
+  std::string render(double physics_share) const;
 };
 
 }  // namespace fw::server

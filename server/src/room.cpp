@@ -205,8 +205,12 @@ void Room::broadcast(const SharedBytes& message, std::uint32_t except) {
   }
 }
 
+std::chrono::microseconds Room::tick_period() const {
+  return std::chrono::microseconds(1'000'000 / context_.config.tick_hz);
+}
+
 void Room::schedule_tick() {
-  const auto period = std::chrono::microseconds(1'000'000 / context_.config.tick_hz);
+  const auto period = tick_period();
   next_tick_ += period;
   const auto now = std::chrono::steady_clock::now();
   if (next_tick_ < now - period) {
@@ -227,11 +231,8 @@ void Room::on_tick() {
   const auto start = std::chrono::steady_clock::now();
   // How late this tick starts tells the governor whether the pool keeps up;
   // its answer is how many of this room's faces run physics (level of detail).
-  context_.physics_lod.observe_tick(next_tick_, start,
-                                    std::chrono::microseconds(1'000'000 / context_.config.tick_hz));
-  const double share = context_.physics_lod.share();
-  simulation_.set_physics_share(share);
-  context_.metrics.physics_share.store(share, std::memory_order_relaxed);
+  context_.physics_lod.observe_tick(next_tick_, start, tick_period());
+  simulation_.set_physics_share(context_.physics_lod.share());
   simulation_.tick();
   const std::size_t kinematic = simulation_.kinematic_faces();
   context_.metrics.kinematic_faces.fetch_add(static_cast<std::int64_t>(kinematic) -

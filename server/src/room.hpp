@@ -69,6 +69,7 @@ class Room : public std::enable_shared_from_this<Room> {
   void do_join(JoinRequest request);
   void do_leave(std::uint32_t avatar);
   void broadcast(const SharedBytes& message, std::uint32_t except = UINT32_MAX);
+  std::chrono::microseconds tick_period() const;
   void schedule_tick();
   void on_tick();
 

@@ -93,9 +93,9 @@ class RoomSimulation {
   /// action-unit targets kinematically (the muscles' activation time
   /// constants, no tissue). A face that gets physics back keeps that track
   /// until its tissue has caught up with it (at most a second) and then
-  /// blends into the physics output over kPhysicsBlendS, so nothing jumps. Which faces keep physics is
-  /// fixed per face (a hash of the seed and its id), so a face does not
-  /// flicker between the two. Default 1.
+  /// blends into the physics output over kPhysicsBlendS, so nothing jumps.
+  /// Which faces keep physics is fixed per face (a hash of the seed and its
+  /// id), so a face does not flicker between the two. Default 1.
   void set_physics_share(double share);
   /// Faces that ran the physics face in the last tick (awake or asleep),
   /// and faces that followed their targets without it.

@@ -252,6 +252,7 @@ TEST(RoomServerOperations, ReportsReadinessMetricsAndRooms) {
   EXPECT_EQ(metrics.status, 200);
   for (const char* family : {"facewire_connections ", "facewire_rooms 1", "facewire_avatars 3", "facewire_bytes_sent_total",
                              "facewire_avatar_frames_sent_total", "facewire_dropped_ticks_total",
+                             "facewire_physics_share ", "facewire_kinematic_faces ",
                              "facewire_tick_duration_seconds_bucket{le=\"+Inf\"}"})
     EXPECT_NE(metrics.body.find(family), std::string::npos) << family;
   const auto rooms = nlohmann::json::parse(test::http_get(server.http_port(), "/api/rooms").body);
