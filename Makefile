@@ -1,10 +1,17 @@
 # The two commands of the README, plus a few conveniences.
 #   make run   install what is missing, build Release, start the server
 #   make test  install what is missing, build, run every test suite
+SHELL := /bin/bash
 JOBS ?= $(shell nproc)
 SERVER_ARGS ?=
+FUZZ_SECONDS ?= 300
 
-.PHONY: all deps build run test test-asan bench facegen clean
+# The compiler cache (every preset compiles through ccache) keys on paths
+# relative to the clone, so that another clone of the same tree hits it too.
+export CCACHE_BASEDIR := $(CURDIR)
+export CCACHE_NOHASHDIR := true
+
+.PHONY: all deps build run test test-asan fuzz bench facegen clean
 
 all: build
 
@@ -18,14 +25,24 @@ build: deps
 run: build
 	./build/bin/facewire-server serve --tcp 127.0.0.1:8081 $(SERVER_ARGS)
 
+# Every suite; the log is kept so that the slowest tests can be listed.
 test: build
-	ctest --preset release-all -j $(JOBS)
+	@mkdir -p build/logs
+	ctest --preset release-all -j $(JOBS) 2>&1 | tee build/logs/release-tests.log; \
+	  status=$${PIPESTATUS[0]}; sh tests/slowest_tests.sh build/logs/release-tests.log 20; exit $$status
 
-# The same suites under AddressSanitizer + UndefinedBehaviorSanitizer.
+# The quick suites under AddressSanitizer + UndefinedBehaviorSanitizer, with
+# assertions on.
 test-asan: deps
 	cmake --preset asan
 	cmake --build --preset asan -j $(JOBS)
-	ctest --preset asan -j $(JOBS)
+	@mkdir -p build-asan/logs
+	ctest --preset asan -j $(JOBS) 2>&1 | tee build-asan/logs/asan-tests.log; \
+	  status=$${PIPESTATUS[0]}; sh tests/slowest_tests.sh build-asan/logs/asan-tests.log 20; exit $$status
+
+# Every fuzz target for FUZZ_SECONDS each (make test runs them briefly).
+fuzz: build
+	sh tests/fuzz/run_fuzzers.sh build $(FUZZ_SECONDS)
 
 bench: build
 	./build/bin/facewire-bench render --json

@@ -7,6 +7,7 @@ set -euo pipefail
 # Build toolchain and the C++ libraries the modules link.
 build_packages=(
   build-essential cmake pkg-config git
+  ccache                                      # compiler cache: warm CI builds in minutes
   libboost-dev libboost-system-dev            # Asio + Beast (server, client)
   libopencv-dev opencv-data                   # photo preparation
   libglm-dev                                  # vector maths (model, physics)

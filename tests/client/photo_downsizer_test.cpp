@@ -6,6 +6,7 @@
 
 #include "fw/model/file_io.hpp"
 #include "fw/render/jpeg_codec.hpp"
+#include "test_paths.hpp"
 
 namespace fw::client {
 namespace {
@@ -47,8 +48,7 @@ TEST(PhotoDownsizer, ALargePhotoBecomesASmallJpegOfAtMost640Pixels) {
 TEST(PhotoDownsizer, TheAstronautPortraitFitsAtGoodQuality) {
   std::vector<std::uint8_t> png;
   std::string error;
-  // The portrait beside the project (as tests/support/photo_variants.cpp finds it).
-  ASSERT_TRUE(model::read_file(std::string(FW_SOURCE_DIR) + "/../shared/faces/astronaut.png", 8 << 20, png, error))
+  ASSERT_TRUE(model::read_file(test::test_photo("astronaut.png"), 8 << 20, png, error))
       << error;
   DownsizedPhoto photo;
   ASSERT_TRUE(downsize_photo(png, photo, error)) << error;

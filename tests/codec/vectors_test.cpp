@@ -10,11 +10,12 @@
 #include "frame_reader.hpp"
 #include "golden_vectors.hpp"
 #include "fw/behavior/scene_file.hpp"
+#include "test_paths.hpp"
 
 namespace fw::codec {
 namespace {
 
-const std::filesystem::path kDir = std::filesystem::path(FW_SOURCE_DIR) / "tests" / "vectors" / "codec";
+const std::filesystem::path kDir = std::filesystem::path(fw::test::source_dir()) / "tests" / "vectors" / "codec";
 
 std::vector<std::uint8_t> read_bytes(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);

@@ -54,7 +54,8 @@ RoomServer::~RoomServer() {
 ClientRun::ClientRun(const std::string& name, const std::string& args) : name_(name) {
   stderr_path_ = std::filesystem::temp_directory_path() / ("facewire-e2e-client-" + name + "-" + std::to_string(::getpid()) + ".log");
   const std::string command = bin("facewire-client") + " join " + args + " --json 2>" + stderr_path_.string();
-  future_ = std::async(std::launch::async, [command] { return run_command(command, false); });
+  // A client runs for its --seconds (60 at most in these tests), then ends.
+  future_ = std::async(std::launch::async, [command] { return run_command(command, false, 150); });
 }
 
 ClientRun::~ClientRun() {
@@ -85,9 +86,7 @@ std::string ClientRun::transcript() const {
 }
 
 std::string astronaut_photo() {
-  return std::filesystem::weakly_canonical(std::filesystem::path(FW_SOURCE_DIR) / ".." / "shared" / "faces" /
-                                           "astronaut.png")
-      .string();
+  return test_photo("astronaut.png");
 }
 
 std::string astronaut_package() {

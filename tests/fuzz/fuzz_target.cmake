@@ -3,58 +3,86 @@
 #
 # Builds a libFuzzer target with Debian's clang (the main build may use GCC,
 # which has no libFuzzer): the listed sources, the fuzz entry point among
-# them, are compiled together with -fsanitize=fuzzer,address,undefined so the
-# code under test carries coverage instrumentation. They must need nothing
-# but the C++ standard library, the INCLUDES and the LINK flags; AFTER names
-# targets that generate any of the sources. A ctest test (label `fuzz`)
-# runs it for SECONDS (default 20) from the seed corpus in
+# them, are compiled one by one (through the compiler cache, when there is
+# one) with -fsanitize=fuzzer,address,undefined so the code under test
+# carries coverage instrumentation, then linked. They must need nothing but
+# the C++ standard library, the INCLUDES and the LINK flags; AFTER names
+# targets that generate any of the sources. A ctest test (labels `fuzz` and
+# `slow`) runs it for SECONDS (default 10) from the seed corpus in
 # tests/fuzz/corpus/NAME (if there is one) plus the SEEDS files, and fails on
-# any crash, leak or sanitizer report.
+# any crash, leak or sanitizer report; `make fuzz` runs every target for as
+# long as you ask (tests/fuzz/run_fuzzers.sh).
+#
+# The sanitizer build (FW_SANITIZE) builds no fuzz target: they carry their
+# own sanitizers and run in the release pass only.
 find_program(FW_CLANGXX NAMES clang++-14 clang++)
+find_program(FW_CCACHE NAMES ccache)
 
 function(fw_fuzz_target)
   cmake_parse_arguments(ARG "" "NAME;SECONDS" "SOURCES;INCLUDES;SEEDS;LINK;AFTER" ${ARGN})
+  if(ARG_UNPARSED_ARGUMENTS)
+    message(FATAL_ERROR "fw_fuzz_target(${ARG_NAME}): unknown arguments ${ARG_UNPARSED_ARGUMENTS}")
+  endif()
+  if(FW_SANITIZE)
+    return()
+  endif()
   if(NOT FW_CLANGXX)
     message(WARNING "clang++ not found: fuzz target ${ARG_NAME} is not built (run deploy/install-deps.sh)")
     return()
   endif()
   if(NOT ARG_SECONDS)
-    set(ARG_SECONDS 20)
+    set(ARG_SECONDS 10)
   endif()
   set(output ${CMAKE_BINARY_DIR}/fuzz/${ARG_NAME})
-  set(sources)
-  foreach(source ${ARG_SOURCES})
-    get_filename_component(absolute ${source} ABSOLUTE)
-    list(APPEND sources ${absolute})
-  endforeach()
+  set(object_dir ${CMAKE_BINARY_DIR}/fuzz/${ARG_NAME}.objects)
   set(includes)
   foreach(dir ${ARG_INCLUDES})
     get_filename_component(absolute ${dir} ABSOLUTE)
     list(APPEND includes -I${absolute})
   endforeach()
+  set(flags -std=c++20 -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined)
+  set(objects)
+  foreach(source ${ARG_SOURCES})
+    get_filename_component(absolute ${source} ABSOLUTE)
+    # One object per source, named after its path so that equal file names
+    # in different folders do not collide.
+    file(RELATIVE_PATH relative ${PROJECT_SOURCE_DIR} ${absolute})
+    string(REGEX REPLACE "[/.]" "_" object_name "${relative}")
+    set(object ${object_dir}/${object_name}.o)
+    add_custom_command(
+      OUTPUT ${object}
+      COMMAND ${CMAKE_COMMAND} -E make_directory ${object_dir}
+      COMMAND ${FW_CCACHE} ${FW_CLANGXX} ${flags} ${includes} -MD -MF ${object}.d -c ${absolute} -o ${object}
+      DEPENDS ${absolute}
+      DEPFILE ${object}.d
+      COMMENT "Compiling ${relative} for fuzz target ${ARG_NAME}"
+      VERBATIM)
+    list(APPEND objects ${object})
+  endforeach()
   add_custom_command(
     OUTPUT ${output}
-    COMMAND ${CMAKE_COMMAND} -E make_directory ${CMAKE_BINARY_DIR}/fuzz
-    COMMAND ${FW_CLANGXX} -std=c++20 -O1 -g -fsanitize=fuzzer,address,undefined
-            -fno-sanitize-recover=undefined ${includes} ${sources} ${ARG_LINK} -o ${output}
-    DEPENDS ${sources}
-    COMMENT "Building fuzz target ${ARG_NAME} with clang"
+    COMMAND ${FW_CLANGXX} ${flags} ${objects} ${ARG_LINK} -o ${output}
+    DEPENDS ${objects}
+    COMMENT "Linking fuzz target ${ARG_NAME}"
     VERBATIM)
   add_custom_target(${ARG_NAME} ALL DEPENDS ${output})
   if(ARG_AFTER)
     add_dependencies(${ARG_NAME} ${ARG_AFTER})
   endif()
   set(corpus ${CMAKE_CURRENT_SOURCE_DIR}/corpus/${ARG_NAME})
-  set(work ${CMAKE_BINARY_DIR}/fuzz/${ARG_NAME}-corpus)
   set(seeds "")
   foreach(seed ${ARG_SEEDS})
     get_filename_component(absolute ${seed} ABSOLUTE)
-    string(APPEND seeds " '${absolute}'")
+    list(APPEND seeds ${absolute})
   endforeach()
-  # Fuzz into a scratch copy of the seeds so the source tree stays clean.
+  # What `make fuzz` (run_fuzzers.sh) needs of each target: one line of
+  # run_fuzzer.sh's arguments after SECONDS.
+  string(REPLACE ";" " " seed_words "${seeds}")
+  file(WRITE ${CMAKE_BINARY_DIR}/fuzz/${ARG_NAME}.args
+       "${output} ${corpus} ${CMAKE_BINARY_DIR}/fuzz/${ARG_NAME}-corpus ${seed_words}\n")
   add_test(NAME fuzz_${ARG_NAME}
-    COMMAND sh -c "rm -rf '${work}' && mkdir -p '${work}' && { cp -r '${corpus}'/. '${work}'/ 2>/dev/null; \
-for s in ${seeds}; do cp \"$s\" '${work}'/; done; } ; \
-'${output}' -max_total_time=${ARG_SECONDS} -timeout=5 -rss_limit_mb=1024 -print_final_stats=1 '${work}'")
-  set_tests_properties(fuzz_${ARG_NAME} PROPERTIES LABELS "fuzz;slow" TIMEOUT ${ARG_SECONDS}0)
+    COMMAND sh ${PROJECT_SOURCE_DIR}/tests/fuzz/run_fuzzer.sh ${ARG_SECONDS} ${output} ${corpus}
+            ${CMAKE_BINARY_DIR}/fuzz/${ARG_NAME}-corpus ${seeds})
+  math(EXPR timeout "${ARG_SECONDS} * 3 + 60")
+  set_tests_properties(fuzz_${ARG_NAME} PROPERTIES LABELS "fuzz;slow" TIMEOUT ${timeout})
 endfunction()

@@ -9,12 +9,13 @@
 #include "fw/model/face_asset.hpp"
 #include "fw/model/landmark_template.hpp"
 #include "fw/physics/face_pool.hpp"
+#include "test_paths.hpp"
 
 namespace fw::physics {
 namespace {
 
 model::GenericFace committed_face() {
-  std::ifstream in(std::string(FW_SOURCE_DIR) + "/avatar/model/assets/generic_face.json", std::ios::binary);
+  std::ifstream in(fw::test::source_path("avatar/model/assets/generic_face.json"), std::ios::binary);
   std::stringstream text;
   text << in.rdbuf();
   model::GenericFace face;

@@ -8,6 +8,7 @@
 #include "http_get.hpp"
 #include "run_command.hpp"
 #include "server_process.hpp"
+#include "test_paths.hpp"
 
 namespace fw::server {
 namespace {
@@ -16,7 +17,7 @@ using test::http_exchange;
 using test::http_get;
 
 std::string source_file(const std::string& path) {
-  std::ifstream in(std::string(FW_SOURCE_DIR) + "/" + path, std::ios::binary);
+  std::ifstream in(fw::test::source_path(path), std::ios::binary);
   std::stringstream text;
   text << in.rdbuf();
   return text.str();

@@ -4,6 +4,7 @@
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include "test_paths.hpp"
 
 namespace fw::test {
 namespace {
@@ -35,9 +36,7 @@ PhotoVariant placed(const cv::Mat& original, const std::string& name, cv::Size c
 }  // namespace
 
 std::string astronaut_path() {
-  return std::filesystem::weakly_canonical(std::filesystem::path(FW_SOURCE_DIR) / ".." / "shared" / "faces" /
-                                           "astronaut.png")
-      .string();
+  return test_photo("astronaut.png");
 }
 
 cv::Mat load_astronaut() { return cv::imread(astronaut_path(), cv::IMREAD_COLOR); }

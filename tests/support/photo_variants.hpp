@@ -19,7 +19,7 @@ struct PhotoVariant {
   bool mirrored = false;                           ///< left and right landmarks swap
 };
 
-/// The astronaut portrait beside the project (../shared/faces/astronaut.png).
+/// The astronaut portrait (tests/data/astronaut.png).
 std::string astronaut_path();
 cv::Mat load_astronaut();
 

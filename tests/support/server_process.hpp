@@ -1,6 +1,7 @@
 #pragma once
 // Starts a real facewire-server on a free loopback port for a test, and stops
-// it at the end. The server prints its URL on the first line of stdout.
+// it at the end (or when the test dies). The server prints its URL on the
+// first line of stdout.
 #include <csignal>
 #include <cstdio>
 #include <string>
@@ -8,6 +9,7 @@
 #include <unistd.h>
 
 #include <poll.h>
+#include <sys/prctl.h>
 
 namespace fw::test {
 
@@ -17,8 +19,12 @@ class ServerProcess {
   explicit ServerProcess(const std::string& binary, const std::string& extra_args = "") {
     int out[2];
     if (::pipe(out) != 0) return;
+    const pid_t parent = ::getpid();
     pid_ = ::fork();
     if (pid_ == 0) {
+      // Dies with the test, even when ctest kills the test on its time-out.
+      ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+      if (::getppid() != parent) ::_exit(127);
       ::dup2(out[1], 1);
       ::close(out[0]);
       ::close(out[1]);

@@ -7,11 +7,12 @@
 #include <gtest/gtest.h>
 
 #include "run_command.hpp"
+#include "test_paths.hpp"
 
 namespace fw::server {
 namespace {
 
-std::string source(const std::string& relative) { return std::string(FW_SOURCE_DIR) + "/" + relative; }
+std::string source(const std::string& relative) { return fw::test::source_path(relative); }
 std::string server() { return test::bin("facewire-server"); }
 
 // stdout alone: warnings on stderr are dropped inside the group.

@@ -11,10 +11,11 @@
 #include "fw/script/language.hpp"
 #include "fw/script/parser.hpp"
 #include "fw/script/standard_routines.hpp"
+#include "test_paths.hpp"
 
 namespace fw::script::test {
 
-inline std::string source_path(const std::string& relative) { return std::string(FW_SOURCE_DIR) + "/" + relative; }
+using fw::test::source_path;
 
 inline std::string read_source(const std::string& relative) {
   std::ifstream in(source_path(relative), std::ios::binary);

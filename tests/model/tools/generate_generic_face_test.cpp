@@ -6,12 +6,13 @@
 #include <gtest/gtest.h>
 
 #include "fw/model/face_asset.hpp"
+#include "test_paths.hpp"
 
 namespace fw::facegen {
 namespace {
 
 std::string committed_asset() {
-  std::ifstream in(std::string(FW_SOURCE_DIR) + "/avatar/model/assets/generic_face.json", std::ios::binary);
+  std::ifstream in(fw::test::source_path("avatar/model/assets/generic_face.json"), std::ios::binary);
   std::stringstream text;
   text << in.rdbuf();
   return text.str();
