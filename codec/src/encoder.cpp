@@ -1,6 +1,16 @@
 // Encoder: decides, tick by tick, whether the viewer needs a frame and what
 // it should say (FORMAT.md, "Encoder" is informative; only the frames it
 // writes are normative), within the rate controller's budget.
+//
+// One tick, step by step (Encoder::encode_tick):
+//   start_tick        the clocks and the rate controller move on
+//   observe           the face as coded channels, each channel's motion,
+//                     and the frame that would carry all of it
+//   remember_source   the source history the next motion estimates use
+//   choose_frame      a key frame if one is forced or due, else
+//     choose_predicted_frame   which channels the viewer needs (select_updates);
+//                     over budget, fit_over_budget keeps the most urgent
+//   commit_frame      the frame goes out: the coding state, clocks and stats follow
 #include <algorithm>
 #include <cassert>
 #include <cmath>
@@ -41,9 +51,35 @@ constexpr double kGazePriority = 100.0;
 constexpr double kUrgentPriority = 2.0;
 
 using Steps = std::array<double, kChannelCount>;
+using Updates = std::array<bool, kChannelCount>;
+using Priorities = std::array<double, kChannelCount>;  ///< each channel's error over its tolerance
 
 constexpr std::size_t kEyeLeftYaw = kAuChannelCount + 6;
 constexpr std::size_t kEyeRightYaw = kAuChannelCount + 8;
+
+// This tick's face as coded channels (grid steps, unrounded), the motion each
+// channel shows, and the frame that would carry all of it.
+struct TickSource {
+  Steps x{};
+  Steps velocity{};
+  FrameDecision wanted;
+};
+
+// Why a predicted frame is needed, if at all.
+enum class FrameNeed {
+  none,     ///< every channel within its tolerance, no heartbeat or refresh due
+  change,   ///< the viewer would see a difference, or a heartbeat is due
+  refresh,  ///< nothing the viewer would see, but the face moved since the last frame
+};
+
+// A frame being tried: its bytes and the coding state after it. The state is
+// copied only when a frame is tried (most ticks send none, and the adaptive
+// models take kilobytes).
+struct FrameTrial {
+  std::optional<CodingState> next;
+  std::vector<std::uint8_t> bytes;
+  FrameType type = FrameType::predicted;
+};
 
 }  // namespace
 
@@ -67,69 +103,48 @@ struct Encoder::State {
   int history = 0;          ///< ticks of source history held (0 .. 2)
   EncoderStats stats;
 
+  // ---- The tick's source -------------------------------------------------
+
+  // The clocks move on by one tick, and the budget drains by one tick's worth.
+  void start_tick() {
+    ++offered;
+    stats.tick = static_cast<std::uint32_t>(offered - 1);
+    stats.sent = false;
+    ticks_since_frame = std::min(ticks_since_frame + 1, kMaxTickDelta);
+    ticks_since_key = std::min(ticks_since_key + 1, kMaxTickDelta);
+    rate.on_tick();
+  }
+
+  TickSource observe(const FaceParams& params, int level) const {
+    TickSource source;
+    source.wanted.tick_delta = ticks_since_frame;
+    source.wanted.level = level;
+    for (std::size_t c = 0; c < kChannelCount; ++c) {
+      double& x = source.x[c];
+      x = to_steps(channel_value(params, c), c);
+      const int base = channel_table()[c].base;
+      if (base >= 0) x += source.x[static_cast<std::size_t>(base)];  // bases come first in the table
+      const Motion motion = estimate_motion(c, x, tolerance(c, level));
+      source.velocity[c] = motion.velocity;
+      source.wanted.target[c] = round_nearest(x);
+      source.wanted.velocity[c] = round_nearest(motion.velocity * kSubSteps);
+      source.wanted.damping[c] = motion.damping;
+    }
+    return source;
+  }
+
+  // Every offered tick enters the history, sent or not.
+  void remember_source(const Steps& x) {
+    before_previous = previous;
+    previous = x;
+    history = std::min(history + 1, 2);
+  }
+
   // The error channel `c` may show at `level`, in grid steps.
   double tolerance(std::size_t c, int level) const {
     double error = options.visible_error[c] * kLevelFactor[static_cast<std::size_t>(level)];
     if (channel_table()[c].group == ChannelGroup::eyes) error = std::min<double>(error, options.max_gaze_error_rad);
     return error / channel_table()[c].step;
-  }
-
-  // Which channels a predicted frame at this tick should update, given the
-  // source `x` and its `velocity` (grid steps). Returns false when no frame
-  // is needed: every channel is within its tolerance of what the decoder
-  // shows, and no heartbeat is due. `priority` gets each channel's error
-  // over its tolerance.
-  bool select_updates(const Steps& x, const Steps& velocity, int level, std::array<bool, kChannelCount>& update,
-                      std::array<double, kChannelCount>& priority, bool& refresh) const {
-    refresh = false;
-    // What the decoder shows now: the last frame's state extrapolated by
-    // the ticks since (the same as advancing a copy, without the copy).
-    const Reconstruction& view = coding.reconstruction;
-    bool needed = ticks_since_frame >= kMaxTickDelta ||
-                  (options.stream.loss_tolerant && ticks_since_frame >= static_cast<std::uint32_t>(options.heartbeat_ticks));
-    Steps error{};
-    for (std::size_t c = 0; c < kChannelCount; ++c) {
-      const double limit = tolerance(c, level);
-      error[c] = x[c] - view.shown_after(c, ticks_since_frame);
-      const double error_ahead =
-          x[c] + velocity[c] * kLookaheadTicks - view.shown_after(c, ticks_since_frame + kLookaheadTicks);
-      needed = needed || std::abs(error[c]) > limit;
-      priority[c] = std::abs(error[c]) / limit;
-      update[c] = std::abs(error[c]) > kUpdateShare * limit || std::abs(error_ahead) > limit;
-    }
-    // An eye's two channels are its gaze direction in the world: the viewer
-    // sees the angle between where it should look and where it looks.
-    for (const std::size_t yaw : {kEyeLeftYaw, kEyeRightYaw}) {
-      const std::size_t pitch = yaw + 1;
-      const double off = std::hypot(error[yaw], error[pitch]) / tolerance(yaw, level);
-      // Eye contact first: an eye beyond its tolerance outranks everything else.
-      priority[yaw] = priority[pitch] = off > 1.0 ? off + kGazePriority : off;
-      if (off <= 1.0) continue;
-      needed = true;
-      if (!update[yaw] && !update[pitch]) update[yaw] = update[pitch] = true;
-    }
-    if (!needed && options.refresh_ticks > 0 && ticks_since_frame >= static_cast<std::uint32_t>(options.refresh_ticks)) {
-      // A refresh: every channel is within its tolerance of the prediction,
-      // but the face moved since the last frame (some channel by half a
-      // grid step or more). The frame carries the channel the prediction
-      // misses most for its tolerance, and everything it misses by a share
-      // of its own, with fresh velocities.
-      bool moved = false;
-      for (std::size_t c = 0; c < kChannelCount && !moved; ++c) moved = std::abs(x[c] - sent_source[c]) >= 0.5;
-      if (!moved) return false;  // the face holds still: nothing to refresh
-      needed = refresh = true;
-      update[static_cast<std::size_t>(std::max_element(priority.begin(), priority.end()) - priority.begin())] = true;
-    }
-    if (!needed) return false;
-    for (std::size_t c = 0; c < kChannelCount; ++c) {
-      const int p = channel_table()[c].partner;
-      if (p < 0) continue;
-      const auto partner = static_cast<std::size_t>(p);
-      const double limit = kPartnerShare * tolerance(c, level);
-      if (update[partner] && std::abs(error[c]) > limit) update[c] = true;
-      if (update[c] && std::abs(error[partner]) > limit) update[partner] = true;
-    }
-    return true;
   }
 
   // The motion to send for channel `c` (source now at `x` grid steps): a
@@ -153,14 +168,254 @@ struct Encoder::State {
     if (std::abs(d1) * horizon < 0.5 * tolerance) return {};
     const double ratio = d1 / d2;
     if (ratio < kDampingRatio) {
-      // The velocity decays by (1 - numerator/64) per tick: take the class nearest the observed ratio.
-      int best = 1;
-      for (int d = 2; d < kDampingClasses; ++d)
-        if (std::abs(kept(d) - ratio) < std::abs(kept(best) - ratio)) best = d;
-      return {d1 * kept(best), best};
+      const int damping = nearest_damping(ratio);
+      return {d1 * kept(damping), damping};
     }
     if (ratio > kBurstRatio) return {};
     return {d1 + kAcceleration * (d1 - d2), 0};
+  }
+  // The velocity decays by (1 - numerator/64) per tick: the class nearest the observed ratio.
+  static int nearest_damping(double ratio) {
+    int best = 1;
+    for (int d = 2; d < kDampingClasses; ++d)
+      if (std::abs(kept(d) - ratio) < std::abs(kept(best) - ratio)) best = d;
+    return best;
+  }
+
+  // ---- Which channels a predicted frame updates ----------------------------
+
+  // Which channels a predicted frame at this tick should update, given the
+  // source `x` and its `velocity` (grid steps); `priority` gets each
+  // channel's error over its tolerance.
+  FrameNeed select_updates(const Steps& x, const Steps& velocity, int level, Updates& update,
+                           Priorities& priority) const {
+    Steps error{};
+    const bool channel_off = mark_channels_off(x, velocity, level, error, update, priority);
+    const bool eye_off = mark_eyes_off(error, level, update, priority);
+    FrameNeed need = FrameNeed::change;
+    if (!heartbeat_due() && !channel_off && !eye_off) {
+      // A refresh: every channel is within its tolerance of the prediction,
+      // but the face moved since the last frame (some channel by half a
+      // grid step or more). The frame carries the channel the prediction
+      // misses most for its tolerance, and everything it misses by a share
+      // of its own, with fresh velocities.
+      if (!refresh_due() || !moved_since_sent(x)) return FrameNeed::none;
+      need = FrameNeed::refresh;
+      update[static_cast<std::size_t>(std::max_element(priority.begin(), priority.end()) - priority.begin())] = true;
+    }
+    mark_partners(error, level, update);
+    return need;
+  }
+
+  // Each channel's error against what the decoder shows now (the last
+  // frame's state extrapolated by the ticks since, read without a copy), its
+  // priority, and whether a frame should update it: past a share of its
+  // tolerance now, or past all of it in a few ticks. Returns whether any
+  // channel is beyond its tolerance.
+  bool mark_channels_off(const Steps& x, const Steps& velocity, int level, Steps& error, Updates& update,
+                         Priorities& priority) const {
+    const Reconstruction& view = coding.reconstruction;
+    bool beyond = false;
+    for (std::size_t c = 0; c < kChannelCount; ++c) {
+      const double limit = tolerance(c, level);
+      error[c] = x[c] - view.shown_after(c, ticks_since_frame);
+      const double error_ahead =
+          x[c] + velocity[c] * kLookaheadTicks - view.shown_after(c, ticks_since_frame + kLookaheadTicks);
+      beyond = beyond || std::abs(error[c]) > limit;
+      priority[c] = std::abs(error[c]) / limit;
+      update[c] = std::abs(error[c]) > kUpdateShare * limit || std::abs(error_ahead) > limit;
+    }
+    return beyond;
+  }
+
+  // An eye's two channels are its gaze direction in the world: the viewer
+  // sees the angle between where it should look and where it looks. Returns
+  // whether either eye is beyond its tolerance.
+  bool mark_eyes_off(const Steps& error, int level, Updates& update, Priorities& priority) const {
+    bool beyond = false;
+    for (const std::size_t yaw : {kEyeLeftYaw, kEyeRightYaw}) {
+      const std::size_t pitch = yaw + 1;
+      const double off = std::hypot(error[yaw], error[pitch]) / tolerance(yaw, level);
+      // Eye contact first: an eye beyond its tolerance outranks everything else.
+      priority[yaw] = priority[pitch] = off > 1.0 ? off + kGazePriority : off;
+      if (off <= 1.0) continue;
+      beyond = true;
+      if (!update[yaw] && !update[pitch]) update[yaw] = update[pitch] = true;
+    }
+    return beyond;
+  }
+
+  // A frame goes out at least this often: the tick delta must stay codable,
+  // and a loss-tolerant stream's viewer must notice a lost frame.
+  bool heartbeat_due() const {
+    return ticks_since_frame >= kMaxTickDelta ||
+           (options.stream.loss_tolerant && ticks_since_frame >= static_cast<std::uint32_t>(options.heartbeat_ticks));
+  }
+
+  bool refresh_due() const {
+    return options.refresh_ticks > 0 && ticks_since_frame >= static_cast<std::uint32_t>(options.refresh_ticks);
+  }
+
+  // Whether some channel moved by half a grid step or more since the last
+  // frame (a face that holds still has nothing to refresh).
+  bool moved_since_sent(const Steps& x) const {
+    for (std::size_t c = 0; c < kChannelCount; ++c)
+      if (std::abs(x[c] - sent_source[c]) >= 0.5) return true;
+    return false;
+  }
+
+  // Left and right go together once either is off by a share of its
+  // tolerance: the right side's residual is coded against the left's.
+  void mark_partners(const Steps& error, int level, Updates& update) const {
+    for (std::size_t c = 0; c < kChannelCount; ++c) {
+      const int p = channel_table()[c].partner;
+      if (p < 0) continue;
+      const auto partner = static_cast<std::size_t>(p);
+      const double limit = kPartnerShare * tolerance(c, level);
+      if (update[partner] && std::abs(error[c]) > limit) update[c] = true;
+      if (update[c] && std::abs(error[partner]) > limit) update[partner] = true;
+    }
+  }
+
+  // ---- Which frame goes out ------------------------------------------------
+
+  // Whether a frame goes out this tick; `trial` then holds it.
+  bool choose_frame(const TickSource& source, int level, FrameTrial& trial) {
+    const bool key_forced = !started || key_requested;
+    if (key_forced || key_due_by_clock()) {
+      FrameDecision key = source.wanted;
+      key.type = FrameType::key;
+      if (try_frame(key, source.wanted, key_forced, trial)) return true;
+      // A key frame that is only due by the clock waits for room in the
+      // budget; meanwhile the stream goes on with predicted frames.
+      if (key_forced) return false;
+    }
+    return choose_predicted_frame(source, level, trial);
+  }
+
+  // Loss-tolerant streams send key frames at the rate controller's interval.
+  bool key_due_by_clock() const {
+    return options.stream.loss_tolerant &&
+           ticks_since_key >= static_cast<std::uint32_t>(rate.key_interval_ticks(options.max_key_interval_ticks));
+  }
+
+  bool choose_predicted_frame(const TickSource& source, int level, FrameTrial& trial) {
+    FrameDecision decision = source.wanted;
+    decision.type = FrameType::predicted;
+    Priorities priority{};
+    const FrameNeed need = select_updates(source.x, source.velocity, level, decision.update, priority);
+    if (need == FrameNeed::none) return false;
+    const bool fits = try_frame(decision, source.wanted, false, trial);
+    if (need == FrameNeed::refresh) return fits && refresh_affordable(trial);
+    return fits || fit_over_budget(decision, priority, source.wanted, trial);
+  }
+
+  // A refresh only spends what the budget has to spare (refresh_bucket_share).
+  bool refresh_affordable(const FrameTrial& trial) const {
+    return rate.bucket_bits() + 8.0 * static_cast<double>(trial.bytes.size()) + overhead_bits() <=
+           options.refresh_bucket_share * rate.capacity_bits();
+  }
+
+  // Over budget: keep the channels furthest beyond their tolerance, as many
+  // as fit; channels far off (an eye beyond its tolerance, anything beyond
+  // twice its own) may dip into the reserve rather than wait. Only when not
+  // even one fits is the tick skipped (the decoder keeps showing its
+  // prediction).
+  bool fit_over_budget(const FrameDecision& decision, const Priorities& priority, const FrameDecision& wanted,
+                       FrameTrial& trial) {
+    const std::vector<std::size_t> order = updates_by_priority(decision.update, priority);
+    auto try_first = [&](std::size_t keep, bool urgent) {
+      return try_frame(first_by_priority(decision, order, keep, priority), wanted, urgent, trial);
+    };
+    for (std::size_t keep = order.size() / 2; keep >= 1; keep /= 2)
+      if (try_first(keep, false)) return true;
+    std::size_t urgent = 0;
+    while (urgent < order.size() && priority[order[urgent]] > kUrgentPriority) ++urgent;
+    for (std::size_t keep = urgent; keep >= 1; keep /= 2)
+      if (try_first(keep, true)) return true;
+    // The tick delta must stay codable: after 65536 silent ticks a frame goes out whatever the budget.
+    if (ticks_since_frame < kMaxTickDelta) return false;
+    try_first(0, true);
+    return true;
+  }
+
+  // The channels to update, most urgent first (ties keep channel order).
+  static std::vector<std::size_t> updates_by_priority(const Updates& update, const Priorities& priority) {
+    std::vector<std::size_t> order;
+    for (std::size_t c = 0; c < kChannelCount; ++c)
+      if (update[c]) order.push_back(c);
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return priority[a] > priority[b]; });
+    return order;
+  }
+
+  // `decision` cut down to the first `keep` channels of `order`, plus what
+  // must go with them. The eyes go together: half a gaze update would leave
+  // the other eye, or the other axis, where it was. A head far off goes with
+  // them: an eye is coded as gaze in the world and shown as gaze minus the
+  // head the decoder holds, so under a stale head it looks the wrong way.
+  static FrameDecision first_by_priority(const FrameDecision& decision, const std::vector<std::size_t>& order,
+                                         std::size_t keep, const Priorities& priority) {
+    FrameDecision reduced = decision;
+    reduced.update = {};
+    bool eyes = false;
+    for (std::size_t i = 0; i < keep; ++i) {
+      reduced.update[order[i]] = true;
+      eyes = eyes || channel_table()[order[i]].group == ChannelGroup::eyes;
+    }
+    if (eyes)
+      for (const std::size_t c : order) {
+        const ChannelGroup group = channel_table()[c].group;
+        if (group == ChannelGroup::eyes || (group == ChannelGroup::head_rotation && priority[c] > kUrgentPriority))
+          reduced.update[c] = true;
+      }
+    return reduced;
+  }
+
+  // ---- Trying and sending a frame --------------------------------------------
+
+  // Writes `decision` into `trial`; whether the budget takes it. Models that
+  // learned small changes can make a sudden whole-face change cost more than
+  // a frame may hold; a key frame (fresh models) stays well under the limit.
+  bool try_frame(const FrameDecision& decision, const FrameDecision& wanted, bool urgent, FrameTrial& trial) const {
+    write_trial(decision, trial);
+    if (trial.bytes.size() > kMaxFrameBytes) {
+      FrameDecision key = wanted;
+      key.type = FrameType::key;
+      write_trial(key, trial);
+    }
+    return rate.allows(8.0 * static_cast<double>(trial.bytes.size()) + overhead_bits(), urgent);
+  }
+
+  void write_trial(const FrameDecision& decision, FrameTrial& trial) const {
+    trial.next = coding;
+    trial.bytes.clear();
+    write_frame(*trial.next, options.stream, sequence, decision, trial.bytes);
+    trial.type = decision.type;
+  }
+
+  // What the container adds to every frame, charged to the budget.
+  double overhead_bits() const { return 8.0 * options.container_bytes_per_frame; }
+
+  // The frame goes out: the decoder will hold `trial.next`, and the clocks,
+  // budget and stats count it.
+  void commit_frame(FrameTrial& trial, const Steps& x) {
+    const double bits = 8.0 * static_cast<double>(trial.bytes.size()) + overhead_bits();
+    const bool key = trial.type == FrameType::key;
+    coding = std::move(*trial.next);
+    sent_source = x;
+    rate.on_frame_sent(bits, key);
+    ticks_since_frame = 0;
+    if (key) {
+      ticks_since_key = 0;
+      key_requested = false;
+      started = true;
+    }
+    ++sequence;
+    stats.sent = true;
+    stats.last_type = trial.type;
+    stats.last_bytes = trial.bytes.size();
+    ++stats.frames_sent;
+    stats.bytes_sent += trial.bytes.size();
   }
 };
 
@@ -203,148 +458,15 @@ bool Encoder::encode(const FaceParams& params, std::vector<std::uint8_t>& frame)
 bool Encoder::encode_tick(const FaceParams& params, std::vector<std::uint8_t>& frame, bool may_send) {
   State& s = *state_;
   frame.clear();
-  ++s.offered;
-  s.stats.tick = static_cast<std::uint32_t>(s.offered - 1);
-  s.stats.sent = false;
-  s.ticks_since_frame = std::min(s.ticks_since_frame + 1, kMaxTickDelta);
-  s.ticks_since_key = std::min(s.ticks_since_key + 1, kMaxTickDelta);
-  s.rate.on_tick();
+  s.start_tick();
   const int level = s.rate.level();
-
-  // This tick's face as coded channels (grid steps, unrounded), and the
-  // motion each channel shows.
-  Steps x{};
-  FrameDecision wanted;
-  wanted.tick_delta = s.ticks_since_frame;
-  wanted.level = level;
-  Steps velocity{};
-  for (std::size_t c = 0; c < kChannelCount; ++c) {
-    x[c] = to_steps(channel_value(params, c), c);
-    const int base = channel_table()[c].base;
-    if (base >= 0) x[c] += x[static_cast<std::size_t>(base)];  // bases come first in the table
-    const State::Motion motion = s.estimate_motion(c, x[c], s.tolerance(c, level));
-    velocity[c] = motion.velocity;
-    wanted.target[c] = round_nearest(x[c]);
-    wanted.velocity[c] = round_nearest(motion.velocity * kSubSteps);
-    wanted.damping[c] = motion.damping;
-  }
-  s.before_previous = s.previous;
-  s.previous = x;
-  s.history = std::min(s.history + 1, 2);
+  const TickSource source = s.observe(params, level);
+  s.remember_source(source.x);
   if (!may_send) return false;
-
-  const double overhead_bits = 8.0 * s.options.container_bytes_per_frame;
-  // The state after the frame being tried: copied only when a frame is
-  // tried (most ticks send none, and the adaptive models take kilobytes).
-  std::optional<CodingState> next;
-  std::vector<std::uint8_t> bytes;
-  // Writes `decision` into `next` and `bytes`; whether the budget takes it.
-  FrameType type = FrameType::predicted;
-  auto try_frame = [&](const FrameDecision& decision, bool urgent) {
-    next = s.coding;
-    bytes.clear();
-    write_frame(*next, s.options.stream, s.sequence, decision, bytes);
-    type = decision.type;
-    if (bytes.size() > kMaxFrameBytes) {
-      // Models that learned small changes can make a sudden whole-face
-      // change cost more than a frame may hold; a key frame (fresh models)
-      // stays well under the limit.
-      FrameDecision key = wanted;
-      key.type = FrameType::key;
-      next = s.coding;
-      bytes.clear();
-      write_frame(*next, s.options.stream, s.sequence, key, bytes);
-      type = FrameType::key;
-    }
-    return s.rate.allows(8.0 * static_cast<double>(bytes.size()) + overhead_bits, urgent);
-  };
-
-  bool fits = false;
-  const bool key_forced = !s.started || s.key_requested;
-  const bool key_due =
-      key_forced || (s.options.stream.loss_tolerant &&
-                     s.ticks_since_key >= static_cast<std::uint32_t>(
-                                              s.rate.key_interval_ticks(s.options.max_key_interval_ticks)));
-  if (key_due) {
-    FrameDecision key = wanted;
-    key.type = FrameType::key;
-    fits = try_frame(key, key_forced);
-    // A key frame that is only due by the clock waits for room in the
-    // budget; meanwhile the stream goes on with predicted frames.
-    if (!fits && key_forced) return false;
-  }
-  if (!fits) {
-    FrameDecision decision = wanted;
-    decision.type = FrameType::predicted;
-    std::array<double, kChannelCount> priority{};  // error over tolerance
-    bool refresh = false;
-    if (!s.select_updates(x, velocity, level, decision.update, priority, refresh)) return false;
-    fits = try_frame(decision, false);
-    // A refresh only spends what the budget has to spare (refresh_bucket_share).
-    if (refresh && (!fits || s.rate.bucket_bits() + 8.0 * static_cast<double>(bytes.size()) + overhead_bits >
-                                 s.options.refresh_bucket_share * s.rate.capacity_bits()))
-      return false;
-    if (!fits) {
-      // Over budget: keep the channels furthest beyond their tolerance, as
-      // many as fit; channels far off (an eye beyond its tolerance, anything
-      // beyond twice its own) may dip into the reserve rather than wait.
-      // Only when not even one fits is the tick skipped (the decoder keeps
-      // showing its prediction).
-      std::vector<std::size_t> order;
-      for (std::size_t c = 0; c < kChannelCount; ++c)
-        if (decision.update[c]) order.push_back(c);
-      std::stable_sort(order.begin(), order.end(),
-                       [&](std::size_t a, std::size_t b) { return priority[a] > priority[b]; });
-      auto try_first = [&](std::size_t keep, bool urgent) {
-        FrameDecision reduced = decision;
-        reduced.update = {};
-        bool eyes = false;
-        for (std::size_t i = 0; i < keep; ++i) {
-          reduced.update[order[i]] = true;
-          eyes = eyes || channel_table()[order[i]].group == ChannelGroup::eyes;
-        }
-        // The eyes go together: half a gaze update would leave the other eye,
-        // or the other axis, where it was. A head far off goes with them: an
-        // eye is coded as gaze in the world and shown as gaze minus the head
-        // the decoder holds, so under a stale head it looks the wrong way.
-        if (eyes)
-          for (const std::size_t c : order) {
-            const ChannelGroup group = channel_table()[c].group;
-            if (group == ChannelGroup::eyes || (group == ChannelGroup::head_rotation && priority[c] > kUrgentPriority))
-              reduced.update[c] = true;
-          }
-        return try_frame(reduced, urgent);
-      };
-      for (std::size_t keep = order.size() / 2; keep >= 1 && !fits; keep /= 2) fits = try_first(keep, false);
-      std::size_t urgent = 0;
-      while (urgent < order.size() && priority[order[urgent]] > kUrgentPriority) ++urgent;
-      for (std::size_t keep = urgent; keep >= 1 && !fits; keep /= 2) fits = try_first(keep, true);
-      // The tick delta must stay codable: after 65536 silent ticks a frame goes out whatever the budget.
-      if (!fits && s.ticks_since_frame >= kMaxTickDelta) {
-        try_first(0, true);
-        fits = true;
-      }
-    }
-    if (!fits) return false;
-  }
-
-  const double bits = 8.0 * static_cast<double>(bytes.size()) + overhead_bits;
-  s.coding = std::move(*next);
-  s.sent_source = x;
-  s.rate.on_frame_sent(bits, type == FrameType::key);
-  s.ticks_since_frame = 0;
-  if (type == FrameType::key) {
-    s.ticks_since_key = 0;
-    s.key_requested = false;
-    s.started = true;
-  }
-  ++s.sequence;
-  s.stats.sent = true;
-  s.stats.last_type = type;
-  s.stats.last_bytes = bytes.size();
-  ++s.stats.frames_sent;
-  s.stats.bytes_sent += bytes.size();
-  frame = std::move(bytes);
+  FrameTrial trial;
+  if (!s.choose_frame(source, level, trial)) return false;
+  s.commit_frame(trial, source.x);
+  frame = std::move(trial.bytes);
   return true;
 }
 
