@@ -8,34 +8,40 @@
 #include <nlohmann/json.hpp>
 
 namespace fw::client {
+namespace {
 
 namespace asio = boost::asio;
 namespace beast = boost::beast;
 namespace http = beast::http;
 
-bool upload_avatar(const UploadTarget& target, const std::string& content_type, std::span<const std::uint8_t> body,
-                   int timeout_s, std::string& asset, std::string& error) {
-  asio::io_context io;
-  beast::tcp_stream stream(io);
-  const std::string where = "http://" + target.host + ":" + target.port + "/api/avatars";
-  boost::system::error_code ec;
-  asio::ip::tcp::resolver resolver(io);
-  const auto addresses = resolver.resolve(target.host, target.port, ec);
-  if (ec) {
-    error = "uploading the avatar to " + where + ": " + ec.message();
-    return false;
-  }
-  // The whole exchange shares one deadline (beast's timeouts are per
-  // operation; these run one after the other, so each gets what is left).
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(timeout_s);
-  stream.expires_at(deadline);
-  stream.connect(addresses, ec);
-  http::request<http::vector_body<std::uint8_t>> request{http::verb::post, "/api/avatars", 11};
+using Request = http::request<http::vector_body<std::uint8_t>>;
+using Response = http::response<http::string_body>;
+
+Request upload_request(const UploadTarget& target, const std::string& content_type,
+                       std::span<const std::uint8_t> body) {
+  Request request{http::verb::post, "/api/avatars", 11};
   request.set(http::field::host, target.host + ":" + target.port);
   request.set(http::field::user_agent, "facewire-client");
   request.set(http::field::content_type, content_type);
   request.body().assign(body.begin(), body.end());
   request.prepare_payload();
+  return request;
+}
+
+// Connects, sends the request and reads the answer, all within one deadline
+// (beast's timeouts are per operation; these run one after the other, so
+// each gets what is left).
+boost::system::error_code exchange(const UploadTarget& target, const Request& request, int timeout_s,
+                                   Response& response) {
+  asio::io_context io;
+  beast::tcp_stream stream(io);
+  boost::system::error_code ec;
+  asio::ip::tcp::resolver resolver(io);
+  const auto addresses = resolver.resolve(target.host, target.port, ec);
+  if (ec) return ec;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(timeout_s);
+  stream.expires_at(deadline);
+  stream.connect(addresses, ec);
   http::response_parser<http::string_body> parser;
   parser.body_limit(64 * 1024);
   beast::flat_buffer buffer;
@@ -51,12 +57,12 @@ bool upload_avatar(const UploadTarget& target, const std::string& content_type, 
     http::async_read(stream, buffer, parser, [&](boost::system::error_code e, std::size_t) { ec = e; });
     io.run();
   }
-  if (ec) {
-    error = "uploading the avatar to " + where + ": " +
-            (ec == beast::error::timeout ? "no answer within " + std::to_string(timeout_s) + " s" : ec.message());
-    return false;
-  }
-  const auto& response = parser.get();
+  if (!ec) response = parser.release();
+  return ec;
+}
+
+// The server's answer: 201 (or 200) with {"asset": ID}, else its explanation.
+bool read_asset(const Response& response, std::string& asset, std::string& error) {
   if (response.result() != http::status::created && response.result() != http::status::ok) {
     error = "the server refused the avatar (" + std::to_string(response.result_int()) + "): " + response.body();
     return false;
@@ -69,6 +75,21 @@ bool upload_avatar(const UploadTarget& target, const std::string& content_type, 
   }
   asset = json["asset"].get<std::string>();
   return true;
+}
+
+}  // namespace
+
+bool upload_avatar(const UploadTarget& target, const std::string& content_type, std::span<const std::uint8_t> body,
+                   int timeout_s, std::string& asset, std::string& error) {
+  const std::string where = "http://" + target.host + ":" + target.port + "/api/avatars";
+  Response response;
+  const boost::system::error_code ec = exchange(target, upload_request(target, content_type, body), timeout_s, response);
+  if (ec) {
+    error = "uploading the avatar to " + where + ": " +
+            (ec == beast::error::timeout ? "no answer within " + std::to_string(timeout_s) + " s" : ec.message());
+    return false;
+  }
+  return read_asset(response, asset, error);
 }
 
 }  // namespace fw::client

@@ -1,17 +1,15 @@
 #pragma once
 // Uploading one's face to the server before joining (PROTOCOL.md section 8,
-// POST /api/avatars): a downsized photo, which the server turns into a
-// package, or a prepared package. The answer's asset id goes into hello.
+// POST /api/avatars) over HTTP: the AvatarUploader of facewire-client
+// (socket glue, so it lives in the executable, not in fw_client_core).
+// own_avatar.hpp prepares what goes up.
 #include <cstdint>
 #include <span>
 #include <string>
 
-namespace fw::client {
+#include "own_avatar.hpp"
 
-struct UploadTarget {
-  std::string host;
-  std::string port;  ///< the server's HTTP port
-};
+namespace fw::client {
 
 /// @param[in]  content_type  "image/jpeg", "image/png" or "application/x-facewire-avatar"
 /// @param[in]  timeout_s     for the whole exchange (the server prepares a photo before it answers)

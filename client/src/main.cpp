@@ -1,17 +1,20 @@
 // facewire-client: the thin client. Renders faces from compact parameters;
 // links only codec, avatar/model and avatar/render (and Asio for the network).
+// The commands live in fw_client_core; this file gives them the sockets.
 #include <iostream>
 
 #include <CLI/CLI.hpp>
 
+#include "avatar_upload.hpp"
 #include "join_command.hpp"
 #include "render_command.hpp"
+#include "socket_transport.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"facewire thin client: render avatars, join rooms"};
   app.require_subcommand(1);
   fw::client::add_render_command(app);
-  fw::client::add_join_command(app);
+  fw::client::add_join_command(app, {fw::client::make_socket_transport, fw::client::upload_avatar});
 
   try {
     app.parse(argc, argv);

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include <boost/asio/post.hpp>
+#include <boost/asio/error.hpp>
 
 namespace fw::client {
 
@@ -27,14 +27,15 @@ bool refused_for_good(codec::CloseCode code) {
   }
 }
 
-constexpr auto kPingInterval = std::chrono::seconds(2);
-constexpr auto kResyncInterval = std::chrono::milliseconds(500);
-constexpr auto kHousekeeping = std::chrono::milliseconds(250);
-
 }  // namespace
 
-RoomSession::RoomSession(asio::io_context& io, SessionOptions options, RoomState& state)
-    : io_(io), options_(std::move(options)), state_(state), reconnect_timer_(io), housekeeping_timer_(io) {}
+RoomSession::RoomSession(asio::io_context& io, SessionOptions options, RoomState& state, TransportFactory transports)
+    : io_(io),
+      options_(std::move(options)),
+      state_(state),
+      transports_(std::move(transports)),
+      reconnect_timer_(io),
+      housekeeping_timer_(io) {}
 
 RoomSession::~RoomSession() = default;
 
@@ -45,7 +46,7 @@ std::chrono::milliseconds RoomSession::backoff(int failed_attempts) {
 
 void RoomSession::start() {
   connect();
-  tick_timers();
+  schedule_housekeeping();
 }
 
 void RoomSession::stop() {
@@ -53,7 +54,7 @@ void RoomSession::stop() {
   ++connection_serial_;
   reconnect_timer_.cancel();
   housekeeping_timer_.cancel();
-  if (channel_) channel_->close();
+  if (transport_) transport_->close();
 }
 
 void RoomSession::event(const std::string& text) {
@@ -65,11 +66,14 @@ std::uint64_t RoomSession::now_us() const {
       std::chrono::duration_cast<std::chrono::microseconds>(Clock::now().time_since_epoch()).count());
 }
 
+// ---------------------------------------------------------------------------
+// A connection's life.
+
 void RoomSession::connect() {
   if (stopped_) return;
-  channel_ = MessageChannel::make(io_, options_.url);
+  transport_ = transports_();
   const std::uint64_t serial = ++connection_serial_;
-  channel_->connect(kConnectTimeoutS, [this, serial](boost::system::error_code ec) {
+  transport_->connect(kConnectTimeoutS, [this, serial](boost::system::error_code ec) {
     if (serial != connection_serial_ || stopped_) return;
     on_connected(ec);
   });
@@ -77,16 +81,25 @@ void RoomSession::connect() {
 
 void RoomSession::on_connected(boost::system::error_code ec) {
   if (ec) return connection_lost("cannot connect: " + ec.message());
+  start_over();
+  say_hello();
+  read();
+}
+
+// Nothing of the last connection carries over but the avatars' packages
+// (the welcome decides which stay).
+void RoomSession::start_over() {
   {
     std::lock_guard lock(state_.mutex);
-    state_.joined = false;
-    state_.decoder = codec::RoomDecoder();
+    state_.connection_started();
   }
   packages_.clear();
-  clock_offset_us_.reset();
-  best_round_trip_us_ = UINT64_MAX;
+  server_clock_.reset();
   outbox_.clear();
   writing_ = false;
+}
+
+void RoomSession::say_hello() {
   codec::Hello hello;
   hello.room = options_.room;
   hello.name = options_.name;
@@ -95,39 +108,51 @@ void RoomSession::on_connected(boost::system::error_code ec) {
   hello.max_bps = options_.max_bps;
   hello.timestamps = options_.timestamps;
   hello.own_package = options_.own_package != nullptr;
-  std::vector<std::uint8_t> bytes;
-  codec::write_message(hello, bytes);
-  send(std::move(bytes));
-  read();
+  send_message(hello);
 }
 
 void RoomSession::read() {
   const std::uint64_t serial = connection_serial_;
-  channel_->read([this, serial](boost::system::error_code ec, std::span<const std::uint8_t> message) {
+  transport_->read([this, serial](boost::system::error_code ec, std::span<const std::uint8_t> message) {
     if (serial != connection_serial_ || stopped_) return;
     if (ec) return connection_lost(ec == asio::error::eof ? "the server closed the connection" : ec.message());
     {
       std::lock_guard lock(state_.mutex);
-      state_.stats.bytes_down(message.size() + channel_->framing_bytes(message.size(), false));
+      state_.stats.bytes_down(message.size() + transport_->framing_bytes(message.size(), false));
     }
     on_message(message);
     if (serial == connection_serial_ && !stopped_) read();
   });
 }
 
+void RoomSession::connection_lost(const std::string& why) {
+  if (stopped_) return;
+  ++connection_serial_;
+  if (transport_) transport_->close();
+  writing_ = false;
+  outbox_.clear();
+  {
+    std::lock_guard lock(state_.mutex);
+    state_.connection_lost();
+  }
+  ++failed_attempts_;
+  const auto wait = backoff(failed_attempts_);
+  event(why + "; reconnecting in " + std::to_string(wait.count()) + " ms");
+  reconnect_timer_.expires_after(wait);
+  reconnect_timer_.async_wait([this](boost::system::error_code ec) {
+    if (!ec) connect();
+  });
+}
+
+// ---------------------------------------------------------------------------
+// What comes down.
+
 void RoomSession::on_message(std::span<const std::uint8_t> message) {
   switch (codec::classify(message)) {
     case codec::MessageKind::session:
       return on_session_message(message);
-    case codec::MessageKind::stream_header: {
-      codec::StreamOptions stream;
-      const codec::DecodeError error = codec::read_stream_header(message, stream);
-      if (error != codec::DecodeError::ok)
-        return connection_lost("bad stream header from the server: " + std::string(codec::describe(error)));
-      std::lock_guard lock(state_.mutex);
-      state_.decoder = codec::RoomDecoder(stream);
-      return;
-    }
+    case codec::MessageKind::stream_header:
+      return on_stream_header(message);
     case codec::MessageKind::room_frame:
       return on_room_frame(message, nullptr);
     case codec::MessageKind::resync_request:
@@ -137,204 +162,150 @@ void RoomSession::on_message(std::span<const std::uint8_t> message) {
   }
 }
 
+void RoomSession::on_stream_header(std::span<const std::uint8_t> message) {
+  codec::StreamOptions stream;
+  const codec::DecodeError error = codec::read_stream_header(message, stream);
+  if (error != codec::DecodeError::ok)
+    return connection_lost("bad stream header from the server: " + std::string(codec::describe(error)));
+  std::lock_guard lock(state_.mutex);
+  state_.stream_started(stream);
+}
+
 void RoomSession::on_session_message(std::span<const std::uint8_t> message) {
   const codec::MessageType type = codec::session_type(message);
-  codec::MessageError error = codec::MessageError::ok;
-  switch (type) {
-    case codec::MessageType::welcome: {
-      codec::Welcome welcome;
-      if ((error = codec::read_message(message, welcome)) == codec::MessageError::ok) on_welcome(welcome);
-      break;
-    }
-    case codec::MessageType::presence: {
-      codec::Presence presence;
-      if ((error = codec::read_message(message, presence)) != codec::MessageError::ok) break;
-      std::lock_guard lock(state_.mutex);
-      const std::uint32_t id = presence.avatar.id;
-      if (presence.change == codec::Presence::Change::joined) {
-        state_.avatars[id].info = presence.avatar;
-        state_.record({"joined", presence.avatar.name, ""});
-        event(presence.avatar.name + " joined");
-      } else {
-        const std::string name = state_.name_of(id);
-        state_.avatars.erase(id);
-        state_.decoder.remove(id);
-        packages_.forget(id);
-        state_.record({"left", name, ""});
-        event(name + " left");
-      }
-      break;
-    }
-    case codec::MessageType::chat: {
-      codec::Chat chat;
-      if ((error = codec::read_message(message, chat)) != codec::MessageError::ok) break;
-      std::lock_guard lock(state_.mutex);
-      const std::string name = state_.name_of(chat.from);
-      state_.record({"chat", name, chat.text});
-      event(name + ": " + chat.text);
-      break;
-    }
-    case codec::MessageType::command_result: {
-      codec::CommandResult result;
-      if ((error = codec::read_message(message, result)) != codec::MessageError::ok) break;
-      if (!result.error.empty()) event("command refused: " + result.error);
-      break;
-    }
-    case codec::MessageType::package_chunk: {
-      codec::PackageChunk chunk;
-      if ((error = codec::read_message(message, chunk)) != codec::MessageError::ok) break;
-      std::string problem;
-      auto package = packages_.add(chunk, problem);
-      if (!problem.empty()) event(problem);
-      if (!package) break;
-      std::lock_guard lock(state_.mutex);
-      const auto it = state_.avatars.find(package->avatar);
-      if (it == state_.avatars.end()) break;
-      RoomAvatar& avatar = it->second;
-      // A late preview never replaces the full package.
-      if (avatar.package_quality == codec::PackageChunk::Quality::full &&
-          package->quality == codec::PackageChunk::Quality::preview)
-        break;
-      state_.stats.package(package->avatar, package->quality == codec::PackageChunk::Quality::full, Clock::now());
-      avatar.package = std::make_shared<const std::vector<std::uint8_t>>(std::move(package->bytes));
-      avatar.package_quality = package->quality;
-      ++avatar.package_serial;
-      break;
-    }
-    case codec::MessageType::pong: {
-      codec::Pong pong;
-      if ((error = codec::read_message(message, pong)) != codec::MessageError::ok) break;
-      const std::uint64_t now = now_us();
-      if (pong.client_time_us > now) break;
-      const std::uint64_t round_trip = now - pong.client_time_us;
-      // The server stamped the pong about half a round trip after the ping left.
-      if (round_trip <= best_round_trip_us_) {
-        best_round_trip_us_ = round_trip;
-        clock_offset_us_ = static_cast<std::int64_t>(pong.server_time_us) -
-                           static_cast<std::int64_t>(pong.client_time_us + round_trip / 2);
-      }
-      break;
-    }
-    case codec::MessageType::link_stats: {
-      codec::LinkStats link;
-      if ((error = codec::read_message(message, link)) != codec::MessageError::ok) break;
-      std::lock_guard lock(state_.mutex);
-      state_.server_link = link;
-      break;
-    }
-    case codec::MessageType::closing: {
-      codec::Closing closing;
-      if ((error = codec::read_message(message, closing)) == codec::MessageError::ok) on_closing(closing);
-      break;
-    }
-    case codec::MessageType::timed_room_frame: {
-      codec::TimedRoomFrame timed;
-      if ((error = codec::read_message(message, timed)) == codec::MessageError::ok) on_room_frame(timed.room_frame, &timed);
-      break;
-    }
-    default:
-      error = codec::MessageError::wrong_type;  // an upstream message coming down
-      break;
-  }
+  const codec::MessageError error = dispatch(type, message);
   if (error != codec::MessageError::ok)
     connection_lost("malformed message from the server (type " + std::to_string(static_cast<int>(type)) +
                     "): " + std::string(codec::describe(error)));
+}
+
+codec::MessageError RoomSession::dispatch(codec::MessageType type, std::span<const std::uint8_t> message) {
+  using codec::MessageType;
+  switch (type) {
+    case MessageType::welcome: return read_then(message, &RoomSession::on_welcome);
+    case MessageType::presence: return read_then(message, &RoomSession::on_presence);
+    case MessageType::chat: return read_then(message, &RoomSession::on_chat);
+    case MessageType::command_result: return read_then(message, &RoomSession::on_command_result);
+    case MessageType::package_chunk: return read_then(message, &RoomSession::on_package_chunk);
+    case MessageType::pong: return read_then(message, &RoomSession::on_pong);
+    case MessageType::link_stats: return read_then(message, &RoomSession::on_link_stats);
+    case MessageType::closing: return read_then(message, &RoomSession::on_closing);
+    case MessageType::timed_room_frame: return read_then(message, &RoomSession::on_timed_room_frame);
+    default: return codec::MessageError::wrong_type;  // an upstream message coming down
+  }
+}
+
+// Reads one message of its type and, when it is well formed, handles it.
+template <class Message>
+codec::MessageError RoomSession::read_then(std::span<const std::uint8_t> bytes,
+                                           void (RoomSession::*handle)(const Message&)) {
+  Message message;
+  const codec::MessageError error = codec::read_message(bytes, message);
+  if (error == codec::MessageError::ok) (this->*handle)(message);
+  return error;
 }
 
 void RoomSession::on_welcome(const codec::Welcome& welcome) {
   {
     std::lock_guard lock(state_.mutex);
     if (greeted_) state_.stats.reconnected();  // a welcome before this one: the link came back
-    state_.stats.joined(Clock::now());
-    state_.joined = true;
-    state_.you = welcome.you;
-    state_.room = welcome.room;
-    state_.tick_hz = std::max<int>(1, welcome.tick_hz);
-    // Keep the packages of avatars still here under the same asset: the
-    // server sends them again, but the face need not wait for them.
-    std::map<std::uint32_t, RoomAvatar> avatars;
-    for (const codec::AvatarInfo& info : welcome.avatars) {
-      RoomAvatar& avatar = avatars[info.id];
-      const auto old = state_.avatars.find(info.id);
-      if (old != state_.avatars.end() && old->second.info.asset == info.asset && !info.asset.empty()) avatar = old->second;
-      avatar.info = info;
-    }
-    state_.avatars = std::move(avatars);
-    // The own face: the package this client uploaded, there before any
-    // chunk could be (the server sends none of it back).
-    const auto own = state_.avatars.find(welcome.you);
-    if (options_.own_package && own != state_.avatars.end() && !own->second.package) {
-      own->second.package = options_.own_package;
-      own->second.package_quality = codec::PackageChunk::Quality::full;
-      ++own->second.package_serial;
-      state_.stats.package(welcome.you, true, Clock::now());
-    }
+    state_.welcomed(welcome, options_.own_package, Clock::now());
   }
   failed_attempts_ = 0;
   event("joined room " + welcome.room + " as avatar " + std::to_string(welcome.you) + " with " +
         std::to_string(welcome.avatars.size()) + " avatar(s) present");
+  greet_once();
+}
+
+// The --say lines and the --emote go out after the first welcome only, not
+// again after a reconnection.
+void RoomSession::greet_once() {
   if (greeted_) return;
   greeted_ = true;
   for (const std::string& line : options_.say) chat(line);
-  if (!options_.emote.empty()) {
-    codec::Command command;
-    command.request_id = ++command_serial_;
-    command.kind = codec::Command::Kind::express;
-    command.emotion = options_.emote;
-    command.intensity = 1.0f;
-    command.duration_ms = 3000;
-    std::vector<std::uint8_t> bytes;
-    codec::write_message(command, bytes);
-    send(std::move(bytes));
-  }
+  if (options_.emote.empty()) return;
+  codec::Command command;
+  command.request_id = ++command_serial_;
+  command.kind = codec::Command::Kind::express;
+  command.emotion = options_.emote;
+  command.intensity = 1.0f;
+  command.duration_ms = 3000;
+  send_message(command);
 }
 
-void RoomSession::chat(const std::string& text) {
-  codec::Chat chat;
-  chat.text = text;
-  std::vector<std::uint8_t> bytes;
-  codec::write_message(chat, bytes);
-  send(std::move(bytes));
+void RoomSession::on_presence(const codec::Presence& presence) {
+  std::lock_guard lock(state_.mutex);
+  if (presence.change == codec::Presence::Change::joined) {
+    state_.avatar_joined(presence.avatar);
+    event(presence.avatar.name + " joined");
+    return;
+  }
+  packages_.forget(presence.avatar.id);
+  event(state_.avatar_left(presence.avatar.id) + " left");
+}
+
+void RoomSession::on_chat(const codec::Chat& chat) {
+  std::lock_guard lock(state_.mutex);
+  const std::string name = state_.chat_line(chat);
+  event(name + ": " + chat.text);
+}
+
+void RoomSession::on_command_result(const codec::CommandResult& result) {
+  if (!result.error.empty()) event("command refused: " + result.error);
+}
+
+void RoomSession::on_package_chunk(const codec::PackageChunk& chunk) {
+  std::string problem;
+  auto package = packages_.add(chunk, problem);
+  if (!problem.empty()) event(problem);
+  if (!package) return;
+  std::lock_guard lock(state_.mutex);
+  state_.package_arrived(std::move(*package), Clock::now());
+}
+
+void RoomSession::on_pong(const codec::Pong& pong) { server_clock_.pong(pong, now_us()); }
+
+void RoomSession::on_link_stats(const codec::LinkStats& link) {
+  std::lock_guard lock(state_.mutex);
+  state_.server_link = link;
 }
 
 void RoomSession::on_closing(const codec::Closing& closing) {
   const std::string reason = closing.reason.empty() ? "no reason given" : closing.reason;
-  if (refused_for_good(closing.code)) {
-    {
-      std::lock_guard lock(state_.mutex);
-      state_.fatal_error = "the server refused this client: " + reason + " (closing code " +
-                           std::to_string(static_cast<int>(closing.code)) + ")";
-    }
-    event("server: " + reason);
-    stop();
-    return;
+  if (!refused_for_good(closing.code)) return connection_lost("the server closed the connection: " + reason);
+  {
+    std::lock_guard lock(state_.mutex);
+    state_.fatal_error = "the server refused this client: " + reason + " (closing code " +
+                         std::to_string(static_cast<int>(closing.code)) + ")";
   }
-  connection_lost("the server closed the connection: " + reason);
+  event("server: " + reason);
+  stop();
 }
+
+void RoomSession::on_timed_room_frame(const codec::TimedRoomFrame& timed) { on_room_frame(timed.room_frame, &timed); }
 
 void RoomSession::on_room_frame(std::span<const std::uint8_t> room_frame, const codec::TimedRoomFrame* timing) {
   const auto now = Clock::now();
   std::lock_guard lock(state_.mutex);
-  const codec::RoomDecoder::Result result = state_.decoder.decode(room_frame);
-  if (result.error != codec::DecodeError::ok) {
-    state_.stats.decode_error();
-    return;
-  }
-  bool any = false;
-  for (const auto& [id, error] : result.avatars) {
-    if (error != codec::DecodeError::ok) {
-      state_.stats.decode_error();
-      continue;
-    }
-    any = true;
-    state_.stats.frame(id, state_.name_of(id));
-    const auto it = state_.avatars.find(id);
-    if (it != state_.avatars.end()) it->second.last_frame_at = now;
-  }
-  if (any && timing && clock_offset_us_) {
-    const double client_tick_us = static_cast<double>(timing->server_time_us) - static_cast<double>(*clock_offset_us_);
-    state_.stats.latency_ms(std::max(0.0, (static_cast<double>(now_us()) - client_tick_us) / 1000.0));
-  }
+  const bool any = state_.decode_room_frame(room_frame, now);
+  if (!any || !timing) return;
+  if (const auto latency = server_clock_.elapsed_ms(timing->server_time_us, now_us())) state_.stats.latency_ms(*latency);
+}
+
+// ---------------------------------------------------------------------------
+// What goes up.
+
+void RoomSession::chat(const std::string& text) {
+  codec::Chat chat;
+  chat.text = text;
+  send_message(chat);
+}
+
+template <class Message>
+void RoomSession::send_message(const Message& message) {
+  std::vector<std::uint8_t> bytes;
+  codec::write_message(message, bytes);
+  send(std::move(bytes));
 }
 
 void RoomSession::send(std::vector<std::uint8_t> message) {
@@ -347,71 +318,61 @@ void RoomSession::send(std::vector<std::uint8_t> message) {
 }
 
 void RoomSession::write_next() {
-  if (writing_ || outbox_.empty() || !channel_) return;
+  if (writing_ || outbox_.empty() || !transport_) return;
   writing_ = true;
   const std::uint64_t serial = connection_serial_;
   const auto message = outbox_.front();
-  channel_->write(message, [this, serial, message](boost::system::error_code ec) {
+  transport_->write(message, [this, serial, message](boost::system::error_code ec) {
     if (serial != connection_serial_ || stopped_) return;
     writing_ = false;
     if (ec) return connection_lost("sending failed: " + ec.message());
     {
       std::lock_guard lock(state_.mutex);
-      state_.stats.bytes_up(message->size() + channel_->framing_bytes(message->size(), true));
+      state_.stats.bytes_up(message->size() + transport_->framing_bytes(message->size(), true));
     }
     outbox_.pop_front();
     write_next();
   });
 }
 
-void RoomSession::tick_timers() {
+void RoomSession::schedule_housekeeping() {
   if (stopped_) return;
-  housekeeping_timer_.expires_after(kHousekeeping);
+  housekeeping_timer_.expires_after(kHousekeepingInterval);
   housekeeping_timer_.async_wait([this](boost::system::error_code ec) {
     if (ec || stopped_) return;
-    std::vector<std::uint32_t> need_keys;
-    bool joined;
-    {
-      std::lock_guard lock(state_.mutex);
-      joined = state_.joined;
-      if (joined) need_keys = state_.decoder.needing_key_frames();
-    }
-    const auto now = Clock::now();
-    if (joined && now - last_ping_ >= kPingInterval) {
-      last_ping_ = now;
-      codec::Ping ping{++ping_nonce_, now_us()};
-      std::vector<std::uint8_t> bytes;
-      codec::write_message(ping, bytes);
-      send(std::move(bytes));
-    }
-    if (joined && !need_keys.empty() && now - last_resync_ >= kResyncInterval) {
-      last_resync_ = now;
-      if (need_keys.size() > codec::kMaxRoomAvatars) need_keys.resize(codec::kMaxRoomAvatars);
-      std::vector<std::uint8_t> bytes;
-      codec::write_resync_request(need_keys, bytes);
-      send(std::move(bytes));
-    }
-    tick_timers();
+    housekeeping();
+    schedule_housekeeping();
   });
 }
 
-void RoomSession::connection_lost(const std::string& why) {
-  if (stopped_) return;
-  ++connection_serial_;
-  if (channel_) channel_->close();
-  writing_ = false;
-  outbox_.clear();
+// While in the room: a ping now and then (the clock offset, and the server
+// wants to hear from a quiet client), and resync requests for decoders that
+// wait for a key frame.
+void RoomSession::housekeeping() {
+  std::vector<std::uint32_t> need_keys;
   {
     std::lock_guard lock(state_.mutex);
-    state_.joined = false;
+    if (!state_.joined) return;
+    need_keys = state_.decoder.needing_key_frames();
   }
-  ++failed_attempts_;
-  const auto wait = backoff(failed_attempts_);
-  event(why + "; reconnecting in " + std::to_string(wait.count()) + " ms");
-  reconnect_timer_.expires_after(wait);
-  reconnect_timer_.async_wait([this](boost::system::error_code ec) {
-    if (!ec) connect();
-  });
+  const auto now = Clock::now();
+  ping_when_due(now);
+  request_key_frames_when_due(now, std::move(need_keys));
+}
+
+void RoomSession::ping_when_due(Clock::time_point now) {
+  if (now - last_ping_ < kPingInterval) return;
+  last_ping_ = now;
+  send_message(codec::Ping{++ping_nonce_, now_us()});
+}
+
+void RoomSession::request_key_frames_when_due(Clock::time_point now, std::vector<std::uint32_t> avatars) {
+  if (avatars.empty() || now - last_resync_ < kResyncInterval) return;
+  last_resync_ = now;
+  if (avatars.size() > codec::kMaxRoomAvatars) avatars.resize(codec::kMaxRoomAvatars);
+  std::vector<std::uint8_t> bytes;
+  codec::write_resync_request(avatars, bytes);
+  send(std::move(bytes));
 }
 
 }  // namespace fw::client

@@ -16,4 +16,84 @@ std::vector<AvatarFace> RoomState::faces(std::chrono::steady_clock::time_point n
   return out;
 }
 
+void RoomState::connection_started() {
+  joined = false;
+  decoder = codec::RoomDecoder();
+}
+
+void RoomState::welcomed(const codec::Welcome& welcome, const PackageBytes& own_package, Clock::time_point now) {
+  stats.joined(now);
+  joined = true;
+  you = welcome.you;
+  room = welcome.room;
+  tick_hz = std::max<int>(1, welcome.tick_hz);
+  std::map<std::uint32_t, RoomAvatar> present;
+  for (const codec::AvatarInfo& info : welcome.avatars) {
+    RoomAvatar& avatar = present[info.id];
+    const auto old = avatars.find(info.id);
+    if (old != avatars.end() && old->second.info.asset == info.asset && !info.asset.empty()) avatar = old->second;
+    avatar.info = info;
+  }
+  avatars = std::move(present);
+  const auto own = avatars.find(welcome.you);
+  if (own_package && own != avatars.end() && !own->second.package) {
+    own->second.package = own_package;
+    own->second.package_quality = codec::PackageChunk::Quality::full;
+    ++own->second.package_serial;
+    stats.package(welcome.you, true, now);
+  }
+}
+
+void RoomState::avatar_joined(const codec::AvatarInfo& info) {
+  avatars[info.id].info = info;
+  record({"joined", info.name, ""});
+}
+
+std::string RoomState::avatar_left(std::uint32_t avatar) {
+  std::string name = name_of(avatar);
+  avatars.erase(avatar);
+  decoder.remove(avatar);
+  record({"left", name, ""});
+  return name;
+}
+
+std::string RoomState::chat_line(const codec::Chat& chat) {
+  std::string name = name_of(chat.from);
+  record({"chat", name, chat.text});
+  return name;
+}
+
+bool RoomState::package_arrived(AssembledPackage package, Clock::time_point now) {
+  using Quality = codec::PackageChunk::Quality;
+  const auto it = avatars.find(package.avatar);
+  if (it == avatars.end()) return false;
+  RoomAvatar& avatar = it->second;
+  if (avatar.package_quality == Quality::full && package.quality == Quality::preview) return false;
+  stats.package(package.avatar, package.quality == Quality::full, now);
+  avatar.package = std::make_shared<const std::vector<std::uint8_t>>(std::move(package.bytes));
+  avatar.package_quality = package.quality;
+  ++avatar.package_serial;
+  return true;
+}
+
+bool RoomState::decode_room_frame(std::span<const std::uint8_t> room_frame, Clock::time_point now) {
+  const codec::RoomDecoder::Result result = decoder.decode(room_frame);
+  if (result.error != codec::DecodeError::ok) {
+    stats.decode_error();
+    return false;
+  }
+  bool any = false;
+  for (const auto& [id, error] : result.avatars) {
+    if (error != codec::DecodeError::ok) {
+      stats.decode_error();
+      continue;
+    }
+    any = true;
+    stats.frame(id, name_of(id));
+    const auto it = avatars.find(id);
+    if (it != avatars.end()) it->second.last_frame_at = now;
+  }
+  return any;
+}
+
 }  // namespace fw::client

@@ -2,7 +2,9 @@
 // What the network side knows of the room, shared with the render loop:
 // the avatars, their decoders, their packages, the link statistics and the
 // room's events. One mutex guards all of it; both sides hold it briefly
-// (decoding a room frame, reading the faces of one output frame).
+// (decoding a room frame, reading the faces of one output frame). The
+// session (room_session.hpp) reads the protocol and calls the changes
+// below; what they do to the room is decided here.
 #include <chrono>
 #include <cstdint>
 #include <deque>
@@ -10,12 +12,14 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "fw/codec/codec.hpp"
 #include "fw/codec/messages.hpp"
 #include "link_stats.hpp"
+#include "package_assembler.hpp"
 #include "room_view.hpp"
 
 namespace fw::client {
@@ -55,6 +59,8 @@ class RoomState {
   std::optional<std::string> fatal_error;
 
   static constexpr std::size_t kMaxEvents = 200;
+  using Clock = std::chrono::steady_clock;
+  using PackageBytes = std::shared_ptr<const std::vector<std::uint8_t>>;
 
   void record(RoomEventRecord event) {
     events.push_back(std::move(event));
@@ -64,6 +70,34 @@ class RoomState {
     const auto it = avatars.find(avatar);
     return it == avatars.end() ? "avatar " + std::to_string(avatar) : it->second.info.name;
   }
+
+  // Changes, made by the session with `mutex` held.
+
+  /// A new connection: not joined until its welcome; its stream starts
+  /// with a fresh decoder.
+  void connection_started();
+  /// The connection's codec stream header: a decoder for its options.
+  void stream_started(const codec::StreamOptions& options) { decoder = codec::RoomDecoder(options); }
+  /// The connection ended: no longer in the room (the avatars stay known).
+  void connection_lost() { joined = false; }
+  /// The server's welcome: the room and its avatars. An avatar still here
+  /// under the same asset keeps its package (the server sends it again,
+  /// but the face need not wait for it); `own_package`, when the client
+  /// uploaded it, is its own face at once (the server sends none back).
+  void welcomed(const codec::Welcome& welcome, const PackageBytes& own_package, Clock::time_point now);
+  /// Presence: an avatar joined (recorded as an event).
+  void avatar_joined(const codec::AvatarInfo& info);
+  /// Presence: an avatar left; its decoder goes with it. Returns its name.
+  std::string avatar_left(std::uint32_t avatar);
+  /// A chat line (recorded as an event). Returns the writer's name.
+  std::string chat_line(const codec::Chat& chat);
+  /// A whole package: the avatar's face from now on. False when it is
+  /// ignored: the avatar is not in the room, or a late preview would
+  /// replace the full package.
+  bool package_arrived(AssembledPackage package, Clock::time_point now);
+  /// Decodes a room frame into the avatars' decoders, counting frames and
+  /// errors. Returns whether at least one avatar's frame decoded.
+  bool decode_room_frame(std::span<const std::uint8_t> room_frame, Clock::time_point now);
 
   /// Each avatar's face now (extrapolated from its last frame), in seat
   /// order (avatar id: the order they joined in). Avatars none of whose

@@ -1,4 +1,4 @@
-#include "message_channel.hpp"
+#include "socket_transport.hpp"
 
 #include <array>
 
@@ -19,9 +19,9 @@ namespace beast = boost::beast;
 namespace websocket = beast::websocket;
 using tcp = asio::ip::tcp;
 
-class WebSocketChannel : public MessageChannel {
+class WebSocketTransport : public MessageTransport {
  public:
-  WebSocketChannel(asio::io_context& io, ServerUrl url) : url_(std::move(url)), resolver_(io), ws_(io) {}
+  WebSocketTransport(asio::io_context& io, ServerUrl url) : url_(std::move(url)), resolver_(io), ws_(io) {}
 
   void connect(int timeout_s, Done done) override {
     resolver_.async_resolve(url_.host, url_.port, [this, self = shared_from_this(), timeout_s, done](boost::system::error_code ec, tcp::resolver::results_type results) {
@@ -29,19 +29,7 @@ class WebSocketChannel : public MessageChannel {
       beast::get_lowest_layer(ws_).expires_after(std::chrono::seconds(timeout_s));
       beast::get_lowest_layer(ws_).async_connect(results, [this, self = shared_from_this(), done](boost::system::error_code connect_ec, const tcp::endpoint&) {
         if (connect_ec) return done(connect_ec);
-        beast::get_lowest_layer(ws_).socket().set_option(tcp::no_delay(true));
-        // From here on Beast's own timers: the handshake's, and an idle
-        // limit with keep-alive pings, so a dead link is noticed.
-        beast::get_lowest_layer(ws_).expires_never();
-        websocket::stream_base::timeout timeouts = websocket::stream_base::timeout::suggested(beast::role_type::client);
-        timeouts.idle_timeout = std::chrono::seconds(20);
-        timeouts.keep_alive_pings = true;
-        ws_.set_option(timeouts);
-        ws_.set_option(websocket::stream_base::decorator([](websocket::request_type& request) {
-          request.set(beast::http::field::user_agent, "facewire-client");
-        }));
-        ws_.read_message_max(codec::kMaxDownstreamMessageBytes);
-        ws_.binary(true);
+        configure_stream();
         ws_.async_handshake(url_.host + ":" + url_.port, url_.path, [done](boost::system::error_code handshake_ec) {
           done(handshake_ec);
         });
@@ -75,15 +63,32 @@ class WebSocketChannel : public MessageChannel {
   }
 
  private:
+  // Once the socket is connected: from here on Beast's own timers (the
+  // handshake's, and an idle limit with keep-alive pings, so a dead link is
+  // noticed), binary messages up to the protocol's limit.
+  void configure_stream() {
+    beast::get_lowest_layer(ws_).socket().set_option(tcp::no_delay(true));
+    beast::get_lowest_layer(ws_).expires_never();
+    websocket::stream_base::timeout timeouts = websocket::stream_base::timeout::suggested(beast::role_type::client);
+    timeouts.idle_timeout = std::chrono::seconds(20);
+    timeouts.keep_alive_pings = true;
+    ws_.set_option(timeouts);
+    ws_.set_option(websocket::stream_base::decorator([](websocket::request_type& request) {
+      request.set(beast::http::field::user_agent, "facewire-client");
+    }));
+    ws_.read_message_max(codec::kMaxDownstreamMessageBytes);
+    ws_.binary(true);
+  }
+
   ServerUrl url_;
   tcp::resolver resolver_;
   websocket::stream<beast::tcp_stream> ws_;
   beast::flat_buffer buffer_;
 };
 
-class TcpChannel : public MessageChannel {
+class TcpTransport : public MessageTransport {
  public:
-  TcpChannel(asio::io_context& io, ServerUrl url)
+  TcpTransport(asio::io_context& io, ServerUrl url)
       : url_(std::move(url)), resolver_(io), stream_(io), deframer_(codec::kMaxDownstreamMessageBytes) {}
 
   void connect(int timeout_s, Done done) override {
@@ -143,9 +148,9 @@ class TcpChannel : public MessageChannel {
 
 }  // namespace
 
-std::shared_ptr<MessageChannel> MessageChannel::make(asio::io_context& io, const ServerUrl& url) {
-  if (url.scheme == ServerUrl::Scheme::tcp) return std::make_shared<TcpChannel>(io, url);
-  return std::make_shared<WebSocketChannel>(io, url);
+std::shared_ptr<MessageTransport> make_socket_transport(asio::io_context& io, const ServerUrl& url) {
+  if (url.scheme == ServerUrl::Scheme::tcp) return std::make_shared<TcpTransport>(io, url);
+  return std::make_shared<WebSocketTransport>(io, url);
 }
 
 }  // namespace fw::client

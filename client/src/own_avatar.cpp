@@ -1,0 +1,85 @@
+#include "own_avatar.hpp"
+
+#include "fw/model/avatar_package.hpp"
+#include "fw/model/file_io.hpp"
+#include "photo_downsizer.hpp"
+
+namespace fw::client {
+namespace {
+
+bool read_photo(const std::string& path, OwnAvatar& avatar, std::string& error) {
+  std::vector<std::uint8_t> bytes;
+  if (!model::read_file(path, kMaxPhotoFileBytes, bytes, error)) {
+    error = "--photo: " + error;
+    return false;
+  }
+  DownsizedPhoto photo;
+  if (!downsize_photo(bytes, photo, error)) {
+    error = "--photo " + path + ": " + error;
+    return false;
+  }
+  avatar.bytes = std::move(photo.jpeg);
+  avatar.content_type = "image/jpeg";
+  return true;
+}
+
+bool read_package(const std::string& path, OwnAvatar& avatar, std::string& error) {
+  if (!model::read_file(path, model::kMaxPackageBytes, avatar.bytes, error)) {
+    error = "--avatar: " + error;
+    return false;
+  }
+  model::AvatarPackage package;
+  if (!model::parse_avatar_package(avatar.bytes, package, error)) {
+    error = "--avatar " + path + ": " + error;
+    return false;
+  }
+  avatar.content_type = "application/x-facewire-avatar";
+  return true;
+}
+
+}  // namespace
+
+bool upload_target(const JoinArgs& args, const ServerUrl& url, UploadTarget& target, std::string& error) {
+  if (!args.api.empty()) {
+    ServerUrl api;
+    std::string as_ws = args.api;
+    if (as_ws.rfind("http://", 0) == 0) as_ws.replace(0, 7, "ws://");
+    if (!parse_server_url(as_ws, api, error) || api.scheme != ServerUrl::Scheme::websocket) {
+      error = "--api must look like http://HOST:PORT (the server's HTTP port), not '" + args.api + "'";
+      return false;
+    }
+    target = {api.host, api.port};
+    return true;
+  }
+  if (url.scheme == ServerUrl::Scheme::tcp) {
+    error = "a tcp:// URL names the stream port only: say where the server's HTTP port is with --api "
+            "http://HOST:PORT so that the photo or package can be uploaded";
+    return false;
+  }
+  target = {url.host, url.port};
+  return true;
+}
+
+bool prepare_own_avatar(const JoinArgs& args, OwnAvatar& avatar, std::string& error) {
+  return args.photo.empty() ? read_package(args.avatar, avatar, error) : read_photo(args.photo, avatar, error);
+}
+
+int upload_timeout_s(std::size_t bytes, double max_kbps) {
+  return 60 + static_cast<int>(max_kbps > 0 ? static_cast<double>(bytes) * 8 / (max_kbps * 1000) : 0);
+}
+
+bool upload_own_avatar(const JoinArgs& args, const ServerUrl& url, const AvatarUploader& uploader,
+                       UploadedAvatar& uploaded, std::string& error) {
+  if (args.photo.empty() && args.avatar.empty()) return true;
+  UploadTarget target;
+  OwnAvatar avatar;
+  if (!upload_target(args, url, target, error) || !prepare_own_avatar(args, avatar, error)) return false;
+  const int timeout_s = upload_timeout_s(avatar.bytes.size(), args.max_kbps);
+  if (!uploader(target, avatar.content_type, avatar.bytes, timeout_s, uploaded.asset, error)) return false;
+  uploaded.bytes = avatar.bytes.size();
+  if (avatar.is_package())
+    uploaded.own_package = std::make_shared<const std::vector<std::uint8_t>>(std::move(avatar.bytes));
+  return true;
+}
+
+}  // namespace fw::client

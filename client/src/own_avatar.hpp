@@ -1,0 +1,65 @@
+#pragma once
+// The face the joining person brings (`--photo` or `--avatar`) and its way
+// to the server (PROTOCOL.md section 8, POST /api/avatars): a photo made
+// small for a slow link, or a package checked before it is sent; where the
+// upload goes; how long it may take. The HTTP exchange itself is an
+// AvatarUploader (avatar_upload.hpp in facewire-client); the answer's asset
+// id goes into hello.
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "join_arguments.hpp"
+#include "server_url.hpp"
+
+namespace fw::client {
+
+struct UploadTarget {
+  std::string host;
+  std::string port;  ///< the server's HTTP port
+};
+
+/// Posts `body` to the target's /api/avatars within `timeout_s`; true and
+/// the asset id, or false and what went wrong (the server's explanation).
+using AvatarUploader = std::function<bool(const UploadTarget& target, const std::string& content_type,
+                                          std::span<const std::uint8_t> body, int timeout_s, std::string& asset,
+                                          std::string& error)>;
+
+/// What goes up: the downsized photo, or the package as it was read.
+struct OwnAvatar {
+  std::string content_type;  ///< "image/jpeg" or "application/x-facewire-avatar"
+  std::vector<std::uint8_t> bytes;
+  bool is_package() const { return content_type == "application/x-facewire-avatar"; }
+};
+
+/// What came of the upload.
+struct UploadedAvatar {
+  std::string asset;         ///< for hello; empty: the server makes a face for the name
+  std::size_t bytes = 0;     ///< uploaded
+  /// The package, when one was uploaded: the client draws its own face from it.
+  std::shared_ptr<const std::vector<std::uint8_t>> own_package;
+};
+
+/// Where uploads go: --api, or the ws:// URL's own host and port (the
+/// WebSocket shares the HTTP port). A tcp:// URL needs --api.
+bool upload_target(const JoinArgs& args, const ServerUrl& url, UploadTarget& target, std::string& error);
+
+/// Reads --photo (decoded, downsized, re-encoded as JPEG) or --avatar (a
+/// package that must parse). @return false and `error` saying what to change.
+bool prepare_own_avatar(const JoinArgs& args, OwnAvatar& avatar, std::string& error);
+
+/// Seconds an upload of `bytes` may take: a photo is prepared on the server
+/// before it answers, and a slow link (`max_kbps`, 0: unknown) needs its
+/// time for the bytes.
+int upload_timeout_s(std::size_t bytes, double max_kbps);
+
+/// The whole step: with neither --photo nor --avatar nothing is uploaded
+/// (and `uploaded` stays empty); else prepare, then upload through `uploader`.
+bool upload_own_avatar(const JoinArgs& args, const ServerUrl& url, const AvatarUploader& uploader,
+                       UploadedAvatar& uploaded, std::string& error);
+
+}  // namespace fw::client

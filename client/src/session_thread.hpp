@@ -1,0 +1,39 @@
+#pragma once
+// The RoomSession on a network thread of its own, beside `join`'s render
+// loop: it starts at construction and runs until stop() (or destruction),
+// which closes the connection and joins the thread. The two threads share
+// only the RoomState, under its mutex.
+#include <functional>
+#include <memory>
+#include <thread>
+
+#include <boost/asio/io_context.hpp>
+
+#include "message_transport.hpp"
+#include "room_session.hpp"
+#include "room_state.hpp"
+
+namespace fw::client {
+
+class SessionThread {
+ public:
+  /// Opens a transport on the thread's io_context (each connection attempt).
+  using OpenTransport = std::function<std::shared_ptr<MessageTransport>(boost::asio::io_context& io)>;
+
+  SessionThread(SessionOptions options, RoomState& state, OpenTransport open_transport);
+  ~SessionThread();
+  SessionThread(const SessionThread&) = delete;
+  SessionThread& operator=(const SessionThread&) = delete;
+
+  /// Closes the session's connection, gives its handlers a moment, then
+  /// stops the io_context and joins the thread. Calls after the first do nothing.
+  void stop();
+
+ private:
+  boost::asio::io_context io_;
+  OpenTransport open_transport_;
+  RoomSession session_;
+  std::thread thread_;
+};
+
+}  // namespace fw::client

@@ -1,0 +1,104 @@
+#include "join_arguments.hpp"
+
+#include <gtest/gtest.h>
+
+namespace fw::client {
+namespace {
+
+JoinArgs valid_args() {
+  JoinArgs args;
+  args.url = "ws://127.0.0.1:8080/";
+  args.room = "lobby";
+  args.name = "Ada L.";
+  return args;
+}
+
+std::string plan_error(const JoinArgs& args) {
+  JoinPlan plan;
+  std::string error;
+  EXPECT_FALSE(plan_join(args, plan, error));
+  return error;
+}
+
+TEST(JoinArguments, APlanHasTheServerAndTheFrameSize) {
+  JoinArgs args = valid_args();
+  args.size = "320x180";
+  args.samples = 4;
+  JoinPlan plan;
+  std::string error;
+  ASSERT_TRUE(plan_join(args, plan, error)) << error;
+  EXPECT_EQ(plan.url.host, "127.0.0.1");
+  EXPECT_EQ(plan.url.port, "8080");
+  EXPECT_EQ(plan.render.width, 320);
+  EXPECT_EQ(plan.render.height, 180);
+  EXPECT_EQ(plan.render.samples, 4);
+}
+
+TEST(JoinArguments, SaysWhichFlagIsWrong) {
+  JoinArgs args = valid_args();
+  args.url = "http://example.org";
+  EXPECT_NE(plan_error(args).find("only ws:// and tcp://"), std::string::npos);
+  args = valid_args();
+  args.room = "no spaces";
+  EXPECT_EQ(plan_error(args).rfind("--room must be 1..64 characters", 0), 0u);
+  args = valid_args();
+  args.name = "tab\there";
+  EXPECT_EQ(plan_error(args).rfind("--name must be", 0), 0u);
+  args = valid_args();
+  args.say = {"fine", ""};
+  EXPECT_EQ(plan_error(args).rfind("--say: a chat line holds 1..500 bytes", 0), 0u);
+  args = valid_args();
+  args.token = std::string(513, 't');
+  EXPECT_EQ(plan_error(args).rfind("--token", 0), 0u);
+  args = valid_args();
+  args.size = "640x";
+  EXPECT_EQ(plan_error(args).rfind("--size must look like 640x360", 0), 0u);
+  args.size = "8x8";
+  EXPECT_EQ(plan_error(args), "--size: width and height must each be 16..4096 pixels");
+}
+
+TEST(JoinArguments, AFrameSizeIsTwoWholeNumbersAroundAnX) {
+  int width = 0, height = 0;
+  EXPECT_TRUE(parse_frame_size("640x360", width, height));
+  EXPECT_EQ(width, 640);
+  EXPECT_EQ(height, 360);
+  for (const char* bad : {"640", "x360", "640x360px", "6.4x3", "640X360", "axb", ""})
+    EXPECT_FALSE(parse_frame_size(bad, width, height)) << bad;
+  EXPECT_EQ(width, 640) << "untouched on failure";
+}
+
+TEST(JoinArguments, TimestampsAreLeftOffOnSlowLinksUnlessAskedFor) {
+  JoinArgs args = valid_args();
+  EXPECT_TRUE(wants_timestamps(args)) << "the server's default budget";
+  args.max_kbps = 9.6;
+  EXPECT_FALSE(wants_timestamps(args));
+  args.timestamps = "on";
+  EXPECT_TRUE(wants_timestamps(args));
+  args.max_kbps = 64;
+  args.timestamps = "off";
+  EXPECT_FALSE(wants_timestamps(args));
+  args.timestamps = "auto";
+  EXPECT_TRUE(wants_timestamps(args));
+}
+
+TEST(JoinArguments, TheSessionGetsTheRoomTheFaceAndTheBudget) {
+  JoinArgs args = valid_args();
+  args.max_kbps = 9.6;
+  args.token = "fw1.x";
+  args.say = {"hi"};
+  args.emote = "joy";
+  const auto own = std::make_shared<const std::vector<std::uint8_t>>(std::vector<std::uint8_t>{1});
+  const SessionOptions options = session_options(args, "asset7", own);
+  EXPECT_EQ(options.room, "lobby");
+  EXPECT_EQ(options.name, "Ada L.");
+  EXPECT_EQ(options.avatar_asset, "asset7");
+  EXPECT_EQ(options.own_package, own);
+  EXPECT_EQ(options.token, "fw1.x");
+  EXPECT_EQ(options.max_bps, 9600u);
+  EXPECT_FALSE(options.timestamps);
+  EXPECT_EQ(options.say, std::vector<std::string>{"hi"});
+  EXPECT_EQ(options.emote, "joy");
+}
+
+}  // namespace
+}  // namespace fw::client
