@@ -1,4 +1,4 @@
-#include "byte_reader.hpp"
+#include "fw/codec/byte_reader.hpp"
 
 #include <cstring>
 
@@ -20,9 +20,14 @@ std::uint16_t ByteReader::u16_le() {
 
 std::int16_t ByteReader::i16_le() { return static_cast<std::int16_t>(u16_le()); }
 
+std::uint32_t ByteReader::u32_le() {
+  std::uint32_t value = 0;
+  for (int i = 0; i < 4; ++i) value |= static_cast<std::uint32_t>(u8()) << (8 * i);
+  return failed_ ? 0 : value;  // no half-read value
+}
+
 float ByteReader::f32_le() {
-  std::uint32_t bits = 0;
-  for (int i = 0; i < 4; ++i) bits |= static_cast<std::uint32_t>(u8()) << (8 * i);
+  const std::uint32_t bits = u32_le();
   float value = 0;
   std::memcpy(&value, &bits, sizeof value);
   return value;

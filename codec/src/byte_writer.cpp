@@ -1,4 +1,4 @@
-#include "byte_writer.hpp"
+#include "fw/codec/byte_writer.hpp"
 
 #include <bit>
 #include <cstring>
@@ -12,10 +12,14 @@ void ByteWriter::u16_le(std::uint16_t value) {
 
 void ByteWriter::i16_le(std::int16_t value) { u16_le(static_cast<std::uint16_t>(value)); }
 
+void ByteWriter::u32_le(std::uint32_t value) {
+  for (int i = 0; i < 4; ++i) out_.push_back(static_cast<std::uint8_t>((value >> (8 * i)) & 0xFF));
+}
+
 void ByteWriter::f32_le(float value) {
   std::uint32_t bits = 0;
-  std::memcpy(&bits, &value, sizeof bits);  // the IEEE-754 pattern, independent of host order below
-  for (int i = 0; i < 4; ++i) out_.push_back(static_cast<std::uint8_t>((bits >> (8 * i)) & 0xFF));
+  std::memcpy(&bits, &value, sizeof bits);  // the IEEE-754 pattern, independent of host order in u32_le
+  u32_le(bits);
 }
 
 void ByteWriter::varint(std::uint32_t value) {

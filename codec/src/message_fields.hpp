@@ -7,8 +7,8 @@
 #include <string_view>
 #include <vector>
 
-#include "byte_reader.hpp"
-#include "byte_writer.hpp"
+#include "fw/codec/byte_reader.hpp"
+#include "fw/codec/byte_writer.hpp"
 #include "fw/codec/messages.hpp"
 
 namespace fw::codec::message_fields {

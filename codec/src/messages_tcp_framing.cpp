@@ -1,7 +1,7 @@
 // The length prefix of messages on TCP (server/PROTOCOL.md, "Framing").
 #include <cassert>
 
-#include "byte_writer.hpp"
+#include "fw/codec/byte_writer.hpp"
 #include "fw/codec/messages.hpp"
 
 namespace fw::codec {

@@ -2,9 +2,9 @@
 #include <algorithm>
 #include <cassert>
 
-#include "byte_reader.hpp"
-#include "byte_writer.hpp"
 #include "frame_writer.hpp"
+#include "fw/codec/byte_reader.hpp"
+#include "fw/codec/byte_writer.hpp"
 
 namespace fw::codec {
 namespace {

@@ -1,9 +1,9 @@
 // The stream header message (FORMAT.md, "Stream header").
 #include <cstring>
 
-#include "byte_reader.hpp"
-#include "byte_writer.hpp"
 #include "frame_writer.hpp"
+#include "fw/codec/byte_reader.hpp"
+#include "fw/codec/byte_writer.hpp"
 
 namespace fw::codec {
 namespace {

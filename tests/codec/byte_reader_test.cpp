@@ -1,10 +1,10 @@
-#include "byte_reader.hpp"
+#include "fw/codec/byte_reader.hpp"
 
 #include <vector>
 
 #include <gtest/gtest.h>
 
-#include "byte_writer.hpp"
+#include "fw/codec/byte_writer.hpp"
 
 namespace fw::codec {
 namespace {
@@ -16,6 +16,7 @@ TEST(ByteReader, ReadsWhatTheWriterWrote) {
   w.u16_le(0xBEEF);
   w.i16_le(-1234);
   w.f32_le(-0.125f);
+  w.u32_le(0xDEADBEEFu);
   w.varint(0);
   w.varint(1u << 20);
   ByteReader r(bytes);
@@ -23,10 +24,20 @@ TEST(ByteReader, ReadsWhatTheWriterWrote) {
   EXPECT_EQ(r.u16_le(), 0xBEEF);
   EXPECT_EQ(r.i16_le(), -1234);
   EXPECT_EQ(r.f32_le(), -0.125f);
+  EXPECT_EQ(r.u32_le(), 0xDEADBEEFu);
   EXPECT_EQ(r.varint(), 0u);
   EXPECT_EQ(r.varint(), 1u << 20);
   EXPECT_FALSE(r.failed());
   EXPECT_EQ(r.remaining(), 0u);
+}
+
+TEST(ByteReader, ReadsU32LittleEndian) {
+  const std::vector<std::uint8_t> bytes = {0x78, 0x56, 0x34, 0x12, 0xFF, 0xFF, 0xFF};
+  ByteReader r(bytes);
+  EXPECT_EQ(r.u32_le(), 0x12345678u);
+  EXPECT_FALSE(r.failed());
+  EXPECT_EQ(r.u32_le(), 0u) << "three bytes left: past the end reads 0";
+  EXPECT_TRUE(r.failed());
 }
 
 TEST(ByteReader, AReadPastTheEndFailsAndStaysFailed) {

@@ -1,4 +1,4 @@
-#include "byte_writer.hpp"
+#include "fw/codec/byte_writer.hpp"
 
 #include <vector>
 
@@ -14,7 +14,9 @@ TEST(ByteWriter, WritesLittleEndianFields) {
   w.u16_le(0x1234);
   w.i16_le(-2);
   w.f32_le(1.0f);
-  EXPECT_EQ(out, (std::vector<std::uint8_t>{0xAA, 1, 0x34, 0x12, 0xFE, 0xFF, 0x00, 0x00, 0x80, 0x3F}));
+  w.u32_le(0x12345678u);
+  EXPECT_EQ(out, (std::vector<std::uint8_t>{0xAA, 1, 0x34, 0x12, 0xFE, 0xFF, 0x00, 0x00, 0x80, 0x3F, 0x78, 0x56, 0x34,
+                                            0x12}));
 }
 
 TEST(ByteWriter, WritesMinimalLeb128Varints) {

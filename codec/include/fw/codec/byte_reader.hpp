@@ -1,7 +1,9 @@
 #pragma once
 // Byte-aligned input with a sticky error flag: a read past the end returns 0
 // and marks the reader failed, so a parser reads its fields and checks
-// failed() once instead of after every field.
+// failed() once instead of after every field. Little-endian. Public so that
+// every parser of outside bytes (the codec's messages, avatar/behavior's
+// scene files) reads through the same bounds checks.
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -15,6 +17,7 @@ class ByteReader {
   std::uint8_t u8();
   std::uint16_t u16_le();
   std::int16_t i16_le();
+  std::uint32_t u32_le();
   float f32_le();
   /// Unsigned LEB128 of at most `max_bytes` bytes (1 .. 5); a longer one, an
   /// overlong one (a final 0x00 byte after the first), or one whose value

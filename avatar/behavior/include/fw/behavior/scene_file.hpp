@@ -8,6 +8,7 @@
 // scene with nothing version 2 adds is still written as version 1.
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,8 @@
 
 namespace fw::behavior {
 
+// What a scene file may hold; a reader refuses more before it allocates.
+inline constexpr int kMaxSceneFps = 240;
 inline constexpr std::size_t kMaxSceneAvatars = 64;
 inline constexpr std::size_t kMaxSceneTicks = 30 * 3600;  ///< an hour at 30 fps
 inline constexpr std::size_t kMaxSceneEvents = 1'000'000;
@@ -54,7 +57,17 @@ struct Scene {
 bool write_scene(const Scene& scene, const std::string& path, std::string& error);
 /// Reads a scene of version 1 or 2; its name is the file name without the
 /// extension. Every count is checked against the limits and the file size
-/// before anything is allocated.
+/// before anything is allocated; `error` names the file and says what was
+/// wrong at which byte.
 bool read_scene(const std::string& path, Scene& scene, std::string& error);
+
+/// The bytes of the scene file for `scene` (version 1 when it carries
+/// nothing of version 2), appended to `out`; false (with `error`) when the
+/// scene is outside the limits or does not add up.
+bool write_scene_bytes(const Scene& scene, std::vector<std::uint8_t>& out, std::string& error);
+/// Parses the whole of a scene file (`scene.name` is left empty). On
+/// failure `scene` is untouched and `error` says what was wrong and at
+/// which byte. Any bytes at all are safe to pass (tests/fuzz/scene_file_fuzz).
+bool read_scene_bytes(std::span<const std::uint8_t> bytes, Scene& scene, std::string& error);
 
 }  // namespace fw::behavior
