@@ -1,5 +1,8 @@
 #include "client_session.hpp"
 
+#include <algorithm>
+#include <sstream>
+
 #include <boost/asio/post.hpp>
 #include <spdlog/spdlog.h>
 
@@ -151,15 +154,22 @@ void ClientSession::note_received(std::size_t bytes) {
   context_.metrics.bytes_received.fetch_add(bytes, std::memory_order_relaxed);
 }
 
-void ClientSession::on_message(std::span<const std::uint8_t> message) {
-  if (state_ == State::closing || state_ == State::closed) return;
-  last_heard_ = std::chrono::steady_clock::now();
-  const auto now = last_heard_;
+void ClientSession::refill_tokens(std::chrono::steady_clock::time_point now) {
   const double elapsed = std::chrono::duration<double>(now - last_refill_).count();
   last_refill_ = now;
   message_tokens_ = std::min(limits::kMessageBurst, message_tokens_ + elapsed * limits::kMessagesPerSecond);
   byte_tokens_ = std::min(limits::kUpstreamByteBurst, byte_tokens_ + elapsed * limits::kUpstreamBytesPerSecond);
   chat_tokens_ = std::min(limits::kChatBurst, chat_tokens_ + elapsed * limits::kChatLinesPerSecond);
+}
+
+void ClientSession::on_message(std::span<const std::uint8_t> message) {
+  if (state_ == State::closing || state_ == State::closed) return;
+  // The transports stop larger messages while reading them; this holds for
+  // any transport, the in-memory one included.
+  if (message.size() > codec::kMaxUpstreamMessageBytes)
+    return protocol_error(CloseCode::message_too_large, "a message over 8 KiB");
+  last_heard_ = std::chrono::steady_clock::now();
+  refill_tokens(last_heard_);
   if (!take_token(message_tokens_, 1) || !take_token(byte_tokens_, static_cast<double>(message.size())))
     return protocol_error(CloseCode::rate_limited, "too many messages; at most 50 a second and 64 KiB a second");
   switch (state_) {
@@ -184,35 +194,38 @@ void ClientSession::handle_hello(std::span<const std::uint8_t> message) {
   if (error != MessageError::ok)
     return protocol_error(CloseCode::protocol_error,
                           "the first message must be a hello: " + std::string(codec::describe(error)));
-  const auto refuse = [&](CloseCode code, const std::string& why) {
-    context_.metrics.rejected_joins.fetch_add(1);
-    spdlog::info("{}: hello refused: {}", peer_, why);
-    do_close(code, why);
-  };
-  if (context_.draining.load()) return refuse(CloseCode::shutting_down, "the server is shutting down; try again soon");
-  if (!is_valid_room_name(hello.room))
-    return refuse(CloseCode::bad_request, "room names are 1 to 64 characters of A-Z a-z 0-9 _ - .");
-  if (hello.name.empty()) return refuse(CloseCode::bad_request, "a display name is needed (1 to 32 bytes)");
-  if (!context_.config.auth_secret.empty()) {
-    const auto now = std::chrono::duration_cast<std::chrono::seconds>(
-                         std::chrono::system_clock::now().time_since_epoch())
-                         .count();
-    const std::string why = check_join_token(hello.token, context_.config.auth_secret, hello.room, hello.name, now);
-    if (!why.empty()) return refuse(CloseCode::unauthorized, why);
-  }
-  std::optional<StoredAvatar> avatar;
-  if (hello.avatar.empty()) {
-    // No package: a procedural face, chosen by the name so it stays the same.
-    const auto& faces = context_.demo_avatars;
-    avatar = faces[std::hash<std::string>{}(hello.name) % faces.size()];
-  } else {
-    avatar = context_.store->get(hello.avatar);
-    if (!avatar)
-      return refuse(CloseCode::bad_request, "unknown avatar '" + hello.avatar.substr(0, 64) +
-                                                "'; upload it first (POST /api/avatars)");
-  }
+  if (const auto refusal = refusal_of(hello)) return refuse(refusal->first, refusal->second);
+  const std::optional<StoredAvatar> avatar = avatar_for(hello);
+  if (!avatar)
+    return refuse(CloseCode::bad_request,
+                  "unknown avatar '" + hello.avatar.substr(0, 64) + "'; upload it first (POST /api/avatars)");
   room_ = context_.rooms->find_or_create(hello.room);
   if (!room_) return refuse(CloseCode::server_full, "the server holds its maximum number of rooms; try later");
+  state_ = State::joining;
+  room_->join(JoinRequest{hello.name, *avatar, stream_settings_for(hello), shared_from_this()});
+}
+
+std::optional<std::pair<CloseCode, std::string>> ClientSession::refusal_of(const codec::Hello& hello) const {
+  if (context_.draining.load()) return {{CloseCode::shutting_down, "the server is shutting down; try again soon"}};
+  if (!is_valid_room_name(hello.room))
+    return {{CloseCode::bad_request, "room names are 1 to 64 characters of A-Z a-z 0-9 _ - ."}};
+  if (hello.name.empty()) return {{CloseCode::bad_request, "a display name is needed (1 to 32 bytes)"}};
+  if (context_.config.auth_secret.empty()) return std::nullopt;
+  const auto now =
+      std::chrono::duration_cast<std::chrono::seconds>(std::chrono::system_clock::now().time_since_epoch()).count();
+  std::string why = check_join_token(hello.token, context_.config.auth_secret, hello.room, hello.name, now);
+  if (!why.empty()) return {{CloseCode::unauthorized, std::move(why)}};
+  return std::nullopt;
+}
+
+std::optional<StoredAvatar> ClientSession::avatar_for(const codec::Hello& hello) const {
+  if (!hello.avatar.empty()) return context_.store->get(hello.avatar);
+  // No package: a procedural face, chosen by the name so it stays the same.
+  const auto& faces = context_.demo_avatars;
+  return faces[std::hash<std::string>{}(hello.name) % faces.size()];
+}
+
+StreamSettings ClientSession::stream_settings_for(const codec::Hello& hello) const {
   const auto& config = context_.config;
   StreamSettings stream;
   stream.tick_hz = config.tick_hz;
@@ -220,8 +233,13 @@ void ClientSession::handle_hello(std::span<const std::uint8_t> message) {
   stream.timestamps = hello.timestamps;
   stream.packages = !hello.no_packages;
   stream.own_package = hello.own_package && !hello.avatar.empty();
-  state_ = State::joining;
-  room_->join(JoinRequest{hello.name, *avatar, stream, shared_from_this()});
+  return stream;
+}
+
+void ClientSession::refuse(CloseCode code, const std::string& why) {
+  context_.metrics.rejected_joins.fetch_add(1);
+  spdlog::info("{}: hello refused: {}", peer_, why);
+  do_close(code, why);
 }
 
 void ClientSession::joined(std::uint32_t avatar) {
@@ -242,73 +260,100 @@ void ClientSession::joined(std::uint32_t avatar) {
 
 void ClientSession::handle_joined_message(std::span<const std::uint8_t> message) {
   if (state_ != State::joined) return;
-  const auto bad = [&](MessageError error, const char* what) {
-    protocol_error(error == MessageError::too_large ? CloseCode::message_too_large : CloseCode::protocol_error,
-                   std::string("malformed ") + what + ": " + std::string(codec::describe(error)));
-  };
   switch (codec::classify(message)) {
-    case codec::MessageKind::resync_request: {
-      std::vector<std::uint32_t> ids;
-      if (const auto e = codec::read_resync_request(message, ids); e != codec::DecodeError::ok)
-        return protocol_error(CloseCode::protocol_error, "malformed resync request: " + std::string(codec::describe(e)));
-      room_->resync(avatar_, std::move(ids));
-      return;
-    }
+    case codec::MessageKind::resync_request: return handle_resync(message);
     case codec::MessageKind::session: break;
     default:
       return protocol_error(CloseCode::protocol_error, "a message no client sends (first byte " +
                                                            std::to_string(message.empty() ? 0 : message[0]) + ")");
   }
   switch (codec::session_type(message)) {
-    case codec::MessageType::chat: {
-      codec::Chat chat;
-      if (const auto e = codec::read_message(message, chat); e != MessageError::ok) return bad(e, "chat");
-      if (chat.text.empty()) return;
-      if (!take_token(chat_tokens_, 1))
-        return protocol_error(CloseCode::rate_limited, "too many chat lines; at most 2 a second");
-      room_->chat(avatar_, std::move(chat.text));
-      return;
-    }
-    case codec::MessageType::command: {
-      codec::Command command;
-      if (const auto e = codec::read_message(message, command); e != MessageError::ok) return bad(e, "command");
-      room_->command(avatar_, std::move(command));
-      return;
-    }
-    case codec::MessageType::set_rate: {
-      codec::SetRate rate;
-      if (const auto e = codec::read_message(message, rate); e != MessageError::ok) return bad(e, "set rate");
-      room_->set_rate(avatar_, rate.max_bps);
-      return;
-    }
-    case codec::MessageType::ping: {
-      codec::Ping ping;
-      if (const auto e = codec::read_message(message, ping); e != MessageError::ok) return bad(e, "ping");
-      auto pong = encode_shared(codec::Pong{ping.nonce, ping.client_time_us, monotonic_us()});
-      queued_bytes_.fetch_add(pong->size(), std::memory_order_relaxed);  // as deliver() does
-      do_deliver(std::move(pong));
-      return;
-    }
+    case codec::MessageType::chat: return handle_chat(message);
+    case codec::MessageType::command: return handle_command(message);
+    case codec::MessageType::set_rate: return handle_set_rate(message);
+    case codec::MessageType::ping: return handle_ping(message);
     default:
       return protocol_error(CloseCode::protocol_error, "a message only the server sends, or a second hello");
   }
 }
 
+void ClientSession::malformed(MessageError error, const char* what) {
+  protocol_error(error == MessageError::too_large ? CloseCode::message_too_large : CloseCode::protocol_error,
+                 std::string("malformed ") + what + ": " + std::string(codec::describe(error)));
+}
+
+void ClientSession::handle_resync(std::span<const std::uint8_t> message) {
+  std::vector<std::uint32_t> ids;
+  if (const auto e = codec::read_resync_request(message, ids); e != codec::DecodeError::ok)
+    return protocol_error(CloseCode::protocol_error, "malformed resync request: " + std::string(codec::describe(e)));
+  room_->resync(avatar_, std::move(ids));
+}
+
+void ClientSession::handle_chat(std::span<const std::uint8_t> message) {
+  codec::Chat chat;
+  if (const auto e = codec::read_message(message, chat); e != MessageError::ok) return malformed(e, "chat");
+  if (chat.text.empty()) return;
+  if (!take_token(chat_tokens_, 1)) return protocol_error(CloseCode::rate_limited, "too many chat lines; at most 2 a second");
+  room_->chat(avatar_, std::move(chat.text));
+}
+
+void ClientSession::handle_command(std::span<const std::uint8_t> message) {
+  codec::Command command;
+  if (const auto e = codec::read_message(message, command); e != MessageError::ok) return malformed(e, "command");
+  room_->command(avatar_, std::move(command));
+}
+
+void ClientSession::handle_set_rate(std::span<const std::uint8_t> message) {
+  codec::SetRate rate;
+  if (const auto e = codec::read_message(message, rate); e != MessageError::ok) return malformed(e, "set rate");
+  room_->set_rate(avatar_, rate.max_bps);
+}
+
+void ClientSession::handle_ping(std::span<const std::uint8_t> message) {
+  codec::Ping ping;
+  if (const auto e = codec::read_message(message, ping); e != MessageError::ok) return malformed(e, "ping");
+  auto pong = encode_shared(codec::Pong{ping.nonce, ping.client_time_us, monotonic_us()});
+  queued_bytes_.fetch_add(pong->size(), std::memory_order_relaxed);  // as deliver() does
+  do_deliver(std::move(pong));
+}
+
 // --- the clock: time-outs ---------------------------------------------------
+
+namespace {
+
+/// "5 s", "0.25 s": a time-out as a person reads it.
+std::string seconds_text(std::chrono::milliseconds time) {
+  std::ostringstream text;
+  text << static_cast<double>(time.count()) / 1000.0 << " s";
+  return text.str();
+}
+
+}  // namespace
+
+std::chrono::milliseconds ClientSession::clock_period() const {
+  // A quarter of the shortest time-out, so that each is kept within a
+  // quarter of itself; never more often than every 10 ms.
+  const auto& t = context_.config.timeouts;
+  const auto shortest = std::min({t.handshake, t.idle, t.close});
+  return std::clamp<std::chrono::milliseconds>(shortest / 4, std::chrono::milliseconds(10), std::chrono::seconds(1));
+}
 
 void ClientSession::on_clock() {
   const auto now = std::chrono::steady_clock::now();
-  if (state_ == State::greeting && now - opened_ > limits::kHandshakeTimeout) {
+  const auto& timeouts = context_.config.timeouts;
+  if (state_ == State::greeting && now - opened_ > timeouts.handshake) {
     context_.metrics.rejected_joins.fetch_add(1);
-    do_close(CloseCode::handshake_timeout, "no hello within 5 s of connecting");
-  } else if (state_ == State::joined && now - last_heard_ > limits::kSessionIdleTimeout) {
-    do_close(CloseCode::idle_timeout, "nothing heard for 60 s; send a ping every 20 s");
-  } else if (state_ == State::closing && now - closing_since_ > limits::kCloseTimeout) {
+    do_close(CloseCode::handshake_timeout, "no hello within " + seconds_text(timeouts.handshake) + " of connecting");
+  } else if (state_ == State::joined && now - last_heard_ > timeouts.idle) {
+    do_close(CloseCode::idle_timeout,
+             "nothing heard for " + seconds_text(timeouts.idle) + "; send a ping at least every " +
+                 seconds_text(timeouts.idle / 3));
+  } else if (state_ == State::closing && now - closing_since_ > timeouts.close) {
     state_ = State::closed;  // the peer does not take the closing message
     shutdown_transport(close_code_, close_reason_, true);
   }
   if (state_ == State::closed && !writing_) return;
-  clock_.expires_after(std::chrono::seconds(1));
+  clock_.expires_after(clock_period());
   clock_.async_wait([weak = weak_from_this()](const boost::system::error_code& ec) {
     if (ec) return;
     if (auto self = weak.lock()) self->on_clock();

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <deque>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -18,6 +19,7 @@
 #include "fw/codec/messages.hpp"
 #include "room_connection.hpp"
 #include "server_context.hpp"
+#include "subscriber_stream.hpp"
 
 namespace fw::server {
 
@@ -62,10 +64,24 @@ class ClientSession : public RoomConnection, public std::enable_shared_from_this
   void do_deliver(SharedBytes message);
   void write_next();
   void do_close(codec::CloseCode code, std::string reason);
+  void refill_tokens(std::chrono::steady_clock::time_point now);
   void handle_hello(std::span<const std::uint8_t> message);
+  /// Why this server cannot admit `hello` (draining, bad room or name, token), or nullopt.
+  std::optional<std::pair<codec::CloseCode, std::string>> refusal_of(const codec::Hello& hello) const;
+  /// The uploaded package `hello` names, or a procedural face; nullopt if the package is unknown.
+  std::optional<StoredAvatar> avatar_for(const codec::Hello& hello) const;
+  StreamSettings stream_settings_for(const codec::Hello& hello) const;
+  void refuse(codec::CloseCode code, const std::string& why);
   void handle_joined_message(std::span<const std::uint8_t> message);
+  void handle_resync(std::span<const std::uint8_t> message);
+  void handle_chat(std::span<const std::uint8_t> message);
+  void handle_command(std::span<const std::uint8_t> message);
+  void handle_set_rate(std::span<const std::uint8_t> message);
+  void handle_ping(std::span<const std::uint8_t> message);
+  void malformed(codec::MessageError error, const char* what);
   void protocol_error(codec::CloseCode code, const std::string& what);
   void on_clock();
+  std::chrono::milliseconds clock_period() const;
   /// Takes `cost` from a bucket the clock refills; false if it holds less.
   static bool take_token(double& tokens, double cost);
 

@@ -6,12 +6,14 @@
 
 namespace fw::server {
 
-namespace {
-constexpr std::uint32_t kDemoFaces = 8;
-}
-
 bool make_demo_avatars(ServerContext& context, std::string& error) {
-  for (std::uint32_t i = 0; i < kDemoFaces; ++i) {
+  const std::uint32_t needed = context.config.demo_room ? kLobbyAvatars : 1;
+  if (context.config.demo_faces < needed) {
+    error = "demo_faces must be at least " + std::to_string(needed) +
+            " (the lobby seats 3 faces; a client without a package takes 1)";
+    return false;
+  }
+  for (std::uint32_t i = 0; i < context.config.demo_faces; ++i) {
     const auto package = make_demo_package(i);
     auto stored = context.store->put(package, error);
     if (!stored) {
@@ -25,8 +27,8 @@ bool make_demo_avatars(ServerContext& context, std::string& error) {
 
 void open_demo_room(ServerContext& context, std::function<void()> seated) {
   auto lobby = context.rooms->find_or_create("lobby", /*persistent=*/true);
-  const char* names[] = {"Ada", "Bruno", "Chidi"};  // Ada joins first: she leads
-  for (std::uint32_t i = 0; i < 3; ++i) {
+  const char* names[kLobbyAvatars] = {"Ada", "Bruno", "Chidi"};  // Ada joins first: she leads
+  for (std::uint32_t i = 0; i < kLobbyAvatars; ++i) {
     JoinRequest request;
     request.name = names[i];
     request.avatar = context.demo_avatars[i];

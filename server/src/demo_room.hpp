@@ -2,6 +2,7 @@
 // The demo: procedural faces for clients without a package, and the room
 // "lobby" where three autonomous avatars reproduce the paper's experiment
 // (the first leads, two follow), so a newcomer sees something alive at once.
+#include <cstdint>
 #include <functional>
 #include <string>
 
@@ -9,7 +10,10 @@
 
 namespace fw::server {
 
-/// Fills context.demo_avatars (stored in the avatar store like uploads).
+inline constexpr std::uint32_t kLobbyAvatars = 3;
+
+/// Fills context.demo_avatars with config.demo_faces faces (stored in the
+/// avatar store like uploads).
 bool make_demo_avatars(ServerContext& context, std::string& error);
 
 /// Opens "lobby" (persistent) with its three avatars; `seated` runs once

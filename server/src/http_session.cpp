@@ -17,9 +17,9 @@ namespace beast = boost::beast;
 namespace http = beast::http;
 namespace net = boost::asio;
 
-HttpSession::HttpSession(ServerContext& context, net::ip::tcp::socket&& socket,
+HttpSession::HttpSession(ServerContext& context, PhotoPreparation& photos, net::ip::tcp::socket&& socket,
                          std::shared_ptr<std::atomic<std::size_t>> open_connections)
-    : context_(context), stream_(std::move(socket)), buffer_(limits::kMaxHeaderBytes + limits::kMaxBodyBytes),
+    : context_(context), photos_(photos), stream_(std::move(socket)), buffer_(limits::kMaxHeaderBytes + limits::kMaxBodyBytes),
       open_connections_(std::move(open_connections)) {
   beast::error_code ec;
   peer_address_ = stream_.socket().remote_endpoint(ec).address().to_string();
@@ -102,7 +102,7 @@ void HttpSession::on_read(beast::error_code ec, std::size_t) {
   }
   if (upload_) {
     auto self = shared_from_this();
-    context_.photos->upload(std::move(request), peer_address_, [self](Response response) {
+    photos_.upload(std::move(request), peer_address_, [self](Response response) {
       net::post(self->stream_.get_executor(),
                 [self, response = std::move(response)]() mutable { self->send(std::move(response)); });
     });

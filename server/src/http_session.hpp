@@ -13,10 +13,13 @@
 
 namespace fw::server {
 
+class PhotoPreparation;
+
 class HttpSession : public std::enable_shared_from_this<HttpSession> {
  public:
-  /// `open_connections` counts live sessions (the listener's limit).
-  HttpSession(ServerContext& context, boost::asio::ip::tcp::socket&& socket,
+  /// `open_connections` counts live sessions (the listener's limit);
+  /// `photos` takes the uploads.
+  HttpSession(ServerContext& context, PhotoPreparation& photos, boost::asio::ip::tcp::socket&& socket,
               std::shared_ptr<std::atomic<std::size_t>> open_connections);
   ~HttpSession();
   void run();
@@ -31,6 +34,7 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
   void do_close();
 
   ServerContext& context_;
+  PhotoPreparation& photos_;
   boost::beast::tcp_stream stream_;
   boost::beast::flat_buffer buffer_;
   std::optional<boost::beast::http::request_parser<boost::beast::http::string_body>> parser_;

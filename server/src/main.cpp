@@ -1,9 +1,8 @@
-// facewire-server: the room server, photo preparation and tools. With no
-// subcommand it serves (`make run`).
-#include <iostream>
-
+// facewire-server: the room server, photo preparation and tools. Without a
+// subcommand, or with flags only, it serves (`make run`).
 #include <CLI/CLI.hpp>
 
+#include "command_line.hpp"
 #include "fw/photo/photo_limits.hpp"
 #include "prep_command.hpp"
 #include "render_scene_command.hpp"
@@ -21,16 +20,5 @@ int main(int argc, char** argv) {
   fw::server::add_simulate_command(app);
   fw::server::add_render_scene_command(app);
   fw::server::add_token_command(app);
-
-  try {
-    if (argc == 1) app.parse("serve", false);  // no subcommand: serve with the embedded defaults
-    else app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e);
-  }
-  if (app.get_subcommands().empty()) {
-    std::cerr << app.help();
-    return 2;
-  }
-  return 0;
+  return fw::server::run_command_line(app, argc, argv);
 }

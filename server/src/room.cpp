@@ -116,23 +116,8 @@ void Room::set_rate(std::uint32_t avatar, std::uint32_t bps) {
 }
 
 void Room::do_join(JoinRequest request) {
-  if (closed_) {
-    // The room emptied and closed while this hello was on its way: seat the
-    // joiner in its successor.
-    if (request.connection) {
-      if (auto room = context_.rooms->find_or_create(name_)) return room->join(std::move(request));
-      request.connection->close(codec::CloseCode::server_full, "the server holds its maximum number of rooms");
-    }
-    return;
-  }
-  if (members_.size() >= context_.config.room_size) {
-    context_.metrics.rejected_joins.fetch_add(1);
-    if (request.connection)
-      request.connection->close(codec::CloseCode::room_full,
-                                "room '" + name_ + "' is full (" + std::to_string(context_.config.room_size) +
-                                    " avatars); try another room");
-    return;
-  }
+  if (closed_) return join_successor(std::move(request));
+  if (members_.size() >= context_.config.room_size) return refuse_full(request);
   const bool person = request.connection != nullptr;
   const std::uint32_t id = simulation_.add_avatar(AvatarSetup{request.name, person});
   Member member;
@@ -140,31 +125,9 @@ void Room::do_join(JoinRequest request) {
                  static_cast<std::uint32_t>(request.avatar.preview ? request.avatar.preview->size() : 0),
                  static_cast<std::uint32_t>(request.avatar.full ? request.avatar.full->size() : 0), person};
   member.avatar = request.avatar;
-
-  const auto joined = encode_shared(codec::Presence{codec::Presence::Change::joined, member.info});
-  for (auto& [other_id, other] : members_) {
-    if (!other.stream) continue;
-    other.stream->connection()->deliver(joined);
-    other.stream->charge(joined->size());
-    other.stream->add_avatar(id, member.avatar.preview, member.avatar.full);
-  }
+  introduce_to_others(member);
   if (person) {
-    codec::Welcome welcome;
-    welcome.you = id;
-    welcome.room = name_;
-    welcome.tick_hz = static_cast<std::uint8_t>(context_.config.tick_hz);
-    welcome.max_bps = request.stream.budget_bps;
-    for (const auto& [other_id, other] : members_)
-      if (welcome.avatars.size() + 1 < codec::kMaxWelcomeAvatars) welcome.avatars.push_back(other.info);
-    welcome.avatars.push_back(member.info);
-    const auto welcome_bytes = encode_shared(welcome);
-    request.connection->deliver(welcome_bytes);
-    member.stream = std::make_unique<SubscriberStream>(request.stream, request.connection, context_.metrics);
-    member.stream->charge(welcome_bytes->size());
-    for (const auto& [other_id, other] : members_) member.stream->add_avatar(other_id, other.avatar.preview, other.avatar.full);
-    // A client that uploaded its package holds it: its own face costs its link nothing.
-    if (request.stream.own_package) member.stream->add_avatar(id, nullptr, nullptr);
-    else member.stream->add_avatar(id, member.avatar.preview, member.avatar.full);
+    member.stream = welcome(member, request);
     request.connection->joined(id);
     person_count_.fetch_add(1);
   }
@@ -172,6 +135,56 @@ void Room::do_join(JoinRequest request) {
   avatar_count_.fetch_add(1);
   context_.metrics.avatars.fetch_add(1);
   spdlog::info("room {}: {} joined as avatar {} ({})", name_, request.name, id, person ? "person" : "autonomous");
+}
+
+void Room::join_successor(JoinRequest request) {
+  // The room emptied and closed while this hello was on its way: seat the
+  // joiner in its successor.
+  if (!request.connection) return;
+  if (auto room = context_.rooms->find_or_create(name_)) return room->join(std::move(request));
+  if (context_.draining.load())
+    request.connection->close(codec::CloseCode::shutting_down, "the server is shutting down; try again soon");
+  else
+    request.connection->close(codec::CloseCode::server_full, "the server holds its maximum number of rooms");
+}
+
+void Room::refuse_full(const JoinRequest& request) {
+  context_.metrics.rejected_joins.fetch_add(1);
+  if (request.connection)
+    request.connection->close(codec::CloseCode::room_full, "room '" + name_ + "' is full (" +
+                                                               std::to_string(context_.config.room_size) +
+                                                               " avatars); try another room");
+}
+
+void Room::introduce_to_others(const Member& newcomer) {
+  const auto joined = encode_shared(codec::Presence{codec::Presence::Change::joined, newcomer.info});
+  for (auto& [other_id, other] : members_) {
+    if (!other.stream) continue;
+    other.stream->connection()->deliver(joined);
+    other.stream->charge(joined->size());
+    other.stream->add_avatar(newcomer.info.id, newcomer.avatar.preview, newcomer.avatar.full);
+  }
+}
+
+std::unique_ptr<SubscriberStream> Room::welcome(const Member& newcomer, const JoinRequest& request) {
+  codec::Welcome welcome;
+  welcome.you = newcomer.info.id;
+  welcome.room = name_;
+  welcome.tick_hz = static_cast<std::uint8_t>(context_.config.tick_hz);
+  welcome.max_bps = request.stream.budget_bps;
+  for (const auto& [other_id, other] : members_)
+    if (welcome.avatars.size() + 1 < codec::kMaxWelcomeAvatars) welcome.avatars.push_back(other.info);
+  welcome.avatars.push_back(newcomer.info);
+  const auto welcome_bytes = encode_shared(welcome);
+  request.connection->deliver(welcome_bytes);
+  // The stream's header follows the welcome; then everyone's face.
+  auto stream = std::make_unique<SubscriberStream>(request.stream, request.connection, context_.metrics);
+  stream->charge(welcome_bytes->size());
+  for (const auto& [other_id, other] : members_) stream->add_avatar(other_id, other.avatar.preview, other.avatar.full);
+  // A client that uploaded its package holds it: its own face costs its link nothing.
+  if (request.stream.own_package) stream->add_avatar(newcomer.info.id, nullptr, nullptr);
+  else stream->add_avatar(newcomer.info.id, newcomer.avatar.preview, newcomer.avatar.full);
+  return stream;
 }
 
 void Room::do_leave(std::uint32_t avatar) {

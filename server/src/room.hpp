@@ -67,6 +67,12 @@ class Room : public std::enable_shared_from_this<Room> {
     std::unique_ptr<SubscriberStream> stream;  ///< null for autonomous avatars
   };
   void do_join(JoinRequest request);
+  void join_successor(JoinRequest request);
+  void refuse_full(const JoinRequest& request);
+  /// Presence to everyone already seated, and the newcomer's face in their streams.
+  void introduce_to_others(const Member& newcomer);
+  /// The welcome to a person who joins, and the stream that follows it.
+  std::unique_ptr<SubscriberStream> welcome(const Member& newcomer, const JoinRequest& request);
   void do_leave(std::uint32_t avatar);
   void broadcast(const SharedBytes& message, std::uint32_t except = UINT32_MAX);
   std::chrono::microseconds tick_period() const;

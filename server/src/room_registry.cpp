@@ -20,7 +20,7 @@ RoomRegistry::~RoomRegistry() = default;
 std::shared_ptr<Room> RoomRegistry::find_or_create(const std::string& name, bool persistent) {
   std::lock_guard lock(mutex_);
   if (auto it = rooms_.find(name); it != rooms_.end()) return it->second;
-  if (rooms_.size() >= context_.config.max_rooms) return nullptr;
+  if (closed_ || rooms_.size() >= context_.config.max_rooms) return nullptr;
   auto room = std::make_shared<Room>(context_, name, persistent, next_seed_++);
   rooms_.emplace(name, room);
   room->start();
@@ -73,6 +73,7 @@ void RoomRegistry::close_all_rooms() {
   std::map<std::string, std::shared_ptr<Room>> rooms;
   {
     std::lock_guard lock(mutex_);
+    closed_ = true;
     rooms.swap(rooms_);
   }
   for (auto& [name, room] : rooms) room->close();

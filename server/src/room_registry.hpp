@@ -27,7 +27,7 @@ class RoomRegistry {
   ~RoomRegistry();
 
   /// The room called `name`, created (and started) if needed; null when the
-  /// server already holds its maximum number of rooms.
+  /// server already holds its maximum number of rooms, or has stopped.
   std::shared_ptr<Room> find_or_create(const std::string& name, bool persistent = false);
   /// Closes and forgets `room` if nobody is in it any more.
   void remove_if_empty(const std::shared_ptr<Room>& room);
@@ -38,7 +38,7 @@ class RoomRegistry {
   std::size_t session_count() const;
   /// Tells every open session that the server shuts down.
   void close_all_sessions();
-  /// Stops every room.
+  /// Stops every room; no room opens after this.
   void close_all_rooms();
 
  private:
@@ -47,6 +47,7 @@ class RoomRegistry {
   std::map<std::string, std::shared_ptr<Room>> rooms_;
   std::map<const ClientSession*, std::weak_ptr<ClientSession>> sessions_;
   std::uint64_t next_seed_ = 1;
+  bool closed_ = false;  ///< close_all_rooms() ran: the worker pool is to run out of work
 };
 
 /// Whether `name` is 1 .. 64 characters of A-Z a-z 0-9 _ - . (PROTOCOL.md, hello).

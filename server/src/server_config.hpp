@@ -1,11 +1,22 @@
 #pragma once
 // Everything `facewire-server serve` can be told, with its defaults: flags,
 // FACEWIRE_* environment variables and a config file (serve_command.cpp).
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <string>
 
+#include "server_limits.hpp"
+
 namespace fw::server {
+
+/// A room connection's time-outs (PROTOCOL.md, "Limits"). Not flags: the
+/// protocol fixes them; tests shorten them so that they pass in a moment.
+struct SessionTimeouts {
+  std::chrono::milliseconds handshake = limits::kHandshakeTimeout;
+  std::chrono::milliseconds idle = limits::kSessionIdleTimeout;
+  std::chrono::milliseconds close = limits::kCloseTimeout;
+};
 
 struct ServerConfig {
   std::string http = "127.0.0.1:8080";
@@ -21,6 +32,10 @@ struct ServerConfig {
   std::size_t max_upload_bytes = 4 * 1024 * 1024;
   std::string auth_secret;       ///< empty: no tokens needed
   bool demo_room = true;         ///< the "lobby" with three autonomous avatars
+  /// Procedural faces made at start, for clients without a package (chosen
+  /// by name) and the lobby's three. Not a flag; a tenth of a second each,
+  /// so tests that need few make few.
+  std::uint32_t demo_faces = 8;
   bool physics = true;
   bool physics_sleeps = true;
   bool physics_lod = true;       ///< shed physics (faces follow targets kinematically) when ticks run late
@@ -28,6 +43,7 @@ struct ServerConfig {
   std::string log_level = "info";
   bool log_json = false;
   std::string landmark_model;    ///< for photo uploads; empty: the default place
+  SessionTimeouts timeouts;
 };
 
 }  // namespace fw::server

@@ -1,11 +1,11 @@
 #pragma once
 // What every part of a running server shares: its configuration, metrics,
 // avatar store, rooms, the worker pool rooms tick on, and whether it drains.
+// ServerCore (server_core.hpp) owns and fills it.
 #include <atomic>
 #include <memory>
 #include <vector>
 
-#include <boost/asio/io_context.hpp>
 #include <boost/asio/thread_pool.hpp>
 
 #include "avatar_store.hpp"
@@ -16,17 +16,14 @@
 namespace fw::server {
 
 class RoomRegistry;
-class PhotoPreparation;
 
 struct ServerContext {
   ServerConfig config;
   Metrics metrics;
   PhysicsGovernor physics_lod;  ///< physics level of detail under load (config.physics_lod)
-  boost::asio::io_context* io = nullptr;       ///< network I/O
   boost::asio::thread_pool* workers = nullptr; ///< room ticks, encoding
   AvatarStore* store = nullptr;
   RoomRegistry* rooms = nullptr;
-  PhotoPreparation* photos = nullptr;
   /// Procedural faces for clients that join without a package (and the lobby).
   std::vector<StoredAvatar> demo_avatars;
   std::atomic<bool> ready{false};     ///< /readyz: listening and the demo room seated

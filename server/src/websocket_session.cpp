@@ -42,7 +42,7 @@ void WebSocketSession::run(beast::http::request<beast::http::string_body> reques
   beast::get_lowest_layer(ws_).socket().set_option(
       boost::asio::socket_base::send_buffer_size(limits::kSocketSendBufferBytes), ignored);  // as TcpSession
   websocket::stream_base::timeout timeout{};
-  timeout.handshake_timeout = limits::kHandshakeTimeout;
+  timeout.handshake_timeout = context_.config.timeouts.handshake;
   timeout.idle_timeout = websocket::stream_base::none();  // the session's idle clock decides
   timeout.keep_alive_pings = false;
   ws_.set_option(timeout);

@@ -1,10 +1,9 @@
 #pragma once
 // A room-protocol client for the server tests: WebSocket or length-prefixed
 // TCP, synchronous calls with time-outs (an io_context run for a while), and
-// the bookkeeping the tests check: welcome, presence, chat, closing, room
-// frames decoded by a codec::RoomDecoder, package chunks reassembled.
+// the bookkeeping the tests check (room_inbox.hpp).
+#include <array>
 #include <chrono>
-#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,10 +17,11 @@
 
 #include "fw/codec/codec.hpp"
 #include "fw/codec/messages.hpp"
+#include "room_inbox.hpp"
 
 namespace fw::test {
 
-class RoomTestClient {
+class RoomTestClient : public RoomInbox {
  public:
   enum class Transport { websocket, tcp };
 
@@ -139,37 +139,7 @@ class RoomTestClient {
     pump_until([] { return false; }, duration);
   }
 
-  // What arrived so far.
-  std::optional<codec::Welcome> welcome;
-  std::optional<codec::Closing> closing;
-  std::optional<codec::LinkStats> link;  ///< the latest
-  bool stream_header = false;
-  std::vector<codec::Presence> presence;
-  std::vector<codec::Chat> chat;
-  std::vector<codec::CommandResult> results;
-  std::uint64_t room_frames = 0;
-  std::uint64_t bytes_received = 0;
-  std::uint64_t socket_bytes = 0;      ///< TCP: everything read, length prefixes included
-  std::uint64_t room_frame_bytes = 0;  ///< of the codec room frames (timestamps excluded)
-  std::uint64_t package_bytes = 0;     ///< of package chunk messages
-  std::map<std::uint32_t, std::uint64_t> frames_per_avatar;
-  std::vector<std::string> errors;  ///< anything a correct server never sends
-  /// Timed room frames: when each arrived and its tick.
-  std::vector<std::pair<std::chrono::steady_clock::time_point, std::uint32_t>> ticks;
-  /// Arrival minus the server's tick time (same host, same monotonic clock).
-  std::vector<std::int64_t> latency_us;
-  static std::int64_t now_us() {
-    return std::chrono::duration_cast<std::chrono::microseconds>(
-               std::chrono::steady_clock::now().time_since_epoch()).count();
-  }
-  struct Package {
-    std::vector<std::uint8_t> bytes;
-    std::size_t received = 0;
-    bool complete() const { return !bytes.empty() && received == bytes.size(); }
-  };
-  std::map<std::pair<std::uint32_t, int>, Package> packages;  ///< (avatar, quality)
-  std::vector<std::pair<std::uint32_t, int>> package_order;   ///< as completed
-  codec::RoomDecoder decoder;
+  std::uint64_t socket_bytes = 0;  ///< TCP: everything read, length prefixes included
   bool closed() const { return closed_; }
   bool send_failed() const { return send_failed_; }
   /// The WebSocket close code (0 if none, or TCP).
@@ -177,97 +147,7 @@ class RoomTestClient {
     return transport_ == Transport::websocket ? static_cast<int>(ws_.reason().code) : 0;
   }
 
-  void file(const std::vector<std::uint8_t>& m) {
-    bytes_received += m.size();
-    switch (codec::classify(m)) {
-      case codec::MessageKind::stream_header: stream_header = true; return;
-      case codec::MessageKind::room_frame: return file_room_frame(m);
-      case codec::MessageKind::session: break;
-      default: errors.push_back("unexpected first byte " + std::to_string(m.empty() ? -1 : m[0])); return;
-    }
-    const auto check = [&](codec::MessageError e, const char* what) {
-      if (e != codec::MessageError::ok) errors.push_back(std::string(what) + ": " + std::string(codec::describe(e)));
-      return e == codec::MessageError::ok;
-    };
-    switch (codec::session_type(m)) {
-      case codec::MessageType::welcome: {
-        codec::Welcome w;
-        if (check(codec::read_message(m, w), "welcome")) welcome = w;
-        return;
-      }
-      case codec::MessageType::presence: {
-        codec::Presence p;
-        if (check(codec::read_message(m, p), "presence")) {
-          if (p.change == codec::Presence::Change::left) decoder.remove(p.avatar.id);
-          presence.push_back(p);
-        }
-        return;
-      }
-      case codec::MessageType::chat: {
-        codec::Chat c;
-        if (check(codec::read_message(m, c), "chat")) chat.push_back(c);
-        return;
-      }
-      case codec::MessageType::command_result: {
-        codec::CommandResult r;
-        if (check(codec::read_message(m, r), "command result")) results.push_back(r);
-        return;
-      }
-      case codec::MessageType::closing: {
-        codec::Closing c;
-        if (check(codec::read_message(m, c), "closing")) closing = c;
-        return;
-      }
-      case codec::MessageType::timed_room_frame: {
-        codec::TimedRoomFrame t;
-        if (check(codec::read_message(m, t), "timed room frame")) {
-          ticks.emplace_back(std::chrono::steady_clock::now(), t.tick);
-          latency_us.push_back(now_us() - static_cast<std::int64_t>(t.server_time_us));
-        }
-        if (!errors.empty()) return;
-        file_room_frame(std::vector<std::uint8_t>(t.room_frame.begin(), t.room_frame.end()));
-        return;
-      }
-      case codec::MessageType::package_chunk: {
-        codec::PackageChunk c;
-        package_bytes += m.size();
-        if (!check(codec::read_message(m, c), "package chunk")) return;
-        auto& p = packages[{c.avatar, static_cast<int>(c.quality)}];
-        if (p.bytes.empty()) p.bytes.resize(c.total_bytes);
-        if (p.bytes.size() != c.total_bytes || c.offset != p.received) {
-          errors.push_back("package chunk out of order");
-          return;
-        }
-        std::copy(c.data.begin(), c.data.end(), p.bytes.begin() + c.offset);
-        p.received += c.data.size();
-        if (p.complete()) package_order.emplace_back(c.avatar, static_cast<int>(c.quality));
-        return;
-      }
-      case codec::MessageType::link_stats: {
-        codec::LinkStats l;
-        if (check(codec::read_message(m, l), "link statistics")) link = l;
-        return;
-      }
-      case codec::MessageType::pong: return;
-      default: errors.push_back("a message the server never sends"); return;
-    }
-  }
-
  private:
-  void file_room_frame(const std::vector<std::uint8_t>& m) {
-    ++room_frames;
-    room_frame_bytes += m.size();
-    const auto result = decoder.decode(m);
-    if (result.error != codec::DecodeError::ok) {
-      errors.push_back("room frame: " + std::string(codec::describe(result.error)));
-      return;
-    }
-    for (const auto& [id, error] : result.avatars) {
-      if (error != codec::DecodeError::ok) errors.push_back("avatar frame: " + std::string(codec::describe(error)));
-      ++frames_per_avatar[id];
-    }
-  }
-
   void start_read() {
     reading_ = true;
     read_done_ = false;

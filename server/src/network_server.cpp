@@ -1,0 +1,127 @@
+#include "network_server.hpp"
+
+#include <iostream>
+#include <memory>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <boost/asio/io_context.hpp>
+#include <spdlog/spdlog.h>
+
+#include "drain_on_signal.hpp"
+#include "endpoint.hpp"
+#include "http_session.hpp"
+#include "listener.hpp"
+#include "photo_preparation.hpp"
+#include "server_core.hpp"
+#include "tcp_session.hpp"
+
+namespace fw::server {
+namespace {
+
+namespace net = boost::asio;
+
+int cannot_start(const std::string& why) {
+  std::cerr << "facewire-server: " << why << "\n";
+  return 2;
+}
+
+/// A listener on `address` (the value of `flag`), accepting; null and `error` if it cannot listen.
+std::shared_ptr<Listener> listen(net::io_context& ioc, const std::string& flag, const std::string& address,
+                                 Listener::SessionFactory factory, std::string& error) {
+  const auto endpoint = parse_endpoint(address, error);
+  if (!endpoint) {
+    error = flag + " " + error;
+    return nullptr;
+  }
+  boost::beast::error_code ec;
+  auto listener = std::make_shared<Listener>(ioc, *endpoint, std::move(factory), ec);
+  if (ec) {
+    error = "cannot listen on " + address + ": " + ec.message() + " (is another server using the port? choose another with " +
+            flag + " ADDR:PORT)";
+    return nullptr;
+  }
+  listener->run();
+  return listener;
+}
+
+struct Listeners {
+  std::shared_ptr<Listener> http;
+  std::shared_ptr<Listener> tcp;  ///< null without --tcp
+
+  void stop() {
+    if (http) http->stop();
+    if (tcp) tcp->stop();
+  }
+};
+
+bool open_listeners(net::io_context& ioc, ServerContext& context, PhotoPreparation& photos, Listeners& listeners,
+                    std::string& error) {
+  listeners.http = listen(ioc, "--http", context.config.http,
+                          [&context, &photos](net::ip::tcp::socket&& socket, auto counter) {
+                            std::make_shared<HttpSession>(context, photos, std::move(socket), std::move(counter))->run();
+                          },
+                          error);
+  if (!listeners.http) return false;
+  if (context.config.tcp.empty()) return true;
+  listeners.tcp = listen(ioc, "--tcp", context.config.tcp, [&context](net::ip::tcp::socket&& socket, auto counter) {
+    boost::system::error_code ec;
+    std::string peer = socket.remote_endpoint(ec).address().to_string();
+    std::make_shared<TcpSession>(context, std::move(socket), std::move(peer))->run();
+    // Room connections are bounded by rooms x room size, not by the
+    // listener's count (which limits sockets still greeting).
+    --*counter;
+  }, error);
+  return listeners.tcp != nullptr;
+}
+
+/// Tests and scripts read these lines to learn the ports when 0 was asked for.
+void announce(const Listeners& listeners) {
+  const auto http = listeners.http->local_endpoint();
+  std::cout << "facewire-server listening on http://" << http.address().to_string() << ":" << http.port() << "/"
+            << std::endl;
+  if (!listeners.tcp) return;
+  const auto tcp = listeners.tcp->local_endpoint();
+  std::cout << "facewire-server tcp on tcp://" << tcp.address().to_string() << ":" << tcp.port() << std::endl;
+}
+
+void log_ready(const ServerConfig& config) {
+  const char* faces = !config.physics           ? "behavior only, no physics face"
+                      : config.physics_sleeps ? "physics face, asleep at rest"
+                                              : "physics face, always awake";
+  const char* lod = config.physics && config.physics_lod ? ", shed under load" : "";
+  spdlog::info("ready: rooms tick at {} Hz on {} worker thread(s), {}{}; data in {}", config.tick_hz, config.workers,
+               faces, lod, config.data);
+}
+
+/// Runs `ioc` on `threads` threads, this one included, until it stops.
+void run_io_threads(net::io_context& ioc, int threads) {
+  std::vector<std::thread> others;
+  for (int i = 1; i < threads; ++i) others.emplace_back([&ioc] { ioc.run(); });
+  ioc.run();
+  for (auto& thread : others) thread.join();
+}
+
+}  // namespace
+
+int run_network_server(const ServerConfig& config) {
+  ServerCore core(config);
+  std::string error;
+  if (!core.open(error)) return cannot_start(error);
+  net::io_context ioc(config.io_threads);
+  PhotoPreparation photos(core.context());
+  Listeners listeners;
+  if (!open_listeners(ioc, core.context(), photos, listeners, error)) return cannot_start(error);
+  announce(listeners);
+  core.open_demo_room();  // ready (/readyz) once listening and the lobby is seated
+  log_ready(config);
+  const auto drain_time = std::chrono::milliseconds(static_cast<long>(config.drain_seconds * 1000));
+  DrainOnSignal drain(ioc, core, drain_time, [&listeners] { listeners.stop(); });
+  run_io_threads(ioc, config.io_threads);
+  core.stop();
+  spdlog::info("stopped");
+  return 0;
+}
+
+}  // namespace fw::server

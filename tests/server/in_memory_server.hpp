@@ -1,0 +1,179 @@
+#pragma once
+// The server core with in-memory connections, for the fast tests: the real
+// rooms, subscriber streams and client sessions, on a real worker pool and a
+// real I/O thread, with no socket and no process in between. Each server
+// has its own data directory.
+#include <atomic>
+#include <chrono>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <thread>
+#include <unistd.h>
+
+#include <boost/asio/executor_work_guard.hpp>
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/strand.hpp>
+#include <gtest/gtest.h>
+
+#include "in_memory_session.hpp"
+#include "room_inbox.hpp"
+#include "server_core.hpp"
+
+namespace fw::test {
+
+using namespace std::chrono_literals;
+using server::InMemorySession;
+using server::ServerConfig;
+
+/// Polls `done` every millisecond until it holds or `timeout` passes.
+template <class Predicate>
+bool eventually(Predicate done, std::chrono::milliseconds timeout = 5s) {
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  while (!done()) {
+    if (std::chrono::steady_clock::now() >= deadline) return done();
+    std::this_thread::sleep_for(1ms);
+  }
+  return true;
+}
+
+struct HelloOptions {
+  std::string token{};
+  std::uint32_t max_bps = 0;
+  bool timestamps = false;
+  bool no_packages = false;
+  std::string avatar{};
+};
+
+/// The peer of one in-memory connection: sends upstream messages and files
+/// what the server wrote (RoomInbox). Hangs up when destroyed.
+class InMemoryPeer : public RoomInbox {
+ public:
+  explicit InMemoryPeer(std::shared_ptr<InMemorySession> session) : session_(std::move(session)) {}
+  ~InMemoryPeer() {
+    session_->hang_up();
+    eventually([&] { return session_->gone(); }, 2s);
+  }
+  InMemoryPeer(const InMemoryPeer&) = delete;
+  InMemoryPeer& operator=(const InMemoryPeer&) = delete;
+
+  InMemorySession& session() { return *session_; }
+  const std::shared_ptr<InMemorySession>& shared_session() const { return session_; }
+
+  template <class Message>
+  void send(const Message& message) {
+    session_->push_message(message);
+  }
+  void send_bytes(std::vector<std::uint8_t> bytes) { session_->push(std::move(bytes)); }
+  void hello(const std::string& room, const std::string& name, const HelloOptions& options = {}) {
+    codec::Hello h;
+    h.room = room;
+    h.name = name;
+    h.token = options.token;
+    h.max_bps = options.max_bps;
+    h.timestamps = options.timestamps;
+    h.no_packages = options.no_packages;
+    h.avatar = options.avatar;
+    send(h);
+  }
+
+  /// Files everything written so far.
+  void read() {
+    for (const auto& message : session_->take_written()) {
+      ++messages_read;
+      file(*message);
+    }
+  }
+  /// Reads until `done()` holds or `timeout` passes.
+  template <class Predicate>
+  bool read_until(Predicate done, std::chrono::milliseconds timeout = 5s) {
+    return eventually(
+        [&] {
+          read();
+          return done();
+        },
+        timeout);
+  }
+  void read_for(std::chrono::milliseconds duration) {
+    read_until([] { return false; }, duration);
+  }
+  /// Reads until the server has ended the connection (a closing message, or an abort).
+  bool read_until_closed(std::chrono::milliseconds timeout = 5s) {
+    return read_until([&] { return session_->gone(); }, timeout);
+  }
+
+  std::uint64_t messages_read = 0;
+
+ private:
+  std::shared_ptr<InMemorySession> session_;
+};
+
+class InMemoryServer {
+ public:
+  /// One worker, no demo room and `faces` demo faces (each takes a tenth of
+  /// a second to make): what most tests want.
+  static ServerConfig test_config(std::uint32_t faces = 1) {
+    ServerConfig config;
+    config.workers = 1;
+    config.demo_room = false;
+    config.demo_faces = faces;
+    return config;
+  }
+
+  explicit InMemoryServer(ServerConfig config = test_config())
+      : data_(std::filesystem::temp_directory_path() /
+              ("fw-in-memory-" + std::to_string(::getpid()) + "-" + std::to_string(counter_++))),
+        core_(with_data(std::move(config), data_)),
+        work_(boost::asio::make_work_guard(io_)) {
+    std::string error;
+    opened_ = core_.open(error);
+    EXPECT_TRUE(opened_) << error;
+    core_.open_demo_room();
+    io_thread_ = std::thread([this] { io_.run(); });
+  }
+  ~InMemoryServer() {
+    core_.stop();
+    work_.reset();
+    io_.stop();
+    io_thread_.join();
+    std::error_code ignored;
+    std::filesystem::remove_all(data_, ignored);
+  }
+  InMemoryServer(const InMemoryServer&) = delete;
+  InMemoryServer& operator=(const InMemoryServer&) = delete;
+
+  server::ServerCore& core() { return core_; }
+  server::ServerContext& context() { return core_.context(); }
+  boost::asio::io_context& io() { return io_; }
+
+  /// A connection whose session has started (its clock runs), not greeted yet.
+  std::unique_ptr<InMemoryPeer> connect() {
+    auto session = std::make_shared<InMemorySession>(context(), boost::asio::make_strand(io_));
+    session->run();
+    return std::make_unique<InMemoryPeer>(std::move(session));
+  }
+  /// A connection that said hello and got its welcome or its closing message.
+  std::unique_ptr<InMemoryPeer> join(const std::string& room, const std::string& name,
+                                     const HelloOptions& options = {}) {
+    auto peer = connect();
+    peer->hello(room, name, options);
+    peer->read_until([&] { return peer->welcome.has_value() || peer->closing.has_value(); });
+    return peer;
+  }
+
+ private:
+  static ServerConfig with_data(ServerConfig config, const std::filesystem::path& data) {
+    config.data = data.string();
+    return config;
+  }
+
+  static inline std::atomic<int> counter_{0};
+  std::filesystem::path data_;
+  server::ServerCore core_;
+  boost::asio::io_context io_;
+  boost::asio::executor_work_guard<boost::asio::io_context::executor_type> work_;
+  std::thread io_thread_;
+  bool opened_ = false;
+};
+
+}  // namespace fw::test

@@ -1,0 +1,100 @@
+// ServerCore, a server without its sockets: the avatar store and demo faces
+// it opens, the lobby and readiness, a drain, and a stop.
+#include "server_core.hpp"
+
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "in_memory_server.hpp"
+
+namespace fw::server {
+namespace {
+
+using codec::CloseCode;
+using test::eventually;
+using test::InMemoryServer;
+
+TEST(ServerCore, OpensTheStoreWithTheDemoFaces) {
+  InMemoryServer server(InMemoryServer::test_config(2));
+  const auto& demo = server.context().demo_avatars;
+  ASSERT_EQ(demo.size(), 2u);
+  EXPECT_NE(demo[0].asset, demo[1].asset) << "every face its own";
+  for (const StoredAvatar& face : demo) {
+    EXPECT_TRUE(is_asset_id(face.asset));
+    ASSERT_TRUE(face.preview && face.full);
+    EXPECT_LT(face.preview->size(), face.full->size());
+    EXPECT_TRUE(server.context().store->get(face.asset)) << "stored like an upload";
+  }
+  EXPECT_TRUE(server.context().ready.load()) << "no demo room: ready at once";
+}
+
+TEST(ServerCore, SaysWhyItCannotOpenTheStore) {
+  const auto file = std::filesystem::temp_directory_path() / ("fw-not-a-dir-" + std::to_string(::getpid()));
+  std::ofstream(file) << "x";
+  ServerConfig config = InMemoryServer::test_config();
+  config.data = file.string();
+  ServerCore core(config);
+  std::string error;
+  EXPECT_FALSE(core.open(error));
+  EXPECT_NE(error.find("cannot create the avatar store"), std::string::npos) << error;
+  EXPECT_NE(error.find("--data DIR"), std::string::npos) << error;
+  std::filesystem::remove(file);
+}
+
+TEST(ServerCore, TheLobbyNeedsThreeDemoFaces) {
+  ServerConfig config = InMemoryServer::test_config();
+  config.demo_room = true;
+  config.demo_faces = 2;
+  config.data = (std::filesystem::temp_directory_path() / ("fw-lobby-" + std::to_string(::getpid()))).string();
+  ServerCore core(config);
+  std::string error;
+  EXPECT_FALSE(core.open(error));
+  EXPECT_NE(error.find("at least 3"), std::string::npos) << error;
+  std::filesystem::remove_all(config.data);
+}
+
+TEST(ServerCore, IsReadyOnceTheLobbyIsSeated) {
+  ServerConfig config = InMemoryServer::test_config(3);
+  config.demo_room = true;
+  InMemoryServer server(config);
+  EXPECT_TRUE(eventually([&] { return server.context().ready.load(); }));
+  const auto rooms = server.core().rooms().list();
+  ASSERT_EQ(rooms.size(), 1u);
+  EXPECT_EQ(rooms[0].name, "lobby");
+  EXPECT_EQ(rooms[0].avatars, 3u);
+  EXPECT_EQ(rooms[0].persons, 0u);
+  auto visitor = server.join("lobby", "Visitor");
+  ASSERT_TRUE(visitor->welcome);
+  EXPECT_EQ(visitor->welcome->avatars[0].name, "Ada") << "she leads";
+}
+
+TEST(ServerCore, ADrainTellsEveryoneAndRefusesNewcomers) {
+  InMemoryServer server;
+  auto ann = server.join("r", "Ann");
+  ASSERT_TRUE(ann->welcome);
+  EXPECT_FALSE(server.core().drained());
+  server.core().start_draining();
+  ASSERT_TRUE(ann->read_until_closed());
+  ann->read();
+  ASSERT_TRUE(ann->closing);
+  EXPECT_EQ(ann->closing->code, CloseCode::shutting_down);
+  EXPECT_TRUE(eventually([&] { return server.core().drained(); }));
+  auto late = server.join("r", "Late");
+  ASSERT_TRUE(late->closing);
+  EXPECT_EQ(late->closing->code, CloseCode::shutting_down);
+}
+
+TEST(ServerCore, StopsItsRoomsAndWorkers) {
+  InMemoryServer server;
+  auto ann = server.join("r", "Ann");
+  ASSERT_TRUE(ann->welcome);
+  ann.reset();
+  server.core().stop();
+  EXPECT_TRUE(server.core().rooms().list().empty());
+  EXPECT_EQ(server.core().rooms().find_or_create("later"), nullptr);
+}
+
+}  // namespace
+}  // namespace fw::server

@@ -1,0 +1,263 @@
+// SubscriberStream, ticked by the test on a clock of its own (a simulated
+// second takes milliseconds), writing into an in-memory connection whose
+// peer decodes everything: the stream header, previews before packages and
+// frames after previews, the budget kept, thin budgets bundled, and latest
+// value wins when the peer stops reading.
+#include "subscriber_stream.hpp"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "in_memory_server.hpp"
+
+namespace fw::server {
+namespace {
+
+using test::eventually;
+using test::InMemoryPeer;
+using test::InMemoryServer;
+using namespace std::chrono_literals;
+
+constexpr int kTickHz = 30;
+constexpr std::uint64_t kTickUs = 1'000'000 / kTickHz;
+
+/// A face in quick motion: a smile that comes and goes, a jaw that talks,
+/// a head that turns, eyes that dart; enough to use a thin budget.
+codec::FaceParams moving_face(std::uint32_t tick) {
+  codec::FaceParams face;
+  const float t = static_cast<float>(tick);
+  face.set_au(12, 0.4f + 0.3f * std::sin(t * 0.7f));
+  face.set_au(26, 0.3f + 0.3f * std::sin(t * 1.3f));
+  face.set_au(1, 0.3f + 0.3f * std::sin(t * 0.9f));
+  face.head_yaw_rad = 0.3f * std::sin(t * 0.4f);
+  face.head_pitch_rad = 0.1f * std::sin(t * 0.6f);
+  face.eye_left.yaw_rad = face.eye_right.yaw_rad = 0.3f * std::sin(t * 1.1f);
+  return face;
+}
+
+/// A face unlike anything moving_face shows: a broad smile, the head turned far away.
+codec::FaceParams newest_face() {
+  codec::FaceParams face;
+  face.set_au(12, 1.0f);
+  face.set_au(6, 0.9f);
+  face.head_yaw_rad = -0.9f;
+  return face;
+}
+
+/// One subscriber stream over an in-memory connection, ticked by hand.
+class StreamHarness {
+ public:
+  /// `packages`: demo faces made for the test to stream as avatars' packages.
+  explicit StreamHarness(std::uint32_t budget_bps, std::uint32_t packages = 1, bool timestamps = false)
+      : server_(quiet_config(packages)), peer_(server_.connect()),
+        stream_(settings(budget_bps, timestamps), peer_->shared_session(), server_.context().metrics) {
+    drain();  // the stream header, which a room sends after its welcome
+  }
+
+  InMemoryPeer& peer() { return *peer_; }
+  InMemorySession& session() { return peer_->session(); }
+  SubscriberStream& stream() { return stream_; }
+  Metrics& metrics() { return server_.context().metrics; }
+  /// The demo faces' packages, to stream as if avatars of the room.
+  const std::vector<StoredAvatar>& packages() { return server_.context().demo_avatars; }
+  std::uint32_t ticks() const { return tick_; }
+
+  /// One tick with these faces, then (while the peer reads) waits until it
+  /// has everything, so that the stream never sees a backlog it did not cause.
+  void tick(const std::vector<std::pair<std::uint32_t, codec::FaceParams>>& faces, bool wait = true) {
+    std::vector<AvatarFace> view;
+    for (const auto& [id, face] : faces) view.push_back({id, &face});
+    ++tick_;
+    now_us_ += kTickUs;
+    stream_.tick(tick_, now_us_, view);
+    if (wait) drain();
+  }
+  void tick_moving(std::initializer_list<std::uint32_t> ids, bool wait = true) {
+    std::vector<std::pair<std::uint32_t, codec::FaceParams>> faces;
+    for (const std::uint32_t id : ids) faces.emplace_back(id, moving_face(tick_ + id * 7));
+    tick(faces, wait);
+  }
+  void drain() {
+    EXPECT_TRUE(eventually([&] { return session().queued_bytes() == 0; }, 2s));
+    peer_->read();
+  }
+
+ private:
+  static ServerConfig quiet_config(std::uint32_t packages) {
+    ServerConfig config = InMemoryServer::test_config(packages);
+    config.timeouts.handshake = std::chrono::minutes(10);  // the peer never says hello here
+    return config;
+  }
+  static StreamSettings settings(std::uint32_t budget_bps, bool timestamps) {
+    StreamSettings s;
+    s.tick_hz = kTickHz;
+    s.budget_bps = budget_bps;
+    s.timestamps = timestamps;
+    return s;
+  }
+
+  InMemoryServer server_;
+  std::unique_ptr<InMemoryPeer> peer_;
+  SubscriberStream stream_;
+  std::uint32_t tick_ = 0;
+  std::uint64_t now_us_ = 1'000'000;
+};
+
+TEST(SubscriberStream, TheStreamHeaderComesFirst) {
+  StreamHarness h(64000);
+  h.drain();
+  EXPECT_TRUE(h.peer().stream_header);
+  EXPECT_EQ(h.peer().messages_read, 1u);
+}
+
+TEST(SubscriberStream, PreviewsComeBeforeAnyFullPackageAndFramesAfterTheirPreview) {
+  StreamHarness h(64000, /*packages=*/2);
+  const auto& demo = h.packages();
+  h.stream().add_avatar(1, demo[0].preview, demo[0].full);
+  h.stream().add_avatar(2, demo[1].preview, demo[1].full);
+  bool frames_before_preview = false;
+  for (int i = 0; i < 30 * 20 && h.peer().package_order.size() < 4; ++i) {
+    h.tick_moving({1, 2});
+    for (const auto& [id, frames] : h.peer().frames_per_avatar)
+      if (frames > 0 && !h.peer().packages[{id, 0}].complete()) frames_before_preview = true;
+  }
+  ASSERT_EQ(h.peer().package_order.size(), 4u);
+  EXPECT_EQ(h.peer().package_order[0].second, 0);
+  EXPECT_EQ(h.peer().package_order[1].second, 0);
+  EXPECT_FALSE(frames_before_preview) << "a face the client cannot draw yet is not streamed";
+  EXPECT_EQ(h.peer().packages[std::pair(1u, 1)].bytes, *demo[0].full);
+  EXPECT_GT(h.peer().frames_per_avatar[1], 0u);
+  EXPECT_TRUE(h.peer().errors.empty()) << h.peer().errors.front();
+}
+
+TEST(SubscriberStream, APackageTheSubscriberHoldsIsNotSentAndItsFaceStreamsAtOnce) {
+  StreamHarness h(64000);
+  h.stream().add_avatar(1, nullptr, nullptr);
+  for (int i = 0; i < 10; ++i) h.tick_moving({1});
+  EXPECT_GT(h.peer().frames_per_avatar[1], 0u);
+  EXPECT_EQ(h.peer().package_bytes, 0u);
+}
+
+TEST(SubscriberStream, EverythingItSendsStaysWithinTheBudget) {
+  // Five seconds: the packages (about 30 KB) outlast them on each budget.
+  for (const std::uint32_t budget : {8000u, 16000u, 32000u}) {
+    StreamHarness h(budget, /*packages=*/3);
+    const auto& demo = h.packages();
+    for (std::uint32_t id = 1; id <= 3; ++id) h.stream().add_avatar(id, demo[id - 1].preview, demo[id - 1].full);
+    for (int i = 0; i < kTickHz * 5; ++i) h.tick_moving({1, 2, 3});
+    // Written bytes include the framing, as a TCP link carries them.
+    const double seconds = 5.0, allowed = budget / 8.0 * seconds;
+    const auto written = static_cast<double>(h.session().bytes_written());
+    EXPECT_LE(written, allowed) << budget << " bit/s";
+    EXPECT_GE(written, 0.8 * allowed) << budget << " bit/s: packages use what the faces leave";
+    EXPECT_EQ(h.metrics().skipped_ticks.load(), 0u) << budget << " bit/s: a peer that reads is never skipped";
+  }
+}
+
+TEST(SubscriberStream, AThinBudgetBundlesTheFramesOnEverySecondTick) {
+  StreamHarness h(2400);
+  h.stream().add_avatar(1, nullptr, nullptr);
+  h.stream().add_avatar(2, nullptr, nullptr);
+  for (int i = 0; i < kTickHz * 4; ++i) h.tick_moving({1, 2});
+  EXPECT_GT(h.peer().room_frames, 10u);
+  EXPECT_LE(h.peer().room_frames, static_cast<std::uint64_t>(kTickHz * 4 / 2));
+}
+
+TEST(SubscriberStream, AStillFaceCostsNothingButAResyncGetsItsKeyFrame) {
+  StreamHarness h(64000);
+  h.stream().add_avatar(1, nullptr, nullptr);
+  const codec::FaceParams still = newest_face();
+  for (int i = 0; i < kTickHz * 2; ++i) h.tick({{1, still}});
+  const auto frames = h.peer().room_frames;
+  for (int i = 0; i < kTickHz; ++i) h.tick({{1, still}});
+  EXPECT_EQ(h.peer().room_frames, frames) << "nothing to say";
+  const std::uint32_t lost[] = {1};
+  h.stream().force_key_frames(lost);
+  h.tick({{1, still}});
+  EXPECT_EQ(h.peer().room_frames, frames + 1);
+}
+
+TEST(SubscriberStream, ARemovedAvatarIsNoLongerStreamedNorItsPackagesSent) {
+  StreamHarness h(8000);
+  const auto& demo = h.packages();
+  h.stream().add_avatar(1, nullptr, nullptr);
+  h.stream().add_avatar(2, demo[0].preview, demo[0].full);
+  h.stream().remove_avatar(2);
+  for (int i = 0; i < kTickHz * 3; ++i) h.tick_moving({1, 2});
+  EXPECT_EQ(h.peer().package_bytes, 0u);
+  EXPECT_EQ(h.peer().frames_per_avatar.count(2), 0u);
+  EXPECT_GT(h.peer().frames_per_avatar[1], 0u);
+}
+
+TEST(SubscriberStream, LinkStatisticsComeOnceASecond) {
+  StreamHarness h(16000);
+  h.stream().add_avatar(1, nullptr, nullptr);
+  for (int i = 0; i < kTickHz * 3 + 1; ++i) h.tick_moving({1});
+  ASSERT_TRUE(h.peer().link);
+  EXPECT_NEAR(h.peer().link->target_bps, 16000 * 0.97, 1);
+  EXPECT_EQ(h.peer().link->skipped_ticks, 0u);
+  EXPECT_GT(h.peer().link->drain_bps, 0u);
+}
+
+// Latest value wins. While the peer reads nothing, the stream skips ticks
+// instead of queueing frames (the encoders hold, so nothing is lost); when
+// it reads again it gets the face of now, coded against what it last
+// decoded, and not the seconds it missed.
+TEST(SubscriberStream, APeerThatStopsReadingIsSkippedAndThenGetsTheNewestFace) {
+  constexpr std::uint32_t kBudget = 16000;
+  StreamHarness h(kBudget);
+  // Avatar 1 streams at once; avatar 2's packages fill what its frames leave.
+  h.stream().add_avatar(1, nullptr, nullptr);
+  h.stream().add_avatar(2, h.packages()[0].preview, h.packages()[0].full);
+  for (int i = 0; i < kTickHz * 2; ++i) h.tick_moving({1});
+  ASSERT_GT(h.peer().room_frames, 0u);
+  const auto frames_before_stall = h.peer().room_frames;
+
+  h.session().set_reading(false);
+  std::size_t most_queued = 0;
+  for (int i = 0; i < kTickHz * 10; ++i) {  // ten seconds of a peer that reads nothing
+    h.tick_moving({1}, /*wait=*/false);
+    most_queued = std::max(most_queued, h.session().queued_bytes());
+  }
+  const codec::FaceParams newest = newest_face();
+  for (int i = 0; i < kTickHz; ++i) {  // and a second of the face it should see next
+    h.tick({{1, newest}}, /*wait=*/false);
+    most_queued = std::max(most_queued, h.session().queued_bytes());
+  }
+  const auto stalled_ticks = static_cast<std::uint64_t>(kTickHz * 11);
+  EXPECT_GE(h.metrics().skipped_ticks.load(), stalled_ticks - kTickHz) << "ticks are skipped, not queued";
+  // The stream stops once half a second of budget waits (1 KB here).
+  EXPECT_LE(most_queued, kBudget / 8) << "no growing queue";
+
+  h.session().set_reading(true);
+  h.drain();
+  const auto stale_frames = h.peer().room_frames - frames_before_stall;
+  EXPECT_LE(stale_frames, 30u) << "what waited is about half a second of budget, not " << stalled_ticks << " ticks";
+  for (int i = 0; i < kTickHz * 3; ++i) h.tick({{1, newest}});
+  EXPECT_TRUE(h.peer().errors.empty()) << h.peer().errors.front();
+  const codec::Decoder* decoder = h.peer().decoder.avatar(1);
+  ASSERT_NE(decoder, nullptr);
+  const codec::FaceParams shown = decoder->face();
+  EXPECT_NEAR(shown.au_intensity(12), 1.0f, 0.1f) << "the newest face wins";
+  EXPECT_NEAR(shown.head_yaw_rad, -0.9f, 0.05f);
+}
+
+TEST(SubscriberStream, TheBudgetFallsToWhatDrainsAndClimbsBackWhenTheLinkRecovers) {
+  constexpr std::uint32_t kBudget = 32000;
+  StreamHarness h(kBudget);
+  h.stream().add_avatar(1, nullptr, nullptr);
+  h.stream().add_avatar(2, h.packages()[0].preview, h.packages()[0].full);  // fills the budget
+  for (int i = 0; i < kTickHz * 2; ++i) h.tick_moving({1});
+  EXPECT_NEAR(h.stream().target_bps(), kBudget * 0.97, 1);
+  h.session().set_reading(false);
+  for (int i = 0; i < kTickHz * 3; ++i) h.tick_moving({1}, /*wait=*/false);
+  EXPECT_LE(h.stream().target_bps(), 2400u + 1) << "nothing drained: the floor";
+  h.session().set_reading(true);
+  h.drain();
+  for (int i = 0; i < kTickHz * 20; ++i) h.tick_moving({1});
+  EXPECT_NEAR(h.stream().target_bps(), kBudget * 0.97, 1) << "back to the client's own budget";
+}
+
+}  // namespace
+}  // namespace fw::server
