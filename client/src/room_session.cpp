@@ -301,6 +301,11 @@ void RoomSession::chat(const std::string& text) {
   send_message(chat);
 }
 
+void RoomSession::set_rate(std::uint32_t max_bps) {
+  options_.max_bps = max_bps;
+  send_message(codec::SetRate{max_bps});
+}
+
 template <class Message>
 void RoomSession::send_message(const Message& message) {
   std::vector<std::uint8_t> bytes;

@@ -57,6 +57,9 @@ class RoomSession {
   void stop();
   /// Sends a chat line (from the io thread).
   void chat(const std::string& text);
+  /// Asks for a new downstream budget in bit/s (0: the server's default),
+  /// now and in the hello of every later connection (from the io thread).
+  void set_rate(std::uint32_t max_bps);
 
   /// Back-off between reconnection attempts: 0.5 s doubling to 8 s, back
   /// to 0.5 s after a welcome.

@@ -173,6 +173,20 @@ TEST_F(RoomSessionTest, ChatLinesGoUp) {
   EXPECT_EQ(read_as<codec::Chat>(sent[0]).text, "hi all");
 }
 
+TEST_F(RoomSessionTest, ANewBudgetIsAskedForAndKeptForTheNextConnection) {
+  join();
+  upstream();
+  session_->set_rate(4800);
+  auto sent = upstream();
+  ASSERT_EQ(sent.size(), 1u);
+  EXPECT_EQ(read_as<codec::SetRate>(sent[0]).max_bps, 4800u);
+  server_.drop();
+  ASSERT_TRUE(run_until([&] { return server_.attempts() == 2 && server_.connected(); }));
+  sent = upstream();
+  ASSERT_EQ(sent.size(), 1u);
+  EXPECT_EQ(read_as<codec::Hello>(sent[0]).max_bps, 4800u);
+}
+
 TEST_F(RoomSessionTest, AFullUpstreamQueueDropsMessagesAndSaysSo) {
   join();
   upstream();
