@@ -243,8 +243,9 @@ TEST(Encoder, UnderATightBudgetAGazeShiftBringsTheHeadAlong) {
     if (!encoder.encode(p, frame)) continue;
     const FaceParams shown = dequantise(encoder.reconstruction());
     eyes_moved = std::abs(shown.eye_left.yaw_rad + shown.head_yaw_rad - 0.6f) < 0.1f;
-    if (std::abs(shown.eye_left.yaw_rad) > 0.01f || std::abs(shown.head_yaw_rad) > 0.01f)
+    if (std::abs(shown.eye_left.yaw_rad) > 0.01f || std::abs(shown.head_yaw_rad) > 0.01f) {
       EXPECT_NEAR(shown.head_yaw_rad, 0.9f, 0.05f) << "tick " << t << ": the eyes moved without the head";
+    }
   }
   EXPECT_TRUE(eyes_moved) << "the gaze shift never went out";
 }
