@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <utility>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -79,68 +80,110 @@ render::Camera frame_seats(const behavior::Scene& scene, float aspect) {
   return camera;
 }
 
-void run(const RenderSceneArgs& args) {
-  if (args.out_dir.empty() == args.y4m.empty()) fail("give --out DIR for PNG frames or --y4m FILE (- for stdout), one of them");
+/// The frame size from --size: even, 16 to 4096 pixels each way.
+std::pair<int, int> frame_size(const RenderSceneArgs& args) {
   int width = 0, height = 0;
   if (!parse_size(args.size, width, height) || width < 16 || height < 16 || width > 4096 || height > 4096 ||
       width % 2 || height % 2)
     fail("--size must look like 960x540 (even width x height, 16 to 4096 pixels), not '" + args.size + "'");
+  return {width, height};
+}
+
+/// The scene, with every avatar seated (a version 1 scene has no seats: the default arc).
+behavior::Scene seated_scene(const std::string& path) {
   behavior::Scene scene;
   std::string error;
-  if (!behavior::read_scene(args.scene, scene, error)) fail(error);
+  if (!behavior::read_scene(path, scene, error)) fail(error);
   const std::vector<behavior::Seat> layout = behavior::seat_layout(static_cast<int>(scene.avatars.size()));
   for (std::size_t i = 0; i < scene.avatars.size(); ++i)
-    if (!scene.avatars[i].seat) scene.avatars[i].seat = layout[i];  // a version 1 scene: the default arc
+    if (!scene.avatars[i].seat) scene.avatars[i].seat = layout[i];
+  return scene;
+}
 
+/// The renderer with one face per avatar of the scene, each with its own look.
+struct Cast {
+  std::unique_ptr<render::FaceRenderer> renderer;
+  std::vector<render::AvatarAppearance> appearances;
+  std::vector<render::FaceId> ids;
+};
+
+Cast cast_for(const behavior::Scene& scene, int width, int height) {
   render::RendererOptions options;
   options.width = width;
   options.height = height;
-  auto renderer = render::FaceRenderer::create(options, error);
-  if (!renderer) fail(error);
-  std::vector<render::AvatarAppearance> appearances;
-  std::vector<render::FaceId> ids;
+  std::string error;
+  Cast cast;
+  cast.renderer = render::FaceRenderer::create(options, error);
+  if (!cast.renderer) fail(error);
   for (std::size_t i = 0; i < scene.avatars.size(); ++i) {
-    appearances.push_back(render::generic_appearance(look(i)));
-    ids.push_back(renderer->add_face(appearances.back().avatar.face, appearances.back().textures));
+    cast.appearances.push_back(render::generic_appearance(look(i)));
+    cast.ids.push_back(cast.renderer->add_face(cast.appearances.back().avatar.face, cast.appearances.back().textures));
   }
-  const render::Camera camera = frame_seats(scene, static_cast<float>(width) / static_cast<float>(height));
+  return cast;
+}
 
-  std::unique_ptr<render::Y4mWriter> y4m;
-  const int fps = std::max(1, static_cast<int>(std::lround(static_cast<double>(scene.fps) / args.every)));
-  if (!args.y4m.empty()) {
-    y4m = render::Y4mWriter::create(args.y4m, width, height, fps, error);
-    if (!y4m) fail(error);
-  } else {
-    std::filesystem::create_directories(args.out_dir);
+/// Every avatar present at tick `t`, shaped and placed in its seat.
+model::RgbaImage render_tick(Cast& cast, const behavior::Scene& scene, std::size_t t, const render::Camera& camera) {
+  std::vector<render::FaceDraw> draws;
+  for (std::size_t i = 0; i < scene.avatars.size(); ++i) {
+    const behavior::SceneAvatar& a = scene.avatars[i];
+    if (!a.present(t)) continue;
+    const codec::FaceParams& params = a.ticks[t];
+    const model::FaceShape shape = model::reconstruct_face(cast.appearances[i].avatar, params);
+    cast.renderer->set_face_shape(cast.ids[i], shape.positions, shape.uvs);
+    // The seat, as behavior::seat_layout.hpp defines it for the renderer.
+    const glm::mat4 place = glm::rotate(glm::translate(glm::mat4(1.0f), a.seat->origin_mm / model::kMillimetresPerUnit),
+                                        a.seat->facing_yaw_rad, glm::vec3(0, 1, 0));
+    draws.push_back(render::face_draw(cast.ids[i], params, place));
   }
-  const auto first = static_cast<std::size_t>(std::max(0.0, args.from_s) * scene.fps);
-  const auto last = std::min(scene.tick_count(), static_cast<std::size_t>(std::min(args.to_s, 1e7) * scene.fps));
-  std::size_t frames = 0;
-  for (std::size_t t = first; t < last; t += static_cast<std::size_t>(args.every)) {
-    std::vector<render::FaceDraw> draws;
-    for (std::size_t i = 0; i < scene.avatars.size(); ++i) {
-      const behavior::SceneAvatar& a = scene.avatars[i];
-      if (!a.present(t)) continue;
-      const codec::FaceParams& params = a.ticks[t];
-      const model::FaceShape shape = model::reconstruct_face(appearances[i].avatar, params);
-      renderer->set_face_shape(ids[i], shape.positions, shape.uvs);
-      // The seat, as behavior::seat_layout.hpp defines it for the renderer.
-      const glm::mat4 place = glm::rotate(glm::translate(glm::mat4(1.0f), a.seat->origin_mm / model::kMillimetresPerUnit),
-                                          a.seat->facing_yaw_rad, glm::vec3(0, 1, 0));
-      draws.push_back(render::face_draw(ids[i], params, place));
+  return cast.renderer->render(draws, camera);
+}
+
+/// Where the frames go: a Y4M stream, or numbered PNG files in a directory.
+class FrameOutput {
+ public:
+  FrameOutput(const RenderSceneArgs& args, int width, int height, int fps) : out_dir_(args.out_dir) {
+    if (args.y4m.empty()) {
+      std::filesystem::create_directories(out_dir_);
+      return;
     }
-    const model::RgbaImage image = renderer->render(draws, camera);
-    if (y4m) {
-      if (!y4m->write(image, error)) fail(error);
+    std::string error;
+    y4m_ = render::Y4mWriter::create(args.y4m, width, height, fps, error);
+    if (!y4m_) fail(error);
+  }
+  void write(const model::RgbaImage& image) {
+    std::string error;
+    if (y4m_) {
+      if (!y4m_->write(image, error)) fail(error);
     } else {
       char name[32];
-      std::snprintf(name, sizeof name, "frame_%06zu.png", frames);
-      if (!render::write_png(image, std::filesystem::path(args.out_dir) / name, error)) fail(error);
+      std::snprintf(name, sizeof name, "frame_%06zu.png", frames_);
+      if (!render::write_png(image, std::filesystem::path(out_dir_) / name, error)) fail(error);
     }
-    ++frames;
+    ++frames_;
   }
-  std::cerr << "facewire-server render-scene: " << frames << " frames of " << scene.avatars.size() << " faces at "
-            << fps << " fps\n";
+  std::size_t frames() const { return frames_; }
+
+ private:
+  std::string out_dir_;
+  std::unique_ptr<render::Y4mWriter> y4m_;
+  std::size_t frames_ = 0;
+};
+
+void run(const RenderSceneArgs& args) {
+  if (args.out_dir.empty() == args.y4m.empty()) fail("give --out DIR for PNG frames or --y4m FILE (- for stdout), one of them");
+  const auto [width, height] = frame_size(args);
+  const behavior::Scene scene = seated_scene(args.scene);
+  Cast cast = cast_for(scene, width, height);
+  const render::Camera camera = frame_seats(scene, static_cast<float>(width) / static_cast<float>(height));
+  const int fps = std::max(1, static_cast<int>(std::lround(static_cast<double>(scene.fps) / args.every)));
+  FrameOutput output(args, width, height, fps);
+  const auto first = static_cast<std::size_t>(std::max(0.0, args.from_s) * scene.fps);
+  const auto last = std::min(scene.tick_count(), static_cast<std::size_t>(std::min(args.to_s, 1e7) * scene.fps));
+  for (std::size_t t = first; t < last; t += static_cast<std::size_t>(args.every))
+    output.write(render_tick(cast, scene, t, camera));
+  std::cerr << "facewire-server render-scene: " << output.frames() << " frames of " << scene.avatars.size()
+            << " faces at " << fps << " fps\n";
 }
 
 }  // namespace

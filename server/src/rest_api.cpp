@@ -20,6 +20,31 @@ Response plain(http::status status, const Request& request, std::string body) {
   return response;
 }
 
+/// GET /api/packages/ID[?quality=preview]: the package, cacheable for ever (its id is its hash).
+Response package_response(ServerContext& context, const Request& request, const std::string& asset, bool preview) {
+  const auto avatar = context.store->get(asset);
+  if (!avatar)
+    return plain(http::status::not_found, request,
+                 "no avatar package '" + asset.substr(0, 64) + "'; upload one with POST /api/avatars\n");
+  const auto& bytes = preview ? *avatar->preview : *avatar->full;
+  const std::string etag = "\"" + asset + (preview ? "p" : "") + "\"";
+  Response response{request[http::field::if_none_match] == etag ? http::status::not_modified : http::status::ok,
+                    request.version()};
+  response.set(http::field::server, "facewire");
+  response.set(http::field::etag, etag);
+  response.set(http::field::cache_control, "public, max-age=31536000, immutable");  // the id is the content's hash
+  response.keep_alive(request.keep_alive());
+  if (response.result() != http::status::ok) return response;
+  response.set(http::field::content_type, "application/x-facewire-avatar");
+  if (request.method() == http::verb::head) {
+    response.content_length(bytes.size());
+  } else {
+    response.body().assign(bytes.begin(), bytes.end());
+    response.prepare_payload();
+  }
+  return response;
+}
+
 }  // namespace
 
 Response json_response(http::status status, unsigned version, bool keep_alive, std::string body) {
@@ -54,32 +79,8 @@ std::optional<Response> respond_to_api(ServerContext& context, const Request& re
                          nlohmann::json{{"rooms", rooms}}.dump() + "\n");
   }
   constexpr std::string_view kPackages = "/api/packages/";
-  if (path.substr(0, kPackages.size()) == kPackages) {
-    const std::string asset(path.substr(kPackages.size()));
-    const auto avatar = context.store->get(asset);
-    if (!avatar)
-      return plain(http::status::not_found, request,
-                   "no avatar package '" + asset.substr(0, 64) + "'; upload one with POST /api/avatars\n");
-    const bool preview = query == "quality=preview";
-    const auto& bytes = preview ? *avatar->preview : *avatar->full;
-    const std::string etag = "\"" + asset + (preview ? "p" : "") + "\"";
-    Response response{request[http::field::if_none_match] == etag ? http::status::not_modified : http::status::ok,
-                      request.version()};
-    response.set(http::field::server, "facewire");
-    response.set(http::field::etag, etag);
-    response.set(http::field::cache_control, "public, max-age=31536000, immutable");  // the id is the content's hash
-    response.keep_alive(request.keep_alive());
-    if (response.result() == http::status::ok) {
-      response.set(http::field::content_type, "application/x-facewire-avatar");
-      if (request.method() == http::verb::head) {
-        response.content_length(bytes.size());
-      } else {
-        response.body().assign(bytes.begin(), bytes.end());
-        response.prepare_payload();
-      }
-    }
-    return response;
-  }
+  if (path.substr(0, kPackages.size()) == kPackages)
+    return package_response(context, request, std::string(path.substr(kPackages.size())), query == "quality=preview");
   return std::nullopt;
 }
 

@@ -44,14 +44,9 @@ ordered_json channels_json(const script::ColourChannels& channels) {
   return out;
 }
 
-ordered_json meaning_json(const std::string& file, const script::ScriptResult& result) {
-  const script::ScriptMeaning& m = result.meaning;
-  ordered_json out;
-  out["file"] = file;
-  out["sentences"] = result.sentences;
-
-  ordered_json animations = ordered_json::array();
-  for (const script::KeyframeAnimation& a : m.animations) {
+ordered_json animations_json(const std::vector<script::KeyframeAnimation>& animations) {
+  ordered_json out = ordered_json::array();
+  for (const script::KeyframeAnimation& a : animations) {
     ordered_json keyframes = ordered_json::array();
     for (const script::Keyframe& k : a.keyframes) {
       ordered_json aus = ordered_json::array();
@@ -60,74 +55,92 @@ ordered_json meaning_json(const std::string& file, const script::ScriptResult& r
                        {"carried", au.carried}});
       keyframes.push_back({{"line", line_of(k.position)}, {"aus", std::move(aus)}});
     }
-    animations.push_back({{"line", line_of(a.position)},
-                          {"start", a.clear_frames ? "neutral" : "current"},
-                          {"keyframes", std::move(keyframes)},
-                          {"plays", plays_json(a.plays)}});
+    out.push_back({{"line", line_of(a.position)},
+                   {"start", a.clear_frames ? "neutral" : "current"},
+                   {"keyframes", std::move(keyframes)},
+                   {"plays", plays_json(a.plays)}});
   }
-  out["animations"] = std::move(animations);
+  return out;
+}
 
-  ordered_json definitions = ordered_json::array();
-  for (const script::AuDefinition& d : m.au_definitions) {
+ordered_json au_definitions_json(const std::vector<script::AuDefinition>& definitions) {
+  ordered_json out = ordered_json::array();
+  for (const script::AuDefinition& d : definitions) {
     ordered_json points = ordered_json::array();
     for (const script::ControlPointDisplacement& p : d.displacements)
       points.push_back({{"region", p.region},
                         {"face_regions", p.face_regions},
                         {"point", p.point},
                         {"displacement", p.displacement}});
-    definitions.push_back({{"line", line_of(d.position)},
-                           {"au", d.au},
-                           {"carried", d.carried},
-                           {"displacements", std::move(points)},
-                           {"preview_from", d.preview_from_neutral ? "neutral" : "current"},
-                           {"previews", plays_json(d.previews)}});
+    out.push_back({{"line", line_of(d.position)},
+                   {"au", d.au},
+                   {"carried", d.carried},
+                   {"displacements", std::move(points)},
+                   {"preview_from", d.preview_from_neutral ? "neutral" : "current"},
+                   {"previews", plays_json(d.previews)}});
   }
-  out["au_definitions"] = std::move(definitions);
+  return out;
+}
 
-  ordered_json expressions = ordered_json::array();
-  for (const script::VascularExpression& e : m.vascular_expressions) {
+ordered_json vascular_expressions_json(const std::vector<script::VascularExpression>& expressions) {
+  ordered_json out = ordered_json::array();
+  for (const script::VascularExpression& e : expressions) {
     ordered_json regions = ordered_json::array();
     for (const script::RegionIntensity& r : e.regions)
       regions.push_back({{"region", r.region}, {"channels", r.channels}, {"intensity", r.intensity}});
-    expressions.push_back({{"line", line_of(e.position)},
-                           {"name", e.name},
-                           {"regions", std::move(regions)},
-                           {"channels", channels_json(e.channels)}});
+    out.push_back({{"line", line_of(e.position)},
+                   {"name", e.name},
+                   {"regions", std::move(regions)},
+                   {"channels", channels_json(e.channels)}});
   }
-  out["vascular_expressions"] = std::move(expressions);
+  return out;
+}
 
+ordered_json stages_json(const std::vector<script::EmotionStage>& stages) {
+  ordered_json out = ordered_json::array();
+  for (const script::EmotionStage& s : stages) {
+    ordered_json stage{{"name", s.name},
+                       {"duration_percent", s.duration_percent},
+                       {"start_percent", s.start_percent},
+                       {"end_percent", s.end_percent}};
+    if (!s.expression.empty()) {
+      stage["expression"] = s.expression;
+      stage["intensity"] = s.intensity;
+    }
+    out.push_back(std::move(stage));
+  }
+  return out;
+}
+
+ordered_json emotion_json(const script::VascularEmotion& e) {
+  ordered_json envelope = ordered_json::array();
+  for (const script::EnvelopeKey& k : e.envelope)
+    envelope.push_back({{"at_percent", k.at_percent}, {"intensity", k.intensity}});
+  ordered_json emotion{{"line", line_of(e.position)},
+                       {"name", e.name},
+                       {"stages", stages_json(e.stages)},
+                       {"envelope", std::move(envelope)},
+                       {"colours_resolved", e.colours_resolved}};
+  if (e.colours_resolved) {
+    ordered_json keys = ordered_json::array();
+    for (const script::ColourKey& k : e.colour_keys)
+      keys.push_back({{"at_percent", k.at_percent}, {"channels", channels_json(k.channels)}});
+    emotion["colour_keys"] = std::move(keys);
+  }
+  return emotion;
+}
+
+ordered_json meaning_json(const std::string& file, const script::ScriptResult& result) {
+  const script::ScriptMeaning& m = result.meaning;
+  ordered_json out;
+  out["file"] = file;
+  out["sentences"] = result.sentences;
+  out["animations"] = animations_json(m.animations);
+  out["au_definitions"] = au_definitions_json(m.au_definitions);
+  out["vascular_expressions"] = vascular_expressions_json(m.vascular_expressions);
   ordered_json emotions = ordered_json::array();
-  for (const script::VascularEmotion& e : m.emotions) {
-    ordered_json stages = ordered_json::array();
-    for (const script::EmotionStage& s : e.stages) {
-      ordered_json stage{{"name", s.name},
-                         {"duration_percent", s.duration_percent},
-                         {"start_percent", s.start_percent},
-                         {"end_percent", s.end_percent}};
-      if (!s.expression.empty()) {
-        stage["expression"] = s.expression;
-        stage["intensity"] = s.intensity;
-      }
-      stages.push_back(std::move(stage));
-    }
-    ordered_json envelope = ordered_json::array();
-    for (const script::EnvelopeKey& k : e.envelope)
-      envelope.push_back({{"at_percent", k.at_percent}, {"intensity", k.intensity}});
-    ordered_json emotion{{"line", line_of(e.position)},
-                         {"name", e.name},
-                         {"stages", std::move(stages)},
-                         {"envelope", std::move(envelope)},
-                         {"colours_resolved", e.colours_resolved}};
-    if (e.colours_resolved) {
-      ordered_json keys = ordered_json::array();
-      for (const script::ColourKey& k : e.colour_keys)
-        keys.push_back({{"at_percent", k.at_percent}, {"channels", channels_json(k.channels)}});
-      emotion["colour_keys"] = std::move(keys);
-    }
-    emotions.push_back(std::move(emotion));
-  }
+  for (const script::VascularEmotion& e : m.emotions) emotions.push_back(emotion_json(e));
   out["emotions"] = std::move(emotions);
-
   ordered_json warnings = ordered_json::array();
   for (const script::Diagnostic& d : result.diagnostics)
     if (d.severity == script::Severity::warning) warnings.push_back(script::format_diagnostic(file, d));

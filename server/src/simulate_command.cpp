@@ -52,70 +52,96 @@ ScheduledChat parse_chat(const std::string& spec, const SimulateArgs& args) {
   }
 }
 
-void run(const SimulateArgs& args) {
+/// The scene being recorded: every avatar's faces and the room's events,
+/// with the simulation's ids of the avatars that have joined so far.
+class Recording {
+ public:
+  Recording(const SimulateArgs& args, std::uint32_t ticks)
+      : ticks_(ticks), seats_(behavior::seat_layout(args.avatars)) {
+    scene_.fps = args.fps;
+    ids_.assign(static_cast<std::size_t>(args.avatars), 0);
+    for (int i = 0; i < args.avatars; ++i) {
+      behavior::SceneAvatar a;
+      a.name = std::string("avatar-") + std::to_string(i + 1);
+      // Not idle in the codec's sense (a resting face): behavior keeps every face moving.
+      a.idle = false;
+      a.joined_tick = static_cast<std::uint32_t>(std::lround(i * args.join_interval_s * args.fps));
+      a.joined_tick = std::min(a.joined_tick, ticks - 1);
+      a.ticks.reserve(ticks);
+      scene_.avatars.push_back(std::move(a));
+    }
+  }
+
+  /// Seats the avatars whose time to join is tick `t`.
+  void seat_arrivals(RoomSimulation& room, std::uint32_t t) {
+    for (std::size_t i = 0; i < scene_.avatars.size(); ++i) {
+      behavior::SceneAvatar& a = scene_.avatars[i];
+      if (a.joined_tick != t) continue;
+      ids_[i] = room.add_avatar({a.name, false});
+      index_of_[ids_[i]] = static_cast<std::uint16_t>(i);
+      a.seat = seats_[i];  // nobody leaves, so the i-th to join takes the i-th seat
+    }
+  }
+
+  /// The chat lines due at tick `t` from avatars already in the room.
+  void play_chats(RoomSimulation& room, const std::vector<ScheduledChat>& chats, std::uint32_t t) const {
+    for (const ScheduledChat& c : chats) {
+      const AvatarId from = ids_[static_cast<std::size_t>(c.avatar - 1)];
+      if (c.tick == t && from != 0) room.chat(from, c.text);
+    }
+  }
+
+  /// Every avatar's face after a tick (a neutral one before it joined), and the tick's events.
+  void record_tick(RoomSimulation& room) {
+    for (std::size_t i = 0; i < scene_.avatars.size(); ++i) {
+      const AvatarId id = ids_[i];
+      scene_.avatars[i].ticks.push_back(id ? room.face(id) : codec::FaceParams{});
+      if (!id) continue;
+      ++present_faces_;
+      resting_faces_ += room.resting(id) ? 1 : 0;
+    }
+    for (RoomEvent& e : room.take_events()) {
+      const auto it = index_of_.find(e.avatar);
+      if (it == index_of_.end()) continue;
+      if (e.what.size() > behavior::kMaxSceneEventBytes) e.what.resize(behavior::kMaxSceneEventBytes);
+      scene_.events.push_back({std::min(e.tick, ticks_ - 1), it->second, std::move(e.what)});
+    }
+  }
+
+  const behavior::Scene& scene() const { return scene_; }
+  double resting_fraction() const {
+    return present_faces_ ? static_cast<double>(resting_faces_) / static_cast<double>(present_faces_) : 0.0;
+  }
+
+ private:
+  std::uint32_t ticks_;
+  std::vector<behavior::Seat> seats_;
+  behavior::Scene scene_;
+  std::vector<AvatarId> ids_;  ///< 0 until the avatar joins
+  std::map<AvatarId, std::uint16_t> index_of_;
+  std::size_t resting_faces_ = 0, present_faces_ = 0;
+};
+
+std::uint32_t tick_count(const SimulateArgs& args) {
   const auto ticks = static_cast<std::uint32_t>(std::lround(args.seconds * args.fps));
   if (ticks < 1 || ticks > behavior::kMaxSceneTicks)
     fail(std::string("--seconds gives ") + std::to_string(ticks) + " ticks; a scene holds 1 to " +
          std::to_string(behavior::kMaxSceneTicks));
-  std::vector<ScheduledChat> chats;
-  for (const std::string& c : args.chats) chats.push_back(parse_chat(c, args));
+  return ticks;
+}
 
+RoomSimulation room_for(const SimulateArgs& args) {
   RoomSimulationOptions options;
   options.seed = args.seed;
   options.tick_hz = args.fps;
   options.physics = !args.no_physics;
   options.seats = args.avatars;  // the room is laid out for everyone from the start
-  RoomSimulation room(options);
+  return RoomSimulation(options);
+}
 
-  behavior::Scene scene;
-  scene.fps = args.fps;
-  std::vector<AvatarId> ids(static_cast<std::size_t>(args.avatars), 0);
-  for (int i = 0; i < args.avatars; ++i) {
-    behavior::SceneAvatar a;
-    a.name = std::string("avatar-") + std::to_string(i + 1);
-    // Not idle in the codec's sense (a resting face): behavior keeps every face moving.
-    a.idle = false;
-    a.joined_tick = static_cast<std::uint32_t>(std::lround(i * args.join_interval_s * args.fps));
-    a.joined_tick = std::min(a.joined_tick, ticks - 1);
-    a.ticks.reserve(ticks);
-    scene.avatars.push_back(std::move(a));
-  }
-  const std::vector<behavior::Seat> seats = behavior::seat_layout(args.avatars);
-  std::map<AvatarId, std::uint16_t> index_of;
-  const auto started = std::chrono::steady_clock::now();
-  std::size_t resting_faces = 0, present_faces = 0;
-  for (std::uint32_t t = 0; t < ticks; ++t) {
-    for (int i = 0; i < args.avatars; ++i) {
-      behavior::SceneAvatar& a = scene.avatars[static_cast<std::size_t>(i)];
-      if (a.joined_tick == t) {
-        ids[static_cast<std::size_t>(i)] = room.add_avatar({a.name, false});
-        index_of[ids[static_cast<std::size_t>(i)]] = static_cast<std::uint16_t>(i);
-        // Nobody leaves, so the i-th to join takes the i-th seat.
-        a.seat = seats[static_cast<std::size_t>(i)];
-      }
-    }
-    for (const ScheduledChat& c : chats)
-      if (c.tick == t && ids[static_cast<std::size_t>(c.avatar - 1)] != 0) room.chat(ids[static_cast<std::size_t>(c.avatar - 1)], c.text);
-    room.tick();
-    for (int i = 0; i < args.avatars; ++i) {
-      const AvatarId id = ids[static_cast<std::size_t>(i)];
-      scene.avatars[static_cast<std::size_t>(i)].ticks.push_back(id ? room.face(id) : codec::FaceParams{});
-      if (id) {
-        ++present_faces;
-        resting_faces += room.resting(id) ? 1 : 0;
-      }
-    }
-    for (RoomEvent& e : room.take_events()) {
-      const auto it = index_of.find(e.avatar);
-      if (it == index_of.end()) continue;
-      if (e.what.size() > behavior::kMaxSceneEventBytes) e.what.resize(behavior::kMaxSceneEventBytes);
-      scene.events.push_back({std::min(e.tick, ticks - 1), it->second, std::move(e.what)});
-    }
-  }
-  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  std::string error;
-  if (!behavior::write_scene(scene, args.output, error)) fail(error);
-  nlohmann::json summary = {
+nlohmann::json summary_json(const SimulateArgs& args, const Recording& recording, std::uint32_t ticks,
+                            double wall_s) {
+  return {
       {"scene", args.output},
       {"avatars", args.avatars},
       {"seconds", args.seconds},
@@ -123,12 +149,30 @@ void run(const SimulateArgs& args) {
       {"seed", args.seed},
       {"physics", !args.no_physics},
       {"ticks", ticks},
-      {"events", scene.events.size()},
-      {"resting_fraction", present_faces ? static_cast<double>(resting_faces) / static_cast<double>(present_faces) : 0.0},
+      {"events", recording.scene().events.size()},
+      {"resting_fraction", recording.resting_fraction()},
       {"wall_seconds", std::round(wall_s * 1000) / 1000},
       {"simulated_seconds_per_wall_second", wall_s > 0 ? std::round(args.seconds / wall_s * 10) / 10 : 0.0},
   };
-  std::cout << summary.dump(2) << "\n";
+}
+
+void run(const SimulateArgs& args) {
+  const std::uint32_t ticks = tick_count(args);
+  std::vector<ScheduledChat> chats;
+  for (const std::string& c : args.chats) chats.push_back(parse_chat(c, args));
+  RoomSimulation room = room_for(args);
+  Recording recording(args, ticks);
+  const auto started = std::chrono::steady_clock::now();
+  for (std::uint32_t t = 0; t < ticks; ++t) {
+    recording.seat_arrivals(room, t);
+    recording.play_chats(room, chats, t);
+    room.tick();
+    recording.record_tick(room);
+  }
+  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  std::string error;
+  if (!behavior::write_scene(recording.scene(), args.output, error)) fail(error);
+  std::cout << summary_json(args, recording, ticks, wall_s).dump(2) << "\n";
 }
 
 }  // namespace

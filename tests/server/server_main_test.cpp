@@ -1,7 +1,14 @@
 // facewire-server, started for real on a loopback port and spoken to over
-// sockets.
+// sockets, and its command line as a person types it.
+#include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <tuple>
+#include <vector>
+
+#include <poll.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 
@@ -127,6 +134,87 @@ TEST(ServerCli, TokenIsMinted) {
       test::run_command(test::bin("facewire-server") + " token --room a --name Ann --ttl 60 --auth-secret s3cret");
   EXPECT_EQ(result.status, 0) << result.output;
   EXPECT_EQ(result.output.rfind("fw1.", 0), 0u) << result.output;
+}
+
+// --- the command line ------------------------------------------------------
+
+std::string server_command(const std::string& arguments) { return test::bin("facewire-server") + " " + arguments; }
+
+/// The first line `fd` delivers within `timeout_ms`.
+std::string first_line(int fd, int timeout_ms) {
+  std::string line;
+  char c;
+  pollfd p{fd, POLLIN, 0};
+  while (::poll(&p, 1, timeout_ms) > 0 && ::read(fd, &c, 1) == 1 && c != '\n') line += c;
+  return line;
+}
+
+TEST(ServerCli, FlagsWithoutASubcommandServe) {
+  const auto data = std::filesystem::temp_directory_path() / ("fw-cli-serve-" + std::to_string(::getpid()));
+  int out = -1;
+  const pid_t pid = test::spawn_shell(
+      "exec " + server_command("--http 127.0.0.1:0 --no-demo-room --data " + data.string()), false, out);
+  ASSERT_GT(pid, 0);
+  const std::string line = first_line(out, 10000);
+  ASSERT_NE(line.find("facewire-server listening on http://127.0.0.1:"), std::string::npos) << line;
+  const int port = std::atoi(line.c_str() + line.rfind(':') + 1);
+  EXPECT_EQ(http_get(port, "/healthz").status, 200);
+  ::kill(pid, SIGTERM);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "drains and exits 0 on SIGTERM";
+  ::close(out);
+  std::filesystem::remove_all(data);
+}
+
+TEST(ServerCli, AnUnknownFlagIsAUsageErrorThatNamesIt) {
+  // Every subcommand, given what it requires, so that the unknown flag is the only error.
+  const std::string scene = test::bin("facewire-server");  // any file that exists
+  for (const std::string& command : {std::string(""), std::string("serve"), std::string("token --room r"),
+                                     std::string("prep photo.jpg -o out.fwa"), std::string("script file.fws"),
+                                     std::string("simulate -o out.fws"), "render-scene " + scene}) {
+    const auto result = test::run_command(server_command(command + " --no-such-flag"));
+    EXPECT_EQ(result.status, 2) << command << ": " << result.output;
+    EXPECT_NE(result.output.find("--no-such-flag"), std::string::npos) << command << ": " << result.output;
+  }
+}
+
+TEST(ServerCli, ABadValueIsAUsageErrorThatNamesTheFlag) {
+  const std::string scene = test::bin("facewire-server");
+  for (const auto& [command, flag] : std::vector<std::pair<std::string, std::string>>{
+           {"--threads abc", "--threads"},
+           {"--room-size 0", "--room-size"},
+           {"serve --tick-hz 1000", "--tick-hz"},
+           {"--log-level loud", "--log-level"},
+           {"--no-demo-room=maybe", "--no-demo-room"},
+           {"--http localhost", "--http"},
+           {"--tcp 127.0.0.1:http", "--tcp"},
+           {"--http", "--http"},
+           {"token --room r --ttl -5", "--ttl"},
+           {"prep photo.jpg -o out.fwa --quality 500", "--quality"},
+           {"simulate -o out.fws --avatars 0", "--avatars"},
+           {"render-scene " + scene + " --every 0", "--every"}}) {
+    const auto result = test::run_command(server_command(command));
+    EXPECT_EQ(result.status, 2) << command << ": " << result.output;
+    EXPECT_NE(result.output.find(flag), std::string::npos) << command << ": " << result.output;
+  }
+}
+
+TEST(ServerCli, AMissingRequiredOptionIsAUsageError) {
+  const auto result = test::run_command(server_command("token"));
+  EXPECT_EQ(result.status, 2) << result.output;
+  EXPECT_NE(result.output.find("--room is required"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("facewire-server token --help"), std::string::npos) << "says where to look";
+}
+
+TEST(ServerCli, HelpIsNoError) {
+  for (const char* command : {"--help", "serve --help", "token --help"}) {
+    const auto result = test::run_command(server_command(command));
+    EXPECT_EQ(result.status, 0) << command << ": " << result.output;
+    EXPECT_NE(result.output.find("Options:"), std::string::npos) << command << ": " << result.output;
+  }
+  EXPECT_NE(test::run_command(server_command("--help")).output.find("serve"), std::string::npos)
+      << "the top-level help lists the subcommands";
 }
 
 }  // namespace
