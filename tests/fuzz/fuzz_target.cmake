@@ -84,5 +84,6 @@ function(fw_fuzz_target)
     COMMAND sh ${PROJECT_SOURCE_DIR}/tests/fuzz/run_fuzzer.sh ${ARG_SECONDS} ${output} ${corpus}
             ${CMAKE_BINARY_DIR}/fuzz/${ARG_NAME}-corpus ${seeds})
   math(EXPR timeout "${ARG_SECONDS} * 3 + 60")
-  set_tests_properties(fuzz_${ARG_NAME} PROPERTIES LABELS "fuzz;slow" TIMEOUT ${timeout})
+  # COST: start the long runs first, so that they do not trail the others.
+  set_tests_properties(fuzz_${ARG_NAME} PROPERTIES LABELS "fuzz;slow" TIMEOUT ${timeout} COST ${ARG_SECONDS})
 endfunction()
