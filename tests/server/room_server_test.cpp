@@ -306,6 +306,15 @@ TEST(RoomServerRest, UploadsAreCheckedAndServed) {
   EXPECT_NE(not_a_photo.body.find("not an image"), std::string::npos) << not_a_photo.body;
 }
 
+TEST(RoomServerRest, UploadsAreLimitedPerAddressAndMinute) {
+  RunningServer server("--no-demo-room");
+  // Refused from their first bytes, but counted: preparing a photo costs a second of CPU.
+  for (int i = 0; i < 6; ++i) EXPECT_EQ(post(server.http_port(), "image/png", "not a png").status, 422) << i;
+  const auto seventh = post(server.http_port(), "image/png", "not a png");
+  EXPECT_EQ(seventh.status, 429);
+  EXPECT_NE(seventh.body.find("at most 6 uploads a minute"), std::string::npos) << seventh.body;
+}
+
 TEST(RoomServerRest, AClientHoldingItsOwnPackageIsNotSentItBack) {
   RunningServer server;
   // The lobby's first face as this client's own package, uploaded again.

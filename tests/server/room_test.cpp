@@ -164,6 +164,22 @@ TEST(InMemoryRoom, ARoomHoldsRoomSizeAvatarsItsOwnIncluded) {
   EXPECT_TRUE(four->welcome) << "a seat that was given back is free again";
 }
 
+TEST(InMemoryRoom, TicksAtTheConfiguredRate) {
+  ServerConfig config = InMemoryServer::test_config();
+  config.tick_hz = 10;
+  InMemoryServer server(config);
+  auto peer = server.join("r", "Ann", {.timestamps = true, .no_packages = true});
+  ASSERT_TRUE(peer->welcome);
+  EXPECT_EQ(peer->welcome->tick_hz, 10);
+  ASSERT_TRUE(peer->read_until([&] { return !peer->ticks.empty(); }));
+  const auto [first_at, first_tick] = peer->ticks.front();
+  peer->read_for(1000ms);
+  const auto [last_at, last_tick] = peer->ticks.back();
+  const double seconds = std::chrono::duration<double>(last_at - first_at).count();
+  ASSERT_GT(seconds, 0.5);
+  EXPECT_NEAR((last_tick - first_tick) / seconds, 10.0, 2.5) << "ticks a second";
+}
+
 TEST(InMemoryRoom, EveryFaceMovesAndEveryPackageArrivesPreviewsFirst) {
   InMemoryServer server(InMemoryServer::test_config(2));
   room_with_autonomous_avatars(server, "lobby", 2);
