@@ -293,7 +293,8 @@ void ClientSession::handle_chat(std::span<const std::uint8_t> message) {
   codec::Chat chat;
   if (const auto e = codec::read_message(message, chat); e != MessageError::ok) return malformed(e, "chat");
   if (chat.text.empty()) return;
-  if (!take_token(chat_tokens_, 1)) return protocol_error(CloseCode::rate_limited, "too many chat lines; at most 2 a second");
+  if (!take_token(chat_tokens_, 1))
+    return protocol_error(CloseCode::rate_limited, "too many chat lines; at most 2 a second");
   room_->chat(avatar_, std::move(chat.text));
 }
 

@@ -19,8 +19,8 @@ namespace net = boost::asio;
 
 HttpSession::HttpSession(ServerContext& context, PhotoPreparation& photos, net::ip::tcp::socket&& socket,
                          std::shared_ptr<std::atomic<std::size_t>> open_connections)
-    : context_(context), photos_(photos), stream_(std::move(socket)), buffer_(limits::kMaxHeaderBytes + limits::kMaxBodyBytes),
-      open_connections_(std::move(open_connections)) {
+    : context_(context), photos_(photos), stream_(std::move(socket)),
+      buffer_(limits::kMaxHeaderBytes + limits::kMaxBodyBytes), open_connections_(std::move(open_connections)) {
   beast::error_code ec;
   peer_address_ = stream_.socket().remote_endpoint(ec).address().to_string();
   context_.metrics.http_connections.fetch_add(1);

@@ -38,8 +38,8 @@ std::shared_ptr<Listener> listen(net::io_context& ioc, const std::string& flag, 
   boost::beast::error_code ec;
   auto listener = std::make_shared<Listener>(ioc, *endpoint, std::move(factory), ec);
   if (ec) {
-    error = "cannot listen on " + address + ": " + ec.message() + " (is another server using the port? choose another with " +
-            flag + " ADDR:PORT)";
+    error = "cannot listen on " + address + ": " + ec.message() +
+            " (is another server using the port? choose another with " + flag + " ADDR:PORT)";
     return nullptr;
   }
   listener->run();
@@ -58,21 +58,21 @@ struct Listeners {
 
 bool open_listeners(net::io_context& ioc, ServerContext& context, PhotoPreparation& photos, Listeners& listeners,
                     std::string& error) {
-  listeners.http = listen(ioc, "--http", context.config.http,
-                          [&context, &photos](net::ip::tcp::socket&& socket, auto counter) {
-                            std::make_shared<HttpSession>(context, photos, std::move(socket), std::move(counter))->run();
-                          },
-                          error);
-  if (!listeners.http) return false;
-  if (context.config.tcp.empty()) return true;
-  listeners.tcp = listen(ioc, "--tcp", context.config.tcp, [&context](net::ip::tcp::socket&& socket, auto counter) {
+  const auto http_session = [&context, &photos](net::ip::tcp::socket&& socket, auto counter) {
+    std::make_shared<HttpSession>(context, photos, std::move(socket), std::move(counter))->run();
+  };
+  const auto tcp_session = [&context](net::ip::tcp::socket&& socket, auto counter) {
     boost::system::error_code ec;
     std::string peer = socket.remote_endpoint(ec).address().to_string();
     std::make_shared<TcpSession>(context, std::move(socket), std::move(peer))->run();
     // Room connections are bounded by rooms x room size, not by the
     // listener's count (which limits sockets still greeting).
     --*counter;
-  }, error);
+  };
+  listeners.http = listen(ioc, "--http", context.config.http, http_session, error);
+  if (!listeners.http) return false;
+  if (context.config.tcp.empty()) return true;
+  listeners.tcp = listen(ioc, "--tcp", context.config.tcp, tcp_session, error);
   return listeners.tcp != nullptr;
 }
 

@@ -31,7 +31,9 @@ void add_address_flags(CLI::App& cmd, ServerConfig& config) {
   cmd.add_option("--tcp", config.tcp, "length-prefixed TCP address for native clients, ADDR:PORT (default: off)")
       ->envname("FACEWIRE_TCP")
       ->check(endpoint_check());
-  cmd.add_option("--data", config.data, "directory of the avatar store")->envname("FACEWIRE_DATA")->capture_default_str();
+  cmd.add_option("--data", config.data, "directory of the avatar store")
+      ->envname("FACEWIRE_DATA")
+      ->capture_default_str();
 }
 
 void add_thread_flags(CLI::App& cmd, ServerConfig& config) {
