@@ -10,6 +10,9 @@ FUZZ_SECONDS ?= 300
 # relative to the clone, so that another clone of the same tree hits it too.
 export CCACHE_BASEDIR := $(CURDIR)
 export CCACHE_NOHASHDIR := true
+# Precompiled headers (cmake/fast_build.cmake) are cached too; ccache asks
+# for these sloppiness settings before it caches a file that uses one.
+export CCACHE_SLOPPINESS := pch_defines,time_macros,include_file_mtime,include_file_ctime
 
 .PHONY: all deps build run test test-asan fuzz bench facegen clean
 

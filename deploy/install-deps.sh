@@ -8,6 +8,7 @@ set -euo pipefail
 build_packages=(
   build-essential cmake pkg-config git
   ccache                                      # compiler cache: warm CI builds in minutes
+  ninja-build mold                            # build tool and linker: builds and links in less time
   libboost-dev libboost-system-dev            # Asio + Beast (server, client)
   libopencv-dev opencv-data                   # photo preparation
   libglm-dev                                  # vector maths (model, physics)
