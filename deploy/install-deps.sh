@@ -23,7 +23,7 @@ build_packages=(
 )
 # What the test suites run besides ctest.
 test_packages=(
-  clang libclang-rt-14-dev                    # libFuzzer targets and sanitizers
+  clang libclang-rt-14-dev                    # the sanitizer build, libFuzzer targets
   chromium chromium-driver                    # browser end-to-end tests
   ffmpeg                                      # recorded room videos
   redis-server                                # cluster tests against real Redis

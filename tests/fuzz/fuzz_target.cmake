@@ -85,5 +85,7 @@ function(fw_fuzz_target)
             ${CMAKE_BINARY_DIR}/fuzz/${ARG_NAME}-corpus ${seeds})
   math(EXPR timeout "${ARG_SECONDS} * 3 + 60")
   # COST: start the long runs first, so that they do not trail the others.
-  set_tests_properties(fuzz_${ARG_NAME} PROPERTIES LABELS "fuzz;slow" TIMEOUT ${timeout} COST ${ARG_SECONDS})
+  # PROCESSORS 2: a fuzzer keeps a whole core busy (tests/CMakeLists.txt, CORES).
+  set_tests_properties(fuzz_${ARG_NAME} PROPERTIES LABELS "fuzz;slow" TIMEOUT ${timeout} COST ${ARG_SECONDS}
+                       PROCESSORS 2)
 endfunction()
