@@ -197,7 +197,6 @@ export async function startFacePreview(canvas, status) {
     gl.uniform3fv(uniform('u_camera_position'), eyePosition);
     gl.uniform3fv(uniform('u_light_direction'), [0.45, 0.6, 0.9]);
     gl.uniform1i(uniform('u_texture'), 0);
-    gl.uniform3f(uniform('u_frame'), face.texture_frame.origin[0], face.texture_frame.origin[1], face.texture_frame.size);
     // The preview has no closed-lid skin or blood masks: lids open, colour unchanged.
     gl.uniform4f(uniform('u_closed_lid_rect'), -2, -2, -1, -1);
     for (const part of parts) {

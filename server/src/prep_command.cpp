@@ -64,7 +64,7 @@ int prep(const PrepArgs& args) {
 void add_prep_command(CLI::App& app) {
   auto args = std::make_shared<PrepArgs>();
   CLI::App* cmd = app.add_subcommand("prep", "Prepare an avatar package (.fwa) from a photo");
-  cmd->add_option("photo", args->photo, "JPEG or PNG photo of one face (at most 10 MB, 40 megapixels)")->required();
+  cmd->add_option("photo", args->photo, "JPEG, PNG or WebP photo of one face (at most 10 MB, 40 megapixels)")->required();
   cmd->add_option("-o,--output", args->output, "package to write, e.g. NAME.fwa")->required();
   cmd->add_option("--preview", args->preview, "also write a preview sheet (PNG)");
   cmd->add_option("--face-index", args->face_index, "which face when there are several: 0 = the largest")

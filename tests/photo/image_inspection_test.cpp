@@ -8,9 +8,10 @@
 namespace fw::photo {
 namespace {
 
-std::vector<std::uint8_t> encoded(int width, int height, const char* extension) {
+std::vector<std::uint8_t> encoded(int width, int height, const char* extension, int webp_quality = 80) {
   std::vector<uchar> bytes;
-  cv::imencode(extension, cv::Mat(height, width, CV_8UC3, cv::Scalar(10, 20, 30)), bytes);
+  cv::imencode(extension, cv::Mat(height, width, CV_8UC3, cv::Scalar(10, 20, 30)), bytes,
+               {cv::IMWRITE_WEBP_QUALITY, webp_quality});
   return {bytes.begin(), bytes.end()};
 }
 
@@ -46,11 +47,27 @@ TEST(ImageInspection, EveryTruncationOfASmallJpegIsCaught) {
 
 TEST(ImageInspection, NamesOtherFormats) {
   PrepError error;
-  static constexpr char kWebp[] = "RIFF\x10\0\0\0WEBPVP8 ";
-  const std::string webp(kWebp, sizeof kWebp - 1);
-  EXPECT_FALSE(inspect_photo({reinterpret_cast<const std::uint8_t*>(webp.data()), webp.size()}, error));
+  const auto gif = std::string("GIF89a") + std::string(20, '\0');
+  EXPECT_FALSE(inspect_photo({reinterpret_cast<const std::uint8_t*>(gif.data()), gif.size()}, error));
   EXPECT_EQ(error.code, PrepErrorCode::unsupported_format);
-  EXPECT_NE(error.message.find("WebP"), std::string::npos);
+  EXPECT_NE(error.message.find("GIF image; facewire reads JPEG, PNG and WebP"), std::string::npos) << error.message;
+}
+
+// WebP, lossy and lossless, as OpenCV writes them: its size from the first
+// chunk, and a file cut short is truncated.
+TEST(ImageInspection, ReadsWebPHeadersAndFindsTruncation) {
+  for (const int quality : {80, 101}) {  // above 100: lossless (VP8L)
+    SCOPED_TRACE(quality);
+    const auto webp = encoded(37, 23, ".webp", quality);
+    PrepError error;
+    const auto header = inspect_photo(webp, error);
+    ASSERT_TRUE(header.has_value()) << error.message;
+    EXPECT_EQ(header->format, PhotoFormat::webp);
+    EXPECT_EQ(header->width, 37);
+    EXPECT_EQ(header->height, 23);
+    EXPECT_FALSE(inspect_photo(std::span(webp).first(webp.size() - 1), error).has_value());
+    EXPECT_EQ(error.code, PrepErrorCode::truncated) << error.message;
+  }
 }
 
 }  // namespace

@@ -53,6 +53,11 @@ class PrepareAvatarTest : public ::testing::Test {
     return glm::length(left - right);
   }
 
+  // Each variant is accepted, and its landmarks agree with the original's,
+  // mapped through the variant's transform, within 5 % of the inter-ocular
+  // distance.
+  static void expect_same_landmarks(const std::vector<test::PhotoVariant>& variants);
+
   static inline AvatarPreparer* preparer_ = nullptr;
   static inline cv::Mat* original_ = nullptr;
 };
@@ -97,12 +102,20 @@ TEST_F(PrepareAvatarTest, TextureHasHolesExactlyAtTheEyes) {
   EXPECT_EQ(alpha_at({0.0f, -1.0f}), 255) << "the mouth is skin in the face texture";
 }
 
-TEST_F(PrepareAvatarTest, VariantsFindTheSameLandmarks) {
+TEST_F(PrepareAvatarTest, VariantsFindTheSameLandmarks) { expect_same_landmarks(test::standard_variants(*original_)); }
+
+// A photo stored sideways or upside down, or a head rolled far over, is
+// accepted, and its landmarks, mapped back, are the upright photo's.
+TEST_F(PrepareAvatarTest, AnyRollIsAcceptedWithTheSameLandmarks) {
+  expect_same_landmarks(test::roll_variants(*original_));
+}
+
+void PrepareAvatarTest::expect_same_landmarks(const std::vector<test::PhotoVariant>& variants) {
   PrepError error;
   const auto reference = prepare(test::encode(*original_), error);
   ASSERT_TRUE(reference.has_value()) << error.message;
   const auto& original_landmarks = reference->report.photo_landmarks;
-  for (const test::PhotoVariant& variant : test::standard_variants(*original_)) {
+  for (const test::PhotoVariant& variant : variants) {
     SCOPED_TRACE(variant.name);
     const auto avatar = prepare(test::encode(variant.image), error);
     ASSERT_TRUE(avatar.has_value()) << error.message;
@@ -188,7 +201,7 @@ TEST_F(PrepareAvatarTest, TheCheckWithoutTheModelRefusesWhatPrepareRefusesFromTh
 }
 
 TEST_F(PrepareAvatarTest, NamesUnsupportedFormats) {
-  expect_refused(test::encode(*original_, ".bmp"), PrepErrorCode::unsupported_format, "BMP image; facewire reads JPEG and PNG");
+  expect_refused(test::encode(*original_, ".bmp"), PrepErrorCode::unsupported_format, "BMP image; facewire reads JPEG, PNG and WebP");
   const std::string gif = "GIF89a\x01\x00\x01\x00\x00\x00\x00;";
   expect_refused({gif.begin(), gif.end()}, PrepErrorCode::unsupported_format, "GIF");
 }
@@ -221,7 +234,7 @@ TEST_F(PrepareAvatarTest, NoFaceSuggestsWhatWorks) {
   cv::Mat landscape(600, 800, CV_8UC3);
   cv::randu(landscape, cv::Scalar(0, 0, 0), cv::Scalar(255, 255, 255));
   cv::GaussianBlur(landscape, landscape, cv::Size(31, 31), 8);
-  expect_refused(test::encode(landscape), PrepErrorCode::no_face, "frontal, upright, well-lit photo with the face at least about 100 px wide");
+  expect_refused(test::encode(landscape), PrepErrorCode::no_face, "take one facing the camera in good light");
 }
 
 TEST_F(PrepareAvatarTest, RefusesATinyFace) {
@@ -272,33 +285,20 @@ cv::Mat render_turned(const model::AvatarPackage& package, float yaw_deg) {
   return bgr;
 }
 
-TEST_F(PrepareAvatarTest, RefusesAHeadTurnedAway) {
+TEST_F(PrepareAvatarTest, AcceptsAHeadTurned30DegreesAndRefusesOneTurnedAway) {
   PrepError error;
   const auto reference = prepare(test::encode(*original_), error);
   ASSERT_TRUE(reference.has_value()) << error.message;
-  // Facing the camera, the rendered avatar is accepted...
+  // Facing the camera, and turned 30 degrees, the rendered avatar is accepted...
   EXPECT_TRUE(prepare(test::encode(render_turned(reference->package, 0.0f)), error).has_value()) << error.message;
-  // ...turned well past the limit, it is not.
-  const auto turned = prepare(test::encode(render_turned(reference->package, 40.0f)), error);
+  const auto thirty = prepare(test::encode(render_turned(reference->package, 30.0f)), error);
+  EXPECT_TRUE(thirty.has_value()) << error.message;
+  // ...turned far away, it is not: the detector no longer sees a face there
+  // (pose_checks_test covers the estimate's own limit of 35 degrees).
+  const auto turned = prepare(test::encode(render_turned(reference->package, 60.0f)), error);
   EXPECT_FALSE(turned.has_value()) << "accepted with an estimated turn of " << turned->report.yaw_deg << " degrees";
-  EXPECT_EQ(error.code, PrepErrorCode::head_turned) << error.message;
-  EXPECT_NE(error.message.find("use a photo facing the camera"), std::string::npos) << error.message;
-}
-
-TEST_F(PrepareAvatarTest, RefusesAHeadTiltedTooFar) {
-  PrepError error;
-  for (double degrees : {45.0, 60.0}) {
-    const cv::Mat m = cv::getRotationMatrix2D(cv::Point2f(225, 140), degrees, 1.0);
-    cv::Mat tilted;
-    cv::warpAffine(*original_, tilted, m, original_->size(), cv::INTER_LINEAR, cv::BORDER_REPLICATE);
-    const auto avatar = prepare(test::encode(tilted), error);
-    EXPECT_FALSE(avatar.has_value()) << degrees << (avatar ? " roll " + std::to_string(avatar->report.roll_deg) : "");
-    // Refused as tilted, or because no frontal face or no frontal fit is found.
-    EXPECT_TRUE(error.code == PrepErrorCode::head_tilted || error.code == PrepErrorCode::no_face ||
-                error.code == PrepErrorCode::head_turned)
-        << degrees << ": " << error.message;
-    EXPECT_NE(error.message.find("upright"), std::string::npos) << error.message;
-  }
+  EXPECT_TRUE(error.code == PrepErrorCode::head_turned || error.code == PrepErrorCode::no_face) << error.message;
+  EXPECT_NE(error.message.find("facing the camera"), std::string::npos) << error.message;
 }
 
 TEST_F(PrepareAvatarTest, RefusesBadOptions) {

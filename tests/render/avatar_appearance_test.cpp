@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 
 #include <gtest/gtest.h>
@@ -117,6 +118,38 @@ TEST_F(ExpressiveRenderTest, AFullBlinkCoversTheEyeWithSkin) {
                    p[0] > p[2];
     }
   EXPECT_GT(skin_like, total * 8 / 10) << skin_like << " of " << total << " pixels across the closed eye are skin";
+}
+
+// The closed-lid layer covers the eyes only: a blink during a broad smile
+// and raised brows leaves the lips and brows as the smile has them (it once
+// painted the whole rest-pose face over the expression). The closing lids
+// stretch the skin up to the brows a little, which changes its shading by a
+// few levels; a visible change is more than 8.
+TEST_F(ExpressiveRenderTest, ABlinkLeavesLipsAndBrowsWhereTheyWere) {
+  codec::FaceParams smile;
+  smile.set_au(12, 1.0f);  // lip corners up
+  smile.set_au(25, 0.6f);  // lips apart
+  smile.set_au(1, 1.0f);   // inner brows up
+  smile.set_au(2, 1.0f);   // outer brows up
+  codec::FaceParams blinking = smile;
+  blinking.lid_left = blinking.lid_right = 1.0f;
+  const model::RgbaImage open = render(smile), shut = render(blinking);
+  const auto changed_in = [&](glm::vec2 low, glm::vec2 high) {
+    const glm::ivec2 a = pixel({low.x, high.y}), b = pixel({high.x, low.y});
+    int changed = 0;
+    for (int y = std::min(a.y, b.y); y <= std::max(a.y, b.y); ++y)
+      for (int x = std::min(a.x, b.x); x <= std::max(a.x, b.x); ++x)
+        for (int c = 0; c < 3; ++c) {
+          if (std::abs(open.at(x, y)[c] - shut.at(x, y)[c]) > 8) {
+            ++changed;
+            break;
+          }
+        }
+    return changed;
+  };
+  EXPECT_EQ(changed_in({-0.45f, -1.35f}, {0.45f, -0.85f}), 0) << "pixels of the mouth changed visibly";
+  EXPECT_EQ(changed_in({-0.95f, 0.25f}, {0.95f, 0.7f}), 0) << "pixels of the brows changed visibly";
+  EXPECT_GT(changed_in({0.3f, -0.08f}, {0.7f, 0.08f}), 20) << "the left eye closed";
 }
 
 TEST_F(ExpressiveRenderTest, CheekBlushReddensTheCheeksOnly) {

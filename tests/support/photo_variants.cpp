@@ -59,6 +59,12 @@ std::vector<PhotoVariant> standard_variants(const cv::Mat& original) {
   return variants;
 }
 
+std::vector<PhotoVariant> roll_variants(const cv::Mat& original) {
+  std::vector<PhotoVariant> variants;
+  for (const double degrees : {45.0, 90.0, 180.0}) variants.push_back(rotated(original, degrees));
+  return variants;
+}
+
 std::vector<PhotoVariant> large_variants(const cv::Mat& original) {
   std::vector<PhotoVariant> variants;
   for (PhotoVariant v : standard_variants(original)) {

@@ -27,6 +27,10 @@ cv::Mat load_astronaut();
 /// into a large canvas.
 std::vector<PhotoVariant> standard_variants(const cv::Mat& original);
 
+/// Rolled far over: rotated 45, 90 and 180 degrees (the photo's corners
+/// filled from its edges).
+std::vector<PhotoVariant> roll_variants(const cv::Mat& original);
+
 /// The standard variants, each made 1920x1280 (the photo scaled to fill the
 /// height and centred on a grey canvas): the benchmark's photos.
 std::vector<PhotoVariant> large_variants(const cv::Mat& original);

@@ -9,7 +9,7 @@
 
 namespace fw::photo {
 
-/// Decodes an inspected JPEG or PNG to 8-bit BGR, turned upright by its EXIF
+/// Decodes an inspected JPEG, PNG or WebP to 8-bit BGR, turned upright by its EXIF
 /// orientation; grayscale photos come out as three equal channels.
 std::optional<cv::Mat> decode_photo(std::span<const std::uint8_t> bytes, PrepError& error);
 

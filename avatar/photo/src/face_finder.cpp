@@ -28,6 +28,8 @@ constexpr int kLandmarkFaceWidth = 200;
 // Detections below this confidence are mostly not faces (badges, patterns);
 // the best one is kept all the same when nothing scores higher.
 constexpr double kMinConfidence = 0.2;
+// A face found this confidently in the photo as it is needs no other view.
+constexpr double kConfidentFace = 0.5;
 // Where dlib's detector puts its box relative to the eyes on upright frontal
 // faces (measured): 2.05 inter-ocular distances wide, centred 0.52 of them
 // below the eye midpoint. The second landmark pass uses this box, so the
@@ -72,7 +74,68 @@ std::unique_ptr<FaceFinder> FaceFinder::load(const std::optional<std::filesystem
   return finder;
 }
 
-std::vector<cv::Rect> FaceFinder::detect(const cv::Mat& gray) {
+namespace {
+
+// The photo turned by `degrees` (counterclockwise) about its centre, on a
+// canvas large enough to hold all of it.
+cv::Matx23d turn_whole(cv::Size size, double degrees, cv::Size& turned_size) {
+  const cv::Point2f centre(static_cast<float>(size.width) / 2.0f, static_cast<float>(size.height) / 2.0f);
+  cv::Matx23d m = cv::getRotationMatrix2D(centre, degrees, 1.0);
+  const double c = std::abs(m(0, 0)), s = std::abs(m(0, 1));
+  turned_size = cv::Size(static_cast<int>(std::lround(size.width * c + size.height * s)),
+                         static_cast<int>(std::lround(size.width * s + size.height * c)));
+  m(0, 2) += turned_size.width / 2.0 - centre.x;
+  m(1, 2) += turned_size.height / 2.0 - centre.y;
+  return m;
+}
+
+// The bounding box, in photo pixels, of `box` in a view `photo_to_view`.
+cv::Rect box_in_photo(const cv::Rect& box, const cv::Matx23d& photo_to_view) {
+  cv::Matx23d view_to_photo;
+  cv::invertAffineTransform(photo_to_view, view_to_photo);
+  std::vector<cv::Point2f> corners;
+  for (const cv::Point2f c : {cv::Point2f(box.tl()), cv::Point2f(box.br()), cv::Point2f(box.x, box.y + box.height),
+                              cv::Point2f(box.x + box.width, box.y)}) {
+    const cv::Vec3d q(c.x, c.y, 1.0);
+    const cv::Vec2d p = view_to_photo * q;
+    corners.emplace_back(static_cast<float>(p[0]), static_cast<float>(p[1]));
+  }
+  return cv::boundingRect(corners);
+}
+
+}  // namespace
+
+std::vector<FoundFace> FaceFinder::detect(const cv::Mat& gray) {
+  // The photo as it is first. A confident face there ends the search; a
+  // weak one (a face rolled far over is often half seen) or none sends the
+  // detector to the turned views, and the view with the most confident face
+  // wins.
+  std::vector<FoundFace> best;
+  double best_confidence = -1e9;
+  for (const double turn : {0.0, 90.0, -90.0, 180.0, 45.0, -45.0, 135.0, -135.0}) {
+    cv::Matx23d photo_to_view(1, 0, 0, 0, 1, 0);
+    cv::Mat turned;  // its own pixels: warping into `gray`'s would overwrite the photo
+    if (turn != 0.0) {
+      cv::Size size;
+      photo_to_view = turn_whole(gray.size(), turn, size);
+      cv::warpAffine(gray, turned, photo_to_view, size, cv::INTER_LINEAR, cv::BORDER_REPLICATE);
+    }
+    double confidence = 0;
+    const std::vector<cv::Rect> boxes = detect_in(turn == 0.0 ? gray : turned, confidence);
+    if (boxes.empty() || confidence <= best_confidence) continue;
+    best.clear();
+    best_confidence = confidence;
+    for (const cv::Rect& box : boxes)
+      best.push_back({turn == 0.0 ? box : box_in_photo(box, photo_to_view), photo_to_view, box, turn});
+    if (confidence >= kConfidentFace) break;
+  }
+  // Turned views must be confident: a view the photo does not need should
+  // not find a face in a pattern.
+  if (!best.empty() && best.front().turn_deg != 0.0 && best_confidence < kMinConfidence) best.clear();
+  return best;
+}
+
+std::vector<cv::Rect> FaceFinder::detect_in(const cv::Mat& gray, double& best_confidence) {
   std::vector<cv::Rect> boxes;
   for (const int side : {kDetectionSide, 2 * kDetectionSide}) {
     const double scale = std::min(kMaxUpscale, static_cast<double>(side) / std::max(gray.cols, gray.rows));
@@ -87,6 +150,7 @@ std::vector<cv::Rect> FaceFinder::detect(const cv::Mat& gray) {
     if (detections.empty()) continue;
     std::sort(detections.begin(), detections.end(),
               [](const auto& a, const auto& b) { return a.detection_confidence > b.detection_confidence; });
+    best_confidence = detections.front().detection_confidence;
     for (std::size_t i = 0; i < detections.size(); ++i) {
       if (i > 0 && detections[i].detection_confidence < kMinConfidence) break;
       const dlib::rectangle& r = detections[i].rect;
@@ -121,12 +185,19 @@ PhotoLandmarks FaceFinder::predict(const cv::Mat& gray, const cv::Matx23d& photo
   return points;
 }
 
-PhotoLandmarks FaceFinder::landmarks(const cv::Mat& gray, const cv::Rect& box) const {
-  // Pass 1: the detector's box, on the face's neighbourhood, enlarged when
-  // the face is small (the predictor's landmarks are whole patch pixels).
+PhotoLandmarks FaceFinder::landmarks(const cv::Mat& gray, const FoundFace& face) const {
+  // Pass 1: the detector's box, on the face's neighbourhood in the
+  // detector's view, enlarged when the face is small (the predictor's
+  // landmarks are whole patch pixels).
+  const cv::Rect& box = face.view_box;
   const double scale = std::clamp(static_cast<double>(kLandmarkFaceWidth) / box.width, 1.0, kMaxUpscale);
   const cv::Point2d origin(box.x - box.width, box.y - box.height);
-  const cv::Matx23d crop(scale, 0, -origin.x * scale, 0, scale, -origin.y * scale);
+  const cv::Matx33d view_to_patch(scale, 0, -origin.x * scale, 0, scale, -origin.y * scale, 0, 0, 1);
+  const cv::Matx33d photo_to_view(face.photo_to_view(0, 0), face.photo_to_view(0, 1), face.photo_to_view(0, 2),
+                                  face.photo_to_view(1, 0), face.photo_to_view(1, 1), face.photo_to_view(1, 2), 0, 0, 1);
+  const cv::Matx33d photo_to_patch = view_to_patch * photo_to_view;
+  const cv::Matx23d crop(photo_to_patch(0, 0), photo_to_patch(0, 1), photo_to_patch(0, 2), photo_to_patch(1, 0),
+                         photo_to_patch(1, 1), photo_to_patch(1, 2));
   const cv::Size crop_size(static_cast<int>(3 * box.width * scale), static_cast<int>(3 * box.height * scale));
   const PhotoLandmarks first =
       predict(gray, crop, crop_size, cv::Rect2d(box.width * scale, box.height * scale, box.width * scale, box.height * scale));

@@ -18,23 +18,41 @@ namespace fw::photo {
 
 using PhotoLandmarks = std::array<glm::vec2, model::kLandmarkCount>;  ///< photo pixels
 
+/// A face the detector found, in the view of the photo it was found in: the
+/// photo itself, or the photo turned by a multiple of 45 degrees when the
+/// face is rolled too far for the detector to see it upright.
+struct FoundFace {
+  cv::Rect box;                  ///< the face's bounding box in photo pixels
+  cv::Matx23d photo_to_view{1, 0, 0, 0, 1, 0};  ///< photo pixels to the detector's view
+  cv::Rect view_box;             ///< the detector's box in that view
+  double turn_deg = 0;           ///< how far the view is turned, counterclockwise
+};
+
 class FaceFinder {
  public:
   /// Loads the shape predictor (about 95 MB, a second or so): once per process.
   static std::unique_ptr<FaceFinder> load(const std::optional<std::filesystem::path>& model_path, PrepError& error);
   ~FaceFinder();
 
-  /// Face boxes in full-resolution photo pixels, largest first.
-  /// Not thread-safe: dlib's detector keeps scratch state.
-  std::vector<cv::Rect> detect(const cv::Mat& gray);
+  /// The faces in the photo, largest first. The detector looks at the photo
+  /// as it is, then, unless it found a face there confidently, turned by 90,
+  /// -90 and 180 degrees (a phone photo stored sideways or upside down) and
+  /// by the odd multiples of 45 degrees (a head rolled far over), and keeps
+  /// the faces of the view with the most confident one. Not thread-safe:
+  /// dlib's detector keeps scratch state.
+  std::vector<FoundFace> detect(const cv::Mat& gray);
 
-  /// The 68 landmarks of the face in `box`, found on the full-resolution
-  /// image: a first pass in the detector's box, a second on the face turned
-  /// upright at a fixed size in a box placed from the first pass's eyes.
-  PhotoLandmarks landmarks(const cv::Mat& gray, const cv::Rect& box) const;
+  /// The 68 landmarks of `face`, in photo pixels, found on the
+  /// full-resolution image: a first pass in the detector's box (in its
+  /// view), a second on the face turned upright at a fixed size in a box
+  /// placed from the first pass's eyes, so that any roll is taken out.
+  PhotoLandmarks landmarks(const cv::Mat& gray, const FoundFace& face) const;
 
  private:
   FaceFinder();
+  /// The detector's boxes in `view`, largest first, and the best one's
+  /// confidence; boxes below kMinConfidence only when nothing scores higher.
+  std::vector<cv::Rect> detect_in(const cv::Mat& view, double& best_confidence);
   PhotoLandmarks predict(const cv::Mat& gray, const cv::Matx23d& photo_to_patch, cv::Size size,
                          const cv::Rect2d& box) const;
   struct Impl;

@@ -23,11 +23,10 @@ std::optional<PhotoHeader> fail(PrepError& error, PrepErrorCode code, std::strin
   return std::nullopt;
 }
 
-// Names the formats people most often send instead of JPEG or PNG.
+// Names the formats people most often send instead of JPEG, PNG or WebP.
 const char* other_image_format(std::span<const std::uint8_t> b) {
   if (starts_with(b, "GIF8", 4)) return "GIF";
   if (starts_with(b, "BM", 2)) return "BMP";
-  if (starts_with(b, "RIFF", 4) && starts_with(b, "WEBP", 4, 8)) return "WebP";
   if (starts_with(b, "II*\0", 4) || starts_with(b, "MM\0*", 4)) return "TIFF";
   if (starts_with(b, "ftypheic", 8, 4) || starts_with(b, "ftypmif1", 8, 4) || starts_with(b, "ftypheix", 8, 4)) return "HEIC";
   if (starts_with(b, "ftypavif", 8, 4)) return "AVIF";
@@ -52,6 +51,44 @@ std::optional<PhotoHeader> inspect_png(std::span<const std::uint8_t> b, PrepErro
     if (std::memcmp(type, "IEND", 4) == 0) return header;
     at += 12 + length;
   }
+}
+
+std::uint32_t le32(const std::uint8_t* p) {
+  return static_cast<std::uint32_t>(p[3]) << 24 | static_cast<std::uint32_t>(p[2]) << 16 |
+         static_cast<std::uint32_t>(p[1]) << 8 | p[0];
+}
+std::uint32_t le24(const std::uint8_t* p) {
+  return static_cast<std::uint32_t>(p[2]) << 16 | static_cast<std::uint32_t>(p[1]) << 8 | p[0];
+}
+
+// A WebP file: "RIFF", the bytes that follow, "WEBP", then the first chunk,
+// whose header gives the size: VP8 (lossy), VP8L (lossless) or VP8X
+// (extended: alpha, animation, metadata).
+std::optional<PhotoHeader> inspect_webp(std::span<const std::uint8_t> b, PrepError& error) {
+  PhotoHeader header{PhotoFormat::webp};
+  if (b.size() < 30) return fail(error, PrepErrorCode::truncated, "the WebP file is truncated (it ends inside its header); send the whole file");
+  if (std::uint64_t{le32(b.data() + 4)} + 8 > b.size())
+    return fail(error, PrepErrorCode::truncated, "the WebP file is truncated (it ends before its last chunk); send the whole file");
+  const std::uint8_t* chunk = b.data() + 12;
+  const std::uint8_t* data = chunk + 8;
+  if (std::memcmp(chunk, "VP8X", 4) == 0) {
+    if (data[0] & 0x02) return fail(error, PrepErrorCode::unsupported_format, "the WebP image is animated; send a still photo");
+    header.width = static_cast<int>(le24(data + 4) + 1);
+    header.height = static_cast<int>(le24(data + 7) + 1);
+  } else if (std::memcmp(chunk, "VP8L", 4) == 0) {
+    if (data[0] != 0x2f) return fail(error, PrepErrorCode::undecodable, "the WebP file is damaged (bad lossless signature)");
+    const std::uint32_t bits = le32(data + 1);
+    header.width = static_cast<int>((bits & 0x3fff) + 1);
+    header.height = static_cast<int>(((bits >> 14) & 0x3fff) + 1);
+  } else if (std::memcmp(chunk, "VP8 ", 4) == 0) {
+    if (data[3] != 0x9d || data[4] != 0x01 || data[5] != 0x2a)
+      return fail(error, PrepErrorCode::undecodable, "the WebP file is damaged (bad frame start)");
+    header.width = (data[6] | data[7] << 8) & 0x3fff;
+    header.height = (data[8] | data[9] << 8) & 0x3fff;
+  } else {
+    return fail(error, PrepErrorCode::undecodable, "the WebP file is damaged (unknown first chunk)");
+  }
+  return header;
 }
 
 std::optional<PhotoHeader> inspect_jpeg(std::span<const std::uint8_t> b, PrepError& error) {
@@ -92,11 +129,12 @@ std::optional<PhotoHeader> inspect_photo(std::span<const std::uint8_t> bytes, Pr
   static constexpr char kPng[] = "\x89PNG\r\n\x1a\n";
   if (starts_with(bytes, kPng, 8)) header = inspect_png(bytes, error);
   else if (starts_with(bytes, "\xFF\xD8\xFF", 3)) header = inspect_jpeg(bytes, error);
+  else if (starts_with(bytes, "RIFF", 4) && starts_with(bytes, "WEBP", 4, 8)) header = inspect_webp(bytes, error);
   else if (const char* other = other_image_format(bytes))
     return fail(error, PrepErrorCode::unsupported_format,
-                std::string("the photo is a ") + other + " image; facewire reads JPEG and PNG: convert it first");
+                std::string("the photo is a ") + other + " image; facewire reads JPEG, PNG and WebP: convert it first");
   else
-    return fail(error, PrepErrorCode::not_an_image, "the file is not an image (neither JPEG nor PNG); send a photo of a face");
+    return fail(error, PrepErrorCode::not_an_image, "the file is not an image (not JPEG, PNG or WebP); send a photo of a face");
   if (!header) return std::nullopt;
   if (header->width <= 0 || header->height <= 0)
     return fail(error, PrepErrorCode::undecodable, "the image header gives no size; the file is damaged");

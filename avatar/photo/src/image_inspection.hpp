@@ -9,7 +9,7 @@
 
 namespace fw::photo {
 
-enum class PhotoFormat { jpeg, png };
+enum class PhotoFormat { jpeg, png, webp };
 
 struct PhotoHeader {
   PhotoFormat format;
@@ -17,9 +17,10 @@ struct PhotoHeader {
   int height = 0;
 };
 
-/// Checks signature (JPEG or PNG; other images are named in the error),
-/// byte size, pixel count from the header, and that the file is complete
-/// (PNG chunks through IEND, JPEG through its end-of-image marker).
+/// Checks signature (JPEG, PNG or WebP; other images are named in the
+/// error), byte size, pixel count from the header, and that the file is
+/// complete (PNG chunks through IEND, JPEG through its end-of-image marker,
+/// WebP through the size its RIFF header gives).
 /// @return the header, or nullopt with `error` set
 std::optional<PhotoHeader> inspect_photo(std::span<const std::uint8_t> bytes, PrepError& error);
 

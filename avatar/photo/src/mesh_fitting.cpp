@@ -1,6 +1,9 @@
 #include "mesh_fitting.hpp"
 
+#include <cmath>
 #include <set>
+#include <stdexcept>
+#include <string>
 
 #include <glm/common.hpp>
 
@@ -63,12 +66,16 @@ ModelLandmarks landmarks_for_fit(const ModelLandmarks& landmarks) {
   return out;
 }
 
-std::optional<MeshFit> fit_mesh(const model::GenericFace& generic, const ModelLandmarks& raw, PrepError& error) {
-  const ModelLandmarks target = landmarks_for_fit(raw);
+namespace {
+
+// The mesh through the spline that takes the template's landmarks to
+// `target` at smoothing `lambda`, untangled and kept on the texture; nullopt
+// if the spline is degenerate or a triangle stays folded.
+std::optional<MeshFit> try_fit(const model::GenericFace& generic, const ModelLandmarks& target, float lambda,
+                               std::string& problem) {
   MeshFit fit;
-  const auto tmpl = model::landmark_template();
-  if (!fit.warp.fit(tmpl, target, kRegularization)) {
-    error = {PrepErrorCode::undecodable, "the landmarks found are degenerate; use a clear, frontal photo"};
+  if (!fit.warp.fit(model::landmark_template(), target, lambda)) {
+    problem = "the landmarks are degenerate";
     return std::nullopt;
   }
   fit.fitted_xy.resize(generic.skin.positions.size());
@@ -84,12 +91,42 @@ std::optional<MeshFit> fit_mesh(const model::GenericFace& generic, const ModelLa
 
   const auto problems = model::validate_generic_face(model::fit_generic_face(generic, fit.fitted_xy));
   if (!problems.empty()) {
-    error = {PrepErrorCode::head_turned,
-             "the face's landmarks do not fit a frontal face (" + problems.front() +
-                 "); use a photo facing the camera, upright, with a neutral expression and the whole face visible"};
+    problem = problems.front();
     return std::nullopt;
   }
   return fit;
+}
+
+}  // namespace
+
+MeshFit fit_mesh(const model::GenericFace& generic, const ModelLandmarks& raw, std::string& note) {
+  const ModelLandmarks target = landmarks_for_fit(raw);
+  std::string problem;
+  // The spline through the landmarks as found, then smoother ones: where
+  // landmarks crowd or cross (a misplaced lip point, a face half hidden),
+  // smoothing lets the mesh pass near them without folding.
+  for (const float lambda : {kRegularization, 0.1f, 1.0f})
+    if (auto fit = try_fit(generic, target, lambda, problem)) {
+      if (lambda != kRegularization) note = "the mesh was smoothed to fit (" + problem + " at first)";
+      return *std::move(fit);
+    }
+  // Then landmarks drawn part of the way toward the template's, which fits
+  // the generic face exactly: some of the face's own shape is given up, but
+  // its texture (taken through the eyes' alignment, not the mesh) stays.
+  const auto tmpl = model::landmark_template();
+  for (const float keep : {0.75f, 0.5f, 0.25f, 0.0f}) {
+    ModelLandmarks drawn{};
+    for (std::size_t i = 0; i < drawn.size(); ++i) drawn[i] = tmpl[i] + keep * (target[i] - tmpl[i]);
+    std::string later_problem;
+    if (auto fit = try_fit(generic, drawn, 1.0f, later_problem)) {
+      note = "the face's shape was drawn " + std::to_string(static_cast<int>(std::lround(100 * (1 - keep)))) +
+             " % toward the generic face to fit (" + problem + " at first)";
+      return *std::move(fit);
+    }
+  }
+  // The template's own landmarks give the generic face, which the asset's
+  // tests hold free of folds: not reached.
+  throw std::logic_error("the generic face does not fit its own landmarks");
 }
 
 }  // namespace fw::photo

@@ -2,7 +2,7 @@
 // Fitting the generic face to a person: a thin-plate spline from the
 // template's 68 landmarks to the person's (model frame) moves every skin
 // vertex; the landmark vertices land exactly on the landmarks.
-#include <optional>
+#include <string>
 #include <vector>
 
 #include "fw/model/generic_face.hpp"
@@ -23,7 +23,11 @@ struct MeshFit {
 /// fold the mesh at the mouth).
 ModelLandmarks landmarks_for_fit(const ModelLandmarks& landmarks);
 
-/// Fits the generic face; nullopt and `error` if the result folds over.
-std::optional<MeshFit> fit_mesh(const model::GenericFace& generic, const ModelLandmarks& landmarks, PrepError& error);
+/// Fits the generic face to the landmarks, never folding a triangle: the
+/// spline through them, else a smoother one, else one through landmarks
+/// drawn part of the way toward the generic face's own (at worst all the
+/// way, which fits exactly). Once a face is found, the fit never fails;
+/// `note` says what was given up, if anything.
+MeshFit fit_mesh(const model::GenericFace& generic, const ModelLandmarks& landmarks, std::string& note);
 
 }  // namespace fw::photo

@@ -36,7 +36,7 @@ float estimate_yaw_deg(const ModelLandmarks& l) {
 }
 
 std::optional<PrepError> check_face(const cv::Rect& box, const PhotoLandmarks& photo_landmarks, cv::Size photo_size,
-                                    const Alignment& alignment, const ModelLandmarks& landmarks) {
+                                    const ModelLandmarks& landmarks) {
   // Face width from ear to ear along the jaw line: the detector's box is
   // tighter than the face and varies with the detector.
   const glm::vec2 jaw = photo_landmarks[lm::kJawEnd - 1] - photo_landmarks[lm::kJawBegin];
@@ -54,11 +54,8 @@ std::optional<PrepError> check_face(const cv::Rect& box, const PhotoLandmarks& p
     return PrepError{PrepErrorCode::face_cut_off,
                      "the face is cut off by the edge of the photo; use one that shows the whole face with some space around it"};
 
-  const float roll = alignment.roll_rad * kDegreesPerRadian;
-  if (std::abs(roll) > kMaxRollDeg)
-    return PrepError{PrepErrorCode::head_tilted, "the head is tilted " + rounded(std::abs(roll)) +
-                                                     " degrees; use a photo with the head upright (within " +
-                                                     rounded(kMaxRollDeg) + " degrees)"};
+  // No limit on roll: turning a photo is no reason to refuse it, and the
+  // landmarks and the texture are both taken with the face turned upright.
   const float yaw = estimate_yaw_deg(landmarks);
   if (std::abs(yaw) > kMaxYawDeg)
     return PrepError{PrepErrorCode::head_turned, "the head is turned about " + rounded(std::abs(yaw)) +

@@ -1,6 +1,7 @@
 #pragma once
 // Whether a found face can make a good avatar: big enough, whole, facing
-// the camera, upright, eyes open. Each refusal says what to change.
+// the camera (turned at most 35 degrees, tipped neither far back nor far
+// down), eyes open. Any roll is accepted. Each refusal says what to change.
 #include <optional>
 
 #include <opencv2/core.hpp>
@@ -10,9 +11,9 @@
 
 namespace fw::photo {
 
-/// Largest head turn (yaw) and tilt (roll) accepted, degrees.
-inline constexpr float kMaxYawDeg = 25.0f;
-inline constexpr float kMaxRollDeg = 40.0f;
+/// Largest head turn (yaw) accepted, degrees: past it the far cheek is
+/// hidden behind the nose and the texture has nothing there to show.
+inline constexpr float kMaxYawDeg = 35.0f;
 
 /// Estimated head yaw in degrees from the nose tip's offset between the two
 /// ends of the jaw line (model frame), + toward the person's left.
@@ -20,6 +21,6 @@ float estimate_yaw_deg(const ModelLandmarks& landmarks);
 
 /// nullopt if the face is usable, else the reason.
 std::optional<PrepError> check_face(const cv::Rect& box, const PhotoLandmarks& photo_landmarks, cv::Size photo_size,
-                                    const Alignment& alignment, const ModelLandmarks& landmarks);
+                                    const ModelLandmarks& landmarks);
 
 }  // namespace fw::photo

@@ -75,11 +75,12 @@ std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8
   report.photo_height = photo->rows;
   cv::Mat gray;
   cv::cvtColor(*photo, gray, cv::COLOR_BGR2GRAY);
-  const std::vector<cv::Rect> faces = finder_->detect(gray);
+  const std::vector<FoundFace> faces = finder_->detect(gray);
   report.faces_found = static_cast<int>(faces.size());
   if (faces.empty())
     return fail(error, PrepErrorCode::no_face,
-                "no face found; use a frontal, upright, well-lit photo with the face at least about 100 px wide");
+                "no face found, even with the photo turned; take one facing the camera in good light, with the whole "
+                "face showing and at least about 100 px wide (a selfie at arm's length is right)");
   if (options.face_index < 0 || options.face_index >= report.faces_found)
     return fail(error, PrepErrorCode::face_index_out_of_range,
                 "the photo has " + std::to_string(report.faces_found) + " face(s); the face index must be 0.." +
@@ -90,9 +91,13 @@ std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8
                                                        : "number " + std::to_string(options.face_index) + " by size") +
                               " (choose another with --face-index 0.." + std::to_string(report.faces_found - 1) + ")");
   report.face_index = options.face_index;
-  const cv::Rect box = faces[static_cast<std::size_t>(options.face_index)];
+  const FoundFace& face = faces[static_cast<std::size_t>(options.face_index)];
+  const cv::Rect& box = face.box;
+  if (face.turn_deg != 0.0)
+    report.warnings.push_back("the face was found with the photo turned " +
+                              std::to_string(static_cast<int>(face.turn_deg)) + " degrees");
 
-  const PhotoLandmarks photo_landmarks = finder_->landmarks(gray, box);
+  const PhotoLandmarks photo_landmarks = finder_->landmarks(gray, face);
   const Alignment alignment = align_by_eyes(photo_landmarks);
   ModelLandmarks landmarks{};
   for (std::size_t i = 0; i < landmarks.size(); ++i) landmarks[i] = alignment.to_model(photo_landmarks[i]);
@@ -100,14 +105,15 @@ std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8
   report.inter_ocular_px = alignment.inter_ocular_px;
   report.roll_deg = alignment.roll_rad * 180.0f / std::numbers::pi_v<float>;
   report.yaw_deg = estimate_yaw_deg(landmarks);
-  if (auto problem = check_face(box, photo_landmarks, photo->size(), alignment, landmarks)) {
+  if (auto problem = check_face(box, photo_landmarks, photo->size(), landmarks)) {
     error = *problem;
     return std::nullopt;
   }
 
   const model::GenericFace& generic = model::generic_face();
-  const auto fit = fit_mesh(generic, landmarks, error);
-  if (!fit) return std::nullopt;
+  std::string fit_note;
+  const MeshFit fit = fit_mesh(generic, landmarks, fit_note);
+  if (!fit_note.empty()) report.warnings.push_back(fit_note);
 
   const model::TextureFrame& frame = generic.texture_frame;
   const int size = options.texture_size;
@@ -115,12 +121,12 @@ std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8
   const auto eyes = eye_polygons_px(landmarks, frame, size);
   const cv::Mat face_texture = options.eye_layer ? with_eye_holes(texture, eyes) : texture;
   const ClosedLid lid = make_closed_lid(texture, eyes);
-  const ThinPlateSpline& warp = fit->warp;
+  const ThinPlateSpline& warp = fit.warp;
   const auto masks = model::render_region_masks([&](glm::vec2 p) { return warp(p); }, frame, kMaskSize);
 
   model::AvatarPackage& package = result.package;
   package.generic_face_version = generic.version;
-  package.fitted_vertices = fit->fitted_xy;
+  package.fitted_vertices = fit.fitted_xy;
   std::copy(landmarks.begin(), landmarks.end(), package.landmarks.begin());
   package.skin_tone = estimate_skin_tone(texture, masks, kMaskSize);
   package.iris_colour = sample_iris_colour(texture, eyes);
@@ -132,7 +138,7 @@ std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8
   look.iris = glm::vec3(package.iris_colour[0], package.iris_colour[1], package.iris_colour[2]) / 255.0f;
   if (options.eye_layer)
     package.eye = encode_webp(to_bgr_mat(model::make_eye_texture(generic.eyes[0], look, kEyeTextureSize)), options.quality);
-  package.mouth = encode_webp(make_mouth_layer(texture, landmarks, model::fit_generic_face(generic, fit->fitted_xy)),
+  package.mouth = encode_webp(make_mouth_layer(texture, landmarks, model::fit_generic_face(generic, fit.fitted_xy)),
                                options.quality);
   const auto packed = model::pack_region_masks(masks, kMaskSize);
   package.colour_masks_a = encode_webp(to_bgr_mat(packed[0]), kLosslessWebp);

@@ -6,7 +6,6 @@ precision highp float;
 
 in vec3 v_normal;
 in vec2 v_uv;
-in vec2 v_frame_uv;
 in vec3 v_world;
 
 uniform int u_layer;             // 0 skin, 1 eyeball, 2 mouth
@@ -17,7 +16,7 @@ uniform float u_specular;        // 0 for dry skin .. 1 for a wet eye
 
 // Skin only.
 uniform sampler2D u_closed_lid;  // skin over the eyes, placed at u_closed_lid_rect
-uniform vec4 u_closed_lid_rect;  // u0, v0, u1, v1 in the texture frame
+uniform vec4 u_closed_lid_rect;  // u0, v0, u1, v1 of the skin texture
 uniform vec2 u_lid_closure;      // person's right, left: 0 open .. 1 closed
 uniform sampler2D u_masks_a;     // forehead, left cheek, right cheek
 uniform sampler2D u_masks_b;     // nose, sides, whole face
@@ -42,11 +41,13 @@ vec3 vascular(vec3 colour) {
 void main() {
   vec4 texel = texture(u_texture, v_uv);
   if (u_layer == 0) {
-    // Closing lids: the skin that was over the eye in the photo fades in
-    // where the lid now lies.
-    vec2 lid_uv = (v_frame_uv - u_closed_lid_rect.xy) / (u_closed_lid_rect.zw - u_closed_lid_rect.xy);
+    // Closing lids: the skin that was over the eye in the photo fills the
+    // eye hole of the texture. Looked up at rest coordinates (v_uv), like
+    // the skin itself, so it moves with the lids and never lays the rest
+    // pose over a face that has moved (a brow raised during a blink).
+    vec2 lid_uv = (v_uv - u_closed_lid_rect.xy) / (u_closed_lid_rect.zw - u_closed_lid_rect.xy);
     if (all(greaterThanEqual(lid_uv, vec2(0.0))) && all(lessThanEqual(lid_uv, vec2(1.0)))) {
-      float closure = v_frame_uv.x < 0.5 ? u_lid_closure.x : u_lid_closure.y;
+      float closure = v_uv.x < 0.5 ? u_lid_closure.x : u_lid_closure.y;
       vec2 edge = min(lid_uv, vec2(1.0) - lid_uv);
       float cover = closure * smoothstep(0.0, 0.12, min(edge.x, edge.y));
       texel.rgb = mix(texel.rgb, texture(u_closed_lid, lid_uv).rgb, cover);

@@ -9,11 +9,9 @@ layout(location = 2) in vec2 a_uv;
 
 uniform mat4 u_model;            // rigid: head pose, eye rotation
 uniform mat4 u_view_projection;
-uniform vec3 u_frame;            // texture frame: origin x, origin y, size
 
 out vec3 v_normal;
 out vec2 v_uv;
-out vec2 v_frame_uv;             // where this point of the face lies in the texture frame
 out vec3 v_world;
 
 void main() {
@@ -22,6 +20,5 @@ void main() {
   // u_model is a rotation plus translation, so its upper 3x3 turns normals too.
   v_normal = mat3(u_model) * a_normal;
   v_uv = a_uv;
-  v_frame_uv = (a_position.xy - u_frame.xy) / u_frame.z;
   gl_Position = u_view_projection * world;
 }

@@ -33,7 +33,7 @@ struct GpuFace {
 // Where the uniforms of the one shader program live.
 struct Uniforms {
   GLint model = -1, view_projection = -1, camera_position = -1, light_direction = -1, specular = -1, texture = -1;
-  GLint layer = -1, frame = -1, closed_lid = -1, closed_lid_rect = -1, lid_closure = -1, masks_a = -1, masks_b = -1,
+  GLint layer = -1, closed_lid = -1, closed_lid_rect = -1, lid_closure = -1, masks_a = -1, masks_b = -1,
         blush_a = -1, blush_sides = -1, pallor = -1;
 };
 
@@ -60,7 +60,6 @@ struct FaceRenderer::Impl {
   Framebuffer draw_framebuffer, resolve_framebuffer;
   Renderbuffer draw_colour, draw_depth, resolve_colour;
   std::vector<GpuFace> faces;
-  model::TextureFrame frame;  // every face shares the generic face's frame
 
   bool set_up_framebuffers(std::string& error);
   void draw_mesh(const GpuMesh& mesh, const Texture& texture, const glm::mat4& model, float specular, Layer layer);
@@ -136,9 +135,9 @@ std::unique_ptr<FaceRenderer> FaceRenderer::create(const RendererOptions& option
   const GLuint p = impl.program.get();
   const auto at = [p](const char* name) { return glGetUniformLocation(p, name); };
   impl.uniforms = {at("u_model"),      at("u_view_projection"), at("u_camera_position"), at("u_light_direction"),
-                   at("u_specular"),   at("u_texture"),         at("u_layer"),           at("u_frame"),
-                   at("u_closed_lid"), at("u_closed_lid_rect"), at("u_lid_closure"),     at("u_masks_a"),
-                   at("u_masks_b"),    at("u_blush_a"),         at("u_blush_sides"),     at("u_pallor")};
+                   at("u_specular"),   at("u_texture"),         at("u_layer"),           at("u_closed_lid"),
+                   at("u_closed_lid_rect"), at("u_lid_closure"), at("u_masks_a"),         at("u_masks_b"),
+                   at("u_blush_a"),     at("u_blush_sides"),     at("u_pallor")};
   if (!impl.set_up_framebuffers(error)) return nullptr;
   return self;
 }
@@ -168,7 +167,6 @@ FaceId FaceRenderer::add_face(const model::GenericFace& face, const FaceTextures
   gpu.masks_a = upload_texture(or_black(textures.masks_a));
   gpu.masks_b = upload_texture(or_black(textures.masks_b));
   impl_->faces.push_back(std::move(gpu));
-  impl_->frame = face.texture_frame;
   return static_cast<FaceId>(impl_->faces.size() - 1);
 }
 
@@ -204,7 +202,6 @@ model::RgbaImage FaceRenderer::render(std::span<const FaceDraw> draws, const Cam
   glUniform1i(impl.uniforms.closed_lid, kClosedLidUnit);
   glUniform1i(impl.uniforms.masks_a, kMasksAUnit);
   glUniform1i(impl.uniforms.masks_b, kMasksBUnit);
-  glUniform3f(impl.uniforms.frame, impl.frame.origin.x, impl.frame.origin.y, impl.frame.size);
 
   for (const FaceDraw& draw : draws) {
     if (draw.face >= impl.faces.size()) continue;  // an id from another renderer: nothing to draw

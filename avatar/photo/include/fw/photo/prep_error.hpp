@@ -7,7 +7,7 @@ namespace fw::photo {
 
 enum class PrepErrorCode {
   not_an_image,        ///< no known image signature
-  unsupported_format,  ///< an image, but not JPEG or PNG
+  unsupported_format,  ///< an image, but not JPEG, PNG or WebP (or an animated WebP)
   too_many_bytes,
   too_many_pixels,
   truncated,           ///< the file ends before the image does

@@ -69,7 +69,7 @@ class AvatarPreparer {
   /// the model has loaded. prepare() runs the same check.
   static bool check_photo(std::span<const std::uint8_t> photo, PrepError& error);
 
-  /// Prepares one photo (JPEG or PNG bytes). nullopt and `error` (with a
+  /// Prepares one photo (JPEG, PNG or WebP bytes). nullopt and `error` (with a
   /// message for the person) if the photo cannot make an avatar.
   std::optional<PreparedAvatar> prepare(std::span<const std::uint8_t> photo, const PrepOptions& options,
                                         PrepError& error);

@@ -1,0 +1,67 @@
+// The fit of the generic face to a person's landmarks: exact on the
+// template, and never folded, whatever the landmarks.
+#include "mesh_fitting.hpp"
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include "fw/model/face_asset.hpp"
+#include "fw/model/fitted_face.hpp"
+#include "fw/model/landmark_template.hpp"
+
+namespace fw::photo {
+namespace {
+
+ModelLandmarks template_landmarks() {
+  ModelLandmarks l{};
+  const auto tmpl = model::landmark_template();
+  std::copy(tmpl.begin(), tmpl.end(), l.begin());
+  return l;
+}
+
+std::vector<std::string> folds(const MeshFit& fit) {
+  const model::GenericFace& generic = model::generic_face();
+  return model::validate_generic_face(model::fit_generic_face(generic, fit.fitted_xy));
+}
+
+TEST(FitMesh, TheTemplatesOwnLandmarksGiveTheGenericFace) {
+  const model::GenericFace& generic = model::generic_face();
+  std::string note;
+  const MeshFit fit = fit_mesh(generic, template_landmarks(), note);
+  EXPECT_TRUE(note.empty()) << note;
+  float worst = 0;
+  for (std::size_t v = 0; v < fit.fitted_xy.size(); ++v)
+    worst = std::max(worst, glm::length(fit.fitted_xy[v] - glm::vec2(generic.skin.positions[v])));
+  EXPECT_LT(worst, 0.02f);
+}
+
+// Landmarks that cross each other fold any mesh pinned to them; the fit
+// gives up some of their shape instead of refusing the photo.
+TEST(FitMesh, CrossedLandmarksAreFittedWithoutAFoldAndSaySo) {
+  const model::GenericFace& generic = model::generic_face();
+  for (const auto& [a, b] : {std::pair{48, 54}, {30, 8}, {36, 45}}) {
+    SCOPED_TRACE(std::to_string(a) + " and " + std::to_string(b) + " swapped");
+    ModelLandmarks crossed = template_landmarks();
+    std::swap(crossed[static_cast<std::size_t>(a)], crossed[static_cast<std::size_t>(b)]);
+    std::string note;
+    const MeshFit fit = fit_mesh(generic, crossed, note);
+    const auto problems = folds(fit);
+    EXPECT_TRUE(problems.empty()) << problems.front();
+    EXPECT_NE(note.find("toward the generic face"), std::string::npos) << note;
+  }
+}
+
+// One landmark far off (a misplaced lip point) bends the mesh; it may be
+// smoothed, but it does not fold.
+TEST(FitMesh, AStrayLandmarkDoesNotFoldTheMesh) {
+  const model::GenericFace& generic = model::generic_face();
+  ModelLandmarks stray = template_landmarks();
+  stray[62] += glm::vec2(0.05f, 0.45f);  // the upper inner lip up past the nose tip
+  std::string note;
+  const MeshFit fit = fit_mesh(generic, stray, note);
+  const auto problems = folds(fit);
+  EXPECT_TRUE(problems.empty()) << problems.front();
+}
+
+}  // namespace
+}  // namespace fw::photo
