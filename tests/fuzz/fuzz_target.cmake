@@ -4,8 +4,9 @@
 # Builds a libFuzzer target with Debian's clang (the main build may use GCC,
 # which has no libFuzzer): the listed sources, the fuzz entry point among
 # them, are compiled one by one (through the compiler cache, when there is
-# one) with -fsanitize=fuzzer,address,undefined so the code under test
-# carries coverage instrumentation, then linked. They must need nothing but
+# one; a source that several targets list, once for all) with
+# -fsanitize=fuzzer,address,undefined so the code under test carries
+# coverage instrumentation, then linked. They must need nothing but
 # the C++ standard library, the INCLUDES and the LINK flags; AFTER names
 # targets that generate any of the sources. A ctest test (labels `fuzz` and
 # `slow`) runs it for SECONDS (default 10) from the seed corpus in
@@ -34,7 +35,9 @@ function(fw_fuzz_target)
     set(ARG_SECONDS 10)
   endif()
   set(output ${CMAKE_BINARY_DIR}/fuzz/${ARG_NAME})
-  set(object_dir ${CMAKE_BINARY_DIR}/fuzz/${ARG_NAME}.objects)
+  # One object per source for all targets: the codec and the asset reader
+  # serve several of them and compile once.
+  set(object_dir ${CMAKE_BINARY_DIR}/fuzz/objects)
   set(includes)
   foreach(dir ${ARG_INCLUDES})
     get_filename_component(absolute ${dir} ABSOLUTE)
@@ -49,15 +52,22 @@ function(fw_fuzz_target)
     file(RELATIVE_PATH relative ${PROJECT_SOURCE_DIR} ${absolute})
     string(REGEX REPLACE "[/.]" "_" object_name "${relative}")
     set(object ${object_dir}/${object_name}.o)
+    list(APPEND objects ${object})
+    # Compiled with the INCLUDES of the first target that lists it (every
+    # target's own suffice for all of its sources).
+    get_property(compiled GLOBAL PROPERTY FW_FUZZ_OBJECTS)
+    if(object IN_LIST compiled)
+      continue()
+    endif()
+    set_property(GLOBAL APPEND PROPERTY FW_FUZZ_OBJECTS ${object})
     add_custom_command(
       OUTPUT ${object}
       COMMAND ${CMAKE_COMMAND} -E make_directory ${object_dir}
       COMMAND ${FW_CCACHE} ${FW_CLANGXX} ${flags} ${includes} -MD -MF ${object}.d -c ${absolute} -o ${object}
       DEPENDS ${absolute}
       DEPFILE ${object}.d
-      COMMENT "Compiling ${relative} for fuzz target ${ARG_NAME}"
+      COMMENT "Compiling ${relative} for the fuzz targets"
       VERBATIM)
-    list(APPEND objects ${object})
   endforeach()
   add_custom_command(
     OUTPUT ${output}

@@ -27,7 +27,7 @@ AvatarPackage sample_package() {
   return p;
 }
 
-std::string parse_error(const std::vector<std::uint8_t>& bytes) {
+std::string package_error(const std::vector<std::uint8_t>& bytes) {
   AvatarPackage p;
   std::string error;
   EXPECT_FALSE(parse_avatar_package(bytes, p, error));
@@ -68,7 +68,7 @@ TEST(AvatarPackage, TheEyeLayerIsOptional) {
 TEST(AvatarPackage, EveryTruncationIsAnError) {
   const auto bytes = serialize_avatar_package(sample_package());
   for (std::size_t cut = 0; cut < bytes.size(); cut += 7) {
-    const std::string error = parse_error({bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(cut)});
+    const std::string error = package_error({bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(cut)});
     EXPECT_FALSE(error.empty()) << cut;
   }
 }
@@ -81,7 +81,7 @@ TEST(AvatarPackage, EveryFlippedByteIsCaught) {
     if (at >= 5 && at < 8) continue;
     auto damaged = bytes;
     damaged[at] ^= 0x40;
-    EXPECT_FALSE(parse_error(damaged).empty()) << "byte " << at;
+    EXPECT_FALSE(package_error(damaged).empty()) << "byte " << at;
   }
 }
 
@@ -89,36 +89,36 @@ TEST(AvatarPackage, SaysWhatIsWrong) {
   const auto bytes = serialize_avatar_package(sample_package());
   auto other = bytes;
   other[0] = 'X';
-  EXPECT_NE(parse_error(other).find("not a facewire avatar package"), std::string::npos);
+  EXPECT_NE(package_error(other).find("not a facewire avatar package"), std::string::npos);
   auto version = bytes;
   version[4] = 9;
-  EXPECT_NE(parse_error(version).find("version 9 is not supported"), std::string::npos);
+  EXPECT_NE(package_error(version).find("version 9 is not supported"), std::string::npos);
   auto stray = bytes;
   stray.push_back(0);
-  EXPECT_NE(parse_error(stray).find("stray bytes"), std::string::npos);
+  EXPECT_NE(package_error(stray).find("stray bytes"), std::string::npos);
   auto member = bytes;
   member[member.size() - 5] ^= 1;  // inside the last member (preview)
-  EXPECT_NE(parse_error(member).find("preview is damaged"), std::string::npos);
+  EXPECT_NE(package_error(member).find("preview is damaged"), std::string::npos);
   std::vector<std::uint8_t> huge(kMaxPackageBytes + 1, 0);
-  EXPECT_NE(parse_error(huge).find("at most"), std::string::npos);
+  EXPECT_NE(package_error(huge).find("at most"), std::string::npos);
 }
 
 TEST(AvatarPackage, RefusesAFoldedFit) {
   AvatarPackage p = sample_package();
   std::swap(p.fitted_vertices[100], p.fitted_vertices[150]);
-  EXPECT_NE(parse_error(serialize_avatar_package(p)).find("fitted face is unsound"), std::string::npos);
+  EXPECT_NE(package_error(serialize_avatar_package(p)).find("fitted face is unsound"), std::string::npos);
 }
 
 TEST(AvatarPackage, RefusesAFitForAnotherGenericFace) {
   AvatarPackage p = sample_package();
   p.fitted_vertices.pop_back();
-  EXPECT_NE(parse_error(serialize_avatar_package(p)).find("prepare the avatar again"), std::string::npos);
+  EXPECT_NE(package_error(serialize_avatar_package(p)).find("prepare the avatar again"), std::string::npos);
 }
 
 TEST(AvatarPackage, RefusesAnUnknownImageType) {
   AvatarPackage p = sample_package();
   p.eye.type = "image/gif";
-  EXPECT_NE(parse_error(serialize_avatar_package(p)).find("expected image/webp or image/png"), std::string::npos);
+  EXPECT_NE(package_error(serialize_avatar_package(p)).find("expected image/webp or image/png"), std::string::npos);
 }
 
 }  // namespace

@@ -5,7 +5,7 @@
 namespace fw::model {
 namespace {
 
-std::string parse_error(const std::string& text) {
+std::string asset_error(const std::string& text) {
   GenericFace face;
   std::string error;
   EXPECT_FALSE(parse_face_asset(text, face, error));
@@ -29,45 +29,45 @@ TEST(FaceAsset, RoundTripsExactly) {
 }
 
 TEST(FaceAsset, RejectsWhatIsNotJson) {
-  EXPECT_NE(parse_error("not json at all").find("not valid JSON"), std::string::npos);
-  EXPECT_NE(parse_error("").find("not valid JSON"), std::string::npos);
+  EXPECT_NE(asset_error("not json at all").find("not valid JSON"), std::string::npos);
+  EXPECT_NE(asset_error("").find("not valid JSON"), std::string::npos);
 }
 
 TEST(FaceAsset, RejectsATruncatedFile) {
   const std::string text = serialize_face_asset(generic_face());
   for (std::size_t cut : {text.size() / 3, text.size() / 2, text.size() - 3})
-    EXPECT_NE(parse_error(text.substr(0, cut)).find("not valid JSON"), std::string::npos) << cut;
+    EXPECT_NE(asset_error(text.substr(0, cut)).find("not valid JSON"), std::string::npos) << cut;
 }
 
 TEST(FaceAsset, RejectsAnotherFormatOrVersion) {
   const std::string text = serialize_face_asset(generic_face());
-  EXPECT_NE(parse_error(replaced(text, "facewire-generic-face", "something-else")).find("format"), std::string::npos);
+  EXPECT_NE(asset_error(replaced(text, "facewire-generic-face", "something-else")).find("format"), std::string::npos);
   const std::string error =
-      parse_error(replaced(text, "\"version\": " + std::to_string(kGenericFaceVersion), "\"version\": 99"));
+      asset_error(replaced(text, "\"version\": " + std::to_string(kGenericFaceVersion), "\"version\": 99"));
   EXPECT_NE(error.find("version 99 is not supported"), std::string::npos) << error;
 }
 
 TEST(FaceAsset, NamesAMissingMember) {
   const std::string text = serialize_face_asset(generic_face());
-  const std::string error = parse_error(replaced(text, "\"landmark_vertices\"", "\"landmarks_renamed\""));
+  const std::string error = asset_error(replaced(text, "\"landmark_vertices\"", "\"landmarks_renamed\""));
   EXPECT_NE(error.find("missing \"landmark_vertices\""), std::string::npos) << error;
 }
 
 TEST(FaceAsset, RejectsUnknownRegion) {
   const std::string text = serialize_face_asset(generic_face());
-  EXPECT_NE(parse_error(replaced(text, "\"forehead\"", "\"elbow\"")).find("unknown region"), std::string::npos);
+  EXPECT_NE(asset_error(replaced(text, "\"forehead\"", "\"elbow\"")).find("unknown region"), std::string::npos);
 }
 
 TEST(FaceAsset, RejectsIndexOutOfRange) {
   GenericFace face = generic_face();
   face.skin.triangles[3].y = 100000;
-  EXPECT_NE(parse_error(serialize_face_asset(face)).find("out of range"), std::string::npos);
+  EXPECT_NE(asset_error(serialize_face_asset(face)).find("out of range"), std::string::npos);
 }
 
 TEST(FaceAsset, RejectsAFlippedTriangle) {
   GenericFace face = generic_face();
   std::swap(face.skin.triangles[10].y, face.skin.triangles[10].z);
-  const std::string error = parse_error(serialize_face_asset(face));
+  const std::string error = asset_error(serialize_face_asset(face));
   EXPECT_NE(error.find("flipped"), std::string::npos) << error;
 }
 
@@ -88,20 +88,20 @@ TEST(FaceAsset, RejectsAMissingHole) {
   for (std::size_t i = 1; i + 1 < hole.size(); ++i)
     face.skin.triangles.emplace_back(hole[0], hole[i + 1], hole[i]);
   face.triangle_regions.resize(face.skin.triangles.size(), FaceRegion::upper_lid_right);
-  const std::string error = parse_error(serialize_face_asset(face));
+  const std::string error = asset_error(serialize_face_asset(face));
   EXPECT_NE(error.find("boundary loops"), std::string::npos) << error;
 }
 
 TEST(FaceAsset, RejectsTriangleWithoutRegion) {
   GenericFace face = generic_face();
   face.triangle_regions.pop_back();
-  EXPECT_NE(parse_error(serialize_face_asset(face)).find("triangle regions"), std::string::npos);
+  EXPECT_NE(asset_error(serialize_face_asset(face)).find("triangle regions"), std::string::npos);
 }
 
 TEST(FaceAsset, RejectsSharedLandmarkVertex) {
   GenericFace face = generic_face();
   face.landmark_vertices[5] = face.landmark_vertices[6];
-  EXPECT_NE(parse_error(serialize_face_asset(face)).find("share one vertex"), std::string::npos);
+  EXPECT_NE(asset_error(serialize_face_asset(face)).find("share one vertex"), std::string::npos);
 }
 
 }  // namespace

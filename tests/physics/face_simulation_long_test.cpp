@@ -9,16 +9,14 @@
 #include <gtest/gtest.h>
 
 #include "fw/model/generic_face.hpp"
+#include "generic_tissue.hpp"
 
 namespace fw::physics {
 namespace {
 
 constexpr double kFrame = 1.0 / 30.0;
 
-std::shared_ptr<const TissueModel> generic_tissue() {
-  static const auto tissue = build_tissue_model(model::generic_face(), model::generic_face().action_units);
-  return tissue;
-}
+using test::generic_tissue;
 
 std::string solver_name(const ::testing::TestParamInfo<Solver>& info) {
   return info.param == Solver::mass_spring ? "MassSpring" : "Pbd";

@@ -10,6 +10,7 @@
 #include "fw/model/expressions.hpp"
 #include "fw/model/generic_face.hpp"
 #include "fw/model/landmark_template.hpp"
+#include "generic_tissue.hpp"
 
 namespace fw::physics {
 namespace {
@@ -18,10 +19,7 @@ using AuTargets = std::array<float, codec::kAuChannelCount>;
 constexpr double kFrame = 1.0 / 30.0;
 constexpr float kMm = model::kMillimetresPerUnit;
 
-std::shared_ptr<const TissueModel> generic_tissue() {
-  static const auto tissue = build_tissue_model(model::generic_face(), model::generic_face().action_units);
-  return tissue;
-}
+using test::generic_tissue;
 
 std::size_t channel(int au, codec::AuSide side) { return static_cast<std::size_t>(codec::au_channel(au, side)); }
 

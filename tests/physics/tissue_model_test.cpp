@@ -4,18 +4,14 @@
 #include <gtest/gtest.h>
 
 #include "fw/model/generic_face.hpp"
+#include "generic_tissue.hpp"
 
 namespace fw::physics {
 namespace {
 
-const TissueModel& generic_tissue() {
-  static const auto tissue = build_tissue_model(model::generic_face(), model::generic_face().action_units);
-  return *tissue;
-}
-
 TEST(TissueModel, IsAtLeastThePapersSize) {
   // The behavioral-animation paper, Table 1: 1078 nodes, 7398 springs, 42 muscles, 1042 elements.
-  const TissueModel& m = generic_tissue();
+  const TissueModel& m = *test::generic_tissue();
   EXPECT_GE(m.node_count, 1000u);
   EXPECT_GE(m.spring_count(), 7000u);
   EXPECT_GE(m.element_count(), 1000u);
@@ -24,7 +20,7 @@ TEST(TissueModel, IsAtLeastThePapersSize) {
 }
 
 TEST(TissueModel, EpidermisIsTheSkinAndLayersGoInward) {
-  const TissueModel& m = generic_tissue();
+  const TissueModel& m = *test::generic_tissue();
   const auto& skin = model::generic_face().skin.positions;
   for (std::uint32_t v = 0; v < m.vertex_count; ++v) {
     EXPECT_EQ(glm::vec3(m.rest_x[v], m.rest_y[v], m.rest_z[v]), skin[v]);
@@ -36,7 +32,7 @@ TEST(TissueModel, EpidermisIsTheSkinAndLayersGoInward) {
 }
 
 TEST(TissueModel, EveryElementAndSpringIsSound) {
-  const TissueModel& m = generic_tissue();
+  const TissueModel& m = *test::generic_tissue();
   for (float v : m.element_rest_volume) EXPECT_GT(v, 0.0f);
   for (float r : m.spring_rest) EXPECT_GT(r, 0.0f);
   for (std::size_t s = 0; s < m.spring_count(); ++s) {
@@ -48,7 +44,7 @@ TEST(TissueModel, EveryElementAndSpringIsSound) {
 }
 
 TEST(TissueModel, EveryFaceMuscleIsAttachedAndBothSidesAlike) {
-  const TissueModel& m = generic_tissue();
+  const TissueModel& m = *test::generic_tissue();
   for (std::size_t i = 0; i < kMuscleCount; i += 2) {
     const TissueMuscle &left = m.muscles[i], &right = m.muscles[i + 1];
     if (left.kind == MuscleKind::jaw) {
@@ -62,7 +58,7 @@ TEST(TissueModel, EveryFaceMuscleIsAttachedAndBothSidesAlike) {
 }
 
 TEST(TissueModel, TheLowerLipRidesTheJawAndTheBrowDoesNot) {
-  const TissueModel& m = generic_tissue();
+  const TissueModel& m = *test::generic_tissue();
   const auto& face = model::generic_face();
   EXPECT_FLOAT_EQ(m.jaw_share[face.landmark_vertices[57]], 1.0f) << "lower lip";
   EXPECT_FLOAT_EQ(m.jaw_share[face.landmark_vertices[8]], 1.0f) << "chin";
@@ -71,11 +67,11 @@ TEST(TissueModel, TheLowerLipRidesTheJawAndTheBrowDoesNot) {
 }
 
 TEST(TissueModel, StepsStablyAtFourSubStepsPerFrame) {
-  EXPECT_GE(generic_tissue().stable_substep_s, 1.0f / 300.0f);
+  EXPECT_GE(test::generic_tissue()->stable_substep_s, 1.0f / 300.0f);
 }
 
 TEST(TissueModel, FitsTheMemoryBudget) {
-  EXPECT_LT(generic_tissue().memory_bytes(), 256u * 1024u) << "issue 6: at most 256 KB per face";
+  EXPECT_LT(test::generic_tissue()->memory_bytes(), 256u * 1024u) << "issue 6: at most 256 KB per face";
 }
 
 }  // namespace

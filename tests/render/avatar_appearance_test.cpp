@@ -15,7 +15,7 @@
 namespace fw::render {
 namespace {
 
-constexpr int kSize = 384;
+constexpr int kImageSize = 384;
 
 class ExpressiveRenderTest : public ::testing::Test {
  protected:
@@ -23,7 +23,7 @@ class ExpressiveRenderTest : public ::testing::Test {
     appearance_ = new AvatarAppearance(generic_appearance(model::Appearance{}));
     std::string error;
     RendererOptions options;
-    options.width = options.height = kSize;
+    options.width = options.height = kImageSize;
     renderer_ = FaceRenderer::create(options, error).release();
     ASSERT_NE(renderer_, nullptr) << error;
     id_ = renderer_->add_face(appearance_->avatar.face, appearance_->textures);
@@ -43,7 +43,7 @@ class ExpressiveRenderTest : public ::testing::Test {
   // Pixel box around a model-frame point (at rest, facing the camera).
   static glm::ivec2 pixel(glm::vec2 p) {
     const float z = appearance_->avatar.face.skin.positions[appearance_->avatar.face.landmark_vertices[30]].z;
-    const glm::vec3 px = project_to_pixel(Camera::portrait(1.0f), glm::vec3(p, z * 0.85f), kSize, kSize);
+    const glm::vec3 px = project_to_pixel(Camera::portrait(1.0f), glm::vec3(p, z * 0.85f), kImageSize, kImageSize);
     return {static_cast<int>(px.x), static_cast<int>(px.y)};
   }
 
@@ -52,7 +52,7 @@ class ExpressiveRenderTest : public ::testing::Test {
     const model::GenericFace& face = appearance_->avatar.face;
     glm::vec2 lo(1e9f), hi(-1e9f);
     for (std::uint32_t v : face.eye_holes[static_cast<std::size_t>(model::Side::left)]) {
-      const glm::vec3 px = project_to_pixel(Camera::portrait(1.0f), face.skin.positions[v], kSize, kSize);
+      const glm::vec3 px = project_to_pixel(Camera::portrait(1.0f), face.skin.positions[v], kImageSize, kImageSize);
       lo = glm::min(lo, glm::vec2(px));
       hi = glm::max(hi, glm::vec2(px));
     }

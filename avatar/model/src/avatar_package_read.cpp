@@ -5,6 +5,7 @@
 #include <zlib.h>
 
 #include "avatar_package_layout.hpp"
+#include "package_checksum.hpp"
 #include "fw/model/avatar_package.hpp"
 #include "fw/model/face_asset.hpp"
 #include "fw/model/fitted_face.hpp"
@@ -26,10 +27,6 @@ std::uint32_t get_u32(std::span<const std::uint8_t> b, std::size_t at) {
 float get_coordinate(std::span<const std::uint8_t> b, std::size_t at) {
   const auto u = static_cast<std::uint16_t>(b[at] | b[at + 1] << 8);
   return static_cast<float>(static_cast<std::int16_t>(u)) / package_layout::kCoordinateScale;
-}
-
-std::uint32_t crc_of(std::span<const std::uint8_t> bytes) {
-  return static_cast<std::uint32_t>(crc32(0L, bytes.data(), static_cast<uInt>(bytes.size())));
 }
 
 std::array<std::uint8_t, 3> read_rgb(const json& manifest, const char* key) {

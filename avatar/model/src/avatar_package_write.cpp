@@ -4,6 +4,7 @@
 #include <zlib.h>
 
 #include "avatar_package_layout.hpp"
+#include "package_checksum.hpp"
 #include "fw/model/avatar_package.hpp"
 
 namespace fw::model {
@@ -28,10 +29,6 @@ std::vector<std::uint8_t> encode_mesh(const AvatarPackage& package) {
   for (const glm::vec2& p : package.fitted_vertices) put_coordinate(out, p.x), put_coordinate(out, p.y);
   for (const glm::vec2& p : package.landmarks) put_coordinate(out, p.x), put_coordinate(out, p.y);
   return out;
-}
-
-std::uint32_t crc_of(std::span<const std::uint8_t> bytes) {
-  return static_cast<std::uint32_t>(crc32(0L, bytes.data(), static_cast<uInt>(bytes.size())));
 }
 
 }  // namespace

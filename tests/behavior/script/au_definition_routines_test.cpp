@@ -26,11 +26,11 @@ const Language& au_language() {
   return language;
 }
 
-ScriptResult parse(std::string_view text) { return parse_script(au_language(), text); }
+ScriptResult parse_au(std::string_view text) { return parse_script(au_language(), text); }
 
 // The "done when": the paper's AU 1 definition.
 TEST(AuDefinitionRoutines, ThePapersAu1) {
-  const ScriptResult result = parse(test::read_source("avatar/behavior/script/examples/au1.fws"));
+  const ScriptResult result = parse_au(test::read_source("avatar/behavior/script/examples/au1.fws"));
   ASSERT_TRUE(result.ok()) << joined(result.diagnostics);
   EXPECT_TRUE(result.diagnostics.empty()) << joined(result.diagnostics);
   ASSERT_EQ(result.meaning.au_definitions.size(), 1u);
@@ -66,16 +66,16 @@ TEST(AuDefinitionRoutines, ThePapersAu1) {
 }
 
 TEST(AuDefinitionRoutines, FalseStartsFromTheCurrentFramesAndTheFlagIsOptional) {
-  ScriptResult result = parse("AU 12 cheek_left 0 1 2 3 false end");
+  ScriptResult result = parse_au("AU 12 cheek_left 0 1 2 3 false end");
   ASSERT_TRUE(result.ok()) << joined(result.diagnostics);
   EXPECT_FALSE(result.meaning.au_definitions[0].preview_from_neutral);
-  result = parse("AU 12 cheek_left 0 1 2 3 end");
+  result = parse_au("AU 12 cheek_left 0 1 2 3 end");
   ASSERT_TRUE(result.ok()) << joined(result.diagnostics);
   EXPECT_TRUE(result.meaning.au_definitions[0].preview_from_neutral);
 }
 
 TEST(AuDefinitionRoutines, BadRegionsPointsAndDisplacementsAreErrors) {
-  const auto errors = errors_of(parse("AU 1\nAbve_Brow 6 0 10 0\nBrow -1 0 2000 0\nend"));
+  const auto errors = errors_of(parse_au("AU 1\nAbve_Brow 6 0 10 0\nBrow -1 0 2000 0\nend"));
   ASSERT_EQ(errors.size(), 3u);
   EXPECT_EQ(errors[0].position, (SourcePosition{2, 1}));
   EXPECT_NE(errors[0].message.find("unknown region 'Abve_Brow'; regions are the generic face's forehead"),
@@ -86,16 +86,16 @@ TEST(AuDefinitionRoutines, BadRegionsPointsAndDisplacementsAreErrors) {
 }
 
 TEST(AuDefinitionRoutines, EachControlPointOnceAndEachActionUnitOnce) {
-  auto errors = errors_of(parse("AU 1 Brow 3 0 1 0 brow 3 0 2 0 end"));
+  auto errors = errors_of(parse_au("AU 1 Brow 3 0 1 0 brow 3 0 2 0 end"));
   ASSERT_EQ(errors.size(), 1u);
   EXPECT_EQ(errors[0].message, "control point 3 of brow already moves at 1:6; give it once");
-  errors = errors_of(parse("AU 1 Brow 3 0 1 0 end\nAU 1 Brow 4 0 1 0 end"));
+  errors = errors_of(parse_au("AU 1 Brow 3 0 1 0 end\nAU 1 Brow 4 0 1 0 end"));
   ASSERT_EQ(errors.size(), 1u);
   EXPECT_EQ(errors[0].message, "AU 1 is already defined at 1:1; keep one definition per script");
 }
 
 TEST(AuDefinitionRoutines, ActionUnitsFacesDoNotCarryAreKeptWithAWarning) {
-  const ScriptResult result = parse("AU 43 upper_lid 2 0 -5 0 end\nAU 3 nose 0 0 1 0 end");
+  const ScriptResult result = parse_au("AU 43 upper_lid 2 0 -5 0 end\nAU 3 nose 0 0 1 0 end");
   ASSERT_EQ(result.meaning.au_definitions.size(), 1u);
   EXPECT_FALSE(result.meaning.au_definitions[0].carried);
   ASSERT_EQ(test::warnings_of(result).size(), 1u);

@@ -27,11 +27,11 @@ const Language& expression_language() {
   return language;
 }
 
-ScriptResult parse(std::string_view text) { return parse_script(expression_language(), text); }
+ScriptResult parse_expression(std::string_view text) { return parse_script(expression_language(), text); }
 
 // The "done when": the paper's anger sentence gives the keyframes it describes.
 TEST(ExpressionRoutines, ThePapersAngerSentence) {
-  const ScriptResult result = parse(test::read_source("avatar/behavior/script/examples/anger.fws"));
+  const ScriptResult result = parse_expression(test::read_source("avatar/behavior/script/examples/anger.fws"));
   ASSERT_TRUE(result.ok()) << joined(result.diagnostics);
   ASSERT_EQ(result.meaning.animations.size(), 1u);
   const KeyframeAnimation& anger = result.meaning.animations[0];
@@ -61,14 +61,14 @@ TEST(ExpressionRoutines, ThePapersAngerSentence) {
 }
 
 TEST(ExpressionRoutines, KeepAllFrameContinuesAndIntegersAreStrengthsToo) {
-  const ScriptResult result = parse("KeepAllFrame BeginKeyFrame 12 1 end");
+  const ScriptResult result = parse_expression("KeepAllFrame BeginKeyFrame 12 1 end");
   ASSERT_TRUE(result.ok()) << joined(result.diagnostics);
   EXPECT_FALSE(result.meaning.animations[0].clear_frames);
   EXPECT_DOUBLE_EQ(result.meaning.animations[0].keyframes[0].aus[0].intensity, 1.0);
 }
 
 TEST(ExpressionRoutines, ActionUnitsOutsideFacsAreErrors) {
-  const auto errors = errors_of(parse("ClearAllFrame BeginKeyFrame 3 1.0 40 0.5 end"));
+  const auto errors = errors_of(parse_expression("ClearAllFrame BeginKeyFrame 3 1.0 40 0.5 end"));
   ASSERT_EQ(errors.size(), 2u);
   EXPECT_EQ(errors[0].message, "AU 3 is not a FACS action unit (FACS numbers are 1-2, 4-39, 41-46, 51-58 and 61-66)");
   EXPECT_EQ(errors[0].position, (SourcePosition{1, 29}));
@@ -76,25 +76,25 @@ TEST(ExpressionRoutines, ActionUnitsOutsideFacsAreErrors) {
 }
 
 TEST(ExpressionRoutines, IntensitiesAreBounded) {
-  const auto errors = errors_of(parse("ClearAllFrame BeginKeyFrame 4 5.5 12 -0.5 end"));
+  const auto errors = errors_of(parse_expression("ClearAllFrame BeginKeyFrame 4 5.5 12 -0.5 end"));
   ASSERT_EQ(errors.size(), 2u);
   EXPECT_NE(errors[0].message.find("the intensity 5.5 of AU 4 is out of range: write 0 to 5"), std::string::npos)
       << errors[0].message;
   EXPECT_EQ(errors[0].position, (SourcePosition{1, 31}));
-  EXPECT_TRUE(parse("ClearAllFrame BeginKeyFrame 4 5.0 12 0 end").ok());
+  EXPECT_TRUE(parse_expression("ClearAllFrame BeginKeyFrame 4 5.0 12 0 end").ok());
 }
 
 TEST(ExpressionRoutines, AnActionUnitOncePerKeyframe) {
-  const auto errors = errors_of(parse("ClearAllFrame BeginKeyFrame 4 1.0 4 0.5 BeginKeyFrame 4 0.2 end"));
+  const auto errors = errors_of(parse_expression("ClearAllFrame BeginKeyFrame 4 1.0 4 0.5 BeginKeyFrame 4 0.2 end"));
   ASSERT_EQ(errors.size(), 1u);
   EXPECT_EQ(errors[0].message, "AU 4 appears twice in this keyframe (first at 1:29); give it once");
 }
 
 TEST(ExpressionRoutines, StepsAndShadingAreChecked) {
-  auto errors = errors_of(parse("ClearAllFrame Animate 0 \"Texture\" end"));
+  auto errors = errors_of(parse_expression("ClearAllFrame Animate 0 \"Texture\" end"));
   ASSERT_EQ(errors.size(), 1u);
   EXPECT_EQ(errors[0].message, "the number of steps must be 1 to 10000, not 0");
-  errors = errors_of(parse("ClearAllFrame Animate 2 \"\" end"));
+  errors = errors_of(parse_expression("ClearAllFrame Animate 2 \"\" end"));
   ASSERT_EQ(errors.size(), 1u);
   EXPECT_NE(errors[0].message.find("the shading must be 1 to 64 characters"), std::string::npos);
 }
@@ -102,7 +102,7 @@ TEST(ExpressionRoutines, StepsAndShadingAreChecked) {
 TEST(ExpressionRoutines, TooManyKeyframesIsAnError) {
   std::string text = "ClearAllFrame";
   for (std::size_t i = 0; i <= kMaxKeyframes; ++i) text += " BeginKeyFrame";
-  const auto errors = errors_of(parse(text + " end"));
+  const auto errors = errors_of(parse_expression(text + " end"));
   ASSERT_EQ(errors.size(), 1u);
   EXPECT_NE(errors[0].message.find("more than 1000 keyframes"), std::string::npos);
 }

@@ -12,10 +12,10 @@ namespace {
 using test::errors_of;
 using test::joined;
 
-ScriptResult parse(std::string_view text) { return parse_script(default_language(), text); }
+ScriptResult parse_default(std::string_view text) { return parse_script(default_language(), text); }
 
 TEST(Parser, AMalformedSentenceGivesLineColumnExpectedAndFound) {
-  const ScriptResult result = parse("ClearAllFrame\nBeginKeyFrame\n  4 strong\nend\n");
+  const ScriptResult result = parse_default("ClearAllFrame\nBeginKeyFrame\n  4 strong\nend\n");
   const auto errors = errors_of(result);
   ASSERT_EQ(errors.size(), 1u) << joined(result.diagnostics);
   EXPECT_EQ(errors[0].position, (SourcePosition{3, 5}));
@@ -25,14 +25,14 @@ TEST(Parser, AMalformedSentenceGivesLineColumnExpectedAndFound) {
 
 TEST(Parser, ExpectedListsEverythingThatCouldComeNext) {
   // After a keyframe's AU pair: another AU, another keyframe, Animate or end.
-  const auto errors = errors_of(parse("ClearAllFrame BeginKeyFrame 4 1.0 \"x\" end"));
+  const auto errors = errors_of(parse_default("ClearAllFrame BeginKeyFrame 4 1.0 \"x\" end"));
   ASSERT_EQ(errors.size(), 1u);
   EXPECT_EQ(errors[0].position, (SourcePosition{1, 35}));
   EXPECT_EQ(errors[0].message, "expected 'end', 'BeginKeyFrame', 'Animate' or an integer, found the string \"x\"");
 }
 
 TEST(Parser, AnUnfinishedSentenceSaysWhereItStarted) {
-  const auto errors = errors_of(parse("\nClearAllFrame BeginKeyFrame 2 1.0\n"));
+  const auto errors = errors_of(parse_default("\nClearAllFrame BeginKeyFrame 2 1.0\n"));
   ASSERT_EQ(errors.size(), 1u);
   EXPECT_EQ(errors[0].position, (SourcePosition{3, 1}));
   EXPECT_NE(errors[0].message.find("found end of file (the sentence that starts at 2:1 is not finished)"),
@@ -41,20 +41,20 @@ TEST(Parser, AnUnfinishedSentenceSaysWhereItStarted) {
 }
 
 TEST(Parser, ScanErrorsAreReportedWithWhatWasExpected) {
-  const auto errors = errors_of(parse("ClearAllFrame BeginKeyFrame 2 @ end"));
+  const auto errors = errors_of(parse_default("ClearAllFrame BeginKeyFrame 2 @ end"));
   ASSERT_EQ(errors.size(), 1u);
   EXPECT_EQ(errors[0].position, (SourcePosition{1, 31}));
   EXPECT_EQ(errors[0].message, "unexpected character '@'; expected an integer or a decimal number here");
 }
 
 TEST(Parser, GarbageBeforeASentenceNamesWhatCanStartOne) {
-  const auto errors = errors_of(parse("hello ClearAllFrame end"));
+  const auto errors = errors_of(parse_default("hello ClearAllFrame end"));
   ASSERT_EQ(errors.size(), 1u);
   EXPECT_EQ(errors[0].message, "expected 'ClearAllFrame', 'KeepAllFrame', 'AU' or '[', found the name 'hello'");
 }
 
 TEST(Parser, ParsingResumesAtTheNextSentence) {
-  const ScriptResult result = parse(test::read_source("tests/behavior/script/data/bad_sentences.fws"));
+  const ScriptResult result = parse_default(test::read_source("tests/behavior/script/data/bad_sentences.fws"));
   const auto errors = errors_of(result);
   ASSERT_EQ(errors.size(), 2u) << joined(result.diagnostics);
   EXPECT_EQ(errors[0].position, (SourcePosition{5, 5}));
@@ -67,7 +67,7 @@ TEST(Parser, ParsingResumesAtTheNextSentence) {
 
 TEST(Parser, RecoveryInsideBracketsWaitsForThemToClose) {
   const ScriptResult result =
-      parse("[emotion a [s1 duration oops [expression e intensity 1]]]\n[expression e [mpca nose intensity 0.5]]");
+      parse_default("[emotion a [s1 duration oops [expression e intensity 1]]]\n[expression e [mpca nose intensity 0.5]]");
   const auto errors = errors_of(result);
   ASSERT_EQ(errors.size(), 1u) << joined(result.diagnostics);
   EXPECT_EQ(errors[0].position, (SourcePosition{1, 25}));
@@ -77,14 +77,14 @@ TEST(Parser, RecoveryInsideBracketsWaitsForThemToClose) {
 TEST(Parser, ManyErrorsStopAtTheLimit) {
   std::string text;
   for (int i = 0; i < 100; ++i) text += "ClearAllFrame BeginKeyFrame 3 1.0 end\n";
-  const ScriptResult result = parse(text);
+  const ScriptResult result = parse_default(text);
   EXPECT_EQ(result.diagnostics.size(), kMaxErrors);
   EXPECT_NE(result.diagnostics.back().message.find("too many errors"), std::string::npos);
   EXPECT_LT(result.sentences, 100u);
 }
 
 TEST(Parser, OversizedScriptsAreRefusedUnread) {
-  const ScriptResult result = parse(std::string(kMaxScriptBytes + 1, ' '));
+  const ScriptResult result = parse_default(std::string(kMaxScriptBytes + 1, ' '));
   ASSERT_EQ(result.diagnostics.size(), 1u);
   EXPECT_NE(result.diagnostics[0].message.find("split it"), std::string::npos);
 }
@@ -106,14 +106,14 @@ TEST(Parser, LongListsDoNotGrowTheStack) {
   std::string text = "ClearAllFrame\n";
   for (int i = 0; i < 900; ++i) text += "BeginKeyFrame 4 0.5 12 1.0\n";
   text += "end\n";
-  const ScriptResult result = parse(text);
+  const ScriptResult result = parse_default(text);
   EXPECT_TRUE(result.ok()) << joined(result.diagnostics);
   ASSERT_EQ(result.meaning.animations.size(), 1u);
   EXPECT_EQ(result.meaning.animations[0].keyframes.size(), 900u);
 }
 
 TEST(Parser, AnEmptyScriptSaysSo) {
-  const ScriptResult result = parse("# only a comment\n");
+  const ScriptResult result = parse_default("# only a comment\n");
   EXPECT_TRUE(result.ok());
   ASSERT_EQ(result.diagnostics.size(), 1u);
   EXPECT_EQ(result.diagnostics[0].message, "the script holds no sentences");
@@ -146,7 +146,7 @@ TEST(Parser, ASecondGrammarChangesTheLanguageNotTheKernel) {
 
   // The same text is no sentence of the default language, and the default
   // language's sentences are none of this one.
-  EXPECT_FALSE(parse("clear key 4:2 done").ok());
+  EXPECT_FALSE(parse_default("clear key 4:2 done").ok());
   const auto errors = errors_of(parse_script(*hold_language, "ClearAllFrame BeginKeyFrame 4 1.0 end"));
   ASSERT_FALSE(errors.empty());
   EXPECT_EQ(errors[0].message, "'ClearAllFrame' is not a word of this language; expected 'clear' or 'keep' here");

@@ -27,14 +27,14 @@ const Language& vascular_language() {
   return language;
 }
 
-ScriptResult parse(std::string_view text) { return parse_script(vascular_language(), text); }
+ScriptResult parse_vascular(std::string_view text) { return parse_script(vascular_language(), text); }
 
 double channel(const ColourChannels& c, ColourRegion region) { return c[static_cast<std::size_t>(region)]; }
 
 // The paper's example (section 5, Figure 4): four stages of 10, 10, 60 and
 // 20 percent, and blush1 as the paper defines it.
 TEST(VascularRoutines, ThePapersBlushingEpisode) {
-  const ScriptResult result = parse(R"(
+  const ScriptResult result = parse_vascular(R"(
 [emotion blushing
   [stage1 duration 10 [expression blush1 intensity 0.9]]
   [stage2 duration 10 [expression blush2 intensity 0.8]]
@@ -80,7 +80,7 @@ TEST(VascularRoutines, ThePapersBlushingEpisode) {
 }
 
 TEST(VascularRoutines, ColourKeysScaleEachExpressionByItsStage) {
-  const ScriptResult result = parse(test::read_source("avatar/behavior/script/examples/blushing.fws"));
+  const ScriptResult result = parse_vascular(test::read_source("avatar/behavior/script/examples/blushing.fws"));
   ASSERT_TRUE(result.ok()) << joined(result.diagnostics);
   EXPECT_TRUE(result.diagnostics.empty()) << joined(result.diagnostics);
   const VascularEmotion& blushing = result.meaning.emotions.at(0);
@@ -97,22 +97,22 @@ TEST(VascularRoutines, ColourKeysScaleEachExpressionByItsStage) {
 }
 
 TEST(VascularRoutines, DurationsArePercentagesThatAddUpTo100) {
-  auto errors = errors_of(parse("[emotion shy [s1 duration 50%] [s2 duration 40]]"));
+  auto errors = errors_of(parse_vascular("[emotion shy [s1 duration 50%] [s2 duration 40]]"));
   ASSERT_EQ(errors.size(), 1u);
   EXPECT_EQ(errors[0].position, (SourcePosition{1, 10}));
   EXPECT_EQ(errors[0].message,
             "the stages of emotion 'shy' last 90 percent in all; durations are percentages of the episode and must add up to 100");
-  errors = errors_of(parse("[emotion shy [s1 duration 0] [s2 duration 100]]"));
+  errors = errors_of(parse_vascular("[emotion shy [s1 duration 0] [s2 duration 100]]"));
   ASSERT_EQ(errors.size(), 1u);
   EXPECT_NE(errors[0].message.find("the duration 0 is out of range"), std::string::npos);
-  EXPECT_TRUE(parse("[emotion shy [s1 duration 50%] [s2 duration 50.0%]]").ok());
-  errors = errors_of(parse("[emotion empty]"));
+  EXPECT_TRUE(parse_vascular("[emotion shy [s1 duration 50%] [s2 duration 50.0%]]").ok());
+  errors = errors_of(parse_vascular("[emotion empty]"));
   ASSERT_EQ(errors.size(), 1u);
   EXPECT_NE(errors[0].message.find("has no stages"), std::string::npos);
 }
 
 TEST(VascularRoutines, RegionsAndIntensitiesAreChecked) {
-  const auto errors = errors_of(parse("[expression e [mpca knees intensity 0.5] [mpca nose intensity 1.5] "
+  const auto errors = errors_of(parse_vascular("[expression e [mpca knees intensity 0.5] [mpca nose intensity 1.5] "
                                       "[mpca Nose intensity 0.1] [mpca nose intensity 0.2]]"));
   ASSERT_EQ(errors.size(), 3u);
   EXPECT_NE(errors[0].message.find("unknown colour region 'knees'; regions are forehead, cheek_left"),
@@ -124,19 +124,19 @@ TEST(VascularRoutines, RegionsAndIntensitiesAreChecked) {
 }
 
 TEST(VascularRoutines, NamesAreDefinedOnce) {
-  auto errors = errors_of(parse("[expression e] [expression e]"));
+  auto errors = errors_of(parse_vascular("[expression e] [expression e]"));
   ASSERT_EQ(errors.size(), 1u);
   EXPECT_NE(errors[0].message.find("expression 'e' is already defined at 1:13"), std::string::npos) << errors[0].message;
-  errors = errors_of(parse("[emotion a [s duration 100]] [emotion a [s duration 100]]"));
+  errors = errors_of(parse_vascular("[emotion a [s duration 100]] [emotion a [s duration 100]]"));
   ASSERT_EQ(errors.size(), 1u);
-  errors = errors_of(parse("[emotion a [s duration 50] [s duration 50]]"));
+  errors = errors_of(parse_vascular("[emotion a [s duration 50] [s duration 50]]"));
   ASSERT_EQ(errors.size(), 2u) << "the twin stage, and so the durations";
   EXPECT_NE(errors[0].message.find("already has a stage 's'"), std::string::npos);
 }
 
 TEST(VascularRoutines, PallorIsAChannelToo) {
   const ScriptResult result =
-      parse("[emotion shock [s1 duration 30 [expression pale intensity 1]] [s2 duration 70 [expression pale intensity 0.5]]]\n"
+      parse_vascular("[emotion shock [s1 duration 30 [expression pale intensity 1]] [s2 duration 70 [expression pale intensity 0.5]]]\n"
             "[expression pale [mpca pallor intensity 0.8]]");
   ASSERT_TRUE(result.ok()) << joined(result.diagnostics);
   const VascularEmotion& shock = result.meaning.emotions.at(0);

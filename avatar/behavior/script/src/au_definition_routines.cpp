@@ -5,11 +5,10 @@
 #include "fw/script/facs.hpp"
 #include "fw/script/limits.hpp"
 #include "fw/script/region_names.hpp"
+#include "routine_messages.hpp"
 
 namespace fw::script {
 namespace {
-
-std::string at_text(SourcePosition p) { return std::to_string(p.line) + ":" + std::to_string(p.column); }
 
 AuDefinition* open_definition(RoutineCall& call, const char* routine) {
   if (call.script.au_definition) return &*call.script.au_definition;

@@ -2,16 +2,10 @@
 
 #include "fw/script/facs.hpp"
 #include "fw/script/limits.hpp"
+#include "routine_messages.hpp"
 
 namespace fw::script {
 namespace {
-
-// Reached only through a grammar that binds routines in the wrong places;
-// the message is for its designer.
-void misbound(RoutineCall& call, const char* routine, const char* needs) {
-  call.diagnostics.error(call.position, std::string("the routine ") + routine + " ran outside " + needs +
-                                            "; the grammar binds it to the wrong production");
-}
 
 void open_animation(RoutineCall& call, bool clear) {
   KeyframeAnimation animation;

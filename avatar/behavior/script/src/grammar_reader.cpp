@@ -1,17 +1,14 @@
 #include "fw/script/grammar_reader.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <map>
 #include <string_view>
 
 #include "fw/script/limits.hpp"
+#include "word_chars.hpp"
 
 namespace fw::script {
 namespace {
-
-bool is_word_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
-bool is_word_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
 bool is_word(std::string_view s) {
   return !s.empty() && is_word_start(s[0]) && std::all_of(s.begin(), s.end(), is_word_char);

@@ -4,13 +4,11 @@
 #include <cmath>
 
 #include "fw/script/limits.hpp"
+#include "word_chars.hpp"
 
 namespace fw::script {
 namespace {
 
-bool is_word_char(char c) {
-  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
-}
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v'; }
 
 // from_chars takes no leading '+'.

@@ -5,16 +5,10 @@
 
 #include "fw/script/limits.hpp"
 #include "fw/script/region_names.hpp"
+#include "routine_messages.hpp"
 
 namespace fw::script {
 namespace {
-
-std::string at_text(SourcePosition p) { return std::to_string(p.line) + ":" + std::to_string(p.column); }
-
-void misbound(RoutineCall& call, const char* routine, const char* needs) {
-  call.diagnostics.error(call.position, std::string("the routine ") + routine + " ran outside " + needs +
-                                            "; the grammar binds it to the wrong production");
-}
 
 bool unit_interval(RoutineCall& call, const SemanticValue& v, const std::string& what) {
   const double x = v.number();
