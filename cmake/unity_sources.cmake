@@ -65,8 +65,10 @@ function(fw_unity_sources out_var name)
 endfunction()
 
 # fw_unity_target(TARGET): groups the C++ sources of a target defined
-# anywhere (generated sources, such as embedded files, stay on their own:
-# the unity file would not wait for them to be generated).
+# anywhere. Generated sources, such as embedded files, stay on their own
+# (the unity file would not wait for them to be generated), and so do those
+# with the source property FW_OWN_UNIT (a system header that defines macros
+# the other files' names collide with, such as X11's Status).
 function(fw_unity_target target)
   if(FW_UNITY_BATCH LESS_EQUAL 1)
     return()
@@ -87,7 +89,8 @@ function(fw_unity_target target)
       set(absolute ${source_dir}/${source})
     endif()
     get_source_file_property(generated ${absolute} DIRECTORY ${source_dir} GENERATED)
-    if(generated)
+    get_source_file_property(own_unit ${absolute} DIRECTORY ${source_dir} FW_OWN_UNIT)
+    if(generated OR own_unit)
       list(APPEND kept ${source})
     else()
       list(APPEND grouped ${absolute})

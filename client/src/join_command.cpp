@@ -12,17 +12,13 @@
 #include "room_summary.hpp"
 #include "room_view.hpp"
 #include "session_thread.hpp"
+#include "command_failure.hpp"
 
 namespace fw::client {
 namespace {
 
 std::atomic<bool> g_interrupted{false};
 extern "C" void on_signal(int) { g_interrupted = true; }
-
-[[noreturn]] void fail(int status, const std::string& message) {
-  std::cerr << "facewire-client join: " << message << "\n";
-  std::exit(status);
-}
 
 void watch_signals() {
   std::signal(SIGINT, on_signal);
@@ -36,7 +32,7 @@ std::unique_ptr<RoomView> start_view(const FrameOutputs& outputs, const render::
   if (outputs.empty()) return nullptr;
   std::string error;
   auto view = RoomView::create(options, error);
-  if (!view) fail(1, "the renderer cannot start: " + error);
+  if (!view) fail_command("join", 1, "the renderer cannot start: " + error);
   return view;
 }
 
@@ -68,18 +64,18 @@ void finish(const JoinArgs& args, RoomState& state, JoinOutcome outcome, const U
   outputs.sinks.clear();  // flush the video before the summary
   if (args.json) (outputs.video_on_stdout ? std::cerr : std::cout) << summary.dump() << std::endl;
   else if (!args.quiet) std::cerr << summary.dump(2) << "\n";
-  if (outcome.status != 0) fail(outcome.status, outcome.error.empty() ? "ended without joining" : outcome.error);
+  if (outcome.status != 0) fail_command("join", outcome.status, outcome.error.empty() ? "ended without joining" : outcome.error);
   if (outcome.interrupted) std::cerr << "facewire-client join: interrupted\n";
 }
 
 void run(const JoinArgs& args, const JoinNetwork& network) {
   std::string error;
   JoinPlan plan;
-  if (!plan_join(args, plan, error)) fail(2, error);
+  if (!plan_join(args, plan, error)) fail_command("join", 2, error);
   UploadedAvatar uploaded;
-  if (!upload_own_avatar(args, plan.url, network.upload_avatar, uploaded, error)) fail(2, error);
+  if (!upload_own_avatar(args, plan.url, network.upload_avatar, uploaded, error)) fail_command("join", 2, error);
   FrameOutputs outputs;
-  if (!open_frame_outputs(args, plan.render.width, plan.render.height, outputs, error)) fail(2, error);
+  if (!open_frame_outputs(args, plan.render.width, plan.render.height, outputs, error)) fail_command("join", 2, error);
   const std::unique_ptr<RoomView> view = start_view(outputs, plan.render);
   watch_signals();
   RoomState state;

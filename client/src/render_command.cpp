@@ -14,6 +14,7 @@
 #include "fw/render/contact_sheet.hpp"
 #include "fw/render/face_renderer.hpp"
 #include "fw/render/png.hpp"
+#include "command_failure.hpp"
 
 namespace fw::client {
 namespace {
@@ -30,11 +31,6 @@ struct RenderArgs {
   bool sheet = false;
   int samples = 4;
 };
-
-[[noreturn]] void fail(int status, const std::string& message) {
-  std::cerr << "facewire-client render: " << message << "\n";
-  std::exit(status);
-}
 
 // Parses "WIDTHxHEIGHT"; false if it is not two whole numbers around an x.
 bool parse_size(const std::string& text, int& width, int& height) {
@@ -56,9 +52,9 @@ render::AvatarAppearance load_appearance(const RenderArgs& args) {
   if (args.avatar.empty()) return render::generic_appearance(model::Appearance{});
   std::vector<std::uint8_t> bytes;
   model::AvatarPackage package;
-  if (!model::read_file(args.avatar, model::kMaxPackageBytes, bytes, error)) fail(2, error);
-  if (!model::parse_avatar_package(bytes, package, error)) fail(2, args.avatar + ": " + error);
-  if (!render::load_avatar_appearance(package, appearance, error)) fail(2, args.avatar + ": " + error);
+  if (!model::read_file(args.avatar, model::kMaxPackageBytes, bytes, error)) fail_command("render", 2, error);
+  if (!model::parse_avatar_package(bytes, package, error)) fail_command("render", 2, args.avatar + ": " + error);
+  if (!render::load_avatar_appearance(package, appearance, error)) fail_command("render", 2, args.avatar + ": " + error);
   return appearance;
 }
 
@@ -68,9 +64,9 @@ bool read_tuple(const std::string& text, const char* flag, std::array<double, N>
   if (text.empty()) return false;
   std::vector<double> values(N);
   std::string error;
-  if (!parse_numbers(text, values, error)) fail(2, std::string(flag) + ": " + error);
+  if (!parse_numbers(text, values, error)) fail_command("render", 2, std::string(flag) + ": " + error);
   for (std::size_t i = 0; i < N; ++i) {
-    if (std::abs(values[i]) > limit) fail(2, std::string(flag) + ": " + std::to_string(values[i]) + " is beyond +-" + std::to_string(static_cast<int>(limit)));
+    if (std::abs(values[i]) > limit) fail_command("render", 2, std::string(flag) + ": " + std::to_string(values[i]) + " is beyond +-" + std::to_string(static_cast<int>(limit)));
     out[i] = values[i];
   }
   return true;
@@ -81,7 +77,7 @@ codec::FaceParams face_params(const RenderArgs& args) {
   std::string error;
   if (!apply_emotions(args.emotions, params, error) || !apply_action_units(args.action_units, params, error) ||
       !apply_blush(args.blush, params, error))
-    fail(2, error);
+    fail_command("render", 2, error);
   if (std::array<double, 2> g{}; read_tuple(args.gaze, "--gaze", g, 35.0))
     params.eye_left = params.eye_right = {radians(g[0]), radians(g[1])};
   if (std::array<double, 3> h{}; read_tuple(args.head, "--head", h, 70.0)) {
@@ -93,7 +89,7 @@ codec::FaceParams face_params(const RenderArgs& args) {
   if (args.pitch_deg) params.head_pitch_rad = radians(*args.pitch_deg);
   if (args.roll_deg) params.head_roll_rad = radians(*args.roll_deg);
   if (std::array<double, 2> l{}; read_tuple(args.lids, "--lids", l, 1.0)) {
-    if (l[0] < 0 || l[1] < 0) fail(2, "--lids: closures run from 0 (open) to 1 (closed)");
+    if (l[0] < 0 || l[1] < 0) fail_command("render", 2, "--lids: closures run from 0 (open) to 1 (closed)");
     params.lid_left = static_cast<float>(l[0]);
     params.lid_right = static_cast<float>(l[1]);
   }
@@ -103,10 +99,10 @@ codec::FaceParams face_params(const RenderArgs& args) {
 
 void run(const RenderArgs& args) {
   if (!args.generic && args.avatar.empty())
-    fail(2, "say what to render: --generic (the generic face) or --avatar NAME.fwa (a prepared avatar)");
+    fail_command("render", 2, "say what to render: --generic (the generic face) or --avatar NAME.fwa (a prepared avatar)");
   render::RendererOptions options;
   if (!parse_size(args.size, options.width, options.height))
-    fail(2, "--size must look like 512x512 (width x height in pixels), not '" + args.size + "'");
+    fail_command("render", 2, "--size must look like 512x512 (width x height in pixels), not '" + args.size + "'");
   options.samples = args.samples;
   const codec::FaceParams params = face_params(args);
   const render::AvatarAppearance appearance = load_appearance(args);
@@ -115,10 +111,10 @@ void run(const RenderArgs& args) {
   model::RgbaImage image;
   if (args.sheet) {
     // Panels as tall as the requested height, five to a row.
-    if (!render::render_contact_sheet(appearance, options.height, 5, image, error)) fail(2, error);
+    if (!render::render_contact_sheet(appearance, options.height, 5, image, error)) fail_command("render", 2, error);
   } else {
     auto renderer = render::FaceRenderer::create(options, error);
-    if (!renderer) fail(2, error);
+    if (!renderer) fail_command("render", 2, error);
     const render::FaceId id = renderer->add_face(appearance.avatar.face, appearance.textures);
     const model::FaceShape shape = model::reconstruct_face(appearance.avatar, params);
     renderer->set_face_shape(id, shape.positions, shape.uvs);
@@ -127,7 +123,7 @@ void run(const RenderArgs& args) {
         render::Camera::portrait(static_cast<float>(options.width) / static_cast<float>(options.height));
     image = renderer->render({&draw, 1}, camera);
   }
-  if (!render::write_png(image, args.output, error)) fail(2, error);
+  if (!render::write_png(image, args.output, error)) fail_command("render", 2, error);
   std::cout << "wrote " << args.output << " (" << image.width << "x" << image.height << ")\n";
 }
 

@@ -19,6 +19,7 @@
 #include "fw/render/face_renderer.hpp"
 #include "fw/render/png.hpp"
 #include "fw/render/y4m_writer.hpp"
+#include "command_failure.hpp"
 
 namespace fw::server {
 namespace {
@@ -32,11 +33,6 @@ struct RenderSceneArgs {
   double from_s = 0;
   double to_s = 1e9;
 };
-
-[[noreturn]] void fail(const std::string& message) {
-  std::cerr << "facewire-server render-scene: " << message << "\n";
-  std::exit(2);
-}
 
 bool parse_size(const std::string& text, int& width, int& height) {
   const auto x = text.find('x');
@@ -85,7 +81,7 @@ std::pair<int, int> frame_size(const RenderSceneArgs& args) {
   int width = 0, height = 0;
   if (!parse_size(args.size, width, height) || width < 16 || height < 16 || width > 4096 || height > 4096 ||
       width % 2 || height % 2)
-    fail("--size must look like 960x540 (even width x height, 16 to 4096 pixels), not '" + args.size + "'");
+    fail_command("render-scene", "--size must look like 960x540 (even width x height, 16 to 4096 pixels), not '" + args.size + "'");
   return {width, height};
 }
 
@@ -93,7 +89,7 @@ std::pair<int, int> frame_size(const RenderSceneArgs& args) {
 behavior::Scene seated_scene(const std::string& path) {
   behavior::Scene scene;
   std::string error;
-  if (!behavior::read_scene(path, scene, error)) fail(error);
+  if (!behavior::read_scene(path, scene, error)) fail_command("render-scene", error);
   const std::vector<behavior::Seat> layout = behavior::seat_layout(static_cast<int>(scene.avatars.size()));
   for (std::size_t i = 0; i < scene.avatars.size(); ++i)
     if (!scene.avatars[i].seat) scene.avatars[i].seat = layout[i];
@@ -114,7 +110,7 @@ Cast cast_for(const behavior::Scene& scene, int width, int height) {
   std::string error;
   Cast cast;
   cast.renderer = render::FaceRenderer::create(options, error);
-  if (!cast.renderer) fail(error);
+  if (!cast.renderer) fail_command("render-scene", error);
   for (std::size_t i = 0; i < scene.avatars.size(); ++i) {
     cast.appearances.push_back(render::generic_appearance(look(i)));
     cast.ids.push_back(cast.renderer->add_face(cast.appearances.back().avatar.face, cast.appearances.back().textures));
@@ -149,16 +145,16 @@ class FrameOutput {
     }
     std::string error;
     y4m_ = render::Y4mWriter::create(args.y4m, width, height, fps, error);
-    if (!y4m_) fail(error);
+    if (!y4m_) fail_command("render-scene", error);
   }
   void write(const model::RgbaImage& image) {
     std::string error;
     if (y4m_) {
-      if (!y4m_->write(image, error)) fail(error);
+      if (!y4m_->write(image, error)) fail_command("render-scene", error);
     } else {
       char name[32];
       std::snprintf(name, sizeof name, "frame_%06zu.png", frames_);
-      if (!render::write_png(image, std::filesystem::path(out_dir_) / name, error)) fail(error);
+      if (!render::write_png(image, std::filesystem::path(out_dir_) / name, error)) fail_command("render-scene", error);
     }
     ++frames_;
   }
@@ -171,7 +167,7 @@ class FrameOutput {
 };
 
 void run(const RenderSceneArgs& args) {
-  if (args.out_dir.empty() == args.y4m.empty()) fail("give --out DIR for PNG frames or --y4m FILE (- for stdout), one of them");
+  if (args.out_dir.empty() == args.y4m.empty()) fail_command("render-scene", "give --out DIR for PNG frames or --y4m FILE (- for stdout), one of them");
   const auto [width, height] = frame_size(args);
   const behavior::Scene scene = seated_scene(args.scene);
   Cast cast = cast_for(scene, width, height);

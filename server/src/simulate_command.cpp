@@ -11,6 +11,7 @@
 #include "fw/behavior/scene_file.hpp"
 #include "fw/behavior/seat_layout.hpp"
 #include "room_simulation.hpp"
+#include "command_failure.hpp"
 
 namespace fw::server {
 namespace {
@@ -32,23 +33,18 @@ struct ScheduledChat {
   std::string text;
 };
 
-[[noreturn]] void fail(const std::string& message) {
-  std::cerr << "facewire-server simulate: " << message << "\n";
-  std::exit(2);
-}
-
 ScheduledChat parse_chat(const std::string& spec, const SimulateArgs& args) {
   const auto a = spec.find(':');
   const auto b = a == std::string::npos ? a : spec.find(':', a + 1);
-  if (b == std::string::npos) fail("--chat '" + spec + "': write SECONDS:AVATAR:TEXT, e.g. 12.5:2:hahaha :)");
+  if (b == std::string::npos) fail_command("simulate", "--chat '" + spec + "': write SECONDS:AVATAR:TEXT, e.g. 12.5:2:hahaha :)");
   try {
     const double at = std::stod(spec.substr(0, a));
     const int avatar = std::stoi(spec.substr(a + 1, b - a - 1));
     if (!(at >= 0 && at < args.seconds) || avatar < 1 || avatar > args.avatars)
-      fail("--chat '" + spec + "': the time must lie in the scene and the avatar be 1.." + std::to_string(args.avatars));
+      fail_command("simulate", "--chat '" + spec + "': the time must lie in the scene and the avatar be 1.." + std::to_string(args.avatars));
     return {static_cast<std::uint32_t>(std::lround(at * args.fps)), avatar, spec.substr(b + 1, 1000)};
   } catch (const std::logic_error&) {
-    fail("--chat '" + spec + "': SECONDS and AVATAR must be numbers");
+    fail_command("simulate", "--chat '" + spec + "': SECONDS and AVATAR must be numbers");
   }
 }
 
@@ -125,7 +121,7 @@ class Recording {
 std::uint32_t tick_count(const SimulateArgs& args) {
   const auto ticks = static_cast<std::uint32_t>(std::lround(args.seconds * args.fps));
   if (ticks < 1 || ticks > behavior::kMaxSceneTicks)
-    fail(std::string("--seconds gives ") + std::to_string(ticks) + " ticks; a scene holds 1 to " +
+    fail_command("simulate", std::string("--seconds gives ") + std::to_string(ticks) + " ticks; a scene holds 1 to " +
          std::to_string(behavior::kMaxSceneTicks));
   return ticks;
 }
@@ -171,7 +167,7 @@ void run(const SimulateArgs& args) {
   }
   const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   std::string error;
-  if (!behavior::write_scene(recording.scene(), args.output, error)) fail(error);
+  if (!behavior::write_scene(recording.scene(), args.output, error)) fail_command("simulate", error);
   std::cout << summary_json(args, recording, ticks, wall_s).dump(2) << "\n";
 }
 

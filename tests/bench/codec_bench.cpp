@@ -15,6 +15,7 @@
 #include "photo_variants.hpp"
 #include "synthetic_scene.hpp"
 #include "x264_comparison.hpp"
+#include "bench_failure.hpp"
 
 namespace fw::bench {
 namespace {
@@ -223,11 +224,6 @@ nlohmann::json rd_table(const Scene& scene) {
   return {{"scene", scene.name}, {"rows", rows}, {"fixed_levels", levels}};
 }
 
-[[noreturn]] void fail(const std::string& message) {
-  std::cerr << "facewire-bench codec: " << message << "\n";
-  std::exit(2);
-}
-
 void run(const CodecBenchArgs& args) {
   std::vector<Scene> scenes;
   if (args.scene_files.empty()) {
@@ -237,13 +233,13 @@ void run(const CodecBenchArgs& args) {
     scenes.push_back(make_synthetic_scene(options));
     if (!args.write_scene_path.empty()) {
       std::string error;
-      if (!write_scene(scenes.back(), args.write_scene_path, error)) fail(error);
+      if (!write_scene(scenes.back(), args.write_scene_path, error)) fail_bench("codec", error);
     }
   }
   for (const std::string& path : args.scene_files) {
     Scene scene;
     std::string error;
-    if (!read_scene(path, scene, error)) fail(error);
+    if (!read_scene(path, scene, error)) fail_bench("codec", error);
     scenes.push_back(std::move(scene));
   }
   const int fps = scenes.front().fps;
@@ -263,7 +259,7 @@ void run(const CodecBenchArgs& args) {
   for (const auto& entry : out["scenes"])
     if (entry["decode_mismatches"].get<std::uint64_t>() != 0 ||
         entry["loss_tolerant"]["decode_mismatches"].get<std::uint64_t>() != 0)
-      fail("the decoder disagreed with the encoder's reconstruction on scene " + entry["name"].get<std::string>());
+      fail_bench("codec", "the decoder disagreed with the encoder's reconstruction on scene " + entry["name"].get<std::string>());
   if (args.json) {
     std::cout << out.dump() << "\n";
     return;

@@ -27,6 +27,7 @@
 #include "fw/codec/messages.hpp"
 #include "http_get.hpp"
 #include "server_process.hpp"
+#include "bench_failure.hpp"
 
 namespace fw::bench {
 namespace {
@@ -50,11 +51,6 @@ struct FanoutArgs {
   int server_workers = 2;
   std::string server;  // path of facewire-server; default: beside this program
 };
-
-[[noreturn]] void fail(const std::string& message) {
-  std::cerr << "facewire-bench fanout: " << message << "\n";
-  std::exit(2);
-}
 
 std::uint64_t now_us() {
   return static_cast<std::uint64_t>(
@@ -279,7 +275,7 @@ void raise_descriptor_limit(int needed) {
   }
   ::getrlimit(RLIMIT_NOFILE, &limit);
   if (limit.rlim_cur < static_cast<rlim_t>(needed))
-    fail("needs " + std::to_string(needed) + " open files, the limit is " + std::to_string(limit.rlim_cur) +
+    fail_bench("fanout", "needs " + std::to_string(needed) + " open files, the limit is " + std::to_string(limit.rlim_cur) +
          "; raise it (ulimit -n) or use fewer clients");
 }
 
@@ -289,7 +285,7 @@ void run(const FanoutArgs& args) {
   const std::string server_binary =
       args.server.empty() ? (std::filesystem::read_symlink("/proc/self/exe").parent_path() / "facewire-server").string()
                           : args.server;
-  if (!std::filesystem::exists(server_binary)) fail(server_binary + " not found; build facewire-server or pass --server");
+  if (!std::filesystem::exists(server_binary)) fail_bench("fanout", server_binary + " not found; build facewire-server or pass --server");
   const auto data = std::filesystem::temp_directory_path() / ("facewire-bench-fanout-" + std::to_string(::getpid()));
   std::string server_args = "--no-demo-room --log-level warn --data " + data.string() + " --room-size " +
                             std::to_string(args.per_room) + " --max-rooms " + std::to_string(args.rooms) + " --threads " +
@@ -298,7 +294,7 @@ void run(const FanoutArgs& args) {
   if (args.physics == "off") server_args += " --no-physics";
   if (args.physics_lod == "off") server_args += " --no-physics-lod";
   test::ServerProcess server(server_binary, server_args);
-  if (server.port() == 0) fail("facewire-server did not start (" + server_binary + " " + server_args + ")");
+  if (server.port() == 0) fail_bench("fanout", "facewire-server did not start (" + server_binary + " " + server_args + ")");
   const pid_t server_pid = server.pid();
 
   asio::io_context io;

@@ -8,6 +8,7 @@
 
 #include "fw/photo/prepare_avatar.hpp"
 #include "photo_variants.hpp"
+#include "bench_failure.hpp"
 
 namespace fw::bench {
 namespace {
@@ -17,21 +18,16 @@ struct PrepBenchArgs {
   bool json = false;
 };
 
-[[noreturn]] void fail(const std::string& message) {
-  std::cerr << "facewire-bench prep: " << message << "\n";
-  std::exit(2);
-}
-
 // Times prepare() on each large variant (JPEG bytes, as photos arrive), the
 // model load excluded; the median of `repeats` runs per variant.
 void run(const PrepBenchArgs& args) {
   cv::setNumThreads(1);  // the goal is per core: keep OpenCV's own threads out of it
   const cv::Mat original = test::load_astronaut();
-  if (original.empty()) fail("cannot read " + test::astronaut_path());
+  if (original.empty()) fail_bench("prep", "cannot read " + test::astronaut_path());
   photo::PrepError error;
   const auto load_start = std::chrono::steady_clock::now();
   auto preparer = photo::AvatarPreparer::create(std::nullopt, error);
-  if (!preparer) fail(error.message);
+  if (!preparer) fail_bench("prep", error.message);
   const double load_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - load_start).count();
 
   nlohmann::json per_variant = nlohmann::json::array();
@@ -43,7 +39,7 @@ void run(const PrepBenchArgs& args) {
       const auto start = std::chrono::steady_clock::now();
       const auto avatar = preparer->prepare(jpeg, {}, error);
       times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-      if (!avatar) fail(variant.name + ": " + error.message);
+      if (!avatar) fail_bench("prep", variant.name + ": " + error.message);
     }
     std::sort(times.begin(), times.end());
     medians.push_back(times[times.size() / 2]);
@@ -53,7 +49,7 @@ void run(const PrepBenchArgs& args) {
   std::sort(medians.begin(), medians.end());
 
   const auto avatar = preparer->prepare(test::encode(original), {}, error);
-  if (!avatar) fail(error.message);
+  if (!avatar) fail_bench("prep", error.message);
   const auto package = model::serialize_avatar_package(avatar->package);
   const auto& p = avatar->package;
   nlohmann::json out = {

@@ -12,6 +12,7 @@
 #include "fw/model/procedural_texture.hpp"
 #include "fw/render/avatar_appearance.hpp"
 #include "fw/render/face_renderer.hpp"
+#include "bench_failure.hpp"
 
 namespace fw::bench {
 namespace {
@@ -27,11 +28,6 @@ struct Measured {
   int frames = 0;
 };
 
-[[noreturn]] void fail(const std::string& message) {
-  std::cerr << "facewire-bench render: " << message << "\n";
-  std::exit(2);
-}
-
 // Renders `faces` heads that keep turning and changing expression (so no
 // frame repeats the last) for about `seconds`, and reports whole frames per
 // second including each face's reconstruction and the read-back: what a
@@ -43,7 +39,7 @@ Measured measure(int width, int height, int faces, const RenderBenchArgs& args, 
   options.samples = args.samples;
   std::string error;
   auto renderer = render::FaceRenderer::create(options, error);
-  if (!renderer) fail(error);
+  if (!renderer) fail_bench("render", error);
   if (renderer_name) *renderer_name = renderer->renderer_name();
 
   const model::GenericFace& face = model::generic_face();

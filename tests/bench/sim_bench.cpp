@@ -15,6 +15,7 @@
 #include "fw/model/generic_face.hpp"
 #include "fw/physics/face_pool.hpp"
 #include "fw/physics/face_simulation.hpp"
+#include "bench_failure.hpp"
 
 namespace fw::bench {
 namespace {
@@ -34,11 +35,6 @@ constexpr double kGoalFaceFramesPerS = 15000;   // 500 faces at 30 Hz on this 2-
 constexpr double kGoalBytesPerFace = 256 * 1024;
 constexpr double kPaperFaceFramesPerS = 42.9;   // one face, one Pentium III thread
 constexpr double kPaperBytesPerFace = 17.3e6;   // Table 1, one face
-
-[[noreturn]] void fail(const std::string& message) {
-  std::cerr << "facewire-bench sim: " << message << "\n";
-  std::exit(2);
-}
 
 // Smooth, never-repeating AU targets, as the expression controller's
 // envelopes give them: each face has a few active channels whose intensity
@@ -78,14 +74,14 @@ class Drive {
 };
 
 void run(const SimBenchArgs& args) {
-  if (args.faces < 1 || args.faces > 100000) fail("--faces must be in 1..100000");
-  if (!(args.seconds > 0.0) || args.seconds > 3600.0) fail("--seconds must be in (0, 3600]");
-  if (!(args.rate_hz >= 1.0) || args.rate_hz > 1000.0) fail("--rate-hz must be in [1, 1000]");
-  if (args.threads > 1024) fail("--threads must be at most 1024 (0 = one per hardware thread)");
+  if (args.faces < 1 || args.faces > 100000) fail_bench("sim", "--faces must be in 1..100000");
+  if (!(args.seconds > 0.0) || args.seconds > 3600.0) fail_bench("sim", "--seconds must be in (0, 3600]");
+  if (!(args.rate_hz >= 1.0) || args.rate_hz > 1000.0) fail_bench("sim", "--rate-hz must be in [1, 1000]");
+  if (args.threads > 1024) fail_bench("sim", "--threads must be at most 1024 (0 = one per hardware thread)");
   physics::SimulationOptions options;
   if (args.solver == "massspring") options.solver = physics::Solver::mass_spring;
   else if (args.solver == "pbd") options.solver = physics::Solver::pbd;
-  else fail("--solver must be massspring or pbd, not '" + args.solver + "'");
+  else fail_bench("sim", "--solver must be massspring or pbd, not '" + args.solver + "'");
   options.individual_variation = 0.05f;
 
   // One tissue model shared by all faces, as for faces of one avatar; every

@@ -1,8 +1,9 @@
 #include "fw/render/offscreen_context.hpp"
 
-#include <GL/osmesa.h>
-
+// gl.hpp before OSMesa's header, which includes GL without the prototypes.
 #include "gl.hpp"
+
+#include <GL/osmesa.h>
 
 namespace fw::render {
 
