@@ -125,15 +125,17 @@ void Room::do_join(JoinRequest request) {
                  static_cast<std::uint32_t>(request.avatar.preview ? request.avatar.preview->size() : 0),
                  static_cast<std::uint32_t>(request.avatar.full ? request.avatar.full->size() : 0), person};
   member.avatar = request.avatar;
+  // Counted before anyone hears of the joiner: whoever reads the counts
+  // after a welcome or a presence message finds the joiner in them.
+  if (person) person_count_.fetch_add(1);
+  avatar_count_.fetch_add(1);
+  context_.metrics.avatars.fetch_add(1);
   introduce_to_others(member);
   if (person) {
     member.stream = welcome(member, request);
     request.connection->joined(id);
-    person_count_.fetch_add(1);
   }
   members_.emplace(id, std::move(member));
-  avatar_count_.fetch_add(1);
-  context_.metrics.avatars.fetch_add(1);
   spdlog::info("room {}: {} joined as avatar {} ({})", name_, request.name, id, person ? "person" : "autonomous");
 }
 
