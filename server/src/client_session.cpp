@@ -242,8 +242,11 @@ void ClientSession::refuse(CloseCode code, const std::string& why) {
   do_close(code, why);
 }
 
-void ClientSession::joined(std::uint32_t avatar) {
-  net::post(executor_, [self = shared_from_this(), avatar] {
+void ClientSession::joined(std::uint32_t avatar, SharedBytes welcome) {
+  queued_bytes_.fetch_add(welcome->size(), std::memory_order_relaxed);
+  net::post(executor_, [self = shared_from_this(), avatar, welcome = std::move(welcome)]() mutable {
+    // Dropped if the connection closed meanwhile.
+    self->do_deliver(std::move(welcome));
     if (self->state_ != State::joining) {
       // Closed while the room seated us: give the seat back.
       if (self->room_) self->room_->leave(avatar);

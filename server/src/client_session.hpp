@@ -34,7 +34,7 @@ class ClientSession : public RoomConnection, public std::enable_shared_from_this
   std::size_t queued_bytes() const override { return queued_bytes_.load(std::memory_order_relaxed); }
   std::uint64_t bytes_written() const override { return bytes_written_.load(std::memory_order_relaxed); }
   void close(codec::CloseCode code, std::string reason) override;
-  void joined(std::uint32_t avatar) override;
+  void joined(std::uint32_t avatar, SharedBytes welcome) override;
 
  protected:
   /// The transport is connected: start the clock and read.

@@ -133,7 +133,6 @@ void Room::do_join(JoinRequest request) {
   introduce_to_others(member);
   if (person) {
     member.stream = welcome(member, request);
-    request.connection->joined(id);
   }
   members_.emplace(id, std::move(member));
   spdlog::info("room {}: {} joined as avatar {} ({})", name_, request.name, id, person ? "person" : "autonomous");
@@ -178,7 +177,7 @@ std::unique_ptr<SubscriberStream> Room::welcome(const Member& newcomer, const Jo
     if (welcome.avatars.size() + 1 < codec::kMaxWelcomeAvatars) welcome.avatars.push_back(other.info);
   welcome.avatars.push_back(newcomer.info);
   const auto welcome_bytes = encode_shared(welcome);
-  request.connection->deliver(welcome_bytes);
+  request.connection->joined(newcomer.info.id, welcome_bytes);
   // The stream's header follows the welcome; then everyone's face.
   auto stream = std::make_unique<SubscriberStream>(request.stream, request.connection, context_.metrics);
   stream->charge(welcome_bytes->size());

@@ -27,8 +27,10 @@ class RoomConnection {
   virtual std::size_t framing_bytes(std::size_t message_bytes) const = 0;
   /// Sends a closing message, then closes.
   virtual void close(codec::CloseCode code, std::string reason) = 0;
-  /// The room accepted this connection's hello.
-  virtual void joined(std::uint32_t avatar) = 0;
+  /// The room accepted this connection's hello: queues the welcome, then
+  /// serves what the peer sent while it waited. One call, so that nothing
+  /// the peer sends after reading the welcome can count as sent before it.
+  virtual void joined(std::uint32_t avatar, SharedBytes welcome) = 0;
 };
 
 inline SharedBytes share(std::vector<std::uint8_t>&& bytes) {

@@ -59,7 +59,7 @@ class CountingConnection : public RoomConnection {
   std::uint64_t bytes_written() const override { return session_->bytes_written(); }
   std::size_t framing_bytes(std::size_t message_bytes) const override { return session_->framing_bytes(message_bytes); }
   void close(codec::CloseCode code, std::string reason) override { session_->close(code, std::move(reason)); }
-  void joined(std::uint32_t avatar) override { session_->joined(avatar); }
+  void joined(std::uint32_t avatar, SharedBytes welcome) override { session_->joined(avatar, std::move(welcome)); }
   /// Bytes of every message delivered so far (the stream ticks on the test's thread).
   std::uint64_t delivered() const { return delivered_; }
 
