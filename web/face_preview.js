@@ -60,9 +60,11 @@ function uploadMesh(gl, mesh) {
     gl.enableVertexAttribArray(location);
     gl.vertexAttribPointer(location, size, gl.FLOAT, false, 0, 0);
   };
+  const normals = vertexNormals(mesh.positions, mesh.triangles);
   attribute(0, mesh.positions, 3);
-  attribute(1, vertexNormals(mesh.positions, mesh.triangles), 3);
+  attribute(1, normals, 3);
   attribute(2, mesh.uvs, 2);
+  attribute(3, normals, 3);  // the rest shape's normals: this preview never morphs
   gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, gl.createBuffer());
   gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, new Uint32Array(mesh.triangles.flat()), gl.STATIC_DRAW);
   gl.bindVertexArray(null);
@@ -73,7 +75,8 @@ function uploadCanvas(gl, canvas) {
   const texture = gl.createTexture();
   gl.bindTexture(gl.TEXTURE_2D, texture);
   gl.pixelStorei(gl.UNPACK_FLIP_Y_WEBGL, true);  // canvas rows run down, v runs up
-  gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA, gl.RGBA, gl.UNSIGNED_BYTE, canvas);
+  // Colours are sRGB: decoded to linear light on lookup, as natively.
+  gl.texImage2D(gl.TEXTURE_2D, 0, gl.SRGB8_ALPHA8, gl.RGBA, gl.UNSIGNED_BYTE, canvas);
   gl.generateMipmap(gl.TEXTURE_2D);
   gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR_MIPMAP_LINEAR);
   gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.CLAMP_TO_EDGE);
@@ -154,7 +157,8 @@ function paintMouth() {
 }
 
 export async function startFacePreview(canvas, status) {
-  const gl = canvas.getContext('webgl2', { antialias: true });
+  // Opaque: the shader's alpha is coverage, not transparency.
+  const gl = canvas.getContext('webgl2', { antialias: true, alpha: false });
   if (!gl) throw new Error('this browser has no WebGL2');
   const [face, vertexSource, fragmentSource] = await Promise.all([
     fetch('/generic_face.json').then((r) => r.json()),
@@ -165,12 +169,12 @@ export async function startFacePreview(canvas, status) {
   const uniform = (name) => gl.getUniformLocation(program, name);
   // Layers as the shader numbers them: 0 skin, 1 eyeball, 2 mouth cavity.
   const parts = [
-    { mesh: uploadMesh(gl, face.skin), texture: uploadCanvas(gl, paintSkin(face, 512)), specular: 0.08, layer: 0 },
-    { mesh: uploadMesh(gl, face.mouth_cavity), texture: uploadCanvas(gl, paintMouth()), specular: 0.15, layer: 2 },
+    { mesh: uploadMesh(gl, face.skin), texture: uploadCanvas(gl, paintSkin(face, 512)), specular: 0, layer: 0 },
+    { mesh: uploadMesh(gl, face.mouth_cavity), texture: uploadCanvas(gl, paintMouth()), specular: 0, layer: 2 },
     ...['right', 'left'].map((side) => ({
       mesh: uploadMesh(gl, face.eyes[side].mesh),
       texture: uploadCanvas(gl, paintEye(face.eyes[side], 128)),
-      specular: 0.9,
+      specular: 0.5,
       layer: 1,
     })),
   ];
@@ -197,6 +201,10 @@ export async function startFacePreview(canvas, status) {
     gl.uniform3fv(uniform('u_camera_position'), eyePosition);
     gl.uniform3fv(uniform('u_light_direction'), [0.45, 0.6, 0.9]);
     gl.uniform1i(uniform('u_texture'), 0);
+    // The canvas stores what it is given: the shader encodes to sRGB.
+    gl.uniform1i(uniform('u_encode_srgb'), 1);
+    gl.enable(gl.SAMPLE_ALPHA_TO_COVERAGE);
+    gl.uniform1i(uniform('u_alpha_to_coverage'), 1);
     // The preview has no closed-lid skin or blood masks: lids open, colour unchanged.
     gl.uniform4f(uniform('u_closed_lid_rect'), -2, -2, -1, -1);
     for (const part of parts) {

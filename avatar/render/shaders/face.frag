@@ -2,9 +2,14 @@
 // The one fragment shader of facewire (see face.vert). u_layer picks the
 // part: the skin (eye holes, closed lids, blood colour), an eyeball, or the
 // mouth cavity.
+//
+// Colour is computed in linear light: colour textures are sRGB textures
+// (decoded on lookup) and the result is encoded to sRGB by the framebuffer,
+// or here when the target cannot (u_encode_srgb, a WebGL canvas).
 precision highp float;
 
 in vec3 v_normal;
+in vec3 v_rest_normal;
 in vec2 v_uv;
 in vec3 v_world;
 
@@ -12,30 +17,56 @@ uniform int u_layer;             // 0 skin, 1 eyeball, 2 mouth
 uniform sampler2D u_texture;
 uniform vec3 u_camera_position;
 uniform vec3 u_light_direction;  // toward the key light, world space
-uniform float u_specular;        // 0 for dry skin .. 1 for a wet eye
+uniform float u_specular;        // 0 for skin .. 1 for a wet eye
+uniform bool u_encode_srgb;      // the target stores what it is given
+uniform bool u_alpha_to_coverage;  // else alpha under 0.5 is discarded
 
 // Skin only.
 uniform sampler2D u_closed_lid;  // skin over the eyes, placed at u_closed_lid_rect
 uniform vec4 u_closed_lid_rect;  // u0, v0, u1, v1 of the skin texture
 uniform vec2 u_lid_closure;      // person's right, left: 0 open .. 1 closed
-uniform sampler2D u_masks_a;     // forehead, left cheek, right cheek
-uniform sampler2D u_masks_b;     // nose, sides, whole face
+uniform sampler2D u_masks_a;     // forehead, left cheek, right cheek (linear)
+uniform sampler2D u_masks_b;     // nose, sides, whole face (linear)
 uniform vec4 u_blush_a;          // forehead, left cheek, right cheek, nose: 0..1
 uniform float u_blush_sides;
 uniform float u_pallor;          // 0..1
 
 out vec4 o_colour;
 
-// Blood in the skin: blushing reddens and saturates, pallor greys and
-// lightens (the vascular-expressions paper's colour signal).
-vec3 vascular(vec3 colour) {
-  vec4 a = texture(u_masks_a, v_uv);
-  vec4 b = texture(u_masks_b, v_uv);
-  float blush = clamp(dot(a.rgb, u_blush_a.xyz) + b.r * u_blush_a.w + b.g * u_blush_sides, 0.0, 1.0);
-  colour = mix(colour, colour * vec3(1.2, 0.78, 0.8), 0.85 * blush);
-  float grey = dot(colour, vec3(0.299, 0.587, 0.114));
-  vec3 pale = vec3(grey) * vec3(0.98, 1.0, 1.04) + vec3(0.06);
-  return mix(colour, pale, 0.75 * u_pallor * b.b);
+// Blood in the skin (the vascular-expressions paper's colour signal), as
+// light passing through it: more blood absorbs green and blue far more than
+// red (Beer-Lambert, haemoglobin's absorption), so a blush reddens and
+// darkens a little, in proportion to each region's smooth Bezier shade;
+// less blood (pallor) drains the colour toward a lighter, cooler grey.
+const vec3 kBloodAbsorption = vec3(0.18, 1.0, 0.82);
+const float kMaxBlood = 0.75;
+
+vec3 vascular(vec3 linear_colour) {
+  // The shade rises from 0 at a region's border; raised to 1.5 it also
+  // leaves the border with zero slope, so no region shows an edge.
+  vec4 b_raw = texture(u_masks_b, v_uv);
+  vec4 a = pow(texture(u_masks_a, v_uv), vec4(1.5));
+  vec4 b = pow(b_raw, vec4(1.5));
+  float blood = dot(a.rgb, u_blush_a.xyz) + b.r * u_blush_a.w + b.g * u_blush_sides;
+  vec3 colour = linear_colour * exp(-kBloodAbsorption * kMaxBlood * blood);
+  float luminance = dot(colour, vec3(0.2126, 0.7152, 0.0722));
+  vec3 pale = vec3(luminance) * vec3(0.97, 1.0, 1.04) * 1.1;
+  return mix(colour, pale, 0.65 * u_pallor * b_raw.b);
+}
+
+// The photo already holds its own light. Only a change of the surface's
+// direction from the photo's (a turned head, a raised brow, a turned eye)
+// changes how much of the key light it catches: the ratio of the two.
+float relighting(vec3 n, vec3 rest) {
+  vec3 l = normalize(u_light_direction);
+  float now = 0.35 + 0.65 * max(dot(n, l), 0.0);
+  float then = 0.35 + 0.65 * max(dot(rest, l), 0.0);
+  return clamp(now / then, 0.45, 1.6);
+}
+
+vec3 encode_srgb(vec3 linear_colour) {
+  vec3 c = clamp(linear_colour, 0.0, 1.0);
+  return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
 }
 
 void main() {
@@ -55,16 +86,21 @@ void main() {
     }
     texel.rgb = vascular(texel.rgb);
   }
-  // Alpha marks the holes (the eyes): the layer behind shows through.
-  if (texel.a < 0.5) discard;
+  // Alpha marks the holes (the eyes): the layer behind shows through. With
+  // multisampling, alpha becomes the share of samples covered, so the eye's
+  // outline is smooth instead of a stair of whole pixels.
+  if (!u_alpha_to_coverage && texel.a < 0.5) discard;
+  if (texel.a < 0.004) discard;
   vec3 n = normalize(v_normal);
-  if (!gl_FrontFacing) n = -n;
-  vec3 l = normalize(u_light_direction);
-  vec3 v = normalize(u_camera_position - v_world);
-  float key = max(dot(n, l), 0.0);
-  float fill = max(dot(n, normalize(vec3(-0.6, 0.1, 0.8))), 0.0);
-  float rim = pow(1.0 - max(dot(n, v), 0.0), 3.0);
-  float highlight = u_specular * pow(max(dot(n, normalize(l + v)), 0.0), 60.0);
-  vec3 colour = texel.rgb * (0.25 + 0.7 * key + 0.2 * fill + 0.1 * rim) + vec3(highlight);
-  o_colour = vec4(colour, 1.0);
+  vec3 rest = normalize(v_rest_normal);
+  if (!gl_FrontFacing) {
+    n = -n;
+    rest = -rest;
+  }
+  vec3 colour = texel.rgb * relighting(n, rest);
+  // A wet eye reflects the key light: the one highlight the photo cannot
+  // hold, since the eye turns.
+  vec3 half_vector = normalize(normalize(u_light_direction) + normalize(u_camera_position - v_world));
+  colour += vec3(u_specular * pow(max(dot(n, half_vector), 0.0), 120.0));
+  o_colour = vec4(u_encode_srgb ? encode_srgb(colour) : colour, texel.a);
 }

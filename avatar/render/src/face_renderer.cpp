@@ -1,6 +1,7 @@
 #include "fw/render/face_renderer.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include <glm/gtc/type_ptr.hpp>
@@ -17,7 +18,8 @@ namespace fw::render {
 namespace {
 
 constexpr int kMinSize = 16, kMaxSize = 4096;
-constexpr float kSkinSpecular = 0.08f, kEyeSpecular = 0.9f, kMouthSpecular = 0.15f;
+// Skin and mouth keep the photo's own light: no highlight of their own.
+constexpr float kSkinSpecular = 0.0f, kEyeSpecular = 0.5f, kMouthSpecular = 0.0f;
 
 struct GpuFace {
   GpuMesh skin, mouth;
@@ -34,7 +36,7 @@ struct GpuFace {
 struct Uniforms {
   GLint model = -1, view_projection = -1, camera_position = -1, light_direction = -1, specular = -1, texture = -1;
   GLint layer = -1, closed_lid = -1, closed_lid_rect = -1, lid_closure = -1, masks_a = -1, masks_b = -1,
-        blush_a = -1, blush_sides = -1, pallor = -1;
+        blush_a = -1, blush_sides = -1, pallor = -1, encode_srgb = -1, alpha_to_coverage = -1;
 };
 
 enum Layer : GLint { kSkinLayer = 0, kEyeLayer = 1, kMouthLayer = 2 };
@@ -49,6 +51,13 @@ model::RgbaImage or_black(const model::RgbaImage& image) {
   return black;
 }
 
+glm::vec3 srgb_to_linear(glm::vec3 c) {
+  const auto channel = [](float v) {
+    return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
+  };
+  return {channel(c.r), channel(c.g), channel(c.b)};
+}
+
 }  // namespace
 
 struct FaceRenderer::Impl {
@@ -59,6 +68,7 @@ struct FaceRenderer::Impl {
   // Multisampled target drawn into, then resolved into a plain one to read.
   Framebuffer draw_framebuffer, resolve_framebuffer;
   Renderbuffer draw_colour, draw_depth, resolve_colour;
+  GLsizei samples = 0;
   std::vector<GpuFace> faces;
 
   bool set_up_framebuffers(std::string& error);
@@ -68,12 +78,14 @@ struct FaceRenderer::Impl {
 bool FaceRenderer::Impl::set_up_framebuffers(std::string& error) {
   GLint max_samples = 0;
   glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
-  const GLsizei samples = std::clamp(options.samples, 0, max_samples);
+  samples = std::clamp(options.samples, 0, max_samples);
   const GLsizei w = options.width, h = options.height;
 
   draw_colour = generate<Renderbuffer, glGenRenderbuffers>();
   glBindRenderbuffer(GL_RENDERBUFFER, draw_colour.get());
-  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_RGBA8, w, h);
+  // sRGB targets: the shader works in linear light, the framebuffer
+  // encodes (GL_FRAMEBUFFER_SRGB) and multisamples resolve in linear light.
+  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_SRGB8_ALPHA8, w, h);
   draw_depth = generate<Renderbuffer, glGenRenderbuffers>();
   glBindRenderbuffer(GL_RENDERBUFFER, draw_depth.get());
   glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, w, h);
@@ -87,7 +99,7 @@ bool FaceRenderer::Impl::set_up_framebuffers(std::string& error) {
   }
   resolve_colour = generate<Renderbuffer, glGenRenderbuffers>();
   glBindRenderbuffer(GL_RENDERBUFFER, resolve_colour.get());
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, w, h);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_SRGB8_ALPHA8, w, h);
   resolve_framebuffer = generate<Framebuffer, glGenFramebuffers>();
   glBindFramebuffer(GL_FRAMEBUFFER, resolve_framebuffer.get());
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, resolve_colour.get());
@@ -137,7 +149,8 @@ std::unique_ptr<FaceRenderer> FaceRenderer::create(const RendererOptions& option
   impl.uniforms = {at("u_model"),      at("u_view_projection"), at("u_camera_position"), at("u_light_direction"),
                    at("u_specular"),   at("u_texture"),         at("u_layer"),           at("u_closed_lid"),
                    at("u_closed_lid_rect"), at("u_lid_closure"), at("u_masks_a"),         at("u_masks_b"),
-                   at("u_blush_a"),     at("u_blush_sides"),     at("u_pallor")};
+                   at("u_blush_a"),     at("u_blush_sides"),     at("u_pallor"),          at("u_encode_srgb"),
+                   at("u_alpha_to_coverage")};
   if (!impl.set_up_framebuffers(error)) return nullptr;
   return self;
 }
@@ -159,13 +172,13 @@ FaceId FaceRenderer::add_face(const model::GenericFace& face, const FaceTextures
       for (std::size_t i = 1; i + 1 < hole.size(); ++i) fans.emplace_back(hole[0], hole[i], hole[i + 1]);
     gpu.eye_covers = share_vertices(gpu.skin, fans);
   }
-  gpu.skin_texture = upload_texture(textures.skin);
-  gpu.eye_texture = upload_texture(or_black(textures.eye));
-  gpu.mouth_texture = upload_texture(textures.mouth);
-  gpu.closed_lid = upload_texture(or_black(textures.closed_lid));
+  gpu.skin_texture = upload_texture(textures.skin, TexelEncoding::srgb_colour);
+  gpu.eye_texture = upload_texture(or_black(textures.eye), TexelEncoding::srgb_colour);
+  gpu.mouth_texture = upload_texture(textures.mouth, TexelEncoding::srgb_colour);
+  gpu.closed_lid = upload_texture(or_black(textures.closed_lid), TexelEncoding::srgb_colour);
   gpu.closed_lid_rect = textures.closed_lid.width > 0 ? textures.closed_lid_rect : glm::vec4(0.0f);
-  gpu.masks_a = upload_texture(or_black(textures.masks_a));
-  gpu.masks_b = upload_texture(or_black(textures.masks_b));
+  gpu.masks_a = upload_texture(or_black(textures.masks_a), TexelEncoding::linear_data);
+  gpu.masks_b = upload_texture(or_black(textures.masks_b), TexelEncoding::linear_data);
   impl_->faces.push_back(std::move(gpu));
   return static_cast<FaceId>(impl_->faces.size() - 1);
 }
@@ -187,11 +200,20 @@ model::RgbaImage FaceRenderer::render(std::span<const FaceDraw> draws, const Cam
   const int w = impl.options.width, h = impl.options.height;
   glBindFramebuffer(GL_FRAMEBUFFER, impl.draw_framebuffer.get());
   glViewport(0, 0, w, h);
-  glClearColor(impl.options.background.r, impl.options.background.g, impl.options.background.b, 1.0f);
+  // The background is given in sRGB like any colour; the framebuffer encodes.
+  const glm::vec3 background = srgb_to_linear(impl.options.background);
+  glEnable(GL_FRAMEBUFFER_SRGB);
+  glClearColor(background.r, background.g, background.b, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);  // a turned head shows the inside of its rim
+  // Soft edges of the eye holes as coverage; what is drawn stays opaque.
+  const bool alpha_to_coverage = impl.samples > 0;
+  if (alpha_to_coverage) {
+    glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+    glEnable(GL_SAMPLE_ALPHA_TO_ONE);
+  }
 
   glUseProgram(impl.program.get());
   glUniformMatrix4fv(impl.uniforms.view_projection, 1, GL_FALSE, glm::value_ptr(camera.view_projection()));
@@ -199,6 +221,8 @@ model::RgbaImage FaceRenderer::render(std::span<const FaceDraw> draws, const Cam
   const glm::vec3 light(0.45f, 0.6f, 0.9f);  // key light above and to the viewer's right
   glUniform3fv(impl.uniforms.light_direction, 1, glm::value_ptr(light));
   glUniform1i(impl.uniforms.texture, kMainUnit);
+  glUniform1i(impl.uniforms.encode_srgb, 0);
+  glUniform1i(impl.uniforms.alpha_to_coverage, alpha_to_coverage ? 1 : 0);
   glUniform1i(impl.uniforms.closed_lid, kClosedLidUnit);
   glUniform1i(impl.uniforms.masks_a, kMasksAUnit);
   glUniform1i(impl.uniforms.masks_b, kMasksBUnit);
@@ -230,6 +254,8 @@ model::RgbaImage FaceRenderer::render(std::span<const FaceDraw> draws, const Cam
     }
   }
   glBindVertexArray(0);
+  glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+  glDisable(GL_SAMPLE_ALPHA_TO_ONE);
 
   glBindFramebuffer(GL_READ_FRAMEBUFFER, impl.draw_framebuffer.get());
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, impl.resolve_framebuffer.get());

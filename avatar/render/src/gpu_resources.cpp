@@ -59,8 +59,10 @@ GpuMesh upload_mesh(const model::Mesh& mesh) {
   gpu.vertex_array = generate<VertexArray, glGenVertexArrays>();
   glBindVertexArray(gpu.vertex_array.get());
   gpu.positions = array_buffer(0, mesh.positions, 3);
-  gpu.normals = array_buffer(1, model::vertex_normals(mesh), 3);
+  const std::vector<glm::vec3> normals = model::vertex_normals(mesh);
+  gpu.normals = array_buffer(1, normals, 3);
   gpu.uvs = array_buffer(2, mesh.uvs, 2);
+  gpu.rest_normals = array_buffer(3, normals, 3);
   gpu.indices = generate<Buffer, glGenBuffers>();
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gpu.indices.get());
   glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.triangles.size() * sizeof(glm::uvec3)),
@@ -74,9 +76,9 @@ GpuMesh share_vertices(const GpuMesh& mesh, const std::vector<glm::uvec3>& trian
   GpuMesh shared;
   shared.vertex_array = generate<VertexArray, glGenVertexArrays>();
   glBindVertexArray(shared.vertex_array.get());
-  const GLuint buffers[3] = {mesh.positions.get(), mesh.normals.get(), mesh.uvs.get()};
-  const GLint sizes[3] = {3, 3, 2};
-  for (GLuint attribute = 0; attribute < 3; ++attribute) {
+  const GLuint buffers[4] = {mesh.positions.get(), mesh.normals.get(), mesh.uvs.get(), mesh.rest_normals.get()};
+  const GLint sizes[4] = {3, 3, 2, 3};
+  for (GLuint attribute = 0; attribute < 4; ++attribute) {
     glBindBuffer(GL_ARRAY_BUFFER, buffers[attribute]);
     glEnableVertexAttribArray(attribute);
     glVertexAttribPointer(attribute, sizes[attribute], GL_FLOAT, GL_FALSE, 0, nullptr);
@@ -100,7 +102,7 @@ void update_mesh(GpuMesh& gpu, const model::Mesh& mesh) {
   replace(gpu.uvs, mesh.uvs);
 }
 
-Texture upload_texture(const model::RgbaImage& image) {
+Texture upload_texture(const model::RgbaImage& image, TexelEncoding encoding) {
   std::vector<std::uint8_t> flipped(image.pixels.size());
   const std::size_t row = static_cast<std::size_t>(image.width) * 4;
   for (int y = 0; y < image.height; ++y)
@@ -108,7 +110,8 @@ Texture upload_texture(const model::RgbaImage& image) {
   auto texture = generate<Texture, glGenTextures>();
   glBindTexture(GL_TEXTURE_2D, texture.get());
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, flipped.data());
+  const GLint format = encoding == TexelEncoding::srgb_colour ? GL_SRGB8_ALPHA8 : GL_RGBA8;
+  glTexImage2D(GL_TEXTURE_2D, 0, format, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, flipped.data());
   glGenerateMipmap(GL_TEXTURE_2D);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);

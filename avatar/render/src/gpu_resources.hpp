@@ -15,10 +15,11 @@ namespace fw::render {
 std::optional<Program> build_program(std::string_view vertex_source, std::string_view fragment_source,
                                      std::string& error);
 
-/// A mesh in GL buffers: attribute 0 position, 1 normal, 2 uv.
+/// A mesh in GL buffers: attribute 0 position, 1 normal, 2 uv, 3 the normal
+/// of the shape it was uploaded with (the rest shape the texture shows).
 struct GpuMesh {
   VertexArray vertex_array;
-  Buffer positions, normals, uvs, indices;
+  Buffer positions, normals, uvs, rest_normals, indices;
   GLsizei index_count = 0;
 };
 GpuMesh upload_mesh(const model::Mesh& mesh);
@@ -27,11 +28,16 @@ GpuMesh upload_mesh(const model::Mesh& mesh);
 /// sharing the buffers), so they follow every update_mesh of `mesh`.
 GpuMesh share_vertices(const GpuMesh& mesh, const std::vector<glm::uvec3>& triangles);
 
-/// New positions and uvs (and so normals) for a mesh of the same topology.
+/// New positions and uvs (and so normals) for a mesh of the same topology;
+/// the rest normals stay.
 void update_mesh(GpuMesh& gpu, const model::Mesh& mesh);
+
+/// What a texture's bytes hold: colours (sRGB-encoded, decoded to linear
+/// light on lookup) or plain data such as masks.
+enum class TexelEncoding { srgb_colour, linear_data };
 
 /// An RGBA texture with mipmaps, clamped at the edges. Rows are flipped on
 /// upload because images run top-down and texture v runs up.
-Texture upload_texture(const model::RgbaImage& image);
+Texture upload_texture(const model::RgbaImage& image, TexelEncoding encoding);
 
 }  // namespace fw::render
