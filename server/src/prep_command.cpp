@@ -55,6 +55,16 @@ int prep(const PrepArgs& args) {
   std::cout << "wrote " << args.output << " (" << package.size() << " bytes): " << r.faces_found << " face(s) found, "
             << std::lround(r.inter_ocular_px) << " px between the eyes, eye line " << std::lround(r.roll_deg)
             << " deg, head turned about " << std::lround(r.yaw_deg) << " deg\n";
+  // The expression the photo showed, which the avatar's neutral face leaves out.
+  std::string expression;
+  for (std::size_t c = 0; c < codec::kAuChannelCount; ++c) {
+    if (r.photo_expression[c] < 0.05f) continue;
+    const codec::AuChannel channel = codec::kAuChannels[c];
+    expression += " AU" + std::to_string(channel.au) +
+                  (channel.side == codec::AuSide::both ? "" : channel.side == codec::AuSide::left ? "L" : "R") + " " +
+                  std::to_string(std::lround(r.photo_expression[c] * 100)) + "%";
+  }
+  if (!expression.empty()) std::cout << "expression in the photo, taken out:" << expression << "\n";
   if (!args.preview.empty()) std::cout << "wrote " << args.preview << "\n";
   return 0;
 }

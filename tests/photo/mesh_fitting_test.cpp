@@ -8,16 +8,10 @@
 #include "fw/model/face_asset.hpp"
 #include "fw/model/fitted_face.hpp"
 #include "fw/model/landmark_template.hpp"
+#include "template_landmarks.hpp"
 
 namespace fw::photo {
 namespace {
-
-ModelLandmarks template_landmarks() {
-  ModelLandmarks l{};
-  const auto tmpl = model::landmark_template();
-  std::copy(tmpl.begin(), tmpl.end(), l.begin());
-  return l;
-}
 
 std::vector<std::string> folds(const MeshFit& fit) {
   const model::GenericFace& generic = model::generic_face();

@@ -15,6 +15,8 @@
 #include "fw/model/landmark_template.hpp"
 #include "fw/render/avatar_appearance.hpp"
 #include "fw/render/face_renderer.hpp"
+#include "rendered_avatar.hpp"
+#include "shared_preparer.hpp"
 #include "photo_variants.hpp"
 
 namespace fw::photo {
@@ -25,16 +27,11 @@ namespace lm = model::landmarks;
 class PrepareAvatarTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    PrepError error;
-    preparer_ = AvatarPreparer::create(std::nullopt, error).release();
-    ASSERT_NE(preparer_, nullptr) << error.message;
+    preparer_ = &test::shared_preparer();
     original_ = new cv::Mat(test::load_astronaut());
     ASSERT_FALSE(original_->empty()) << "missing test photo " << test::astronaut_path();
   }
-  static void TearDownTestSuite() {
-    delete preparer_;
-    delete original_;
-  }
+  static void TearDownTestSuite() { delete original_; }
 
   static std::optional<PreparedAvatar> prepare(const std::vector<std::uint8_t>& bytes, PrepError& error,
                                                PrepOptions options = {}) {
@@ -255,34 +252,12 @@ TEST_F(PrepareAvatarTest, RefusesAFaceCutOffByTheEdge) {
   }
 }
 
-// A package's avatar in a renderer of its own, ready to draw.
-struct RenderedAvatar {
-  render::AvatarAppearance appearance;
-  std::unique_ptr<render::FaceRenderer> renderer;
-  render::FaceId id = 0;
-
-  RenderedAvatar(const model::AvatarPackage& package, int size, glm::vec3 background) {
-    std::string error;
-    EXPECT_TRUE(render::load_avatar_appearance(package, appearance, error)) << error;
-    render::RendererOptions options;
-    options.width = options.height = size;
-    options.background = background;
-    renderer = render::FaceRenderer::create(options, error);
-    id = renderer->add_face(appearance.avatar.face, appearance.textures);
-  }
-  model::RgbaImage draw(const render::FaceDraw& d) { return renderer->render({&d, 1}, render::Camera::portrait(1.0f)); }
-};
-
 // A turned head: the astronaut's own avatar, rendered turned.
 cv::Mat render_turned(const model::AvatarPackage& package, float yaw_deg) {
-  RenderedAvatar avatar(package, 512, {0.5f, 0.5f, 0.5f});
+  test::RenderedAvatar avatar(package, 512, {0.5f, 0.5f, 0.5f});
   render::HeadPose pose;
   pose.yaw_rad = glm::radians(yaw_deg);
-  const model::RgbaImage image = avatar.draw({avatar.id, render::head_transform(pose), {}});
-  cv::Mat bgr;
-  cv::cvtColor(cv::Mat(image.height, image.width, CV_8UC4, const_cast<std::uint8_t*>(image.pixels.data())), bgr,
-               cv::COLOR_RGBA2BGR);
-  return bgr;
+  return test::to_bgr(avatar.draw(render::FaceDraw{avatar.id, render::head_transform(pose), {}}));
 }
 
 TEST_F(PrepareAvatarTest, AcceptsAHeadTurned30DegreesAndRefusesOneTurnedAway) {
@@ -334,7 +309,7 @@ TEST_F(PrepareAvatarTest, WithoutAnEyeLayerTheEyesAreThePhotosAndStayPut) {
   std::string parse_error;
   ASSERT_TRUE(model::parse_avatar_package(model::serialize_avatar_package(avatar->package), parsed, parse_error))
       << parse_error;
-  RenderedAvatar rendered(parsed, 256, {0, 0, 0});
+  test::RenderedAvatar rendered(parsed, 256, {0, 0, 0});
   const auto draw_looking = [&](float yaw) {
     render::FaceDraw draw{rendered.id, glm::mat4(1.0f), {}};
     draw.eye_yaw_pitch_rad = {glm::vec2(yaw, 0.0f), glm::vec2(yaw, 0.0f)};

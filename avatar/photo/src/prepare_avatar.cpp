@@ -14,6 +14,7 @@
 #include "mesh_fitting.hpp"
 #include "mouth_layer.hpp"
 #include "package_encoding.hpp"
+#include "photo_expression.hpp"
 #include "pose_checks.hpp"
 #include "skin_tone.hpp"
 #include "fw/model/fitted_face.hpp"
@@ -111,14 +112,20 @@ std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8
   }
 
   const model::GenericFace& generic = model::generic_face();
+  // The avatar is built on the person's neutral face: the physics adds every
+  // expression to it, so a smile in the photo must not stay in the texture.
+  const PhotoExpression expression = estimate_expression(generic, landmarks);
+  report.photo_expression = expression.au;
+  const ModelLandmarks& neutral = expression.neutral;
   std::string fit_note;
-  const MeshFit fit = fit_mesh(generic, landmarks, fit_note);
+  const MeshFit fit = fit_mesh(generic, neutral, fit_note);
   if (!fit_note.empty()) report.warnings.push_back(fit_note);
 
   const model::TextureFrame& frame = generic.texture_frame;
   const int size = options.texture_size;
-  const cv::Mat texture = warp_to_texture(*photo, alignment, frame, size);
-  const auto eyes = eye_polygons_px(landmarks, frame, size);
+  const cv::Mat photo_texture = warp_to_texture(*photo, alignment, frame, size);
+  const cv::Mat texture = neutralise_texture(photo_texture, frame, landmarks, neutral);
+  const auto eyes = eye_polygons_px(neutral, frame, size);
   const cv::Mat face_texture = options.eye_layer ? with_eye_holes(texture, eyes) : texture;
   const ClosedLid lid = make_closed_lid(texture, eyes);
   const ThinPlateSpline& warp = fit.warp;
@@ -127,7 +134,7 @@ std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8
   model::AvatarPackage& package = result.package;
   package.generic_face_version = generic.version;
   package.fitted_vertices = fit.fitted_xy;
-  std::copy(landmarks.begin(), landmarks.end(), package.landmarks.begin());
+  std::copy(neutral.begin(), neutral.end(), package.landmarks.begin());
   package.skin_tone = estimate_skin_tone(texture, masks, kMaskSize);
   package.iris_colour = sample_iris_colour(texture, eyes);
   package.face_texture = encode_webp(face_texture, options.quality);
@@ -138,8 +145,10 @@ std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8
   look.iris = glm::vec3(package.iris_colour[0], package.iris_colour[1], package.iris_colour[2]) / 255.0f;
   if (options.eye_layer)
     package.eye = encode_webp(to_bgr_mat(model::make_eye_texture(generic.eyes[0], look, kEyeTextureSize)), options.quality);
-  package.mouth = encode_webp(make_mouth_layer(texture, landmarks, model::fit_generic_face(generic, fit.fitted_xy)),
-                               options.quality);
+  // The mouth layer shows what the photo shows between its lips, teeth
+  // included: from the photo as it is, not the neutralised texture.
+  package.mouth = encode_webp(
+      make_mouth_layer(photo_texture, landmarks, model::fit_generic_face(generic, fit.fitted_xy)), options.quality);
   const auto packed = model::pack_region_masks(masks, kMaskSize);
   package.colour_masks_a = encode_webp(to_bgr_mat(packed[0]), kLosslessWebp);
   package.colour_masks_b = encode_webp(to_bgr_mat(packed[1]), kLosslessWebp);

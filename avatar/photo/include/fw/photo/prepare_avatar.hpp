@@ -4,9 +4,11 @@
 // Data flow: bytes -> inspection (format, size, completeness) -> decode
 // (EXIF upright) -> face detection on a reduced copy -> 68 landmarks at full
 // resolution -> checks (size, edges, pose, open eyes) -> alignment by the eye
-// centres -> face texture in the generic face's frame -> thin-plate fit of
-// the generic mesh -> eye holes, iris colour, closed-lid layer -> vascular
-// region masks, skin tone -> encoded package.
+// centres -> the photo's expression estimated and taken out of the
+// landmarks -> face texture in the generic face's frame, warped to the
+// neutral landmarks -> thin-plate fit of the generic mesh -> eye holes, iris
+// colour, closed-lid layer -> vascular region masks, skin tone -> encoded
+// package.
 #include <array>
 #include <cstdint>
 #include <filesystem>
@@ -18,6 +20,7 @@
 
 #include <glm/vec2.hpp>
 
+#include "fw/codec/face_params.hpp"
 #include "fw/model/avatar_package.hpp"
 #include "fw/model/image.hpp"
 #include "fw/photo/prep_error.hpp"
@@ -42,6 +45,9 @@ struct PrepReport {
   float inter_ocular_px = 0;
   float roll_deg = 0;  ///< eye-line angle in the photo
   float yaw_deg = 0;   ///< estimated head turn
+  /// The photo's own expression as action-unit intensities (codec::kAuChannels
+  /// order), taken out of the avatar's texture and fit.
+  std::array<float, codec::kAuChannelCount> photo_expression{};
   std::vector<std::string> warnings;
   model::RgbaImage face_texture;  ///< the aligned texture as packaged (with eye holes)
 };
