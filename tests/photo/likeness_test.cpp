@@ -1,0 +1,98 @@
+// Likeness, as an independent observer sees it: dlib's 68 landmarks on each
+// avatar's neutral render against those on the photo it was made from,
+// after the similarity that best aligns them.
+#include <algorithm>
+#include <complex>
+#include <string>
+#include <vector>
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+#include <opencv2/imgcodecs.hpp>
+
+#include "fw/photo/prepare_avatar.hpp"
+#include "photo_variants.hpp"
+#include "rendered_avatar.hpp"
+#include "shared_preparer.hpp"
+#include "test_paths.hpp"
+
+namespace fw::photo {
+namespace {
+
+using Landmarks = std::array<glm::vec2, model::kLandmarkCount>;
+
+// The median distance between b's landmarks and a's after the similarity
+// (rotation, scale, shift) that takes a onto b best, in b's inter-ocular
+// distances.
+float aligned_median_error(const Landmarks& a, const Landmarks& b) {
+  // Least-squares similarity in complex numbers: b ~ s * a + t.
+  using C = std::complex<double>;
+  C mean_a(0), mean_b(0);
+  for (std::size_t i = 0; i < a.size(); ++i) mean_a += C(a[i].x, a[i].y), mean_b += C(b[i].x, b[i].y);
+  mean_a /= double(a.size()), mean_b /= double(a.size());
+  C cross(0);
+  double norm = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const C p = C(a[i].x, a[i].y) - mean_a, q = C(b[i].x, b[i].y) - mean_b;
+    cross += std::conj(p) * q;
+    norm += std::norm(p);
+  }
+  const C s = cross / norm;
+  glm::vec2 right(0.0f), left(0.0f);
+  for (int i = 0; i < 6; ++i) right += b[36 + i] / 6.0f, left += b[42 + i] / 6.0f;
+  const float inter_ocular = glm::length(left - right);
+  std::vector<float> errors;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const C moved = s * (C(a[i].x, a[i].y) - mean_a) + mean_b;
+    errors.push_back(static_cast<float>(std::abs(moved - C(b[i].x, b[i].y))) / inter_ocular);
+  }
+  std::nth_element(errors.begin(), errors.begin() + errors.size() / 2, errors.end());
+  return errors[errors.size() / 2];
+}
+
+struct Person {
+  std::string photo;
+  Landmarks on_photo{}, on_avatar{};
+};
+
+class Likeness : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    people_ = new std::vector<Person>;
+    for (const std::string name : {"astronaut.png", "grace_hopper.jpg"}) {
+      Person person{name};
+      const cv::Mat photo = cv::imread(test::test_photo(name), cv::IMREAD_COLOR);
+      ASSERT_FALSE(photo.empty()) << name;
+      PrepError error;
+      const auto avatar = test::shared_preparer().prepare(test::encode(photo), {}, error);
+      ASSERT_TRUE(avatar.has_value()) << name << ": " << error.message;
+      person.on_photo = avatar->report.photo_landmarks;
+      test::RenderedAvatar rendered(avatar->package, 512, {0.5f, 0.5f, 0.5f});
+      const auto seen = test::shared_preparer().prepare(test::encode(test::to_bgr(rendered.draw(codec::FaceParams{}))),
+                                                        {}, error);
+      ASSERT_TRUE(seen.has_value()) << "dlib finds no face on " << name << "'s avatar: " << error.message;
+      person.on_avatar = seen->report.photo_landmarks;
+      people_->push_back(person);
+    }
+  }
+  static void TearDownTestSuite() { delete people_; }
+  static inline std::vector<Person>* people_ = nullptr;
+};
+
+TEST_F(Likeness, EachAvatarsLandmarksFollowItsPhotosClosely) {
+  for (const Person& person : *people_)
+    EXPECT_LE(aligned_median_error(person.on_avatar, person.on_photo), 0.05f) << person.photo;
+}
+
+TEST_F(Likeness, EachAvatarIsCloserToItsOwnPhotoThanToAnyOther) {
+  for (const Person& person : *people_)
+    for (const Person& other : *people_) {
+      if (&other == &person) continue;
+      EXPECT_LT(aligned_median_error(person.on_avatar, person.on_photo),
+                aligned_median_error(person.on_avatar, other.on_photo))
+          << person.photo << "'s avatar looks more like " << other.photo;
+    }
+}
+
+}  // namespace
+}  // namespace fw::photo
