@@ -94,5 +94,30 @@ TEST_F(Likeness, EachAvatarIsCloserToItsOwnPhotoThanToAnyOther) {
     }
 }
 
+TEST(TurnedHead, ItsPoseIsFoundAndItsFrontalAvatarMatchesTheFrontalOnes) {
+  // The astronaut's avatar turned 30 degrees each way and prepared again:
+  // the pose found is the one rendered, and the new avatar, frontal, shows
+  // the landmarks of the original avatar's frontal render.
+  PrepError error;
+  const auto original = test::shared_preparer().prepare(test::encode(test::load_astronaut()), {}, error);
+  ASSERT_TRUE(original.has_value()) << error.message;
+  test::RenderedAvatar avatar(original->package, 512, {0.5f, 0.5f, 0.5f});
+  const auto frontal = test::shared_preparer().prepare(test::encode(test::to_bgr(avatar.draw(codec::FaceParams{}))),
+                                                       {}, error);
+  ASSERT_TRUE(frontal.has_value()) << error.message;
+  for (const float yaw_deg : {30.0f, -30.0f}) {
+    codec::FaceParams turned;
+    turned.head_yaw_rad = yaw_deg / 57.29578f;
+    const auto again = test::shared_preparer().prepare(test::encode(test::to_bgr(avatar.draw(turned))), {}, error);
+    ASSERT_TRUE(again.has_value()) << yaw_deg << ": " << error.message;
+    EXPECT_NEAR(again->report.head_yaw_deg, yaw_deg, 6.0f);
+    test::RenderedAvatar remade(again->package, 512, {0.5f, 0.5f, 0.5f});
+    const auto seen = test::shared_preparer().prepare(test::encode(test::to_bgr(remade.draw(codec::FaceParams{}))),
+                                                      {}, error);
+    ASSERT_TRUE(seen.has_value()) << "dlib finds no face on the remade avatar: " << error.message;
+    EXPECT_LE(aligned_median_error(seen->report.photo_landmarks, frontal->report.photo_landmarks), 0.08f) << yaw_deg;
+  }
+}
+
 }  // namespace
 }  // namespace fw::photo

@@ -49,31 +49,4 @@ glm::vec2 texture_px_to_model(cv::Point2f px, const model::TextureFrame& frame, 
   return frame.to_model({(px.x + 0.5f) / static_cast<float>(size), 1.0f - (px.y + 0.5f) / static_cast<float>(size)});
 }
 
-cv::Mat warp_to_texture(const cv::Mat& full_photo, const Alignment& full_alignment, const model::TextureFrame& frame,
-                        int size) {
-  // Bilinear resampling aliases when it shrinks more than twofold: shrink
-  // the photo with area averaging first.
-  const float texture_px_per_photo_px = static_cast<float>(size) / frame.size / full_alignment.inter_ocular_px;
-  cv::Mat photo = full_photo;
-  Alignment alignment = full_alignment;
-  if (texture_px_per_photo_px < 0.5f) {
-    const double f = 2.0 * texture_px_per_photo_px;
-    cv::resize(full_photo, photo, cv::Size(), f, f, cv::INTER_AREA);
-    alignment.eye_midpoint_px *= static_cast<float>(f);
-    alignment.inter_ocular_px *= static_cast<float>(f);
-  }
-  // The map texture px -> photo px is affine; three points fix it.
-  const cv::Point2f texture[3] = {{0, 0}, {static_cast<float>(size), 0}, {0, static_cast<float>(size)}};
-  cv::Point2f source[3];
-  for (int i = 0; i < 3; ++i) {
-    const glm::vec2 p = alignment.to_photo(texture_px_to_model(texture[i], frame, size));
-    source[i] = {p.x, p.y};
-  }
-  const cv::Mat texture_to_photo = cv::getAffineTransform(texture, source);
-  cv::Mat out;
-  cv::warpAffine(photo, out, texture_to_photo, cv::Size(size, size), cv::INTER_LINEAR | cv::WARP_INVERSE_MAP,
-                 cv::BORDER_REPLICATE);
-  return out;
-}
-
 }  // namespace fw::photo

@@ -21,10 +21,6 @@ struct Alignment {
 
 Alignment align_by_eyes(const PhotoLandmarks& landmarks);
 
-/// The photo resampled into the face texture: `size` x `size` pixels over
-/// the generic face's texture frame (rows top down), edges extended.
-cv::Mat warp_to_texture(const cv::Mat& photo, const Alignment& alignment, const model::TextureFrame& frame, int size);
-
 /// Model-frame point -> face-texture pixel (column, row) and back.
 cv::Point2f model_to_texture_px(glm::vec2 p, const model::TextureFrame& frame, int size);
 glm::vec2 texture_px_to_model(cv::Point2f px, const model::TextureFrame& frame, int size);

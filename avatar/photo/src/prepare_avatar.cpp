@@ -9,6 +9,7 @@
 #include "eye_layers.hpp"
 #include "face_alignment.hpp"
 #include "face_finder.hpp"
+#include "head_pose_fit.hpp"
 #include "image_conversion.hpp"
 #include "image_inspection.hpp"
 #include "mesh_fitting.hpp"
@@ -17,6 +18,7 @@
 #include "photo_expression.hpp"
 #include "pose_checks.hpp"
 #include "skin_tone.hpp"
+#include "texture_extraction.hpp"
 #include "fw/model/fitted_face.hpp"
 #include "fw/model/procedural_texture.hpp"
 #include "fw/model/vascular_masks.hpp"
@@ -112,9 +114,15 @@ std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8
   }
 
   const model::GenericFace& generic = model::generic_face();
+  // The head as it would face the camera: its pose taken out of the
+  // landmarks, and later out of the texture.
+  const PoseFit pose_fit = fit_head_pose(generic, landmarks);
+  report.head_yaw_deg = pose_fit.pose.yaw_deg;
+  report.head_pitch_deg = pose_fit.pose.pitch_deg;
+  const ModelLandmarks& frontal = pose_fit.frontal;
   // The avatar is built on the person's neutral face: the physics adds every
   // expression to it, so a smile in the photo must not stay in the texture.
-  const PhotoExpression expression = estimate_expression(generic, landmarks);
+  const PhotoExpression expression = estimate_expression(generic, frontal);
   report.photo_expression = expression.au;
   const ModelLandmarks& neutral = expression.neutral;
   std::string fit_note;
@@ -123,8 +131,8 @@ std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8
 
   const model::TextureFrame& frame = generic.texture_frame;
   const int size = options.texture_size;
-  const cv::Mat photo_texture = warp_to_texture(*photo, alignment, frame, size);
-  const cv::Mat texture = neutralise_texture(photo_texture, frame, landmarks, neutral);
+  const cv::Mat photo_texture = extract_texture(*photo, alignment, pose_fit, frame, size);
+  const cv::Mat texture = neutralise_texture(photo_texture, frame, frontal, neutral);
   const auto eyes = eye_polygons_px(neutral, frame, size);
   const cv::Mat face_texture = options.eye_layer ? with_eye_holes(texture, eyes) : texture;
   const ClosedLid lid = make_closed_lid(texture, eyes);
@@ -148,7 +156,7 @@ std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8
   // The mouth layer shows what the photo shows between its lips, teeth
   // included: from the photo as it is, not the neutralised texture.
   package.mouth = encode_webp(
-      make_mouth_layer(photo_texture, landmarks, model::fit_generic_face(generic, fit.fitted_xy)), options.quality);
+      make_mouth_layer(photo_texture, frontal, model::fit_generic_face(generic, fit.fitted_xy)), options.quality);
   const auto packed = model::pack_region_masks(masks, kMaskSize);
   package.colour_masks_a = encode_webp(to_bgr_mat(packed[0]), kLosslessWebp);
   package.colour_masks_b = encode_webp(to_bgr_mat(packed[1]), kLosslessWebp);

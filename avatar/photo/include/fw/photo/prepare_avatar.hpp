@@ -4,8 +4,9 @@
 // Data flow: bytes -> inspection (format, size, completeness) -> decode
 // (EXIF upright) -> face detection on a reduced copy -> 68 landmarks at full
 // resolution -> checks (size, edges, pose, open eyes) -> alignment by the eye
-// centres -> the photo's expression estimated and taken out of the
-// landmarks -> face texture in the generic face's frame, warped to the
+// centres -> the head's 3D pose and frontal landmarks -> the photo's
+// expression estimated and taken out of the landmarks -> face texture
+// through the pose (hidden parts from the mirror side), warped to the
 // neutral landmarks -> thin-plate fit of the generic mesh -> eye holes, iris
 // colour, closed-lid layer -> vascular region masks, skin tone -> encoded
 // package.
@@ -44,7 +45,9 @@ struct PrepReport {
   std::array<glm::vec2, 68> photo_landmarks{};  ///< photo pixels, upright
   float inter_ocular_px = 0;
   float roll_deg = 0;  ///< eye-line angle in the photo
-  float yaw_deg = 0;   ///< estimated head turn
+  float yaw_deg = 0;   ///< estimated head turn, from the nose against the jaw line (what the pose check uses)
+  /// The head's pose fitted in 3D: + yaw turns the nose to the viewer's right, + pitch lifts it.
+  float head_yaw_deg = 0, head_pitch_deg = 0;
   /// The photo's own expression as action-unit intensities (codec::kAuChannels
   /// order), taken out of the avatar's texture and fit.
   std::array<float, codec::kAuChannelCount> photo_expression{};

@@ -1,0 +1,107 @@
+#include "texture_extraction.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <vector>
+
+#include <opencv2/imgproc.hpp>
+
+namespace fw::photo {
+namespace {
+
+// A texel counts as seen when the surface faces the camera at least this
+// share as much as it would facing it head-on; fully below the first,
+// fully above the second.
+constexpr float kSeenFrom = 0.35f, kSeenFully = 0.75f;
+// How far (model units) a texel may lie behind the nearest surface at its
+// place in the photo and still count as in front.
+constexpr float kOcclusionSlack = 0.06f;
+
+float smoothstep(float from, float to, float x) {
+  const float t = std::clamp((x - from) / (to - from), 0.0f, 1.0f);
+  return t * t * (3.0f - 2.0f * t);
+}
+
+struct Sampling {
+  cv::Mat photo;
+  Alignment alignment;
+};
+
+// Bilinear resampling aliases when it shrinks more than twofold: shrink the
+// photo with area averaging first.
+Sampling photo_for_sampling(const cv::Mat& photo, const Alignment& alignment, const model::TextureFrame& frame,
+                            int size) {
+  Sampling sampling{photo, alignment};
+  const float texture_px_per_photo_px = static_cast<float>(size) / frame.size / alignment.inter_ocular_px;
+  if (texture_px_per_photo_px < 0.5f) {
+    const double f = 2.0 * texture_px_per_photo_px;
+    cv::resize(photo, sampling.photo, cv::Size(), f, f, cv::INTER_AREA);
+    sampling.alignment.eye_midpoint_px *= static_cast<float>(f);
+    sampling.alignment.inter_ocular_px *= static_cast<float>(f);
+  }
+  return sampling;
+}
+
+}  // namespace
+
+cv::Mat extract_texture(const cv::Mat& full_photo, const Alignment& full_alignment, const PoseFit& fit,
+                        const model::TextureFrame& frame, int size) {
+  const Sampling sampling = photo_for_sampling(full_photo, full_alignment, frame, size);
+  const HeadPose& pose = fit.pose;
+  cv::Mat map_x(size, size, CV_32F), map_y(size, size, CV_32F);
+  cv::Mat seen(size, size, CV_32F), depth(size, size, CV_32F);
+  std::vector<cv::Point2f> in_image(static_cast<std::size_t>(size) * size);
+  for (int row = 0; row < size; ++row)
+    for (int col = 0; col < size; ++col) {
+      const glm::vec2 p = texture_px_to_model(cv::Point2f(float(col), float(row)), frame, size);
+      const glm::vec3 point = fit.surface(p);
+      const glm::vec2 q = pose.project(point);
+      const glm::vec2 px = sampling.alignment.to_photo(q);
+      map_x.at<float>(row, col) = px.x;
+      map_y.at<float>(row, col) = px.y;
+      const glm::vec3 normal = fit.surface_normal(p);
+      const float head_on = std::max(normal.z, 1e-3f);
+      seen.at<float>(row, col) = smoothstep(kSeenFrom, kSeenFully, pose.facing(normal) / head_on);
+      depth.at<float>(row, col) = (pose.rotation * point).z;
+      in_image[static_cast<std::size_t>(row) * size + col] = {q.x, q.y};
+    }
+
+  // Hidden surface: the nearest depth at each place of the image plane, on
+  // a grid as fine as the texture, widened by a cell to close gaps.
+  const float cells_per_unit = static_cast<float>(size) / frame.size;
+  cv::Mat nearest(size, size, CV_32F, cv::Scalar(-std::numeric_limits<float>::infinity()));
+  const auto cell = [&](cv::Point2f q) {
+    return cv::Point(static_cast<int>((q.x - frame.origin.x) * cells_per_unit),
+                     static_cast<int>((frame.origin.y + frame.size - q.y) * cells_per_unit));
+  };
+  const cv::Rect grid(0, 0, size, size);
+  for (int i = 0; i < size * size; ++i) {
+    const cv::Point c = cell(in_image[static_cast<std::size_t>(i)]);
+    if (grid.contains(c)) nearest.at<float>(c) = std::max(nearest.at<float>(c), depth.at<float>(i / size, i % size));
+  }
+  cv::dilate(nearest, nearest, cv::Mat::ones(3, 3, CV_8U));
+  for (int i = 0; i < size * size; ++i) {
+    const cv::Point c = cell(in_image[static_cast<std::size_t>(i)]);
+    if (grid.contains(c) && depth.at<float>(i / size, i % size) < nearest.at<float>(c) - kOcclusionSlack)
+      seen.at<float>(i / size, i % size) = 0.0f;
+  }
+
+  cv::Mat sampled;
+  cv::remap(sampling.photo, sampled, map_x, map_y, cv::INTER_LINEAR, cv::BORDER_REPLICATE);
+  // Fill from the mirror image where this side is seen worse than that one.
+  cv::Mat texture = sampled.clone();
+  for (int row = 0; row < size; ++row)
+    for (int col = 0; col < size; ++col) {
+      const glm::vec2 p = texture_px_to_model(cv::Point2f(float(col), float(row)), frame, size);
+      const cv::Point2f mirror = model_to_texture_px({-p.x, p.y}, frame, size);
+      const int mc = std::clamp(static_cast<int>(std::lround(mirror.x)), 0, size - 1);
+      const float w = seen.at<float>(row, col);
+      const float w_mirror = (1.0f - w) * seen.at<float>(row, mc);
+      if (w >= 0.999f || w + w_mirror < 0.05f) continue;
+      const cv::Vec3f own = sampled.at<cv::Vec3b>(row, col), other = sampled.at<cv::Vec3b>(row, mc);
+      texture.at<cv::Vec3b>(row, col) = (own * w + other * w_mirror) / (w + w_mirror);
+    }
+  return texture;
+}
+
+}  // namespace fw::photo
