@@ -111,7 +111,7 @@ void run(const RenderArgs& args) {
   model::RgbaImage image;
   if (args.sheet) {
     // Panels as tall as the requested height, five to a row.
-    if (!render::render_contact_sheet(appearance, options.height, 5, image, error)) fail_command("render", 2, error);
+    if (!render::render_contact_sheet(appearance, options.height, render::kSheetColumns, image, error)) fail_command("render", 2, error);
   } else {
     auto renderer = render::FaceRenderer::create(options, error);
     if (!renderer) fail_command("render", 2, error);

@@ -14,7 +14,7 @@ const glm::u8vec3 kLandmarkColour{60, 255, 90};
 }  // namespace
 
 bool make_prep_preview(const photo::PreparedAvatar& avatar, model::RgbaImage& sheet, std::string& error) {
-  constexpr int kSheetColumns = 5, kSheetPanel = 3 * kPanel / kSheetColumns;
+  constexpr int kSheetPanel = 3 * kPanel / render::kSheetColumns;
   render::AvatarAppearance appearance;
   if (!render::load_avatar_appearance(avatar.package, appearance, error)) return false;
   render::RendererOptions options;
@@ -26,9 +26,9 @@ bool make_prep_preview(const photo::PreparedAvatar& avatar, model::RgbaImage& sh
   const render::Camera camera = render::Camera::portrait(1.0f);
 
   // Below the three large panels, the contact sheet: every expression,
-  // gaze, a blink, blush and pallor.
+  // gaze, a blink, blush and pallor, the head turned.
   model::RgbaImage expressions;
-  if (!render::render_contact_sheet(appearance, kSheetPanel, kSheetColumns, expressions, error)) return false;
+  if (!render::render_contact_sheet(appearance, kSheetPanel, render::kSheetColumns, expressions, error)) return false;
   sheet = model::RgbaImage(3 * kPanel, kPanel + expressions.height);
   for (std::size_t i = 3; i < sheet.pixels.size(); i += 4) sheet.pixels[i] = 255;
   render::paste(sheet, expressions, 0, kPanel);

@@ -76,8 +76,8 @@ TEST(RenderCommand, ContactSheetHasEveryPanel) {
   png_image png{};
   png.version = PNG_IMAGE_VERSION;
   ASSERT_TRUE(png_image_begin_read_from_file(&png, out.c_str()));
-  EXPECT_EQ(png.width, 5u * 64) << "five panels to a row";
-  EXPECT_EQ(png.height, 3u * 64) << "fifteen panels";
+  EXPECT_EQ(png.width, 6u * 64) << "six panels to a row";
+  EXPECT_EQ(png.height, 3u * 64) << "seventeen panels";
   png_image_free(&png);
   std::filesystem::remove(out);
 }

@@ -178,10 +178,12 @@ TEST_F(ExpressiveRenderTest, PallorDrainsTheWholeFace) {
 
 TEST(ContactSheet, HasNeutralEveryExpressionGazeBlinkBlushAndPallor) {
   const auto panels = sheet_panels();
-  ASSERT_EQ(panels.size(), 15u);
+  ASSERT_EQ(panels.size(), 17u);
   EXPECT_EQ(panels.front().name, "neutral");
   EXPECT_EQ(panels[1].name, "joy");
-  EXPECT_EQ(panels.back().name, "pallor");
+  EXPECT_EQ(panels[14].name, "pallor");
+  EXPECT_EQ(panels.back().name, "turned 60");
+  EXPECT_NEAR(panels.back().params.head_yaw_rad, 1.047f, 0.001f);
 }
 
 }  // namespace

@@ -42,7 +42,7 @@ TEST_F(PrepCommandTest, PreparesTheAstronautAndTheClientRendersHer) {
   unsigned w = 0, h = 0;
   ASSERT_TRUE(png_size(sheet, w, h));
   EXPECT_EQ(w, 960u) << "three panels side by side";
-  EXPECT_EQ(h, 320u + 3 * 192u) << "over three rows of the contact sheet";
+  EXPECT_EQ(h, 320u + 3 * 160u) << "over three rows of the contact sheet, six to a row";
 
   const auto client = run_command(bin("facewire-client") + " render --avatar " + package.string() + " -o " +
                                   render.string() + " --size 300x200");

@@ -1,5 +1,7 @@
 #include "fw/render/contact_sheet.hpp"
 
+#include <string>
+
 #include "fw/model/expressions.hpp"
 #include "fw/model/face_reconstruction.hpp"
 #include "fw/render/image_ops.hpp"
@@ -30,6 +32,12 @@ std::vector<SheetPanel> sheet_panels() {
   SheetPanel pallor{"pallor", {}};
   pallor.params.pallor = 1.0f;
   panels.push_back(pallor);
+  // Turned, the head shows whether it is a head or the edge of a mask.
+  for (const int degrees : {30, 60}) {
+    SheetPanel turned{"turned " + std::to_string(degrees), {}};
+    turned.params.head_yaw_rad = static_cast<float>(degrees) * 0.017453293f;
+    panels.push_back(turned);
+  }
   return panels;
 }
 
@@ -44,6 +52,12 @@ bool render_contact_sheet(const AvatarAppearance& appearance, int panel_size, in
   const std::vector<SheetPanel> panels = sheet_panels();
   const int rows = (static_cast<int>(panels.size()) + columns - 1) / columns;
   sheet = model::RgbaImage(columns * panel_size, rows * panel_size);
+  // Cells past the last panel show the panels' background, not a hole.
+  const glm::vec3 background = options.background * 255.0f + 0.5f;
+  for (std::size_t i = 0; i < sheet.pixels.size(); i += 4) {
+    for (int c = 0; c < 3; ++c) sheet.pixels[i + static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(background[c]);
+    sheet.pixels[i + 3] = 255;
+  }
   for (std::size_t i = 0; i < panels.size(); ++i) {
     const model::FaceShape shape = model::reconstruct_face(appearance.avatar, panels[i].params);
     renderer->set_face_shape(id, shape.positions, shape.uvs);

@@ -1,7 +1,7 @@
 #pragma once
 // A contact sheet of one avatar: neutral, every expression, gaze directions,
-// a blink, blushing and pallor, each panel labelled by its position (see
-// kSheetPanels). Used by `facewire-client render --sheet` and the prep preview.
+// a blink, blushing and pallor, the head turned 30 and 60 degrees, in a
+// fixed order (sheet_panels()). Used by `facewire-client render --sheet` and the prep preview.
 #include <string>
 #include <vector>
 
@@ -18,8 +18,11 @@ struct SheetPanel {
 
 /// The panels, in order: neutral, joy, sadness, anger, fear, surprise,
 /// disgust, cunning, teasing, gaze left, gaze right, gaze up, blink,
-/// blush, pallor.
+/// blush, pallor, turned 30, turned 60 (degrees, toward the face's left).
 std::vector<SheetPanel> sheet_panels();
+
+/// The columns that lay the panels out in whole rows.
+inline constexpr int kSheetColumns = 6;
 
 /// Renders the panels `columns` to a row, each `panel_size` square.
 /// @return false and `error` if the renderer cannot be created
