@@ -16,6 +16,7 @@
 #include "fw/render/avatar_appearance.hpp"
 #include "fw/render/face_renderer.hpp"
 #include "photo_variants.hpp"
+#include "rendered_avatar.hpp"
 
 namespace fw::photo {
 namespace {
@@ -254,24 +255,6 @@ TEST_F(PrepareAvatarTest, RefusesAFaceCutOffByTheEdge) {
     EXPECT_NE(error.message.find("cut off by the edge"), std::string::npos);
   }
 }
-
-// A package's avatar in a renderer of its own, ready to draw.
-struct RenderedAvatar {
-  render::AvatarAppearance appearance;
-  std::unique_ptr<render::FaceRenderer> renderer;
-  render::FaceId id = 0;
-
-  RenderedAvatar(const model::AvatarPackage& package, int size, glm::vec3 background) {
-    std::string error;
-    EXPECT_TRUE(render::load_avatar_appearance(package, appearance, error)) << error;
-    render::RendererOptions options;
-    options.width = options.height = size;
-    options.background = background;
-    renderer = render::FaceRenderer::create(options, error);
-    id = renderer->add_face(appearance.avatar.face, appearance.textures);
-  }
-  model::RgbaImage draw(const render::FaceDraw& d) { return renderer->render({&d, 1}, render::Camera::portrait(1.0f)); }
-};
 
 // A turned head: the astronaut's own avatar, rendered turned.
 cv::Mat render_turned(const model::AvatarPackage& package, float yaw_deg) {
