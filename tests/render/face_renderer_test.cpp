@@ -5,6 +5,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
+#include "fw/behavior/eye_head.hpp"
 #include "fw/model/procedural_texture.hpp"
 
 namespace fw::render {
@@ -203,6 +204,50 @@ TEST_F(FaceRendererTest, EyesTurnIndependentlyOfTheHead) {
   ASSERT_GT(ahead, low.x) << "no dark iris found in the eye opening";
   EXPECT_GT(pupil_x({0.4f, 0.0f}), ahead + 2.0f) << "looking toward the face's left";
   EXPECT_LT(pupil_x({-0.4f, 0.0f}), ahead - 2.0f) << "looking toward the face's right";
+}
+
+// Pixels whose centre lies inside `polygon` at least `inset` pixels from its edges.
+std::vector<glm::ivec2> pixels_inside(const std::vector<glm::vec2>& polygon, float inset) {
+  glm::vec2 low(1e9f), high(-1e9f);
+  for (const glm::vec2& p : polygon) low = glm::min(low, p), high = glm::max(high, p);
+  std::vector<glm::ivec2> inside;
+  for (int y = static_cast<int>(low.y); y <= static_cast<int>(high.y); ++y)
+    for (int x = static_cast<int>(low.x); x <= static_cast<int>(high.x); ++x) {
+      const glm::vec2 c(x + 0.5f, y + 0.5f);
+      bool in = false;
+      float edge = 1e9f;
+      for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
+        const glm::vec2 a = polygon[i], b = polygon[j];
+        if ((a.y > c.y) != (b.y > c.y) && c.x < (b.x - a.x) * (c.y - a.y) / (b.y - a.y) + a.x) in = !in;
+        const float t = glm::clamp(glm::dot(c - a, b - a) / glm::dot(b - a, b - a), 0.0f, 1.0f);
+        edge = std::min(edge, glm::length(c - (a + t * (b - a))));
+      }
+      if (in && edge >= inset) inside.emplace_back(x, y);
+    }
+  return inside;
+}
+
+// However far the behaviour turns the eyes (EyeHeadController's oculomotor
+// range aside, 34 degrees up or down), the eye holes of a face turned to the
+// camera show eyeball, never the background behind the face.
+TEST_F(FaceRendererTest, EyeHolesShowNoBackgroundAtTheLargestGaze) {
+  const auto& face = model::generic_face();
+  const Camera camera = Camera::portrait(1.0f);
+  const float aside = behavior::EyeHeadController::kOculomotorRangeRad, up = 0.6f, thirty = 0.5236f;
+  for (const glm::vec2 gaze : {glm::vec2(aside, 0.0f), glm::vec2(-aside, 0.0f), glm::vec2(thirty, 0.0f),
+                               glm::vec2(-thirty, 0.0f), glm::vec2(0.0f, up), glm::vec2(0.0f, -up),
+                               glm::vec2(aside, up), glm::vec2(-aside, -up)}) {
+    const RgbaImage image = render_one(red_, {}, gaze);
+    for (const auto& hole : face.eye_holes) {
+      std::vector<glm::vec2> polygon;
+      for (std::uint32_t v : hole) polygon.emplace_back(project_to_pixel(camera, face.skin.positions[v], kSize, kSize));
+      const auto inside = pixels_inside(polygon, 1.0f);
+      ASSERT_GT(inside.size(), 20u);
+      int background = 0;
+      for (const glm::ivec2 px : inside) background += is_background(image.at(px.x, px.y));
+      EXPECT_EQ(background, 0) << "gaze " << gaze.x << "," << gaze.y;
+    }
+  }
 }
 
 TEST(FaceRendererCreate, RejectsImpossibleSizes) {

@@ -23,8 +23,9 @@ void close_lids(const GenericFace& face, const codec::FaceParams& params, std::v
     for (int k = 0; k < 2; ++k) {
       const glm::vec3 upper = positions[face.landmark_vertices[static_cast<std::size_t>(kUpper[side][k])]];
       const glm::vec3 lower = positions[face.landmark_vertices[static_cast<std::size_t>(kLower[side][k])]];
-      // Closed, the upper lid rests a hair above the lower one.
-      delta[k] = closure[side] * (lower - upper + glm::vec3(0.0f, 0.004f, 0.0f));
+      // Closed, the upper lid meets the lower one: no slit for the eyeball
+      // to show through.
+      delta[k] = closure[side] * (lower - upper);
       at[k] = glm::vec2(upper);
     }
     const glm::vec2 eye_centre = glm::vec2(face.eyes[side].centre);

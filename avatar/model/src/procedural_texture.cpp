@@ -201,7 +201,7 @@ RgbaImage make_skin_texture(const GenericFace& face, const Appearance& look, int
   return image;
 }
 
-RgbaImage make_eye_texture(const EyeLayer& eye, const Appearance& look, int size) {
+RgbaImage make_eye_texture(const EyeLayer& eye, const Appearance& look, int size, const IrisPattern& pattern) {
   constexpr float kIrisRadiusMm = 5.85f, kPupilRadiusMm = 1.9f;
   const float iris_angle = std::asin(std::min(1.0f, kIrisRadiusMm / kMillimetresPerUnit / eye.radius));
   const float pupil_angle = std::asin(std::min(1.0f, kPupilRadiusMm / kMillimetresPerUnit / eye.radius));
@@ -212,15 +212,23 @@ RgbaImage make_eye_texture(const EyeLayer& eye, const Appearance& look, int size
                         0.5f - (static_cast<float>(y) + 0.5f) / static_cast<float>(size));
       const float angle = glm::length(d) * 2.0f * eye.cap_angle_rad;
       const float around = std::atan2(d.y, d.x);
-      glm::vec3 sclera = glm::vec3(0.93f, 0.91f, 0.88f) * (1.0f - 0.25f * std::clamp(angle / 1.4f, 0.0f, 1.0f));
-      const float streaks = 0.8f + 0.35f * value_noise(glm::vec2(around * 12.0f, angle * 40.0f));
-      glm::vec3 iris = look.iris * streaks * (0.75f + 0.35f * angle / iris_angle);
-      iris = glm::mix(iris, look.iris * 0.35f, std::clamp((angle / iris_angle - 0.85f) / 0.15f, 0.0f, 1.0f));
+      // The white darkens toward the corners, where the lids shade it.
+      const glm::vec3 sclera = look.sclera * (1.0f - 0.25f * std::clamp(angle / 1.4f, 0.0f, 1.0f));
+      glm::vec3 iris;
+      if (pattern) {
+        iris = pattern(std::min(1.0f, angle / iris_angle), around);
+      } else {
+        const float streaks = 0.8f + 0.35f * value_noise(glm::vec2(around * 12.0f, angle * 40.0f));
+        iris = look.iris * streaks * (0.75f + 0.35f * angle / iris_angle);
+        iris = glm::mix(iris, look.iris * 0.35f, std::clamp((angle / iris_angle - 0.85f) / 0.15f, 0.0f, 1.0f));
+      }
       glm::vec3 c = glm::mix(iris, sclera, std::clamp((angle - iris_angle) / 0.03f + 0.5f, 0.0f, 1.0f));
       c = glm::mix(glm::vec3(0.03f), c, std::clamp((angle - pupil_angle) / 0.02f + 0.5f, 0.0f, 1.0f));
-      // A highlight, so the eye looks wet.
-      const float glint = glm::length(d - glm::vec2(-0.03f, 0.035f));
-      c = glm::mix(c, glm::vec3(1.0f), soft_inside(glint - 0.012f, 0.01f) * 0.8f);
+      if (!pattern) {
+        // A highlight, so the eye looks wet.
+        const float glint = glm::length(d - glm::vec2(-0.03f, 0.035f));
+        c = glm::mix(c, glm::vec3(1.0f), soft_inside(glint - 0.012f, 0.01f) * 0.8f);
+      }
       put(image, x, y, c, 1.0f);
     }
   return image;

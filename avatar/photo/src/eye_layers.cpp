@@ -6,6 +6,7 @@
 #include <opencv2/photo.hpp>
 
 #include "face_alignment.hpp"
+#include "lash_line.hpp"
 
 namespace fw::photo {
 namespace {
@@ -90,6 +91,10 @@ ClosedLid make_closed_lid(const cv::Mat& texture, const std::array<std::vector<c
   cv::dilate(mask, mask, cv::getStructuringElement(cv::MORPH_ELLIPSE, {3, 3}));  // lashes at the rim too
   ClosedLid lid;
   cv::inpaint(texture(crop), mask, lid.image, 3.0, cv::INPAINT_TELEA);
+  std::array<std::vector<cv::Point2f>, 2> eyes_in_crop = eyes;
+  for (auto& eye : eyes_in_crop)
+    for (cv::Point2f& p : eye) p -= cv::Point2f(static_cast<float>(crop.x), static_cast<float>(crop.y));
+  draw_lash_lines(lid.image, eyes_in_crop, static_cast<float>(texture.cols) / model::generic_face().texture_frame.size);
   const float size = static_cast<float>(texture.cols);
   lid.uv_rect = {static_cast<float>(crop.x) / size, 1.0f - static_cast<float>(crop.y + crop.height) / size,
                  static_cast<float>(crop.width) / size, static_cast<float>(crop.height) / size};

@@ -28,7 +28,8 @@ struct ClosedLid {
 };
 
 /// Skin for closed eyes: the eye openings filled in (OpenCV inpainting, Telea)
-/// from the lids around them.
+/// from the lids around them, with lash lines along the lid margins and a
+/// faint crease shadow (lash_line.hpp).
 ClosedLid make_closed_lid(const cv::Mat& texture, const std::array<std::vector<cv::Point2f>, 2>& eyes);
 
 }  // namespace fw::photo

@@ -49,4 +49,34 @@ glm::vec2 texture_px_to_model(cv::Point2f px, const model::TextureFrame& frame, 
   return frame.to_model({(px.x + 0.5f) / static_cast<float>(size), 1.0f - (px.y + 0.5f) / static_cast<float>(size)});
 }
 
+PhotoForSampling photo_for_sampling(const cv::Mat& photo, const Alignment& alignment,
+                                    const model::TextureFrame& frame, int size) {
+  PhotoForSampling sampling{photo, alignment};
+  const float texture_px_per_photo_px = static_cast<float>(size) / frame.size / alignment.inter_ocular_px;
+  if (texture_px_per_photo_px < 0.5f) {
+    const double f = 2.0 * texture_px_per_photo_px;
+    cv::resize(photo, sampling.photo, cv::Size(), f, f, cv::INTER_AREA);
+    sampling.alignment.eye_midpoint_px *= static_cast<float>(f);
+    sampling.alignment.inter_ocular_px *= static_cast<float>(f);
+  }
+  return sampling;
+}
+
+cv::Mat warp_to_texture(const cv::Mat& full_photo, const Alignment& full_alignment, const model::TextureFrame& frame,
+                        int size) {
+  const PhotoForSampling sampling = photo_for_sampling(full_photo, full_alignment, frame, size);
+  // The map texture px -> photo px is affine; three points fix it.
+  const cv::Point2f texture[3] = {{0, 0}, {static_cast<float>(size), 0}, {0, static_cast<float>(size)}};
+  cv::Point2f source[3];
+  for (int i = 0; i < 3; ++i) {
+    const glm::vec2 p = sampling.alignment.to_photo(texture_px_to_model(texture[i], frame, size));
+    source[i] = {p.x, p.y};
+  }
+  const cv::Mat texture_to_photo = cv::getAffineTransform(texture, source);
+  cv::Mat out;
+  cv::warpAffine(sampling.photo, out, texture_to_photo, cv::Size(size, size), cv::INTER_LINEAR | cv::WARP_INVERSE_MAP,
+                 cv::BORDER_REPLICATE);
+  return out;
+}
+
 }  // namespace fw::photo

@@ -21,6 +21,20 @@ struct Alignment {
 
 Alignment align_by_eyes(const PhotoLandmarks& landmarks);
 
+/// The photo at a resolution that a `size` x `size` texture over `frame`
+/// can sample bilinearly without aliasing (area-averaged when the texture
+/// would shrink it more than twofold), with the alignment scaled alike.
+struct PhotoForSampling {
+  cv::Mat photo;
+  Alignment alignment;
+};
+PhotoForSampling photo_for_sampling(const cv::Mat& photo, const Alignment& alignment,
+                                    const model::TextureFrame& frame, int size);
+
+/// The photo resampled into the face texture by the eye alignment alone:
+/// `size` x `size` pixels over `frame` (rows top down), edges extended.
+cv::Mat warp_to_texture(const cv::Mat& photo, const Alignment& alignment, const model::TextureFrame& frame, int size);
+
 /// Model-frame point -> face-texture pixel (column, row) and back.
 cv::Point2f model_to_texture_px(glm::vec2 p, const model::TextureFrame& frame, int size);
 glm::vec2 texture_px_to_model(cv::Point2f px, const model::TextureFrame& frame, int size);

@@ -6,6 +6,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "decode_photo.hpp"
+#include "eye_from_photo.hpp"
 #include "eye_layers.hpp"
 #include "face_alignment.hpp"
 #include "face_finder.hpp"
@@ -27,7 +28,7 @@ namespace fw::photo {
 namespace {
 
 constexpr int kMaskSize = 64;     // vascular masks are smooth: 3.8 units over 64 px is plenty
-constexpr int kEyeTextureSize = 64;
+constexpr int kEyeTextureSize = 96;  // the iris about 20 px across: as sharp as a good photo's
 constexpr int kPreviewSize = 48;
 constexpr int kLosslessWebp = 101;  // OpenCV: WebP quality above 100 means lossless
 
@@ -149,10 +150,13 @@ std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8
   package.closed_lid = encode_webp(lid.image, options.quality);
   package.closed_lid_rect = {lid.uv_rect.x, lid.uv_rect.y, lid.uv_rect.x + lid.uv_rect.width,
                              lid.uv_rect.y + lid.uv_rect.height};
-  model::Appearance look;
-  look.iris = glm::vec3(package.iris_colour[0], package.iris_colour[1], package.iris_colour[2]) / 255.0f;
-  if (options.eye_layer)
-    package.eye = encode_webp(to_bgr_mat(model::make_eye_texture(generic.eyes[0], look, kEyeTextureSize)), options.quality);
+  if (options.eye_layer) {
+    const EyeTexture eye = make_eye_texture_from_photo(*photo, alignment, landmarks, generic.eyes[0],
+                                                       package.iris_colour, kEyeTextureSize);
+    if (!eye.warning.empty()) report.warnings.push_back(eye.warning);
+    package.iris_colour = eye.iris;
+    package.eye = encode_webp(eye.image, options.quality);
+  }
   // The mouth layer shows what the photo shows between its lips, teeth
   // included: from the photo as it is, not the neutralised texture.
   package.mouth = encode_webp(

@@ -22,31 +22,11 @@ float smoothstep(float from, float to, float x) {
   return t * t * (3.0f - 2.0f * t);
 }
 
-struct Sampling {
-  cv::Mat photo;
-  Alignment alignment;
-};
-
-// Bilinear resampling aliases when it shrinks more than twofold: shrink the
-// photo with area averaging first.
-Sampling photo_for_sampling(const cv::Mat& photo, const Alignment& alignment, const model::TextureFrame& frame,
-                            int size) {
-  Sampling sampling{photo, alignment};
-  const float texture_px_per_photo_px = static_cast<float>(size) / frame.size / alignment.inter_ocular_px;
-  if (texture_px_per_photo_px < 0.5f) {
-    const double f = 2.0 * texture_px_per_photo_px;
-    cv::resize(photo, sampling.photo, cv::Size(), f, f, cv::INTER_AREA);
-    sampling.alignment.eye_midpoint_px *= static_cast<float>(f);
-    sampling.alignment.inter_ocular_px *= static_cast<float>(f);
-  }
-  return sampling;
-}
-
 }  // namespace
 
 cv::Mat extract_texture(const cv::Mat& full_photo, const Alignment& full_alignment, const PoseFit& fit,
                         const model::TextureFrame& frame, int size) {
-  const Sampling sampling = photo_for_sampling(full_photo, full_alignment, frame, size);
+  const PhotoForSampling sampling = photo_for_sampling(full_photo, full_alignment, frame, size);
   const HeadPose& pose = fit.pose;
   cv::Mat map_x(size, size, CV_32F), map_y(size, size, CV_32F);
   cv::Mat seen(size, size, CV_32F), depth(size, size, CV_32F);

@@ -7,6 +7,7 @@
 
 #include "assign_regions.hpp"
 #include "build_action_units.hpp"
+#include "eyeball.hpp"
 #include "face_points.hpp"
 #include "fw/model/depth_profile.hpp"
 #include "triangulate.hpp"
@@ -78,57 +79,6 @@ void build_skin(GenericFace& face) {
     if (has(lm::kEyeRightBegin)) face.eye_holes[0] = loop;
     else if (has(lm::kEyeLeftBegin)) face.eye_holes[1] = loop;
     else if (has(lm::kInnerLipBegin)) face.mouth_slit = loop;
-  }
-}
-
-// The front cap of a sphere, in rings around the +z pole.
-Mesh sphere_cap(glm::vec3 centre, float radius, float cap_angle) {
-  constexpr int kRings = 10, kSegments = 24;
-  Mesh mesh;
-  mesh.positions.push_back(centre + glm::vec3(0, 0, radius));
-  mesh.uvs.emplace_back(0.5f, 0.5f);
-  for (int ring = 1; ring <= kRings; ++ring) {
-    const float theta = cap_angle * static_cast<float>(ring) / kRings;
-    for (int s = 0; s < kSegments; ++s) {
-      const float phi = 2.0f * std::numbers::pi_v<float> * static_cast<float>(s) / kSegments;
-      const glm::vec3 direction(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
-      mesh.positions.push_back(centre + radius * direction);
-      const float r = 0.5f * theta / cap_angle;
-      mesh.uvs.emplace_back(0.5f + r * std::cos(phi), 0.5f + r * std::sin(phi));
-    }
-  }
-  const auto at = [](int ring, int s) {
-    return static_cast<std::uint32_t>(1 + (ring - 1) * kSegments + (s % kSegments));
-  };
-  for (int s = 0; s < kSegments; ++s) mesh.triangles.emplace_back(0u, at(1, s), at(1, s + 1));
-  for (int ring = 1; ring < kRings; ++ring)
-    for (int s = 0; s < kSegments; ++s) {
-      mesh.triangles.emplace_back(at(ring, s), at(ring + 1, s), at(ring + 1, s + 1));
-      mesh.triangles.emplace_back(at(ring, s), at(ring + 1, s + 1), at(ring, s + 1));
-    }
-  return mesh;
-}
-
-// Eyeballs sit just behind the eye contour. They are larger than a real eye
-// (about 17 mm radius instead of 12) so that their silhouette covers the
-// whole hole even when turned 30 degrees; the iris is drawn at its real size.
-void build_eyes(GenericFace& face) {
-  constexpr float kRadius = 0.27f;
-  constexpr float kCapAngle = 1.75f;  // ~100 degrees: past the silhouette
-  const int begins[2] = {lm::kEyeRightBegin, lm::kEyeLeftBegin};
-  for (int side = 0; side < 2; ++side) {
-    glm::vec2 centre_xy(0.0f);
-    float front = 1e9f;
-    for (int i = begins[side]; i < begins[side] + 6; ++i) {
-      const glm::vec3 p = face.skin.positions[static_cast<std::size_t>(i)];
-      centre_xy += glm::vec2(p) / 6.0f;
-      front = std::min(front, p.z);
-    }
-    model::EyeLayer& eye = face.eyes[static_cast<std::size_t>(side)];
-    eye.radius = kRadius;
-    eye.cap_angle_rad = kCapAngle;
-    eye.centre = glm::vec3(centre_xy, front - 0.015f - kRadius);
-    eye.mesh = sphere_cap(eye.centre, kRadius, kCapAngle);
   }
 }
 

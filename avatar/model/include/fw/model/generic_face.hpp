@@ -17,7 +17,7 @@
 
 namespace fw::model {
 
-inline constexpr int kGenericFaceVersion = 2;
+inline constexpr int kGenericFaceVersion = 3;
 
 /// Named skin regions. Every skin triangle belongs to exactly one. The names
 /// (kFaceRegionNames) are what the asset file stores; the order is fixed.
