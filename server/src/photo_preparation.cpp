@@ -1,11 +1,11 @@
 #include "photo_preparation.hpp"
 
-#include <boost/asio/post.hpp>
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
 
 #include "fw/model/avatar_package.hpp"
 #include "fw/photo/prepare_avatar.hpp"
+#include "photo_worker.hpp"
 #include "rest_api.hpp"
 #include "server_limits.hpp"
 
@@ -13,8 +13,7 @@ namespace fw::server {
 
 namespace http = boost::beast::http;
 
-PhotoPreparation::PhotoPreparation(ServerContext& context) : context_(context) {}
-PhotoPreparation::~PhotoPreparation() { pool_.join(); }
+PhotoPreparation::PhotoPreparation(ServerContext& context, PhotoWorker& worker) : context_(context), worker_(worker) {}
 
 bool PhotoPreparation::allow(const std::string& peer_address) {
   std::lock_guard lock(mutex_);
@@ -35,7 +34,7 @@ void PhotoPreparation::upload(Request request, std::string peer_address, std::fu
     return done(error(http::status::service_unavailable, "the server is shutting down; upload again in a moment"));
   if (!allow(peer_address))
     return done(error(http::status::too_many_requests, "at most 6 uploads a minute; wait a little"));
-  boost::asio::post(pool_, [this, request = std::move(request), done = std::move(done)] { done(handle(request)); });
+  worker_.post([this, request = std::move(request), done = std::move(done)] { done(handle(request)); });
 }
 
 namespace {
@@ -60,21 +59,18 @@ Response PhotoPreparation::handle(const Request& request) {
   const std::span<const std::uint8_t> bytes(reinterpret_cast<const std::uint8_t*>(body.data()), body.size());
   if (bytes.empty()) return error(http::status::bad_request, "the upload is empty; send a photo or a .fwa package");
   std::vector<std::uint8_t> package;
+  std::span<const std::uint8_t> photo_kept;
   if (type == "image/jpeg" || type == "image/png") {
     photo::PrepError prep_error;
     if (!photo::AvatarPreparer::check_photo(bytes, prep_error)) return prep_refusal(request, prep_error);
-    if (!preparer_) {
-      const auto model = context_.config.landmark_model.empty()
-                             ? std::nullopt
-                             : std::optional<std::filesystem::path>(context_.config.landmark_model);
-      preparer_ = photo::AvatarPreparer::create(model, prep_error);
-      if (!preparer_)
-        return error(http::status::service_unavailable, "this server cannot prepare photos: " + prep_error.message +
-                                                            "; upload a prepared .fwa package instead");
-    }
-    const auto prepared = preparer_->prepare(bytes, photo::PrepOptions{}, prep_error);
+    photo::AvatarPreparer* preparer = worker_.preparer(prep_error);
+    if (!preparer)
+      return error(http::status::service_unavailable, "this server cannot prepare photos: " + prep_error.message +
+                                                          "; upload a prepared .fwa package instead");
+    const auto prepared = preparer->prepare(bytes, photo::PrepOptions{}, prep_error);
     if (!prepared) return prep_refusal(request, prep_error);
     package = model::serialize_avatar_package(prepared->package);
+    photo_kept = bytes;
   } else if (type == "application/x-facewire-avatar" || type == "application/octet-stream") {
     package.assign(bytes.begin(), bytes.end());
   } else {
@@ -82,7 +78,7 @@ Response PhotoPreparation::handle(const Request& request) {
                  "send a photo (Content-Type image/jpeg or image/png) or a package (application/x-facewire-avatar)");
   }
   std::string why;
-  const auto stored = context_.store->put(package, why);
+  const auto stored = context_.store->put(package, photo_kept, why);
   if (!stored) return error(http::status::unprocessable_entity, "the package is not valid: " + why);
   context_.metrics.uploads.fetch_add(1);
   spdlog::info("stored avatar {} ({} bytes, preview {} bytes)", stored->asset, stored->full->size(),
