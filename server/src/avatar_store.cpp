@@ -166,8 +166,9 @@ AvatarLookup AvatarStore::out_of_date(const std::string& asset, const std::strin
   spdlog::warn("avatar {} is out of date ({}) and refused: {}", asset, why,
                has_photo ? "this server cannot prepare photos" : "no photo is stored with it");
   metrics_.outdated_avatars.fetch_add(1);
-  refuse(asset, no_photo_to_remake_it());
-  return no_photo_to_remake_it();
+  const AvatarLookup refusal = has_photo ? cannot_remake_it() : no_photo_to_remake_it();
+  refuse(asset, refusal);
+  return refusal;
 }
 
 bool AvatarStore::replace(const std::string& asset, std::span<const std::uint8_t> package, std::string& error) {
