@@ -84,13 +84,14 @@ std::optional<StoredAvatar> AvatarStore::put(std::span<const std::uint8_t> packa
   const std::string asset = content_id(package);
   const AvatarLookup known = lookup(asset);
   if (known.status == AvatarStatus::found) return known.avatar;
-  if (known.status != AvatarStatus::unknown && known.status != AvatarStatus::damaged) {
+  if (known.status == AvatarStatus::being_prepared) {
     error = known.message;
     return std::nullopt;
   }
-  // The same bytes repair a damaged package; its photo, if any, stays. The
-  // photo goes first: a crash before the package leaves only a photo that no
-  // id refers to yet.
+  // Bytes with this id's hash are the package it was first stored with, so
+  // they may repair a damaged or out-of-date one; its photo, if any, stays.
+  // The photo goes first: a crash before the package leaves only a photo
+  // that no id refers to yet.
   if (known.status == AvatarStatus::unknown && !photo.empty() &&
       !model::write_file_atomically(file(asset, ".photo"), photo, error))
     return std::nullopt;
