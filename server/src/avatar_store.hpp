@@ -8,8 +8,9 @@
 // was first stored with, and stays when that package is prepared again from
 // the photo (after the package format or the generic face changed), because
 // people and rooms refer to it. An upload never changes an avatar that is
-// already stored, and a photo is only ever stored with the package prepared
-// from it, so an id shows the face it was made for and nobody else's.
+// already stored, and a photo is only ever stored together with the new
+// package it came with (never attached to a stored one, whose bytes anyone
+// may have downloaded), so an id keeps the face its uploader gave it.
 #include <cstddef>
 #include <filesystem>
 #include <functional>

@@ -8,7 +8,10 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
+#include <span>
 #include <string>
+#include <vector>
 
 #include "http_responses.hpp"
 #include "server_context.hpp"
@@ -24,8 +27,17 @@ class PhotoPreparation {
   /// Handles one upload; `done` gets the response on the photo worker's thread.
   void upload(Request request, std::string peer_address, std::function<void(Response)> done);
 
+  /// What an upload stores: the package, and the photo to keep beside it
+  /// (empty when none came; a view into the request).
+  struct Upload {
+    std::vector<std::uint8_t> package;
+    std::span<const std::uint8_t> photo;
+  };
+
  private:
   Response handle(const Request& request);
+  /// The photo prepared into `upload`; the refusal when it makes no avatar.
+  std::optional<Response> prepare_photo(const Request& request, std::span<const std::uint8_t> photo, Upload& upload);
   bool allow(const std::string& peer_address);
 
   ServerContext& context_;

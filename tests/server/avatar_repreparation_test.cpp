@@ -139,6 +139,38 @@ TEST_F(Repreparation, AnOutOfDateAvatarIsServedAgainUnderTheSameIdAfterARestart)
   EXPECT_NE(get(server.context(), "/metrics").body().find("facewire_repreparations_total 1\n"), std::string::npos);
 }
 
+TEST_F(Repreparation, APackageUploadedWithItsPhotoKeepsThePhoto) {
+  const auto package = make_demo_package(2);
+  const auto photo = file_bytes(test::test_photo("grace_hopper.jpg"));
+  const std::string boundary = "facewire-avatar-xxxxxxxxxxxxxxxx";
+  std::string body = "--" + boundary +
+                     "\r\nContent-Disposition: form-data; name=\"package\"\r\n"
+                     "Content-Type: application/x-facewire-avatar\r\n\r\n" +
+                     std::string(package.begin(), package.end()) + "\r\n--" + boundary +
+                     "\r\nContent-Disposition: form-data; name=\"photo\"; filename=\"me.jpg\"\r\n"
+                     "Content-Type: image/jpeg\r\n\r\n" +
+                     std::string(photo.begin(), photo.end()) + "\r\n--" + boundary + "--\r\n";
+  InMemoryServer server(InMemoryServer::test_config(), data_);
+  PhotoPreparation uploads(server.context(), *worker_);
+  const std::vector<std::uint8_t> bytes(body.begin(), body.end());
+  const Response answer = upload(uploads, "multipart/form-data; boundary=\"" + boundary + "\"", bytes);
+  ASSERT_EQ(answer.result(), http::status::created) << answer.body();
+  const std::string asset = nlohmann::json::parse(answer.body())["asset"];
+  EXPECT_EQ(file_bytes(file(asset, ".fwa")), package);
+  EXPECT_EQ(file_bytes(file(asset, ".photo")), photo);
+
+  // Malformed or incomplete: refused with what to send.
+  const std::vector<std::uint8_t> cut(bytes.begin(), bytes.begin() + 200);
+  const Response truncated = upload(uploads, "multipart/form-data; boundary=" + boundary, cut);
+  EXPECT_EQ(truncated.result(), http::status::bad_request);
+  EXPECT_NE(truncated.body().find("cut off"), std::string::npos) << truncated.body();
+  const std::string photo_only = body.substr(body.find("\r\n--" + boundary) + 2);
+  const Response no_package = upload(uploads, "multipart/form-data; boundary=" + boundary,
+                                     std::vector<std::uint8_t>(photo_only.begin(), photo_only.end()));
+  EXPECT_EQ(no_package.result(), http::status::bad_request);
+  EXPECT_NE(no_package.body().find("'package'"), std::string::npos) << no_package.body();
+}
+
 TEST_F(Repreparation, APhotoThatNoLongerMakesAnAvatarIsReportedAndRefused) {
   // An out-of-date avatar whose stored photo the preparer refuses (cut off).
   const std::string asset = "0123456789abcdef0123456789abcdef";
