@@ -58,6 +58,16 @@ class StoreDirectory : public ::testing::Test {
     options.avatar = asset;
     return server.join("r", "Ann", options);
   }
+  /// The reason a hello wearing asset_ is refused for good (closing 10, bad request).
+  std::string refused_hello(InMemoryServer& server) {
+    const auto peer = join_wearing(server, asset_);
+    if (!peer->closing) {
+      ADD_FAILURE() << "the hello was not refused";
+      return {};
+    }
+    EXPECT_EQ(peer->closing->code, CloseCode::bad_request);
+    return peer->closing->reason;
+  }
 
   const std::filesystem::path data_ = std::filesystem::temp_directory_path() /
                                       ("fw-store-" + std::to_string(::getpid()) + "-" +
@@ -131,13 +141,11 @@ TEST_F(StoreDirectory, ACrashMidWriteLosesNothing) {
 TEST_F(StoreDirectory, AnOutOfDateAvatarWithoutItsPhotoIsRefusedWithTheAdviceToUploadAgain) {
   write_bytes(file(asset_, ".fwa"), package_of_an_older_generic_face());
   InMemoryServer server(InMemoryServer::test_config(), data_);
-  const auto peer = join_wearing(server, asset_);
-  ASSERT_TRUE(peer->closing.has_value());
-  EXPECT_EQ(peer->closing->code, CloseCode::bad_request);
-  EXPECT_NE(peer->closing->reason.find("upload your photo again"), std::string::npos) << peer->closing->reason;
+  const std::string reason = refused_hello(server);
+  EXPECT_NE(reason.find("upload your photo again"), std::string::npos) << reason;
   EXPECT_EQ(server.context().metrics.outdated_avatars.load(), 1u);
   EXPECT_EQ(server.context().metrics.repreparations_started.load(), 0u);
-  EXPECT_EQ(join_wearing(server, asset_)->closing->code, CloseCode::bad_request) << "the same answer again";
+  EXPECT_EQ(refused_hello(server), reason) << "the same answer again";
   EXPECT_EQ(server.context().metrics.outdated_avatars.load(), 1u) << "counted once";
 }
 
@@ -160,10 +168,8 @@ TEST_F(StoreDirectory, ACorruptPackageIsRefusedAsCorrupt) {
   write_bytes(file(asset_, ".fwa"), package);
   write_bytes(file(asset_, ".photo"), std::vector<std::uint8_t>{0xFF, 0xD8, 0xFF});
   InMemoryServer server(InMemoryServer::test_config(), data_);
-  const auto peer = join_wearing(server, asset_);
-  ASSERT_TRUE(peer->closing.has_value());
-  EXPECT_EQ(peer->closing->code, CloseCode::bad_request);
-  EXPECT_NE(peer->closing->reason.find("damaged"), std::string::npos) << peer->closing->reason;
+  const std::string reason = refused_hello(server);
+  EXPECT_NE(reason.find("damaged"), std::string::npos) << reason;
   EXPECT_EQ(server.context().metrics.damaged_avatars.load(), 1u);
   EXPECT_EQ(server.context().metrics.repreparations_started.load(), 0u) << "damage is not an old version";
 }
