@@ -42,14 +42,17 @@ AvatarLookup damaged() {
 }
 
 // The preview beside a package, made again when it is missing or does not
-// parse (a crash between writing the package and its preview).
+// parse (a crash between writing the package and its preview). Writing it
+// back only saves the work next time: the preview is served either way.
 bool read_or_make_preview(const std::filesystem::path& path, const model::AvatarPackage& full,
                           std::vector<std::uint8_t>& preview, std::string& error) {
   model::AvatarPackage parsed;
   if (model::read_file(path, model::kMaxPackageBytes, preview, error) &&
       model::parse_avatar_package(preview, parsed, error))
     return true;
-  return make_preview_package(full, preview, error) && model::write_file_atomically(path, preview, error);
+  if (!make_preview_package(full, preview, error)) return false;
+  if (!model::write_file_atomically(path, preview, error)) spdlog::warn("{}", error);
+  return true;
 }
 
 }  // namespace
@@ -102,10 +105,12 @@ std::optional<StoredAvatar> AvatarStore::write_and_remember(const std::string& a
                                                             std::span<const std::uint8_t> package,
                                                             const model::AvatarPackage& parsed, std::string& error) {
   std::vector<std::uint8_t> preview;
-  if (!make_preview_package(parsed, preview, error) || !model::write_file_atomically(file(asset, ".fwa"), package, error) ||
+  if (!make_preview_package(parsed, preview, error) ||
+      !model::write_file_atomically(file(asset, ".fwa"), package, error) ||
       !model::write_file_atomically(file(asset, ".preview.fwa"), preview, error))
     return std::nullopt;
-  StoredAvatar stored{asset, content_id(package), share(std::vector<std::uint8_t>(package.begin(), package.end())), share(std::move(preview))};
+  StoredAvatar stored{asset, content_id(package), share(std::vector<std::uint8_t>(package.begin(), package.end())),
+                      share(std::move(preview))};
   std::lock_guard lock(mutex_);
   refused_.erase(asset);
   preparing_.erase(asset);

@@ -389,7 +389,8 @@ TEST(RoomServerRest, StoredAvatarsKeepTheirPhotoAndArePreparedAgainFromIt) {
   parsed.skin_tone[0] ^= 1;  // another avatar than the lobby's
   const auto other = model::serialize_avatar_package(parsed);
   const std::string package(other.begin(), other.end());
-  const auto both = post(server.http_port(), "multipart/form-data; boundary=b0undary", multipart("b0undary", package, photo));
+  const auto both =
+      post(server.http_port(), "multipart/form-data; boundary=b0undary", multipart("b0undary", package, photo));
   ASSERT_EQ(both.status, 201) << both.body;
   const std::string asset = nlohmann::json::parse(both.body)["asset"];
   std::vector<std::uint8_t> kept;
