@@ -16,6 +16,7 @@
 #include "fw/model/avatar_package.hpp"
 #include "fw/model/file_io.hpp"
 #include "fw/photo/prepare_avatar.hpp"
+#include "file_bytes.hpp"
 #include "in_memory_server.hpp"
 #include "photo_worker.hpp"
 #include "test_paths.hpp"
@@ -25,14 +26,8 @@ namespace {
 
 using namespace std::chrono_literals;
 using codec::CloseCode;
+using test::file_bytes;
 using test::InMemoryServer;
-
-std::vector<std::uint8_t> file_bytes(const std::filesystem::path& path) {
-  std::vector<std::uint8_t> bytes;
-  std::string error;
-  EXPECT_TRUE(model::read_file(path, 64 << 20, bytes, error)) << error;
-  return bytes;
-}
 
 class Repreparation : public ::testing::Test {
  protected:

@@ -7,32 +7,21 @@
 #include "avatar_store.hpp"
 
 #include <filesystem>
-#include <fstream>
 
 #include <gtest/gtest.h>
 
 #include "demo_faces.hpp"
 #include "fw/model/avatar_package.hpp"
-#include "fw/model/file_io.hpp"
+#include "file_bytes.hpp"
 #include "in_memory_server.hpp"
 
 namespace fw::server {
 namespace {
 
 using codec::CloseCode;
+using test::file_bytes;
+using test::write_file_bytes;
 using test::InMemoryServer;
-
-std::vector<std::uint8_t> file_bytes(const std::filesystem::path& path) {
-  std::vector<std::uint8_t> bytes;
-  std::string error;
-  EXPECT_TRUE(model::read_file(path, 64 << 20, bytes, error)) << error;
-  return bytes;
-}
-
-void write_bytes(const std::filesystem::path& path, std::span<const std::uint8_t> bytes) {
-  std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()),
-                                               static_cast<std::streamsize>(bytes.size()));
-}
 
 /// A real package, as an older build made it: fitted to the previous generic face.
 std::vector<std::uint8_t> package_of_an_older_generic_face() {
@@ -124,7 +113,7 @@ TEST_F(StoreDirectory, ACrashMidWriteLosesNothing) {
   }
   // Killed while writing the package again (its temporary file is left
   // half-written beside it), and before the preview was written.
-  write_bytes(file(asset, ".fwa.partial-4242"), std::span(package).first(100));
+  write_file_bytes(file(asset, ".fwa.partial-4242"), std::span(package).first(100));
   std::filesystem::remove(file(asset, ".preview.fwa"));
 
   std::string error;
@@ -139,7 +128,7 @@ TEST_F(StoreDirectory, ACrashMidWriteLosesNothing) {
 }
 
 TEST_F(StoreDirectory, AnOutOfDateAvatarWithoutItsPhotoIsRefusedWithTheAdviceToUploadAgain) {
-  write_bytes(file(asset_, ".fwa"), package_of_an_older_generic_face());
+  write_file_bytes(file(asset_, ".fwa"), package_of_an_older_generic_face());
   InMemoryServer server(InMemoryServer::test_config(), data_);
   const std::string reason = refused_hello(server);
   EXPECT_NE(reason.find("upload your photo again"), std::string::npos) << reason;
@@ -152,8 +141,8 @@ TEST_F(StoreDirectory, AnOutOfDateAvatarWithoutItsPhotoIsRefusedWithTheAdviceToU
 TEST_F(StoreDirectory, AnOutOfDateAvatarIsRefusedWhereNobodyCanPrepareItAgain) {
   // A server core without a photo worker (no repreparer): the photo is kept
   // for a server that has one, and the person is told what to do meanwhile.
-  write_bytes(file(asset_, ".fwa"), package_of_an_older_generic_face());
-  write_bytes(file(asset_, ".photo"), std::vector<std::uint8_t>{0xFF, 0xD8, 0xFF});
+  write_file_bytes(file(asset_, ".fwa"), package_of_an_older_generic_face());
+  write_file_bytes(file(asset_, ".photo"), std::vector<std::uint8_t>{0xFF, 0xD8, 0xFF});
   std::string error;
   AvatarStore store(data_, metrics_, error);
   const AvatarLookup refused = store.lookup(asset_);
@@ -165,8 +154,8 @@ TEST_F(StoreDirectory, AnOutOfDateAvatarIsRefusedWhereNobodyCanPrepareItAgain) {
 TEST_F(StoreDirectory, ACorruptPackageIsRefusedAsCorrupt) {
   auto package = make_demo_package(0);
   package[package.size() - 3] ^= 0x10;  // inside the last member: its checksum fails
-  write_bytes(file(asset_, ".fwa"), package);
-  write_bytes(file(asset_, ".photo"), std::vector<std::uint8_t>{0xFF, 0xD8, 0xFF});
+  write_file_bytes(file(asset_, ".fwa"), package);
+  write_file_bytes(file(asset_, ".photo"), std::vector<std::uint8_t>{0xFF, 0xD8, 0xFF});
   InMemoryServer server(InMemoryServer::test_config(), data_);
   const std::string reason = refused_hello(server);
   EXPECT_NE(reason.find("damaged"), std::string::npos) << reason;
@@ -184,7 +173,7 @@ TEST_F(StoreDirectory, TheSamePackageRepairsADamagedOne) {
   }
   auto damaged = package;
   damaged[damaged.size() / 2] ^= 1;
-  write_bytes(file(asset, ".fwa"), damaged);
+  write_file_bytes(file(asset, ".fwa"), damaged);
   AvatarStore store(data_, metrics_, error);
   EXPECT_EQ(store.lookup(asset).status, AvatarStatus::damaged);
   const auto repaired = store.put(package, error);
