@@ -91,8 +91,9 @@ void add_join_command(CLI::App& app, JoinNetwork network) {
   cmd->add_option("url", args->url, "server: ws://HOST:PORT/ (WebSocket) or tcp://HOST:PORT (native port)")->required();
   cmd->add_option("--room", args->room, "room name (A-Z a-z 0-9 _ - ., created on first join)")->required();
   cmd->add_option("--name", args->name, "your display name")->required();
-  auto* photo = cmd->add_option("--photo", args->photo, "a photo of your face (JPEG, PNG or WebP): downsized to ~30 KB and uploaded");
-  cmd->add_option("--avatar", args->avatar, "a prepared avatar package (.fwa) to upload")->excludes(photo);
+  cmd->add_option("--photo", args->photo, "a photo of your face (JPEG, PNG or WebP): downsized to ~30 KB and uploaded");
+  cmd->add_option("--avatar", args->avatar,
+                  "a prepared avatar package (.fwa) to upload; with --photo, the photo it was prepared from goes along");
   cmd->add_option("--api", args->api, "the server's HTTP port for uploads, http://HOST:PORT (default: the ws:// URL's)");
   cmd->add_option("--token", args->token, "a join token from the room's host (facewire-server token)");
   cmd->add_flag("--window", args->window, "show the room in a window (needs a display)");

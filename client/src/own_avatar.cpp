@@ -2,6 +2,7 @@
 
 #include "fw/model/avatar_package.hpp"
 #include "fw/model/file_io.hpp"
+#include "package_with_photo.hpp"
 #include "photo_downsizer.hpp"
 
 namespace fw::client {
@@ -24,16 +25,27 @@ bool read_photo(const std::string& path, OwnAvatar& avatar, std::string& error) 
 }
 
 bool read_package(const std::string& path, OwnAvatar& avatar, std::string& error) {
-  if (!model::read_file(path, model::kMaxPackageBytes, avatar.bytes, error)) {
+  if (!model::read_file(path, model::kMaxPackageBytes, avatar.package, error)) {
     error = "--avatar: " + error;
     return false;
   }
   model::AvatarPackage package;
-  if (!model::parse_avatar_package(avatar.bytes, package, error)) {
+  if (!model::parse_avatar_package(avatar.package, package, error)) {
     error = "--avatar " + path + ": " + error;
     return false;
   }
   avatar.content_type = "application/x-facewire-avatar";
+  avatar.bytes = avatar.package;
+  return true;
+}
+
+// Both: the package goes up with the photo it was prepared from.
+bool read_package_and_photo(const JoinArgs& args, OwnAvatar& avatar, std::string& error) {
+  OwnAvatar photo;
+  if (!read_package(args.avatar, avatar, error) || !read_photo(args.photo, photo, error)) return false;
+  MultipartUpload upload = package_with_photo(avatar.package, photo.bytes, photo.content_type);
+  avatar.content_type = std::move(upload.content_type);
+  avatar.bytes = std::move(upload.body);
   return true;
 }
 
@@ -61,6 +73,7 @@ bool upload_target(const JoinArgs& args, const ServerUrl& url, UploadTarget& tar
 }
 
 bool prepare_own_avatar(const JoinArgs& args, OwnAvatar& avatar, std::string& error) {
+  if (!args.photo.empty() && !args.avatar.empty()) return read_package_and_photo(args, avatar, error);
   return args.photo.empty() ? read_package(args.avatar, avatar, error) : read_photo(args.photo, avatar, error);
 }
 
@@ -77,8 +90,8 @@ bool upload_own_avatar(const JoinArgs& args, const ServerUrl& url, const AvatarU
   const int timeout_s = upload_timeout_s(avatar.bytes.size(), args.max_kbps);
   if (!uploader(target, avatar.content_type, avatar.bytes, timeout_s, uploaded.asset, error)) return false;
   uploaded.bytes = avatar.bytes.size();
-  if (avatar.is_package())
-    uploaded.own_package = std::make_shared<const std::vector<std::uint8_t>>(std::move(avatar.bytes));
+  if (!avatar.package.empty())
+    uploaded.own_package = std::make_shared<const std::vector<std::uint8_t>>(std::move(avatar.package));
   return true;
 }
 

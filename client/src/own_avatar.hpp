@@ -29,11 +29,11 @@ using AvatarUploader = std::function<bool(const UploadTarget& target, const std:
                                           std::span<const std::uint8_t> body, int timeout_s, std::string& asset,
                                           std::string& error)>;
 
-/// What goes up: the downsized photo, or the package as it was read.
+/// What goes up: the downsized photo, the package as it was read, or both.
 struct OwnAvatar {
-  std::string content_type;  ///< "image/jpeg" or "application/x-facewire-avatar"
-  std::vector<std::uint8_t> bytes;
-  bool is_package() const { return content_type == "application/x-facewire-avatar"; }
+  std::string content_type;  ///< "image/jpeg", "application/x-facewire-avatar" or multipart/form-data
+  std::vector<std::uint8_t> bytes;    ///< the upload's body
+  std::vector<std::uint8_t> package;  ///< the package, when one goes up (the client draws its own face from it)
 };
 
 /// What came of the upload.
@@ -48,8 +48,10 @@ struct UploadedAvatar {
 /// WebSocket shares the HTTP port). A tcp:// URL needs --api.
 bool upload_target(const JoinArgs& args, const ServerUrl& url, UploadTarget& target, std::string& error);
 
-/// Reads --photo (decoded, downsized, re-encoded as JPEG) or --avatar (a
-/// package that must parse). @return false and `error` saying what to change.
+/// Reads --photo (decoded, downsized, re-encoded as JPEG), --avatar (a
+/// package that must parse), or both (the package with the photo it was
+/// prepared from, so the server keeps the photo; PROTOCOL.md section 8).
+/// @return false and `error` saying what to change.
 bool prepare_own_avatar(const JoinArgs& args, OwnAvatar& avatar, std::string& error);
 
 /// Seconds an upload of `bytes` may take: a photo is prepared on the server

@@ -1,10 +1,12 @@
 #include "avatar_store.hpp"
 
 #include <openssl/evp.h>
+#include <spdlog/spdlog.h>
 
 #include "fw/model/avatar_package.hpp"
 #include "fw/model/file_io.hpp"
 #include "preview_package.hpp"
+#include "room_connection.hpp"  // share
 
 namespace fw::server {
 namespace {
@@ -22,6 +24,37 @@ std::string content_id(std::span<const std::uint8_t> bytes) {
   return id;
 }
 
+// Answers for a person (they end up in a closing reason of at most 120 bytes).
+AvatarLookup being_prepared() {
+  return {AvatarStatus::being_prepared, std::nullopt,
+          "your avatar is being prepared again for this server's version; join again in a few seconds"};
+}
+AvatarLookup no_photo_to_remake_it() {
+  return {AvatarStatus::out_of_date, std::nullopt,
+          "your avatar was made by an older version and has no photo to remake it; upload your photo again"};
+}
+AvatarLookup cannot_remake_it() {
+  return {AvatarStatus::out_of_date, std::nullopt,
+          "your avatar was made by an older version and could not be remade; upload your photo again"};
+}
+AvatarLookup damaged() {
+  return {AvatarStatus::damaged, std::nullopt, "your stored avatar is damaged; upload your photo again"};
+}
+
+// The preview beside a package, made again when it is missing or does not
+// parse (a crash between writing the package and its preview). Writing it
+// back only saves the work next time: the preview is served either way.
+bool read_or_make_preview(const std::filesystem::path& path, const model::AvatarPackage& full,
+                          std::vector<std::uint8_t>& preview, std::string& error) {
+  model::AvatarPackage parsed;
+  if (model::read_file(path, model::kMaxPackageBytes, preview, error) &&
+      model::parse_avatar_package(preview, parsed, error))
+    return true;
+  if (!make_preview_package(full, preview, error)) return false;
+  if (!model::write_file_atomically(path, preview, error)) spdlog::warn("{}", error);
+  return true;
+}
+
 }  // namespace
 
 bool is_asset_id(std::string_view text) {
@@ -31,45 +64,141 @@ bool is_asset_id(std::string_view text) {
   return true;
 }
 
-AvatarStore::AvatarStore(std::filesystem::path directory, std::string& error)
-    : directory_(std::move(directory) / "avatars") {
+AvatarStore::AvatarStore(std::filesystem::path directory, Metrics& metrics, std::string& error)
+    : directory_(std::move(directory) / "avatars"), metrics_(metrics) {
   std::error_code ec;
   std::filesystem::create_directories(directory_, ec);
   if (ec) error = "cannot create the avatar store " + directory_.string() + ": " + ec.message();
 }
 
-std::optional<StoredAvatar> AvatarStore::put(std::span<const std::uint8_t> package, std::string& error) {
+std::filesystem::path AvatarStore::file(const std::string& asset, const char* suffix) const {
+  return directory_ / (asset + suffix);
+}
+
+void AvatarStore::set_repreparer(AvatarRepreparer repreparer) {
+  std::lock_guard lock(mutex_);
+  repreparer_ = std::move(repreparer);
+}
+
+std::optional<StoredAvatar> AvatarStore::put(std::span<const std::uint8_t> package, std::span<const std::uint8_t> photo,
+                                             std::string& error) {
   model::AvatarPackage parsed;
   if (!model::parse_avatar_package(package, parsed, error)) return std::nullopt;
   const std::string asset = content_id(package);
-  if (auto known = get(asset)) return known;
-  std::vector<std::uint8_t> preview;
-  if (!make_preview_package(parsed, preview, error)) return std::nullopt;
-  if (!model::write_file_atomically(directory_ / (asset + ".fwa"), package, error) ||
-      !model::write_file_atomically(directory_ / (asset + ".preview.fwa"), preview, error))
+  const AvatarLookup known = lookup(asset);
+  if (known.status == AvatarStatus::found) return known.avatar;
+  if (known.status == AvatarStatus::being_prepared) {
+    error = known.message;
     return std::nullopt;
-  StoredAvatar stored{asset, std::make_shared<const std::vector<std::uint8_t>>(package.begin(), package.end()),
-                      std::make_shared<const std::vector<std::uint8_t>>(std::move(preview))};
-  std::lock_guard lock(mutex_);
-  cache_.emplace(asset, stored);
-  return stored;
+  }
+  // Bytes with this id's hash are the package it was first stored with, so
+  // they may repair a damaged or out-of-date one; its photo, if any, stays.
+  // The photo goes first: a crash before the package leaves only a photo
+  // that no id refers to yet.
+  if (known.status == AvatarStatus::unknown && !photo.empty() &&
+      !model::write_file_atomically(file(asset, ".photo"), photo, error))
+    return std::nullopt;
+  return write_and_remember(asset, package, parsed, error);
 }
 
-std::optional<StoredAvatar> AvatarStore::get(const std::string& asset) {
-  if (!is_asset_id(asset)) return std::nullopt;
+std::optional<StoredAvatar> AvatarStore::write_and_remember(const std::string& asset,
+                                                            std::span<const std::uint8_t> package,
+                                                            const model::AvatarPackage& parsed, std::string& error) {
+  std::vector<std::uint8_t> preview;
+  if (!make_preview_package(parsed, preview, error) ||
+      !model::write_file_atomically(file(asset, ".fwa"), package, error) ||
+      !model::write_file_atomically(file(asset, ".preview.fwa"), preview, error))
+    return std::nullopt;
+  StoredAvatar stored{asset, content_id(package), share(std::vector<std::uint8_t>(package.begin(), package.end())),
+                      share(std::move(preview))};
+  std::lock_guard lock(mutex_);
+  refused_.erase(asset);
+  preparing_.erase(asset);
+  return cache_.insert_or_assign(asset, stored).first->second;
+}
+
+AvatarLookup AvatarStore::lookup(const std::string& asset) {
+  if (!is_asset_id(asset)) return {};
   {
     std::lock_guard lock(mutex_);
-    if (auto it = cache_.find(asset); it != cache_.end()) return it->second;
+    if (auto it = cache_.find(asset); it != cache_.end()) return {AvatarStatus::found, it->second, {}};
+    if (preparing_.contains(asset)) return being_prepared();
+    if (auto it = refused_.find(asset); it != refused_.end()) return it->second;
   }
+  return load(asset);
+}
+
+AvatarLookup AvatarStore::load(const std::string& asset) {
+  std::error_code ec;
+  if (!std::filesystem::exists(file(asset, ".fwa"), ec)) return {};
   std::vector<std::uint8_t> full, preview;
   std::string error;
-  if (!model::read_file(directory_ / (asset + ".fwa"), model::kMaxPackageBytes, full, error) ||
-      !model::read_file(directory_ / (asset + ".preview.fwa"), model::kMaxPackageBytes, preview, error))
-    return std::nullopt;
-  StoredAvatar stored{asset, std::make_shared<const std::vector<std::uint8_t>>(std::move(full)),
-                      std::make_shared<const std::vector<std::uint8_t>>(std::move(preview))};
+  model::AvatarPackage parsed;
+  auto why = model::PackageRefusal::damaged;
+  if (!model::read_file(file(asset, ".fwa"), model::kMaxPackageBytes, full, error) ||
+      !model::parse_avatar_package(full, parsed, error, why)) {
+    if (why != model::PackageRefusal::damaged) return out_of_date(asset, error);
+    spdlog::error("stored avatar {} is corrupt and refused: {}", asset, error);
+    metrics_.damaged_avatars.fetch_add(1);
+    refuse(asset, damaged());
+    return damaged();
+  }
+  if (!read_or_make_preview(file(asset, ".preview.fwa"), parsed, preview, error))
+    spdlog::warn("avatar {}: its preview cannot be made again ({}); it is served without one", asset, error);
+  StoredAvatar stored{asset, content_id(full), share(std::move(full)), share(std::move(preview))};
   std::lock_guard lock(mutex_);
-  return cache_.emplace(asset, stored).first->second;
+  return {AvatarStatus::found, cache_.emplace(asset, stored).first->second, {}};
+}
+
+AvatarLookup AvatarStore::out_of_date(const std::string& asset, const std::string& why) {
+  std::vector<std::uint8_t> photo;
+  std::string no_photo;
+  const bool has_photo = model::read_file(file(asset, ".photo"), kMaxStoredPhotoBytes, photo, no_photo);
+  AvatarRepreparer repreparer;
+  {
+    std::lock_guard lock(mutex_);
+    if (preparing_.contains(asset)) return being_prepared();  // another thread was first
+    if (has_photo && repreparer_) {
+      preparing_.insert(asset);
+      repreparer = repreparer_;
+    }
+  }
+  if (repreparer) {
+    spdlog::info("avatar {} is out of date ({}); preparing it again from its photo", asset, why);
+    metrics_.repreparations_started.fetch_add(1);
+    repreparer(asset, std::move(photo));
+    return being_prepared();
+  }
+  spdlog::warn("avatar {} is out of date ({}) and refused: {}", asset, why,
+               has_photo ? "this server cannot prepare photos" : "no photo is stored with it");
+  metrics_.outdated_avatars.fetch_add(1);
+  const AvatarLookup refusal = has_photo ? cannot_remake_it() : no_photo_to_remake_it();
+  refuse(asset, refusal);
+  return refusal;
+}
+
+bool AvatarStore::replace(const std::string& asset, std::span<const std::uint8_t> package, std::string& error) {
+  model::AvatarPackage parsed;
+  if (model::parse_avatar_package(package, parsed, error) && write_and_remember(asset, package, parsed, error)) {
+    spdlog::info("avatar {} prepared again from its photo ({} bytes)", asset, package.size());
+    metrics_.repreparations.fetch_add(1);
+    return true;
+  }
+  preparation_failed(asset, error);
+  return false;
+}
+
+void AvatarStore::preparation_failed(const std::string& asset, const std::string& why) {
+  spdlog::warn("avatar {} could not be prepared again from its photo and is refused until a restart: {}", asset, why);
+  metrics_.repreparation_failures.fetch_add(1);
+  std::lock_guard lock(mutex_);
+  preparing_.erase(asset);
+  refused_.insert_or_assign(asset, cannot_remake_it());
+}
+
+void AvatarStore::refuse(const std::string& asset, const AvatarLookup& refusal) {
+  std::lock_guard lock(mutex_);
+  refused_.insert_or_assign(asset, refusal);
 }
 
 }  // namespace fw::server

@@ -1,42 +1,115 @@
 #pragma once
-// Avatar packages by asset id (the package's content hash), in a local
-// directory: DIR/avatars/ID.fwa and ID.preview.fwa. Every package is
-// validated before it is stored; the preview is made on the way in. Held in
-// memory once read; thread-safe.
+// Avatars by asset id, in a local directory: DIR/avatars/ID.fwa (the
+// package), ID.preview.fwa (its preview, made on the way in) and ID.photo
+// (the photo it was prepared from, as uploaded, when there was one). Every
+// file is written atomically. Held in memory once read; thread-safe.
+//
+// The id names the stored avatar: it is the content hash of the package it
+// was first stored with, and stays when that package is prepared again from
+// the photo (after the package format or the generic face changed), because
+// people and rooms refer to it. An upload never changes an avatar that is
+// already stored, and a photo is only ever stored together with the new
+// package it came with (never attached to a stored one, whose bytes anyone
+// may have downloaded), so an id keeps the face its uploader gave it.
+#include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <span>
 #include <string>
 #include <vector>
+
+#include "metrics.hpp"
+
+namespace fw::model {
+struct AvatarPackage;
+}
 
 namespace fw::server {
 
 using SharedBytes = std::shared_ptr<const std::vector<std::uint8_t>>;  // as in room_connection.hpp
 
 struct StoredAvatar {
-  std::string asset;   ///< 32 lowercase hex digits
+  std::string asset;    ///< the avatar's id: 32 lowercase hex digits
+  std::string version;  ///< the content hash of its current package (an HTTP ETag)
   SharedBytes full;
   SharedBytes preview;
 };
 
+/// The largest photo kept beside a package: the preparer's own limit
+/// (fw/photo/photo_limits.hpp), so no stored photo is one it would refuse.
+inline constexpr std::size_t kMaxStoredPhotoBytes = 10'000'000;
+
+/// What became of a request for an avatar.
+enum class AvatarStatus {
+  found,           ///< `avatar` holds it
+  unknown,         ///< no avatar has this id (or it is not an id)
+  being_prepared,  ///< out of date and being prepared again from its photo: ask again in a few seconds
+  out_of_date,     ///< out of date and it cannot be prepared again here: upload the photo again
+  damaged,         ///< the stored package is corrupt: upload the avatar again
+};
+
+struct AvatarLookup {
+  AvatarStatus status = AvatarStatus::unknown;
+  std::optional<StoredAvatar> avatar;  ///< when found
+  std::string message;                 ///< otherwise: what is wrong and what to do, for a person
+};
+
+/// Prepares an out-of-date avatar again from its photo, off the caller's
+/// thread, and ends with AvatarStore::replace or AvatarStore::preparation_failed.
+using AvatarRepreparer = std::function<void(const std::string& asset, std::vector<std::uint8_t> photo)>;
+
 class AvatarStore {
  public:
   /// Creates the directory if needed; `error` if it cannot.
-  AvatarStore(std::filesystem::path directory, std::string& error);
+  AvatarStore(std::filesystem::path directory, Metrics& metrics, std::string& error);
 
-  /// Validates `package` (.fwa bytes), makes its preview, stores both.
+  /// Validates `package` (.fwa bytes), makes its preview, stores both, and
+  /// `photo` (the one the package was prepared from; may be empty) first.
+  /// An avatar already stored under the package's id is returned as it is.
   /// nullopt and `error` (what is wrong with the package) if it is invalid.
-  std::optional<StoredAvatar> put(std::span<const std::uint8_t> package, std::string& error);
-  /// The avatar with `asset` id, or nullopt (unknown, or not an id).
-  std::optional<StoredAvatar> get(const std::string& asset);
+  std::optional<StoredAvatar> put(std::span<const std::uint8_t> package, std::span<const std::uint8_t> photo,
+                                  std::string& error);
+  std::optional<StoredAvatar> put(std::span<const std::uint8_t> package, std::string& error) {
+    return put(package, {}, error);
+  }
+
+  /// The avatar with id `asset`. A stored package of another format or
+  /// generic face is handed to the repreparer when its photo is there (once;
+  /// meanwhile the answer is being_prepared); never blocks on a preparation.
+  AvatarLookup lookup(const std::string& asset);
+  /// The avatar when it is found, else nullopt.
+  std::optional<StoredAvatar> get(const std::string& asset) { return lookup(asset).avatar; }
+
+  /// Who prepares out-of-date avatars again; none (the default) means this
+  /// server cannot, and they are refused as out of date.
+  void set_repreparer(AvatarRepreparer repreparer);
+  /// The avatar `asset`, prepared again: `package` replaces its package under
+  /// the same id. false and `error` if the package is invalid or cannot be
+  /// written (the avatar is then refused as out of date until a restart).
+  bool replace(const std::string& asset, std::span<const std::uint8_t> package, std::string& error);
+  /// Preparing `asset` again failed; `why` says why, for a person.
+  void preparation_failed(const std::string& asset, const std::string& why);
 
  private:
+  std::filesystem::path file(const std::string& asset, const char* suffix) const;
+  AvatarLookup load(const std::string& asset);
+  AvatarLookup out_of_date(const std::string& asset, const std::string& why);
+  std::optional<StoredAvatar> write_and_remember(const std::string& asset, std::span<const std::uint8_t> package,
+                                                 const model::AvatarPackage& parsed, std::string& error);
+  void refuse(const std::string& asset, const AvatarLookup& refusal);
+
   std::filesystem::path directory_;
+  Metrics& metrics_;
   std::mutex mutex_;
   std::map<std::string, StoredAvatar> cache_;
+  std::map<std::string, AvatarLookup> refused_;  ///< stored but refused: damaged, or out of date for good
+  std::set<std::string> preparing_;               ///< handed to the repreparer, not back yet
+  AvatarRepreparer repreparer_;
 };
 
 /// Whether `text` has the form of an asset id (so it is safe in a path).

@@ -195,14 +195,20 @@ void ClientSession::handle_hello(std::span<const std::uint8_t> message) {
     return protocol_error(CloseCode::protocol_error,
                           "the first message must be a hello: " + std::string(codec::describe(error)));
   if (const auto refusal = refusal_of(hello)) return refuse(refusal->first, refusal->second);
-  const std::optional<StoredAvatar> avatar = avatar_for(hello);
-  if (!avatar)
-    return refuse(CloseCode::bad_request,
-                  "unknown avatar '" + hello.avatar.substr(0, 64) + "'; upload it first (POST /api/avatars)");
+  const AvatarLookup avatar = avatar_for(hello);
+  switch (avatar.status) {
+    case AvatarStatus::found: break;
+    case AvatarStatus::unknown:
+      return refuse(CloseCode::bad_request,
+                    "unknown avatar '" + hello.avatar.substr(0, 64) + "'; upload it first (POST /api/avatars)");
+    // Temporary: the client tries again (PROTOCOL.md, "closing").
+    case AvatarStatus::being_prepared: return refuse(CloseCode::avatar_being_prepared, avatar.message);
+    default: return refuse(CloseCode::bad_request, avatar.message);
+  }
   room_ = context_.rooms->find_or_create(hello.room);
   if (!room_) return refuse(CloseCode::server_full, "the server holds its maximum number of rooms; try later");
   state_ = State::joining;
-  room_->join(JoinRequest{hello.name, *avatar, stream_settings_for(hello), shared_from_this()});
+  room_->join(JoinRequest{hello.name, *avatar.avatar, stream_settings_for(hello), shared_from_this()});
 }
 
 std::optional<std::pair<CloseCode, std::string>> ClientSession::refusal_of(const codec::Hello& hello) const {
@@ -218,11 +224,11 @@ std::optional<std::pair<CloseCode, std::string>> ClientSession::refusal_of(const
   return std::nullopt;
 }
 
-std::optional<StoredAvatar> ClientSession::avatar_for(const codec::Hello& hello) const {
-  if (!hello.avatar.empty()) return context_.store->get(hello.avatar);
+AvatarLookup ClientSession::avatar_for(const codec::Hello& hello) const {
+  if (!hello.avatar.empty()) return context_.store->lookup(hello.avatar);
   // No package: a procedural face, chosen by the name so it stays the same.
   const auto& faces = context_.demo_avatars;
-  return faces[std::hash<std::string>{}(hello.name) % faces.size()];
+  return {AvatarStatus::found, faces[std::hash<std::string>{}(hello.name) % faces.size()], {}};
 }
 
 StreamSettings ClientSession::stream_settings_for(const codec::Hello& hello) const {

@@ -69,7 +69,7 @@ class ClientSession : public RoomConnection, public std::enable_shared_from_this
   /// Why this server cannot admit `hello` (draining, bad room or name, token), or nullopt.
   std::optional<std::pair<codec::CloseCode, std::string>> refusal_of(const codec::Hello& hello) const;
   /// The uploaded package `hello` names, or a procedural face; nullopt if the package is unknown.
-  std::optional<StoredAvatar> avatar_for(const codec::Hello& hello) const;
+  AvatarLookup avatar_for(const codec::Hello& hello) const;
   StreamSettings stream_settings_for(const codec::Hello& hello) const;
   void refuse(codec::CloseCode code, const std::string& why);
   void handle_joined_message(std::span<const std::uint8_t> message);

@@ -39,6 +39,18 @@ std::string Metrics::render(double physics_share) const {
          rejected_joins.load());
   family("facewire_uploads_total", "counter", "Avatar packages stored from uploads.", uploads.load());
   family("facewire_chat_lines_total", "counter", "Chat lines relayed.", chat_lines.load());
+  family("facewire_repreparations_started_total", "counter",
+         "Stored avatars of another package format or generic face handed to be prepared again from their photo.",
+         repreparations_started.load());
+  family("facewire_repreparations_total", "counter", "Stored avatars prepared again from their photo.",
+         repreparations.load());
+  family("facewire_repreparation_failures_total", "counter",
+         "Stored avatars that could not be prepared again from their photo.", repreparation_failures.load());
+  family("facewire_outdated_avatars_total", "counter",
+         "Stored avatars of another package format or generic face refused: no photo to prepare them again.",
+         outdated_avatars.load());
+  family("facewire_damaged_avatars_total", "counter", "Stored avatar packages found corrupt and refused.",
+         damaged_avatars.load());
 
   out << "# HELP facewire_tick_duration_seconds Simulation and encoding time of one room tick.\n"
       << "# TYPE facewire_tick_duration_seconds histogram\n";

@@ -25,6 +25,14 @@ struct Metrics {
   std::atomic<std::uint64_t> rejected_joins{0};
   std::atomic<std::uint64_t> uploads{0};
   std::atomic<std::uint64_t> chat_lines{0};
+  // Stored avatars whose package is of another format or generic face
+  // version (avatar_store.hpp): handed to be prepared again from their
+  // photo, prepared again, failed; refused for want of a photo.
+  std::atomic<std::uint64_t> repreparations_started{0};
+  std::atomic<std::uint64_t> repreparations{0};
+  std::atomic<std::uint64_t> repreparation_failures{0};
+  std::atomic<std::uint64_t> outdated_avatars{0};
+  std::atomic<std::uint64_t> damaged_avatars{0};  ///< stored packages found corrupt
 
   /// Upper bounds of the tick-duration buckets in seconds (simulation and
   /// encoding of one room tick).

@@ -9,11 +9,13 @@
 #include <boost/asio/io_context.hpp>
 #include <spdlog/spdlog.h>
 
+#include "avatar_repreparation.hpp"
 #include "drain_on_signal.hpp"
 #include "endpoint.hpp"
 #include "http_session.hpp"
 #include "listener.hpp"
 #include "photo_preparation.hpp"
+#include "photo_worker.hpp"
 #include "server_core.hpp"
 #include "tcp_session.hpp"
 
@@ -110,7 +112,9 @@ int run_network_server(const ServerConfig& config) {
   std::string error;
   if (!core.open(error)) return cannot_start(error);
   net::io_context ioc(config.io_threads);
-  PhotoPreparation photos(core.context());
+  PhotoWorker photo_worker(config.landmark_model);
+  PhotoPreparation photos(core.context(), photo_worker);
+  AvatarRepreparation repreparation(core.context(), photo_worker);
   Listeners listeners;
   if (!open_listeners(ioc, core.context(), photos, listeners, error)) return cannot_start(error);
   announce(listeners);

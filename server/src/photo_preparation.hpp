@@ -1,40 +1,47 @@
 #pragma once
-// POST /api/avatars: a photo prepared into a package (dlib and OpenCV, about
-// a second of CPU, on its own thread so that neither I/O nor rooms wait), or
-// a prepared package validated; either stored in the avatar store.
+// POST /api/avatars: a photo prepared into a package on the photo worker,
+// or a prepared package validated; either stored in the avatar store, the
+// photo beside its package (so the avatar can be prepared again when the
+// package format or the generic face changes).
 #include <chrono>
 #include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
+#include <span>
 #include <string>
-
-#include <boost/asio/thread_pool.hpp>
+#include <vector>
 
 #include "http_responses.hpp"
 #include "server_context.hpp"
 
-namespace fw::photo {
-class AvatarPreparer;
-}
-
 namespace fw::server {
+
+class PhotoWorker;
 
 class PhotoPreparation {
  public:
-  explicit PhotoPreparation(ServerContext& context);
-  ~PhotoPreparation();
+  PhotoPreparation(ServerContext& context, PhotoWorker& worker);
 
-  /// Handles one upload; `done` gets the response on the preparation thread.
+  /// Handles one upload; `done` gets the response on the photo worker's thread.
   void upload(Request request, std::string peer_address, std::function<void(Response)> done);
+
+  /// What an upload stores: the package, and the photo to keep beside it
+  /// (empty when none came; a view into the request).
+  struct Upload {
+    std::vector<std::uint8_t> package;
+    std::span<const std::uint8_t> photo;
+  };
 
  private:
   Response handle(const Request& request);
+  /// The photo prepared into `upload`; the refusal when it makes no avatar.
+  std::optional<Response> prepare_photo(const Request& request, std::span<const std::uint8_t> photo, Upload& upload);
   bool allow(const std::string& peer_address);
 
   ServerContext& context_;
-  boost::asio::thread_pool pool_{1};
-  std::unique_ptr<photo::AvatarPreparer> preparer_;  ///< used on the pool's thread only
+  PhotoWorker& worker_;
   std::mutex mutex_;
   std::map<std::string, std::vector<std::chrono::steady_clock::time_point>> recent_;
 };

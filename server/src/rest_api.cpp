@@ -20,19 +20,36 @@ Response plain(http::status status, const Request& request, std::string body) {
   return response;
 }
 
-/// GET /api/packages/ID[?quality=preview]: the package, cacheable for ever (its id is its hash).
+/// The answer for a stored avatar that cannot be served (avatar_store.hpp).
+Response avatar_refusal(const Request& request, const AvatarLookup& lookup, const std::string& asset) {
+  switch (lookup.status) {
+    case AvatarStatus::being_prepared: {
+      Response response = plain(http::status::service_unavailable, request, lookup.message + "\n");
+      response.set(http::field::retry_after, "5");
+      return response;
+    }
+    case AvatarStatus::out_of_date:
+    case AvatarStatus::damaged: return plain(http::status::gone, request, lookup.message + " (POST /api/avatars)\n");
+    default:
+      return plain(http::status::not_found, request,
+                   "no avatar package '" + asset.substr(0, 64) + "'; upload one with POST /api/avatars\n");
+  }
+}
+
+/// GET /api/packages/ID[?quality=preview]: the avatar's current package. Its
+/// ETag is the package's content hash: the id stays when the server prepares
+/// the avatar again, so caches revalidate.
 Response package_response(ServerContext& context, const Request& request, const std::string& asset, bool preview) {
-  const auto avatar = context.store->get(asset);
-  if (!avatar)
-    return plain(http::status::not_found, request,
-                 "no avatar package '" + asset.substr(0, 64) + "'; upload one with POST /api/avatars\n");
-  const auto& bytes = preview ? *avatar->preview : *avatar->full;
-  const std::string etag = "\"" + asset + (preview ? "p" : "") + "\"";
+  const AvatarLookup lookup = context.store->lookup(asset);
+  if (!lookup.avatar) return avatar_refusal(request, lookup, asset);
+  const StoredAvatar& avatar = *lookup.avatar;
+  const auto& bytes = preview ? *avatar.preview : *avatar.full;
+  const std::string etag = "\"" + avatar.version + (preview ? "p" : "") + "\"";
   Response response{request[http::field::if_none_match] == etag ? http::status::not_modified : http::status::ok,
                     request.version()};
   response.set(http::field::server, "facewire");
   response.set(http::field::etag, etag);
-  response.set(http::field::cache_control, "public, max-age=31536000, immutable");  // the id is the content's hash
+  response.set(http::field::cache_control, "public, no-cache");
   response.keep_alive(request.keep_alive());
   if (response.result() != http::status::ok) return response;
   response.set(http::field::content_type, "application/x-facewire-avatar");

@@ -15,7 +15,7 @@ ServerCore::ServerCore(const ServerConfig& config)
 ServerCore::~ServerCore() { stop(); }
 
 bool ServerCore::open(std::string& error) {
-  store_ = std::make_unique<AvatarStore>(context_.config.data, error);
+  store_ = std::make_unique<AvatarStore>(context_.config.data, context_.metrics, error);
   if (!error.empty()) {
     error += " (choose another directory with --data DIR)";
     return false;

@@ -23,6 +23,7 @@ websocket::close_code close_code_for(CloseCode code) {
     case CloseCode::server_full:
     case CloseCode::handshake_timeout:
     case CloseCode::idle_timeout: return websocket::close_code::policy_error;
+    case CloseCode::avatar_being_prepared: return websocket::close_code::try_again_later;
     default: return websocket::close_code::protocol_error;
   }
 }

@@ -120,6 +120,25 @@ TEST_F(OwnAvatarTest, APhotoGoesUpAsASmallJpeg) {
   EXPECT_FALSE(uploaded.own_package) << "the server prepares the package from a photo";
 }
 
+TEST_F(OwnAvatarTest, APackageCanTakeThePhotoItWasPreparedFromAlong) {
+  const Bytes package = sample_package();
+  args_.avatar = write("me.fwa", package);
+  model::RgbaImage photo(64, 64);
+  ASSERT_TRUE(render::write_png(photo, dir_ / "me.png", error_)) << error_;
+  args_.photo = (dir_ / "me.png").string();
+  UploadedAvatar uploaded;
+  ASSERT_TRUE(upload_own_avatar(args_, url_, fake_.uploader(), uploaded, error_)) << error_;
+  ASSERT_EQ(fake_.content_type.rfind("multipart/form-data; boundary=", 0), 0u) << fake_.content_type;
+  const std::string boundary = fake_.content_type.substr(fake_.content_type.find('=') + 1);
+  const std::string body(fake_.body.begin(), fake_.body.end());
+  EXPECT_EQ(body.rfind("--" + boundary + "\r\nContent-Disposition: form-data; name=\"package\"", 0), 0u);
+  EXPECT_NE(body.find(std::string(package.begin(), package.end())), std::string::npos);
+  EXPECT_NE(body.find("name=\"photo\"\r\nContent-Type: image/jpeg\r\n\r\n\xFF\xD8"), std::string::npos);
+  EXPECT_EQ(body.substr(body.size() - boundary.size() - 6), "--" + boundary + "--\r\n");
+  ASSERT_TRUE(uploaded.own_package) << "the client draws its own face from the package";
+  EXPECT_EQ(*uploaded.own_package, package);
+}
+
 TEST_F(OwnAvatarTest, WhatCannotBeReadIsNotUploaded) {
   UploadedAvatar uploaded;
   args_.avatar = write("broken.fwa", Bytes(100, 7));

@@ -115,6 +115,36 @@ TEST(AvatarPackage, RefusesAFitForAnotherGenericFace) {
   EXPECT_NE(package_error(serialize_avatar_package(p)).find("prepare the avatar again"), std::string::npos);
 }
 
+// A server keeps packages and prepares again, from the photo, those of
+// another format or generic face; damage it refuses. The reader says which.
+PackageRefusal refusal_of(const std::vector<std::uint8_t>& bytes) {
+  AvatarPackage p;
+  std::string error;
+  PackageRefusal why = PackageRefusal::damaged;
+  EXPECT_FALSE(parse_avatar_package(bytes, p, error, why));
+  return why;
+}
+
+TEST(AvatarPackage, SaysWhetherItIsOutOfDateOrDamaged) {
+  AvatarPackage older_face = sample_package();
+  older_face.generic_face_version -= 1;
+  EXPECT_EQ(refusal_of(serialize_avatar_package(older_face)), PackageRefusal::other_generic_face);
+  AvatarPackage other_mesh = sample_package();
+  other_mesh.fitted_vertices.pop_back();
+  EXPECT_EQ(refusal_of(serialize_avatar_package(other_mesh)), PackageRefusal::other_generic_face);
+  AvatarPackage newer_format = sample_package();
+  newer_format.version = kAvatarPackageVersion + 1;
+  EXPECT_EQ(refusal_of(serialize_avatar_package(newer_format)), PackageRefusal::other_format_version);
+
+  auto damaged = serialize_avatar_package(sample_package());
+  damaged[damaged.size() - 5] ^= 1;
+  EXPECT_EQ(refusal_of(damaged), PackageRefusal::damaged);
+  auto bad_manifest = serialize_avatar_package(sample_package());
+  bad_manifest[20] ^= 0x40;
+  EXPECT_EQ(refusal_of(bad_manifest), PackageRefusal::damaged);
+  EXPECT_EQ(refusal_of({'F', 'W'}), PackageRefusal::damaged);
+}
+
 TEST(AvatarPackage, RefusesAnUnknownImageType) {
   AvatarPackage p = sample_package();
   p.eye.type = "image/gif";

@@ -121,8 +121,14 @@ class InMemoryServer {
   }
 
   explicit InMemoryServer(ServerConfig config = test_config())
-      : data_(std::filesystem::temp_directory_path() /
-              ("fw-in-memory-" + std::to_string(::getpid()) + "-" + std::to_string(counter_++))),
+      : InMemoryServer(std::move(config), std::filesystem::temp_directory_path() /
+                                              ("fw-in-memory-" + std::to_string(::getpid()) + "-" +
+                                               std::to_string(counter_++))) {
+    owns_data_ = true;
+  }
+  /// A server on the data directory `data` (a restart), which it leaves in place.
+  InMemoryServer(ServerConfig config, std::filesystem::path data)
+      : data_(std::move(data)),
         core_(with_data(std::move(config), data_)),
         work_(boost::asio::make_work_guard(io_)) {
     std::string error;
@@ -137,7 +143,7 @@ class InMemoryServer {
     io_.stop();
     io_thread_.join();
     std::error_code ignored;
-    std::filesystem::remove_all(data_, ignored);
+    if (owns_data_) std::filesystem::remove_all(data_, ignored);
   }
   InMemoryServer(const InMemoryServer&) = delete;
   InMemoryServer& operator=(const InMemoryServer&) = delete;
@@ -174,6 +180,7 @@ class InMemoryServer {
   boost::asio::executor_work_guard<boost::asio::io_context::executor_type> work_;
   std::thread io_thread_;
   bool opened_ = false;
+  bool owns_data_ = false;
 };
 
 }  // namespace fw::test

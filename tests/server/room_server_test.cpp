@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "fw/model/avatar_package.hpp"
+#include "fw/model/file_io.hpp"
 #include "http_get.hpp"
 #include "room_test_client.hpp"
 #include "room_test_server.hpp"
@@ -347,6 +348,92 @@ TEST(RoomServerRest, AClientHoldingItsOwnPackageIsNotSentItBack) {
   EXPECT_TRUE(others);
   EXPECT_EQ(client.packages.count({you, 0}), 0u);
   EXPECT_EQ(client.packages.count({you, 1}), 0u);
+}
+
+std::string multipart(const std::string& boundary, const std::string& package, const std::string& photo) {
+  return "--" + boundary + "\r\nContent-Disposition: form-data; name=\"package\"\r\n\r\n" + package + "\r\n--" +
+         boundary + "\r\nContent-Disposition: form-data; name=\"photo\"\r\nContent-Type: image/png\r\n\r\n" + photo +
+         "\r\n--" + boundary + "--\r\n";
+}
+
+/// `package` as a build of the previous generic face wrote it.
+std::string out_of_date(const std::string& package) {
+  model::AvatarPackage parsed;
+  std::string error;
+  EXPECT_TRUE(model::parse_avatar_package(
+      {reinterpret_cast<const std::uint8_t*>(package.data()), package.size()}, parsed, error)) << error;
+  parsed.generic_face_version -= 1;
+  const auto bytes = model::serialize_avatar_package(parsed);
+  return {bytes.begin(), bytes.end()};
+}
+
+void write_file(const std::filesystem::path& path, const std::string& bytes) {
+  std::ofstream(path, std::ios::binary) << bytes;
+}
+
+TEST(RoomServerRest, StoredAvatarsKeepTheirPhotoAndArePreparedAgainFromIt) {
+  RunningServer server;
+  auto looker = join(server, Transport::tcp, "lobby", "Looker");
+  ASSERT_TRUE(looker->welcome);
+  const std::string lobby_package =
+      test::http_get(server.http_port(), "/api/packages/" + looker->welcome->avatars[0].asset).body;
+  const std::filesystem::path avatars = server.data() / "avatars";
+  std::ifstream photo_file(test::test_photo("astronaut.png"), std::ios::binary);
+  const std::string photo((std::istreambuf_iterator<char>(photo_file)), std::istreambuf_iterator<char>());
+
+  // A package with the photo it was prepared from: both kept.
+  model::AvatarPackage parsed;
+  std::string error;
+  ASSERT_TRUE(model::parse_avatar_package(
+      {reinterpret_cast<const std::uint8_t*>(lobby_package.data()), lobby_package.size()}, parsed, error));
+  parsed.skin_tone[0] ^= 1;  // another avatar than the lobby's
+  const auto other = model::serialize_avatar_package(parsed);
+  const std::string package(other.begin(), other.end());
+  const auto both =
+      post(server.http_port(), "multipart/form-data; boundary=b0undary", multipart("b0undary", package, photo));
+  ASSERT_EQ(both.status, 201) << both.body;
+  const std::string asset = nlohmann::json::parse(both.body)["asset"];
+  std::vector<std::uint8_t> kept;
+  ASSERT_TRUE(model::read_file(avatars / (asset + ".photo"), 1 << 24, kept, error)) << error;
+  EXPECT_EQ(std::string(kept.begin(), kept.end()), photo);
+  const auto no_photo_part = post(server.http_port(), "multipart/form-data; boundary=b", "--b--\r\n");
+  EXPECT_EQ(no_photo_part.status, 400);
+  EXPECT_NE(no_photo_part.body.find("'package'"), std::string::npos) << no_photo_part.body;
+
+  // Avatars stored by a build of the previous generic face, one with its photo.
+  const std::string with_photo = "00000000000000000000000000000001", without = "00000000000000000000000000000002";
+  write_file(avatars / (with_photo + ".fwa"), out_of_date(package));
+  write_file(avatars / (with_photo + ".photo"), photo);
+  write_file(avatars / (without + ".fwa"), out_of_date(package));
+  const auto busy = test::http_get(server.http_port(), "/api/packages/" + with_photo);
+  EXPECT_EQ(busy.status, 503) << busy.body;
+  EXPECT_NE(busy.headers.find("Retry-After: 5"), std::string::npos) << busy.headers;
+  test::HttpReply served;
+  for (int tries = 0; tries < 120 && served.status != 200; ++tries) {
+    std::this_thread::sleep_for(250ms);
+    served = test::http_get(server.http_port(), "/api/packages/" + with_photo);
+  }
+  ASSERT_EQ(served.status, 200) << served.body;
+  EXPECT_TRUE(model::parse_avatar_package(
+      {reinterpret_cast<const std::uint8_t*>(served.body.data()), served.body.size()}, parsed, error)) << error;
+  EXPECT_NE(served.headers.find("Cache-Control: public, no-cache"), std::string::npos) << served.headers;
+
+  RoomTestClient client(Transport::tcp, server.tcp_port());
+  codec::Hello hello;
+  hello.room = "elsewhere";
+  hello.name = "Returning";
+  hello.avatar = with_photo;
+  client.send_message(hello);
+  ASSERT_TRUE(client.pump_until([&] { return client.welcome.has_value() || client.closing.has_value(); }, 5s));
+  ASSERT_TRUE(client.welcome) << (client.closing ? client.closing->reason : "no answer");
+  EXPECT_EQ(client.welcome->avatars.at(0).asset, with_photo) << "the same id";
+
+  const auto gone = test::http_get(server.http_port(), "/api/packages/" + without);
+  EXPECT_EQ(gone.status, 410);
+  EXPECT_NE(gone.body.find("upload your photo again"), std::string::npos) << gone.body;
+  const auto metrics = test::http_get(server.http_port(), "/metrics").body;
+  EXPECT_NE(metrics.find("facewire_repreparations_total 1\n"), std::string::npos);
+  EXPECT_NE(metrics.find("facewire_outdated_avatars_total 1\n"), std::string::npos);
 }
 
 }  // namespace

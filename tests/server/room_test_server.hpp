@@ -32,6 +32,8 @@ class RunningServer {
   }
   ~RunningServer() { std::filesystem::remove_all(data_); }
   int http_port() const { return process_.port(); }
+  /// Its --data directory (the avatar store is DIR/avatars).
+  const std::filesystem::path& data() const { return data_; }
   int tcp_port() const { return tcp_port_; }
   int port(Transport t) const { return t == Transport::tcp ? tcp_port_ : http_port(); }
   ServerProcess& process() { return process_; }

@@ -16,7 +16,9 @@ namespace {
 using nlohmann::json;
 
 struct PackageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+  explicit PackageError(const std::string& what, PackageRefusal kind = PackageRefusal::damaged)
+      : std::runtime_error(what), refusal(kind) {}
+  PackageRefusal refusal;
 };
 
 std::uint32_t get_u32(std::span<const std::uint8_t> b, std::size_t at) {
@@ -47,7 +49,8 @@ void read_mesh(std::span<const std::uint8_t> b, AvatarPackage& package) {
   const std::size_t expected_count = generic_face().skin.positions.size();
   if (count != expected_count)
     throw PackageError("the fit has " + std::to_string(count) + " vertices but this build's generic face has " +
-                       std::to_string(expected_count) + "; prepare the avatar again with this version");
+                       std::to_string(expected_count) + "; prepare the avatar again with this version",
+                       PackageRefusal::other_generic_face);
   if (b.size() != 2 + 4 * (count + kLandmarkCount)) throw PackageError("the fit member has the wrong size");
   std::size_t at = 2;
   package.fitted_vertices.resize(count);
@@ -72,7 +75,8 @@ AvatarPackage read_package(std::span<const std::uint8_t> bytes) {
   package.version = bytes[4];
   if (package.version != kAvatarPackageVersion)
     throw PackageError("package version " + std::to_string(package.version) + " is not supported (this build reads " +
-                       std::to_string(kAvatarPackageVersion) + "); prepare the avatar again");
+                       std::to_string(kAvatarPackageVersion) + "); prepare the avatar again",
+                       PackageRefusal::other_format_version);
   const std::size_t manifest_size = get_u32(bytes, 8);
   if (manifest_size > kMaxManifestBytes || package_layout::kHeaderBytes + manifest_size > bytes.size())
     throw PackageError("the package is truncated or its manifest length is damaged");
@@ -85,7 +89,8 @@ AvatarPackage read_package(std::span<const std::uint8_t> bytes) {
   package.generic_face_version = manifest.at("generic_face_version").get<int>();
   if (package.generic_face_version != generic_face().version)
     throw PackageError("the avatar was fitted to generic face version " + std::to_string(package.generic_face_version) +
-                       ", this build has version " + std::to_string(generic_face().version) + "; prepare it again");
+                       ", this build has version " + std::to_string(generic_face().version) + "; prepare it again",
+                       PackageRefusal::other_generic_face);
   package.skin_tone = read_rgb(manifest, "skin_tone");
   package.iris_colour = read_rgb(manifest, "iris_colour");
   const json& rect = manifest.at("closed_lid_rect");
@@ -136,13 +141,21 @@ AvatarPackage read_package(std::span<const std::uint8_t> bytes) {
 }  // namespace
 
 bool parse_avatar_package(std::span<const std::uint8_t> bytes, AvatarPackage& package, std::string& error) {
+  PackageRefusal ignored = PackageRefusal::damaged;
+  return parse_avatar_package(bytes, package, error, ignored);
+}
+
+bool parse_avatar_package(std::span<const std::uint8_t> bytes, AvatarPackage& package, std::string& error,
+                          PackageRefusal& why) {
   try {
     package = read_package(bytes);
     return true;
   } catch (const PackageError& e) {
     error = std::string("bad avatar package: ") + e.what();
+    why = e.refusal;
   } catch (const json::exception& e) {
     error = std::string("bad avatar package: the manifest is malformed (") + e.what() + ")";
+    why = PackageRefusal::damaged;
   }
   return false;
 }

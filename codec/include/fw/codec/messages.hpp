@@ -218,6 +218,7 @@ enum class CloseCode : std::uint16_t {
   shutting_down = 9,        ///< the server drains
   bad_request = 10,         ///< a well-formed hello the server cannot serve (bad name, unknown avatar)
   server_full = 11,
+  avatar_being_prepared = 12,  ///< the hello's avatar is being prepared again for this server's version: try again soon
 };
 struct Closing {
   CloseCode code = CloseCode::normal;

@@ -67,6 +67,15 @@ struct AvatarPackage {
 /// Serialises a package (the inverse of parse_avatar_package).
 std::vector<std::uint8_t> serialize_avatar_package(const AvatarPackage& package);
 
+/// Why a package was refused. A package made for another package format or
+/// another generic face is sound, only out of date: whoever holds the photo
+/// it was made from can prepare it again. Anything else is damage.
+enum class PackageRefusal {
+  damaged,                ///< not a package, cut off, a checksum mismatch, malformed, unsound
+  other_format_version,   ///< the header's format version is not kAvatarPackageVersion
+  other_generic_face,     ///< the fit was made for another generic face than this build's
+};
+
 /// Parses and validates a package: header, sizes, checksums, manifest,
 /// every member present and of an allowed type, the fit matching the
 /// generic face this build carries and producing a sound mesh.
@@ -75,5 +84,8 @@ std::vector<std::uint8_t> serialize_avatar_package(const AvatarPackage& package)
 /// @param[out] error    what is wrong and what to do, on failure
 /// @return true on success
 bool parse_avatar_package(std::span<const std::uint8_t> bytes, AvatarPackage& package, std::string& error);
+/// The same, and on failure also `why` the package was refused.
+bool parse_avatar_package(std::span<const std::uint8_t> bytes, AvatarPackage& package, std::string& error,
+                          PackageRefusal& why);
 
 }  // namespace fw::model
