@@ -34,7 +34,7 @@ struct Ellipsoid {
 // The head as a union of simple solids, model units (one unit 63 mm).
 bool inside_head(glm::vec3 p) {
   static const Ellipsoid parts[] = {
-      {{0.0f, 0.45f, 0.2f}, {1.32f, 1.6f, 1.6f}},     // cranium and scalp: 200 mm long, 165 wide
+      {{0.0f, 0.45f, 0.2f}, {1.42f, 1.6f, 1.6f}},     // cranium and hair: 200 mm long, 180 wide
       {{0.0f, -0.8f, 0.35f}, {1.4f, 1.2f, 1.3f}},     // cheeks and jaw
       {{0.0f, -1.55f, 0.95f}, {0.85f, 0.65f, 0.65f}},  // chin and the floor of the mouth
       {{-1.3f, -0.25f, 0.05f}, {0.24f, 0.5f, 0.32f}},  // ears
