@@ -168,8 +168,11 @@ export async function startFacePreview(canvas, status) {
   const program = buildProgram(gl, vertexSource, fragmentSource);
   const uniform = (name) => gl.getUniformLocation(program, name);
   // Layers as the shader numbers them: 0 skin, 1 eyeball, 2 mouth cavity.
+  // The head shell shares the skin's texture and is drawn with it.
+  const skinTexture = uploadCanvas(gl, paintSkin(face, 512));
   const parts = [
-    { mesh: uploadMesh(gl, face.skin), texture: uploadCanvas(gl, paintSkin(face, 512)), specular: 0, layer: 0 },
+    { mesh: uploadMesh(gl, face.head.mesh), texture: skinTexture, specular: 0, layer: 0 },
+    { mesh: uploadMesh(gl, face.skin), texture: skinTexture, specular: 0, layer: 0 },
     { mesh: uploadMesh(gl, face.mouth_cavity), texture: uploadCanvas(gl, paintMouth()), specular: 0, layer: 2 },
     ...['right', 'left'].map((side) => ({
       mesh: uploadMesh(gl, face.eyes[side].mesh),

@@ -260,6 +260,48 @@ cv::Mat render_turned(const model::AvatarPackage& package, float yaw_deg) {
   return test::to_bgr(avatar.draw(render::FaceDraw{avatar.id, render::head_transform(pose), {}}));
 }
 
+// The head cut from its background: the astronaut's head, hair and neck cut
+// out with a generous ellipse onto a uniform saturated green. Her rendered
+// head's outline, frontal and turned, has no green in it.
+TEST_F(PrepareAvatarTest, NoBackgroundAtTheOutline) {
+  PrepError error;
+  const auto reference = prepare(test::encode(*original_), error);
+  ASSERT_TRUE(reference.has_value()) << error.message;
+  const auto& l = reference->report.photo_landmarks;
+  glm::vec2 right(0.0f), left(0.0f);
+  for (int i = 0; i < 6; ++i) right += l[36 + i] / 6.0f, left += l[42 + i] / 6.0f;
+  const float iod = glm::length(left - right);
+  const glm::vec2 centre = 0.5f * (left + right) + glm::vec2(0.0f, 0.35f * iod);
+  cv::Mat mask = cv::Mat::zeros(original_->size(), CV_8U);
+  cv::ellipse(mask, cv::Point(static_cast<int>(centre.x), static_cast<int>(centre.y)),
+              cv::Size(static_cast<int>(1.45f * iod), static_cast<int>(2.2f * iod)), 0, 0, 360, cv::Scalar(255), -1);
+  cv::Mat on_green(original_->size(), CV_8UC3, cv::Scalar(0, 210, 0));
+  original_->copyTo(on_green, mask);
+  const auto avatar = prepare(test::encode(on_green), error);
+  ASSERT_TRUE(avatar.has_value()) << error.message;
+
+  for (const float yaw : {0.0f, 45.0f}) {
+    SCOPED_TRACE("yaw " + std::to_string(yaw));
+    const cv::Mat image = render_turned(avatar->package, yaw);
+    // The outline: head pixels next to the grey background (as the
+    // renderer writes it: its corner).
+    const cv::Vec3b background = image.at<cv::Vec3b>(0, 0);
+    const auto is_background = [&](int x, int y) { return image.at<cv::Vec3b>(y, x) == background; };
+    int outline = 0, green = 0;
+    for (int y = 1; y + 1 < image.rows; ++y)
+      for (int x = 1; x + 1 < image.cols; ++x) {
+        if (is_background(x, y)) continue;
+        if (!is_background(x - 1, y) && !is_background(x + 1, y) && !is_background(x, y - 1) && !is_background(x, y + 1))
+          continue;
+        ++outline;
+        const cv::Vec3b c = image.at<cv::Vec3b>(y, x);  // BGR
+        if (c[1] > c[2] + 40 && c[1] > c[0] + 40) ++green;
+      }
+    EXPECT_GT(outline, 500) << "a head's outline";
+    EXPECT_EQ(green, 0) << "of " << outline << " outline pixels, " << green << " are the background's green";
+  }
+}
+
 TEST_F(PrepareAvatarTest, AcceptsAHeadTurned30DegreesAndRefusesOneTurnedAway) {
   PrepError error;
   const auto reference = prepare(test::encode(*original_), error);

@@ -260,3 +260,51 @@ TEST(FaceRendererCreate, RejectsImpossibleSizes) {
 
 }  // namespace
 }  // namespace fw::render
+
+namespace fw::render {
+namespace {
+
+// Background pixels the border cannot reach: holes inside the head.
+int enclosed_background(const RgbaImage& image) {
+  std::vector<std::uint8_t> reached(static_cast<std::size_t>(image.width * image.height), 0);
+  std::vector<glm::ivec2> stack;
+  for (int x = 0; x < image.width; ++x) stack.push_back({x, 0}), stack.push_back({x, image.height - 1});
+  for (int y = 0; y < image.height; ++y) stack.push_back({0, y}), stack.push_back({image.width - 1, y});
+  while (!stack.empty()) {
+    const glm::ivec2 p = stack.back();
+    stack.pop_back();
+    if (p.x < 0 || p.y < 0 || p.x >= image.width || p.y >= image.height) continue;
+    auto& seen = reached[static_cast<std::size_t>(p.y * image.width + p.x)];
+    if (seen || !is_background(image.at(p.x, p.y))) continue;
+    seen = 1;
+    stack.insert(stack.end(), {{p.x + 1, p.y}, {p.x - 1, p.y}, {p.x, p.y + 1}, {p.x, p.y - 1}});
+  }
+  int holes = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x)
+      if (is_background(image.at(x, y)) && !reached[static_cast<std::size_t>(y * image.width + x)]) ++holes;
+  return holes;
+}
+
+int head_pixels(const RgbaImage& image) {
+  int n = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) n += !is_background(image.at(x, y));
+  return n;
+}
+
+// Turned 60 degrees, the head shows its side, ear and back, not the edge of
+// a mask: it covers about as much of the image as facing the camera, and
+// its silhouette is solid (no background between the face and the shell).
+TEST_F(FaceRendererTest, ATurnedHeadIsAWholeHead) {
+  const RgbaImage frontal = render_one(natural_);
+  HeadPose pose;
+  pose.yaw_rad = glm::radians(60.0f);
+  const RgbaImage turned = render_one(natural_, pose);
+  EXPECT_GT(head_pixels(turned), 0.8 * head_pixels(frontal));
+  EXPECT_EQ(enclosed_background(frontal), 0);
+  EXPECT_EQ(enclosed_background(turned), 0);
+}
+
+}  // namespace
+}  // namespace fw::render

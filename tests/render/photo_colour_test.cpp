@@ -12,7 +12,7 @@
 namespace fw::render {
 namespace {
 
-constexpr int kImageSize = 256;
+constexpr int kImageSize = 256, kSmallImageSize = 96;
 
 float to_linear(std::uint8_t encoded) {
   const float v = encoded / 255.0f;
@@ -46,25 +46,34 @@ class PhotoColourTest : public ::testing::Test {
     options.width = options.height = kImageSize;
     renderer_ = FaceRenderer::create(options, error).release();
     ASSERT_NE(renderer_, nullptr) << error;
+    options.width = options.height = kSmallImageSize;
+    small_renderer_ = FaceRenderer::create(options, error).release();
+    ASSERT_NE(small_renderer_, nullptr) << error;
   }
-  static void TearDownTestSuite() { delete renderer_; }
+  static void TearDownTestSuite() {
+    delete renderer_;
+    delete small_renderer_;
+  }
 
-  static model::RgbaImage render(const AvatarAppearance& face, const codec::FaceParams& params = {}) {
-    const FaceId id = renderer_->add_face(face.avatar.face, face.textures);
+  static model::RgbaImage render(const AvatarAppearance& face, const codec::FaceParams& params = {},
+                                 FaceRenderer* renderer = renderer_) {
+    const FaceId id = renderer->add_face(face.avatar.face, face.textures);
     const model::FaceShape shape = model::reconstruct_face(face.avatar, params);
-    renderer_->set_face_shape(id, shape.positions, shape.uvs);
+    renderer->set_face_shape(id, shape.positions, shape.uvs);
     const FaceDraw draw = face_draw(id, params);
-    return renderer_->render({&draw, 1}, Camera::portrait(1.0f));
+    return renderer->render({&draw, 1}, Camera::portrait(1.0f));
   }
 
   // The pixel over a model-frame point of the face at rest.
-  static glm::ivec2 pixel(const AvatarAppearance& face, glm::vec2 p) {
+  static glm::ivec2 pixel(const AvatarAppearance& face, glm::vec2 p, int image_size = kImageSize) {
     const float z = face.avatar.face.skin.positions[face.avatar.face.landmark_vertices[30]].z;
-    const glm::vec3 px = project_to_pixel(Camera::portrait(1.0f), glm::vec3(p, z * 0.85f), kImageSize, kImageSize);
+    const glm::vec3 px = project_to_pixel(Camera::portrait(1.0f), glm::vec3(p, z * 0.85f), image_size, image_size);
     return {static_cast<int>(px.x), static_cast<int>(px.y)};
   }
 
   static inline FaceRenderer* renderer_ = nullptr;
+  // Small enough that the skin texture is shown several times smaller.
+  static inline FaceRenderer* small_renderer_ = nullptr;
 };
 
 // Forehead, both cheeks, chin: skin away from the eyes, lips and brows.
@@ -113,9 +122,9 @@ TEST_F(PhotoColourTest, TexturesAreFilteredAndWrittenInLinearLight) {
     return glm::u8vec3(v);
   });
   ASSERT_GE(face.textures.skin.width, 512) << "stripes must be finer than the pixels they land on";
-  const model::RgbaImage image = render(face);
+  const model::RgbaImage image = render(face, {}, small_renderer_);
   for (const glm::vec2 p : {glm::vec2(0.0f, 0.8f), glm::vec2(0.0f, -1.6f)}) {
-    const glm::ivec2 px = pixel(face, p);
+    const glm::ivec2 px = pixel(face, p, kSmallImageSize);
     EXPECT_NEAR(image.at(px.x, px.y)[1], 188, 14) << p.x << "," << p.y;
   }
 }

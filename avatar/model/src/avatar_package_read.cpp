@@ -101,6 +101,19 @@ AvatarPackage read_package(std::span<const std::uint8_t> bytes) {
     package.closed_lid_rect[i] = v;
   }
 
+  // Optional: a package without it gets the generic head's outline.
+  if (manifest.contains("head_outline")) {
+    const json& outline = manifest.at("head_outline");
+    if (!outline.is_array() || outline.size() != generic_face().head.outline.size())
+      throw PackageError("manifest.head_outline must be " + std::to_string(generic_face().head.outline.size()) +
+                         " radii");
+    for (const json& r : outline) {
+      const float radius = r.get<float>();
+      if (!(radius > 0.0f && radius < 8.0f)) throw PackageError("manifest.head_outline radii must lie in (0, 8)");
+      package.head_outline.push_back(radius);
+    }
+  }
+
   const json& members = manifest.at("members");
   if (!members.is_array() || members.size() > kMaxPackageMembers) throw PackageError("manifest.members is malformed");
   std::size_t at = package_layout::kHeaderBytes + manifest_size;

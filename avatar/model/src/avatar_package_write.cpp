@@ -59,6 +59,12 @@ std::vector<std::uint8_t> serialize_avatar_package(const AvatarPackage& package)
                            package.closed_lid_rect.w}},
       {"members", nlohmann::json::array()},
   };
+  // Millimetre-fine radii keep the manifest short (about 200 bytes for 32).
+  if (!package.head_outline.empty()) {
+    nlohmann::json outline = nlohmann::json::array();
+    for (const float r : package.head_outline) outline.push_back(std::round(r * 1000.0f) / 1000.0f);
+    manifest["head_outline"] = outline;
+  }
   // The eye layer is optional (a package without it is shown in non-masking mode).
   const auto present = [](const Member& m) { return m.name != "eye" || !m.bytes.empty(); };
   for (const Member& m : members)

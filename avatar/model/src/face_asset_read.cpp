@@ -145,6 +145,10 @@ GenericFace read_face(const json& root) {
   face.eyes[0] = read_eye(member(eyes, "right", "eyes"), "eyes.right");
   face.eyes[1] = read_eye(member(eyes, "left", "eyes"), "eyes.left");
   face.mouth_cavity = read_mesh(member(root, "mouth_cavity", "asset"), "mouth_cavity");
+  const json& head = member(root, "head", "asset");
+  face.head.centre = read_vec<2>(member(head, "centre", "head"), "head.centre");
+  for (const json& r : read_array(head, "outline", "head")) face.head.outline.push_back(read_float(r, "head.outline"));
+  face.head.mesh = read_mesh(member(head, "mesh", "head"), "head.mesh");
   read_action_units(read_array(root, "action_units", "asset"), face);
   return face;
 }

@@ -2,6 +2,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include <glm/geometric.hpp>
@@ -93,6 +94,33 @@ void check_holes(const GenericFace& face, std::vector<std::string>& problems) {
     problems.push_back("the mouth slit does not run through landmarks 60-67");
 }
 
+// The head shell must be closed: with coincident vertices welded (the back
+// pole is repeated for its texture seams), every edge is shared by exactly
+// two triangles, once in each direction. Anything else leaves a hole the
+// background shows through when the head turns.
+void check_head(const HeadShell& head, std::vector<std::string>& problems) {
+  if (head.outline.empty() || std::any_of(head.outline.begin(), head.outline.end(), [](float r) { return !(r > 0); }))
+    problems.push_back("the head's outline is empty or not positive");
+  std::map<std::tuple<float, float, float>, std::uint32_t> ids;
+  std::vector<std::uint32_t> welded;
+  for (const glm::vec3& p : head.mesh.positions)
+    welded.push_back(ids.emplace(std::tuple{p.x, p.y, p.z}, static_cast<std::uint32_t>(ids.size())).first->second);
+  std::set<std::pair<std::uint32_t, std::uint32_t>> directed;
+  for (const glm::uvec3& t : head.mesh.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const std::pair edge{welded[t[k]], welded[t[(k + 1) % 3]]};
+      if (edge.first == edge.second || !directed.insert(edge).second) {
+        problems.push_back("the head has a degenerate or non-manifold triangle");
+        return;
+      }
+    }
+  for (const auto& [a, b] : directed)
+    if (!directed.contains({b, a})) {
+      problems.push_back("the head is not closed (edge " + std::to_string(a) + "-" + std::to_string(b) + " is open)");
+      return;
+    }
+}
+
 }  // namespace
 
 std::vector<std::string> validate_generic_face(const GenericFace& face) {
@@ -100,6 +128,7 @@ std::vector<std::string> validate_generic_face(const GenericFace& face) {
   if (!(face.texture_frame.size > 0)) problems.push_back("texture_frame.size is not positive");
   check_layer(face.skin, "the skin", problems);
   check_layer(face.mouth_cavity, "the mouth cavity", problems);
+  check_layer(face.head.mesh, "the head", problems);
   for (int side = 0; side < 2; ++side) {
     const EyeLayer& eye = face.eyes[static_cast<std::size_t>(side)];
     const std::string name = side ? "the left eyeball" : "the right eyeball";
@@ -134,6 +163,7 @@ std::vector<std::string> validate_generic_face(const GenericFace& face) {
     }
   check_skin_triangles(face, problems);
   check_holes(face, problems);
+  check_head(face.head, problems);
   for (std::size_t c = 0; c < face.action_units.size(); ++c) {
     const Morph& m = face.action_units[c];
     const std::string name = "action unit " + std::to_string(codec::kAuChannels[c].au);

@@ -91,6 +91,12 @@ std::string serialize_face_asset(const GenericFace& face) {
   }
   out << "\n  },\n  \"mouth_cavity\": ";
   write_mesh(out, face.mouth_cavity, "  ");
+  out << ",\n  \"head\": {\"centre\": [" << number(face.head.centre.x) << ", " << number(face.head.centre.y)
+      << "],\n    \"outline\": [";
+  for (std::size_t i = 0; i < face.head.outline.size(); ++i) out << (i ? ", " : "") << number(face.head.outline[i]);
+  out << "],\n    \"mesh\": ";
+  write_mesh(out, face.head.mesh, "    ");
+  out << "}";
   // Action units: only the vertices a unit moves, as [vertex, dx, dy, dz, du, dv].
   out << ",\n  \"action_units\": [";
   for (std::size_t c = 0; c < face.action_units.size(); ++c) {

@@ -2,6 +2,8 @@
 
 #include <cassert>
 
+#include "fw/model/head_shell.hpp"
+
 namespace fw::model {
 namespace {
 
@@ -21,7 +23,8 @@ void shift_mesh(Mesh& mesh, glm::vec2 shift) {
 
 }  // namespace
 
-GenericFace fit_generic_face(const GenericFace& generic, std::span<const glm::vec2> fitted_xy) {
+GenericFace fit_generic_face(const GenericFace& generic, std::span<const glm::vec2> fitted_xy,
+                             std::span<const float> head_outline) {
   assert(fitted_xy.size() == generic.skin.positions.size());
   GenericFace face = generic;
   for (std::size_t v = 0; v < fitted_xy.size(); ++v) {
@@ -38,6 +41,7 @@ GenericFace fit_generic_face(const GenericFace& generic, std::span<const glm::ve
     shift_mesh(face.eyes[side].mesh, shift);
   }
   shift_mesh(face.mouth_cavity, mean_shift(generic, fitted_xy, landmarks::kOuterLipBegin, landmarks::kOuterLipEnd));
+  face.head = fit_head_shell(generic, fitted_xy, head_outline);
   return face;
 }
 

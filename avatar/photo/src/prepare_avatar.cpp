@@ -11,6 +11,8 @@
 #include "face_alignment.hpp"
 #include "face_finder.hpp"
 #include "head_pose_fit.hpp"
+#include "fill_beyond_matte.hpp"
+#include "head_matte.hpp"
 #include "image_conversion.hpp"
 #include "image_inspection.hpp"
 #include "mesh_fitting.hpp"
@@ -135,7 +137,16 @@ std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8
   const cv::Mat photo_texture = extract_texture(*photo, alignment, pose_fit, frame, size);
   const cv::Mat texture = neutralise_texture(photo_texture, frame, frontal, neutral);
   const auto eyes = eye_polygons_px(neutral, frame, size);
-  const cv::Mat face_texture = options.eye_layer ? with_eye_holes(texture, eyes) : texture;
+  // The person cut from the background: the matte is the texture's alpha,
+  // and what it leaves out takes the person's colours.
+  const cv::Mat matte = head_matte(texture, neutral, frame);
+  cv::Mat face_texture = fill_beyond_matte(texture, matte);
+  if (options.eye_layer) {
+    cv::Mat eye_alpha, alpha;
+    cv::extractChannel(with_eye_holes(texture, eyes), eye_alpha, 3);
+    cv::extractChannel(face_texture, alpha, 3);
+    cv::insertChannel(cv::min(alpha, eye_alpha), face_texture, 3);
+  }
   const ClosedLid lid = make_closed_lid(texture, eyes);
   const ThinPlateSpline& warp = fit.warp;
   const auto masks = model::render_region_masks([&](glm::vec2 p) { return warp(p); }, frame, kMaskSize);
@@ -143,6 +154,7 @@ std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8
   model::AvatarPackage& package = result.package;
   package.generic_face_version = generic.version;
   package.fitted_vertices = fit.fitted_xy;
+  package.head_outline = head_outline(matte, generic.head, frame);
   std::copy(neutral.begin(), neutral.end(), package.landmarks.begin());
   package.skin_tone = estimate_skin_tone(texture, masks, kMaskSize);
   package.iris_colour = sample_iris_colour(texture, eyes);

@@ -34,7 +34,7 @@ bool load_avatar_appearance(const model::AvatarPackage& package, AvatarAppearanc
       !decode(package.colour_masks_b, "colour_masks_b", t.masks_b))
     return false;
   t.closed_lid_rect = package.closed_lid_rect;
-  loaded.avatar = model::make_avatar_model(model::generic_face(), package.fitted_vertices);
+  loaded.avatar = model::make_avatar_model(model::generic_face(), package.fitted_vertices, package.head_outline);
   appearance = std::move(loaded);
   return true;
 }

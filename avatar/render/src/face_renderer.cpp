@@ -23,6 +23,7 @@ constexpr float kSkinSpecular = 0.0f, kEyeSpecular = 0.5f, kMouthSpecular = 0.0f
 
 struct GpuFace {
   GpuMesh skin, mouth;
+  GpuMesh head;  // the shell behind the face, in the skin's texture; moves only with the head pose
   GpuMesh eye_covers;  // non-masking mode only: the eye holes filled, on the skin's vertices
   bool eye_layer = true;
   std::array<GpuMesh, 2> eyes;
@@ -160,6 +161,7 @@ FaceId FaceRenderer::add_face(const model::GenericFace& face, const FaceTextures
   GpuFace gpu;
   gpu.skin = upload_mesh(face.skin);
   gpu.mouth = upload_mesh(face.mouth_cavity);
+  gpu.head = upload_mesh(face.head.mesh);
   for (std::size_t side = 0; side < 2; ++side) {
     gpu.eyes[side] = upload_mesh(face.eyes[side].mesh);
     gpu.eye_centres[side] = face.eyes[side].centre;
@@ -241,6 +243,7 @@ model::RgbaImage FaceRenderer::render(std::span<const FaceDraw> draws, const Cam
     glUniform4f(impl.uniforms.blush_a, draw.blush[0], draw.blush[1], draw.blush[2], draw.blush[3]);
     glUniform1f(impl.uniforms.blush_sides, draw.blush[4]);
     glUniform1f(impl.uniforms.pallor, draw.pallor);
+    impl.draw_mesh(face.head, face.skin_texture, draw.model, kSkinSpecular, kSkinLayer);
     impl.draw_mesh(face.skin, face.skin_texture, draw.model, kSkinSpecular, kSkinLayer);
     impl.draw_mesh(face.mouth, face.mouth_texture, draw.model, kMouthSpecular, kMouthLayer);
     if (!face.eye_layer) {

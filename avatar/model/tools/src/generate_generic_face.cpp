@@ -9,6 +9,7 @@
 #include "build_action_units.hpp"
 #include "eyeball.hpp"
 #include "face_points.hpp"
+#include "head_shell.hpp"
 #include "fw/model/depth_profile.hpp"
 #include "triangulate.hpp"
 
@@ -19,10 +20,10 @@ using model::GenericFace;
 using model::Mesh;
 namespace lm = model::landmarks;
 
-// The texture square: wide enough for the rim at the ears, tall enough for
-// the rim over the forehead and under the chin, with room for faces longer
-// or wider than the template once fitted.
-constexpr model::TextureFrame kTextureFrame{{-2.0f, -2.35f}, 4.0f};
+// The texture square: the whole head seen from the front, hair with some
+// volume over the crown, the ears, and the neck down to the collar, with room
+// for heads larger than the template once fitted.
+constexpr model::TextureFrame kTextureFrame{{-2.7f, -3.0f}, 5.4f};
 // How far the rim is pulled back beyond the depth profile: it is the turn of
 // the head toward the ears and the crown, seen only when the head turns.
 constexpr float kRimSetBack = 0.25f;
@@ -117,6 +118,7 @@ GenericFace generate_generic_face() {
   build_skin(face);
   build_eyes(face);
   build_mouth_cavity(face);
+  face.head = build_head_shell(face.skin, kTextureFrame);
   face.action_units = build_action_units(face);
   return face;
 }

@@ -17,9 +17,11 @@ struct AvatarModel {
   std::array<Morph, codec::kAuChannelCount> morphs;     ///< motion-cloned onto the fit
 };
 
-/// The generic face fitted by `fitted_xy` (#V of the generic skin) with its
-/// action units cloned onto the fit.
-AvatarModel make_avatar_model(const GenericFace& generic, std::span<const glm::vec2> fitted_xy);
+/// The generic face fitted by `fitted_xy` (#V of the generic skin) and, if
+/// given, the head's outline (fitted_face.hpp), with its action units cloned
+/// onto the fit.
+AvatarModel make_avatar_model(const GenericFace& generic, std::span<const glm::vec2> fitted_xy,
+                              std::span<const float> head_outline = {});
 
 /// The generic face itself, for faces without a photo.
 AvatarModel generic_avatar_model();

@@ -40,9 +40,14 @@ struct AvatarPackage {
   std::vector<glm::vec2> fitted_vertices;
   /// The person's 68 landmarks in the model frame (eye centres at (+-0.5, 0)).
   std::array<glm::vec2, kLandmarkCount> landmarks{};
+  /// The person's silhouette seen from the front, as the radius on each ray
+  /// of the generic head's outline (model units from its centre); empty for
+  /// the generic head's. See fw/model/head_shell.hpp.
+  std::vector<float> head_outline;
   std::array<std::uint8_t, 3> skin_tone{};   ///< sRGB, median of forehead and cheeks
   std::array<std::uint8_t, 3> iris_colour{}; ///< sRGB, sampled from the photo
-  /// Face texture over the generic face's texture frame, alpha 0 inside the eyes.
+  /// Face texture over the generic face's texture frame: alpha 0 inside the
+  /// eyes and outside the person's matte (the background), soft at its edge.
   PackageImage face_texture;
   /// Skin over the eyes for blinks: a crop of the face texture with the eye
   /// holes filled from the surrounding lids, placed at `closed_lid_rect`.

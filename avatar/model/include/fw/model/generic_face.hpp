@@ -17,7 +17,7 @@
 
 namespace fw::model {
 
-inline constexpr int kGenericFaceVersion = 3;
+inline constexpr int kGenericFaceVersion = 4;
 
 /// Named skin regions. Every skin triangle belongs to exactly one. The names
 /// (kFaceRegionNames) are what the asset file stores; the order is fixed.
@@ -57,6 +57,19 @@ struct EyeLayer {
   Mesh mesh;
 };
 
+/// The head behind the face: scalp, sides with ears, jaw and neck as one
+/// closed surface that the face mesh overlaps from the front. Seen from the
+/// front, its vertices lie on rays from `centre` at the angles 2 pi k / N of
+/// `outline`, whose radii are its silhouette; a fitted head scales each ray to
+/// the person's outline (fw/model/head_shell.hpp). Its uvs use the texture
+/// frame: by x and y where the photo sees it, and from just inside the
+/// silhouette on the same ray for the back, which the photo never sees.
+struct HeadShell {
+  glm::vec2 centre{0.0f};      ///< model xy the outline is measured from
+  std::vector<float> outline;  ///< N silhouette radii, counter-clockwise from +x
+  Mesh mesh;                   ///< closed, counter-clockwise seen from outside
+};
+
 struct GenericFace {
   int version = kGenericFaceVersion;
   TextureFrame texture_frame;
@@ -68,6 +81,7 @@ struct GenericFace {
   std::vector<std::uint32_t> mouth_slit;
   std::array<EyeLayer, 2> eyes;                             ///< indexed by Side
   Mesh mouth_cavity;                                        ///< drawn behind the mouth slit, uv [0,1]^2
+  HeadShell head;                                           ///< drawn with the skin and its texture
   /// The action-unit basis: one morph per FaceParams action-unit channel
   /// (codec::kAuChannels order), defined geometrically on this face.
   std::array<Morph, codec::kAuChannelCount> action_units;

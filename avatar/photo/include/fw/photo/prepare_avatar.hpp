@@ -31,7 +31,7 @@ namespace fw::photo {
 struct PrepOptions {
   int face_index = 0;      ///< which face, by size: 0 = the largest
   int quality = 80;        ///< WebP quality of the textures, 1..100
-  int texture_size = 256;  ///< face texture side in pixels, 128..512
+  int texture_size = 320;  ///< face texture side in pixels, 128..512 (the frame is 5.4 inter-ocular distances across)
   /// false: no eye layer (the non-masking mode): the face texture keeps the
   /// photo's eyes, which then cannot look around.
   bool eye_layer = true;

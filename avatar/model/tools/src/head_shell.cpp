@@ -1,0 +1,154 @@
+#include "head_shell.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <glm/geometric.hpp>
+
+#include "fw/model/depth_profile.hpp"
+#include "fw/model/head_shell.hpp"
+
+namespace fw::facegen {
+namespace {
+
+using model::HeadShell;
+
+constexpr float kPi = std::numbers::pi_v<float>;
+// Rays from the centre: N around the view axis (the outline's angles) by
+// kRaysFrontToBack steps from the front pole to the back one.
+constexpr int kRaysAround = 32;
+constexpr int kRaysFrontToBack = 14;
+// The point inside the head every ray starts from; its x and y are the
+// outline's centre.
+constexpr glm::vec3 kCentre(0.0f, -0.2f, 0.2f);
+
+struct Ellipsoid {
+  glm::vec3 centre, radii;
+  bool contains(glm::vec3 p) const {
+    const glm::vec3 d = (p - centre) / radii;
+    return glm::dot(d, d) <= 1.0f;
+  }
+};
+
+// The head as a union of simple solids, model units (one unit 63 mm).
+bool inside_head(glm::vec3 p) {
+  static const Ellipsoid parts[] = {
+      {{0.0f, 0.45f, 0.2f}, {1.42f, 1.6f, 1.6f}},     // cranium and hair: 200 mm long, 180 wide
+      {{0.0f, -0.8f, 0.35f}, {1.4f, 1.2f, 1.3f}},     // cheeks and jaw
+      {{0.0f, -1.55f, 0.95f}, {0.85f, 0.65f, 0.65f}},  // chin and the floor of the mouth
+      {{-1.3f, -0.25f, 0.05f}, {0.24f, 0.5f, 0.32f}},  // ears
+      {{1.3f, -0.25f, 0.05f}, {0.24f, 0.5f, 0.32f}},
+  };
+  for (const Ellipsoid& e : parts)
+    if (e.contains(p)) return true;
+  // The neck: an elliptic cylinder a little behind the head's middle, down
+  // out of any frame.
+  const glm::vec2 across(p.x / 0.82f, (p.z + 0.15f) / 0.85f);
+  return p.y < -0.6f && p.y > -4.6f && glm::dot(across, across) <= 1.0f;
+}
+
+// The farthest point of the head along a ray from the centre.
+float head_radius(glm::vec3 direction) {
+  constexpr float kFar = 5.5f, kStep = 0.01f;
+  float t = kFar;
+  while (t > 0 && !inside_head(kCentre + t * direction)) t -= kStep;
+  float inside = t, outside = t + kStep;
+  for (int i = 0; i < 20; ++i) {
+    const float middle = 0.5f * (inside + outside);
+    (inside_head(kCentre + middle * direction) ? inside : outside) = middle;
+  }
+  return inside;
+}
+
+// Within the face mesh's footprint the shell stays behind the face: 0.3 units
+// behind its surface under the rim (which is set back 0.25), much deeper
+// inside, so that neither the eyeballs nor the mouth cavity behind the face's
+// holes ever meet it. Beyond the rim the limit relaxes outward.
+float front_limit(glm::vec2 p) {
+  const glm::vec2 q(p.x / 1.38f, (p.y + 0.24f) / 1.84f);
+  const float e = glm::length(q);  // about 1 on the face's rim
+  const float deep = std::clamp((0.92f - e) / 0.22f, 0.0f, 1.0f);
+  const float beyond = std::max(0.0f, e - 1.15f);
+  return model::face_depth(p) - 0.3f - 1.0f * deep * deep * (3.0f - 2.0f * deep) + 2.0f * beyond;
+}
+
+glm::vec3 ray_direction(int ring, int segment) {
+  const float theta = kPi * static_cast<float>(ring) / kRaysFrontToBack;
+  const float phi = 2.0f * kPi * static_cast<float>(segment) / kRaysAround;
+  return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
+}
+
+}  // namespace
+
+HeadShell build_head_shell(const model::Mesh& skin, const model::TextureFrame& frame) {
+  HeadShell shell;
+  shell.centre = glm::vec2(kCentre);
+  model::Mesh& mesh = shell.mesh;
+
+  // Ring points of every segment, front to back (ring 0, the front pole, and
+  // ring kRaysFrontToBack, the back pole, are added separately).
+  std::vector<std::vector<glm::vec3>> rays(kRaysAround);
+  for (int s = 0; s < kRaysAround; ++s)
+    for (int ring = 1; ring < kRaysFrontToBack; ++ring) {
+      const glm::vec3 d = ray_direction(ring, s);
+      glm::vec3 p = kCentre + head_radius(d) * d;
+      p.z = std::min(p.z, front_limit(glm::vec2(p)));
+      rays[static_cast<std::size_t>(s)].push_back(p);
+    }
+
+  std::vector<glm::vec2> rim;
+  for (std::uint32_t v : model::face_rim_loop(skin)) rim.emplace_back(skin.positions[v]);
+
+  const auto front_pole_z = std::min(kCentre.z + head_radius({0, 0, 1}), front_limit(shell.centre));
+  mesh.positions.push_back({shell.centre, front_pole_z});
+  mesh.uvs.push_back(frame.to_uv(shell.centre));
+  for (int s = 0; s < kRaysAround; ++s) {
+    const auto& ray = rays[static_cast<std::size_t>(s)];
+    // The silhouette seen from the front: the ring point farthest out. The
+    // photo shows the ray from the face's rim up to it; the rest (behind the
+    // face, and the back) takes the ray's colour from nearer the centre.
+    std::size_t silhouette = 0;
+    for (std::size_t i = 0; i < ray.size(); ++i)
+      if (glm::length(glm::vec2(ray[i]) - shell.centre) > glm::length(glm::vec2(ray[silhouette]) - shell.centre))
+        silhouette = i;
+    const float radius = glm::length(glm::vec2(ray[silhouette]) - shell.centre);
+    shell.outline.push_back(radius);
+    const float phi = model::outline_ray_angle(static_cast<std::size_t>(s), kRaysAround);
+    const float rim_radius = model::ray_exit_radius(shell.centre, phi, rim);
+    const glm::vec2 unseen_colour = shell.centre + model::unseen_colour_radius(phi, rim_radius, radius) *
+                                                        glm::vec2(std::cos(phi), std::sin(phi));
+    for (std::size_t i = 0; i < ray.size(); ++i) {
+      const glm::vec2 p(ray[i]);
+      const bool seen = i <= silhouette && glm::length(p - shell.centre) >= rim_radius;
+      mesh.positions.push_back(ray[i]);
+      mesh.uvs.push_back(frame.to_uv(seen ? p : unseen_colour));
+    }
+  }
+  // The back pole once per segment, each copy with its segment's colour, so
+  // the back does not smear the face across the head (the copies coincide:
+  // the surface is closed though its texture has seams there).
+  const glm::vec3 back_pole = kCentre - head_radius({0, 0, -1}) * glm::vec3(0, 0, 1);
+  const std::uint32_t first_back_pole = static_cast<std::uint32_t>(mesh.positions.size());
+  for (int s = 0; s < kRaysAround; ++s) {
+    mesh.positions.push_back(back_pole);
+    mesh.uvs.push_back(mesh.uvs[static_cast<std::size_t>(1 + s * (kRaysFrontToBack - 1) + kRaysFrontToBack - 2)]);
+  }
+
+  const auto at = [](int ring, int s) {  // ring 1..kRaysFrontToBack-1
+    return static_cast<std::uint32_t>(1 + (s % kRaysAround) * (kRaysFrontToBack - 1) + (ring - 1));
+  };
+  // Counter-clockwise seen from outside: outward normals.
+  for (int s = 0; s < kRaysAround; ++s) {
+    mesh.triangles.emplace_back(0u, at(1, s), at(1, s + 1));
+    for (int ring = 1; ring + 1 < kRaysFrontToBack; ++ring) {
+      mesh.triangles.emplace_back(at(ring, s), at(ring + 1, s), at(ring + 1, s + 1));
+      mesh.triangles.emplace_back(at(ring, s), at(ring + 1, s + 1), at(ring, s + 1));
+    }
+    mesh.triangles.emplace_back(at(kRaysFrontToBack - 1, s), first_back_pole + static_cast<std::uint32_t>(s),
+                                at(kRaysFrontToBack - 1, s + 1));
+  }
+  return shell;
+}
+
+}  // namespace fw::facegen

@@ -1,0 +1,56 @@
+#include "fill_beyond_matte.hpp"
+
+#include <vector>
+
+#include <opencv2/imgproc.hpp>
+
+namespace fw::photo {
+namespace {
+
+// A texel is the person's own colour only well inside the soft edge.
+constexpr int kSolidAlpha = 250;
+
+}  // namespace
+
+cv::Mat fill_beyond_matte(const cv::Mat& texture, const cv::Mat& matte) {
+  cv::Mat colour, weight;
+  texture.convertTo(colour, CV_32FC3, 1.0 / 255);
+  cv::Mat solid = matte >= kSolidAlpha;
+  solid.convertTo(weight, CV_32F, 1.0 / 255);
+  cv::Mat weight3;
+  cv::merge(std::vector<cv::Mat>{weight, weight, weight}, weight3);
+  // Pull: weighted colour and weight averaged down the pyramid.
+  std::vector<cv::Mat> colours{colour.mul(weight3)}, weights{weight};
+  while (colours.back().cols > 2 && colours.back().rows > 2) {
+    cv::Mat c, w;
+    cv::pyrDown(colours.back(), c);
+    cv::pyrDown(weights.back(), w);
+    colours.push_back(c);
+    weights.push_back(w);
+  }
+  // Push: each level's holes filled from the level below it.
+  cv::Mat filled;
+  for (std::size_t l = colours.size(); l-- > 0;) {
+    cv::Mat w3;
+    cv::merge(std::vector<cv::Mat>{weights[l], weights[l], weights[l]}, w3);
+    cv::Mat normalised;
+    cv::divide(colours[l], cv::max(w3, 1e-6), normalised);
+    if (filled.empty()) {
+      filled = normalised;
+      continue;
+    }
+    cv::Mat up;
+    cv::pyrUp(filled, up, colours[l].size());
+    const cv::Mat trust = cv::min(w3 * 4.0, 1.0);  // enough weight nearby: the level's own average
+    filled = normalised.mul(trust) + up.mul(cv::Scalar::all(1.0) - trust);
+  }
+  cv::Mat filled_bgr;
+  filled.convertTo(filled_bgr, CV_8UC3, 255.0);
+  texture.copyTo(filled_bgr, solid);
+  cv::Mat bgra;
+  cv::cvtColor(filled_bgr, bgra, cv::COLOR_BGR2BGRA);
+  cv::insertChannel(matte, bgra, 3);
+  return bgra;
+}
+
+}  // namespace fw::photo
