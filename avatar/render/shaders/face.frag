@@ -45,8 +45,9 @@ vec3 vascular(vec3 linear_colour) {
   // The shade rises from 0 at a region's border; raised to 1.5 it also
   // leaves the border with zero slope, so no region shows an edge.
   vec4 b_raw = texture(u_masks_b, v_uv);
-  vec4 a = pow(texture(u_masks_a, v_uv), vec4(1.5));
-  vec4 b = pow(b_raw, vec4(1.5));
+  vec4 a_raw = texture(u_masks_a, v_uv);
+  vec4 a = a_raw * sqrt(a_raw);
+  vec4 b = b_raw * sqrt(b_raw);
   float blood = dot(a.rgb, u_blush_a.xyz) + b.r * u_blush_a.w + b.g * u_blush_sides;
   vec3 colour = linear_colour * exp(-kBloodAbsorption * kMaxBlood * blood);
   float luminance = dot(colour, vec3(0.2126, 0.7152, 0.0722));
@@ -84,7 +85,9 @@ void main() {
       texel.rgb = mix(texel.rgb, texture(u_closed_lid, lid_uv).rgb, cover);
       texel.a = max(texel.a, cover);
     }
-    texel.rgb = vascular(texel.rgb);
+    // Most frames carry no blood signal: skip its lookups and arithmetic.
+    if (any(greaterThan(u_blush_a, vec4(0.0))) || u_blush_sides > 0.0 || u_pallor > 0.0)
+      texel.rgb = vascular(texel.rgb);
   }
   // Alpha marks the holes (the eyes): the layer behind shows through. With
   // multisampling, alpha becomes the share of samples covered, so the eye's
@@ -100,7 +103,9 @@ void main() {
   vec3 colour = texel.rgb * relighting(n, rest);
   // A wet eye reflects the key light: the one highlight the photo cannot
   // hold, since the eye turns.
-  vec3 half_vector = normalize(normalize(u_light_direction) + normalize(u_camera_position - v_world));
-  colour += vec3(u_specular * pow(max(dot(n, half_vector), 0.0), 120.0));
+  if (u_specular > 0.0) {
+    vec3 half_vector = normalize(normalize(u_light_direction) + normalize(u_camera_position - v_world));
+    colour += vec3(u_specular * pow(max(dot(n, half_vector), 0.0), 120.0));
+  }
   o_colour = vec4(u_encode_srgb ? encode_srgb(colour) : colour, texel.a);
 }

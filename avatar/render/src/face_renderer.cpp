@@ -243,18 +243,21 @@ model::RgbaImage FaceRenderer::render(std::span<const FaceDraw> draws, const Cam
     glUniform4f(impl.uniforms.blush_a, draw.blush[0], draw.blush[1], draw.blush[2], draw.blush[3]);
     glUniform1f(impl.uniforms.blush_sides, draw.blush[4]);
     glUniform1f(impl.uniforms.pallor, draw.pallor);
-    impl.draw_mesh(face.head, face.skin_texture, draw.model, kSkinSpecular, kSkinLayer);
+    // Nearest first: what lies behind (the eyeballs, the mouth cavity, the
+    // head shell behind the face) then fails the depth test before it is
+    // shaded, which a software renderer feels.
     impl.draw_mesh(face.skin, face.skin_texture, draw.model, kSkinSpecular, kSkinLayer);
-    impl.draw_mesh(face.mouth, face.mouth_texture, draw.model, kMouthSpecular, kMouthLayer);
     if (!face.eye_layer) {
       impl.draw_mesh(face.eye_covers, face.skin_texture, draw.model, kSkinSpecular, kSkinLayer);
-      continue;
+    } else {
+      for (std::size_t side = 0; side < 2; ++side) {
+        const glm::vec2 yaw_pitch = draw.eye_yaw_pitch_rad[side];
+        const glm::mat4 eye_model = draw.model * eye_transform(face.eye_centres[side], yaw_pitch.x, yaw_pitch.y);
+        impl.draw_mesh(face.eyes[side], face.eye_texture, eye_model, kEyeSpecular, kEyeLayer);
+      }
     }
-    for (std::size_t side = 0; side < 2; ++side) {
-      const glm::vec2 yaw_pitch = draw.eye_yaw_pitch_rad[side];
-      const glm::mat4 eye_model = draw.model * eye_transform(face.eye_centres[side], yaw_pitch.x, yaw_pitch.y);
-      impl.draw_mesh(face.eyes[side], face.eye_texture, eye_model, kEyeSpecular, kEyeLayer);
-    }
+    impl.draw_mesh(face.mouth, face.mouth_texture, draw.model, kMouthSpecular, kMouthLayer);
+    impl.draw_mesh(face.head, face.skin_texture, draw.model, kSkinSpecular, kSkinLayer);
   }
   glBindVertexArray(0);
   glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
