@@ -79,7 +79,7 @@ void fit_camera(const std::array<glm::vec3, model::kLandmarkCount>& points, cons
     qp += cv::Vec2d(q.x, q.y) * pv.t();
   }
   to_scaled_rotation(qp * pp.inv(cv::DECOMP_SVD), pose.rotation, pose.scale);
-  pose.shift = glm::vec2(0.0f);
+  pose.shift = glm::vec2(0.0f);  // project() adds the shift: measure without it
   pose.shift = glm::vec2(mean_q) - pose.project(glm::vec3(mean_p));
 }
 

@@ -1,6 +1,7 @@
 #include "texture_extraction.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <vector>
 
