@@ -5,15 +5,12 @@
 #include <opencv2/imgproc.hpp>
 
 namespace fw::photo {
-namespace {
 
-glm::vec2 centre(const PhotoLandmarks& l, int begin, int end) {
+glm::vec2 landmark_centre(const PhotoLandmarks& l, int begin, int end) {
   glm::vec2 sum(0.0f);
   for (int i = begin; i < end; ++i) sum += l[static_cast<std::size_t>(i)];
   return sum / static_cast<float>(end - begin);
 }
-
-}  // namespace
 
 glm::vec2 Alignment::to_model(glm::vec2 px) const {
   const glm::vec2 d = (px - eye_midpoint_px) / inter_ocular_px;
@@ -30,8 +27,8 @@ glm::vec2 Alignment::to_photo(glm::vec2 m) const {
 
 Alignment align_by_eyes(const PhotoLandmarks& landmarks) {
   namespace lm = model::landmarks;
-  const glm::vec2 right = centre(landmarks, lm::kEyeRightBegin, lm::kEyeRightEnd);  // image left
-  const glm::vec2 left = centre(landmarks, lm::kEyeLeftBegin, lm::kEyeLeftEnd);
+  const glm::vec2 right = landmark_centre(landmarks, lm::kEyeRightBegin, lm::kEyeRightEnd);  // image left
+  const glm::vec2 left = landmark_centre(landmarks, lm::kEyeLeftBegin, lm::kEyeLeftEnd);
   Alignment a;
   a.eye_midpoint_px = 0.5f * (left + right);
   const glm::vec2 d = left - right;

@@ -21,6 +21,10 @@ struct Alignment {
 
 Alignment align_by_eyes(const PhotoLandmarks& landmarks);
 
+/// The mean of landmarks [begin, end), e.g. an eye's centre; in whatever
+/// frame the landmarks are (photo pixels or model units).
+glm::vec2 landmark_centre(const PhotoLandmarks& landmarks, int begin, int end);
+
 /// The photo at a resolution that a `size` x `size` texture over `frame`
 /// can sample bilinearly without aliasing (area-averaged when the texture
 /// would shrink it more than twofold), with the alignment scaled alike.

@@ -8,6 +8,7 @@
 #include <glm/matrix.hpp>
 #include <opencv2/core.hpp>
 
+#include "face_alignment.hpp"
 #include "fw/model/depth_profile.hpp"
 
 namespace fw::photo {
@@ -31,12 +32,6 @@ constexpr float kLongestStep = 0.25f;
 // From this turn on, the jaw line is the outline, not the jaw: its points
 // keep only their height, and the generic face's width.
 constexpr float kOutlineFromDeg = 20.0f;
-
-glm::vec2 eye_centre(const ModelLandmarks& l, int begin, int end) {
-  glm::vec2 sum(0.0f);
-  for (int i = begin; i < end; ++i) sum += l[static_cast<std::size_t>(i)];
-  return sum / static_cast<float>(end - begin);
-}
 
 // The nearest scaled rotation to an affine camera's 2x3 part.
 void to_scaled_rotation(const cv::Matx23d& affine, glm::mat3& rotation, float& scale) {
@@ -108,13 +103,6 @@ glm::vec3 PoseFit::surface(glm::vec2 frontal_point) const {
   return stretched_point(to_fit_frame(frontal_point), pose.height_mode);
 }
 
-glm::vec3 PoseFit::surface_normal(glm::vec2 frontal_point) const {
-  constexpr float h = 0.01f;
-  const glm::vec3 dx = surface(frontal_point + glm::vec2(h, 0)) - surface(frontal_point - glm::vec2(h, 0));
-  const glm::vec3 dy = surface(frontal_point + glm::vec2(0, h)) - surface(frontal_point - glm::vec2(0, h));
-  return glm::normalize(glm::cross(dx, dy));
-}
-
 PoseFit fit_head_pose(const model::GenericFace& generic, const ModelLandmarks& aligned) {
   PoseFit fit;
   HeadPose& pose = fit.pose;
@@ -152,8 +140,8 @@ PoseFit fit_head_pose(const model::GenericFace& generic, const ModelLandmarks& a
     frontal[i] = p + step;
   }
   // The model frame puts the frontal eye centres at (+-0.5, 0).
-  const glm::vec2 right = eye_centre(frontal, lm::kEyeRightBegin, lm::kEyeRightEnd);
-  const glm::vec2 left = eye_centre(frontal, lm::kEyeLeftBegin, lm::kEyeLeftEnd);
+  const glm::vec2 right = landmark_centre(frontal, lm::kEyeRightBegin, lm::kEyeRightEnd);
+  const glm::vec2 left = landmark_centre(frontal, lm::kEyeLeftBegin, lm::kEyeLeftEnd);
   const float length = std::max(1e-3f, glm::length(left - right));
   const glm::vec2 c = (left - right) / length;
   // Rotate by the eye line's angle back to level, and scale to one unit.

@@ -41,7 +41,6 @@ struct PoseFit {
   ModelLandmarks frontal{};
   /// The 3D point of the person's face behind a frontal model-frame point.
   glm::vec3 surface(glm::vec2 frontal_point) const;
-  glm::vec3 surface_normal(glm::vec2 frontal_point) const;
 
   // The frontal frame is the fit's own frame made to put the eye centres at
   // (+-0.5, 0): fit point = frontal_to_fit * (frontal point - frontal_origin).

@@ -5,6 +5,7 @@
 #include <limits>
 #include <vector>
 
+#include <glm/geometric.hpp>
 #include <opencv2/imgproc.hpp>
 
 namespace fw::photo {
@@ -29,18 +30,28 @@ cv::Mat extract_texture(const cv::Mat& full_photo, const Alignment& full_alignme
                         const model::TextureFrame& frame, int size) {
   const PhotoForSampling sampling = photo_for_sampling(full_photo, full_alignment, frame, size);
   const HeadPose& pose = fit.pose;
+  // The surface point behind each texel; its normal from the neighbours'.
+  std::vector<glm::vec3> points(static_cast<std::size_t>(size) * size);
+  const auto at = [&](int row, int col) -> glm::vec3& {
+    return points[static_cast<std::size_t>(std::clamp(row, 0, size - 1)) * size + std::clamp(col, 0, size - 1)];
+  };
+  for (int row = 0; row < size; ++row)
+    for (int col = 0; col < size; ++col)
+      at(row, col) = fit.surface(texture_px_to_model(cv::Point2f(float(col), float(row)), frame, size));
+
   cv::Mat map_x(size, size, CV_32F), map_y(size, size, CV_32F);
   cv::Mat seen(size, size, CV_32F), depth(size, size, CV_32F);
   std::vector<cv::Point2f> in_image(static_cast<std::size_t>(size) * size);
   for (int row = 0; row < size; ++row)
     for (int col = 0; col < size; ++col) {
-      const glm::vec2 p = texture_px_to_model(cv::Point2f(float(col), float(row)), frame, size);
-      const glm::vec3 point = fit.surface(p);
+      const glm::vec3 point = at(row, col);
       const glm::vec2 q = pose.project(point);
       const glm::vec2 px = sampling.alignment.to_photo(q);
       map_x.at<float>(row, col) = px.x;
       map_y.at<float>(row, col) = px.y;
-      const glm::vec3 normal = fit.surface_normal(p);
+      // Texture rows run down, the model's y up.
+      const glm::vec3 normal = glm::normalize(
+          glm::cross(at(row, col + 1) - at(row, col - 1), at(row - 1, col) - at(row + 1, col)));
       const float head_on = std::max(normal.z, 1e-3f);
       seen.at<float>(row, col) = smoothstep(kSeenFrom, kSeenFully, pose.facing(normal) / head_on);
       depth.at<float>(row, col) = (pose.rotation * point).z;
