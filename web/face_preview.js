@@ -24,6 +24,13 @@ function compile(gl, type, source) {
   return shader;
 }
 
+// The fragment shader's variants are chosen by defines after its #version
+// line (see the head of face.frag).
+function withDefines(source, defines) {
+  const lineEnd = source.indexOf('\n') + 1;
+  return source.slice(0, lineEnd) + defines.map((name) => `#define ${name}\n`).join('') + source.slice(lineEnd);
+}
+
 function buildProgram(gl, vertexSource, fragmentSource) {
   const program = gl.createProgram();
   gl.attachShader(program, compile(gl, gl.VERTEX_SHADER, vertexSource));
@@ -165,21 +172,23 @@ export async function startFacePreview(canvas, status) {
     fetchText('/shaders/face.vert'),
     fetchText('/shaders/face.frag'),
   ]);
-  const program = buildProgram(gl, vertexSource, fragmentSource);
-  const uniform = (name) => gl.getUniformLocation(program, name);
-  // Layers as the shader numbers them: 0 skin, 1 eyeball, 2 mouth cavity.
-  // The head shell shares the skin's texture and is drawn with it.
+  // The preview has no closed-lid skin or blood masks (lids open, colour
+  // unchanged), so the skin, the mouth and the head shell use the plain variant.
+  const plain = buildProgram(gl, vertexSource, fragmentSource);
+  const eye = buildProgram(gl, vertexSource, withDefines(fragmentSource, ['FW_SPECULAR']));
+  // The head shell shares the skin's texture; like the native renderer, the
+  // shell (closed wherever it shows, facing out) is drawn with culling.
   const skinTexture = uploadCanvas(gl, paintSkin(face, 512));
   const parts = [
-    { mesh: uploadMesh(gl, face.head.mesh), texture: skinTexture, specular: 0, layer: 0 },
-    { mesh: uploadMesh(gl, face.skin), texture: skinTexture, specular: 0, layer: 0 },
-    { mesh: uploadMesh(gl, face.mouth_cavity), texture: uploadCanvas(gl, paintMouth()), specular: 0, layer: 2 },
+    { mesh: uploadMesh(gl, face.skin), texture: skinTexture, program: plain, cull: false },
     ...['right', 'left'].map((side) => ({
       mesh: uploadMesh(gl, face.eyes[side].mesh),
       texture: uploadCanvas(gl, paintEye(face.eyes[side], 128)),
-      specular: 0.5,
-      layer: 1,
+      program: eye,
+      cull: false,
     })),
+    { mesh: uploadMesh(gl, face.mouth_cavity), texture: uploadCanvas(gl, paintMouth()), program: plain, cull: false },
+    { mesh: uploadMesh(gl, face.head.mesh), texture: skinTexture, program: plain, cull: true },
   ];
 
   // The camera and neck pivot of avatar/render's Camera::portrait and head_transform.
@@ -198,21 +207,20 @@ export async function startFacePreview(canvas, status) {
     gl.clearColor(0.13, 0.14, 0.17, 1);
     gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
     gl.enable(gl.DEPTH_TEST);
-    gl.useProgram(program);
-    gl.uniformMatrix4fv(uniform('u_view_projection'), false, viewProjection);
-    gl.uniformMatrix4fv(uniform('u_model'), false, model);
-    gl.uniform3fv(uniform('u_camera_position'), eyePosition);
-    gl.uniform3fv(uniform('u_light_direction'), [0.45, 0.6, 0.9]);
-    gl.uniform1i(uniform('u_texture'), 0);
-    // The canvas stores what it is given: the shader encodes to sRGB.
-    gl.uniform1i(uniform('u_encode_srgb'), 1);
     gl.enable(gl.SAMPLE_ALPHA_TO_COVERAGE);
-    gl.uniform1i(uniform('u_alpha_to_coverage'), 1);
-    // The preview has no closed-lid skin or blood masks: lids open, colour unchanged.
-    gl.uniform4f(uniform('u_closed_lid_rect'), -2, -2, -1, -1);
+    for (const program of [plain, eye]) {
+      const uniform = (name) => gl.getUniformLocation(program, name);
+      gl.useProgram(program);
+      gl.uniformMatrix4fv(uniform('u_view_projection'), false, viewProjection);
+      gl.uniform3fv(uniform('u_camera_position'), eyePosition);
+      gl.uniform3fv(uniform('u_light_direction'), [0.45, 0.6, 0.9]);
+      gl.uniform1i(uniform('u_texture'), 0);
+      gl.uniform1f(uniform('u_specular'), 0.5);
+    }
     for (const part of parts) {
-      gl.uniform1f(uniform('u_specular'), part.specular);
-      gl.uniform1i(uniform('u_layer'), part.layer);
+      gl.useProgram(part.program);
+      gl.uniformMatrix4fv(gl.getUniformLocation(part.program, 'u_model'), false, model);
+      if (part.cull) gl.enable(gl.CULL_FACE); else gl.disable(gl.CULL_FACE);
       gl.bindTexture(gl.TEXTURE_2D, part.texture);
       gl.bindVertexArray(part.mesh.vao);
       gl.drawElements(gl.TRIANGLES, part.mesh.count, gl.UNSIGNED_INT, 0);

@@ -1,13 +1,17 @@
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
+#include <span>
 #include <string>
 #include <tuple>
 #include <utility>
 
 #include <glm/geometric.hpp>
 
+#include "fw/model/depth_profile.hpp"
 #include "fw/model/face_asset.hpp"
+#include "fw/model/head_shell.hpp"
 
 namespace fw::model {
 namespace {
@@ -94,11 +98,23 @@ void check_holes(const GenericFace& face, std::vector<std::string>& problems) {
     problems.push_back("the mouth slit does not run through landmarks 60-67");
 }
 
-// The head shell must be closed: with coincident vertices welded (the back
-// pole is repeated for its texture seams), every edge is shared by exactly
-// two triangles, once in each direction. Anything else leaves a hole the
+// Whether `p` lies within the face's rim as seen from the front, and just
+// behind the face (not as far back as the back of the head): where the face
+// itself hides it from every view.
+bool behind_face(glm::vec3 p, glm::vec2 centre, std::span<const glm::vec2> rim) {
+  constexpr float kMaxDepthBehind = 1.6f;  // model units, 100 mm; the back of the head is further
+  const glm::vec2 d = glm::vec2(p) - centre;
+  const float depth = face_depth(glm::vec2(p));
+  return glm::length(d) < ray_exit_radius(centre, std::atan2(d.y, d.x), rim) && p.z < depth &&
+         p.z > depth - kMaxDepthBehind;
+}
+
+// The head shell must be closed wherever it can be seen: with coincident
+// vertices welded (the back pole is repeated for its texture seams), every
+// edge is shared by exactly two triangles, once in each direction, except
+// around an opening behind the face. Anything else leaves a hole the
 // background shows through when the head turns.
-void check_head(const HeadShell& head, std::vector<std::string>& problems) {
+void check_head(const HeadShell& head, const Mesh& skin, std::vector<std::string>& problems) {
   if (head.outline.empty() || std::any_of(head.outline.begin(), head.outline.end(), [](float r) { return !(r > 0); }))
     problems.push_back("the head's outline is empty or not positive");
   std::map<std::tuple<float, float, float>, std::uint32_t> ids;
@@ -114,9 +130,15 @@ void check_head(const HeadShell& head, std::vector<std::string>& problems) {
         return;
       }
     }
+  std::vector<glm::vec2> rim;
+  for (std::uint32_t v : face_rim_loop(skin)) rim.emplace_back(skin.positions[v]);
+  std::vector<glm::vec3> welded_positions(ids.size());
+  for (const auto& [p, id] : ids) welded_positions[id] = {std::get<0>(p), std::get<1>(p), std::get<2>(p)};
   for (const auto& [a, b] : directed)
-    if (!directed.contains({b, a})) {
-      problems.push_back("the head is not closed (edge " + std::to_string(a) + "-" + std::to_string(b) + " is open)");
+    if (!directed.contains({b, a}) && !(behind_face(welded_positions[a], head.centre, rim) &&
+                                        behind_face(welded_positions[b], head.centre, rim))) {
+      problems.push_back("the head is not closed (edge " + std::to_string(a) + "-" + std::to_string(b) +
+                         " is open where it can be seen)");
       return;
     }
 }
@@ -163,7 +185,7 @@ std::vector<std::string> validate_generic_face(const GenericFace& face) {
     }
   check_skin_triangles(face, problems);
   check_holes(face, problems);
-  check_head(face.head, problems);
+  check_head(face.head, face.skin, problems);
   for (std::size_t c = 0; c < face.action_units.size(); ++c) {
     const Morph& m = face.action_units[c];
     const std::string name = "action unit " + std::to_string(codec::kAuChannels[c].au);

@@ -1,11 +1,18 @@
 #version 300 es
-// The one fragment shader of facewire (see face.vert). u_layer picks the
-// part: the skin (eye holes, closed lids, blood colour), an eyeball, or the
-// mouth cavity.
+// The one fragment shader of facewire (see face.vert), compiled once per
+// kind of part with these defines inserted after the #version line:
+//   FW_CLOSED_LID  the skin: fades in the closed lids
+//   FW_BLOOD       the skin in a frame with blush or pallor
+//   FW_SPECULAR    an eyeball: a wet highlight
+//   FW_ALPHA_TEST  no multisampling: alpha under 0.5 is a hole
+// and none for the mouth cavity and the head shell. Variants rather than
+// branches on uniforms: a software rasteriser runs both sides of a branch
+// for every fragment, and a frame is mostly fragments.
 //
-// Colour is computed in linear light: colour textures are sRGB textures
-// (decoded on lookup) and the result is encoded to sRGB by the framebuffer,
-// or here when the target cannot (u_encode_srgb, a WebGL canvas).
+// Colour is computed in linear light (colour textures are sRGB textures,
+// decoded on lookup) and encoded to sRGB here, because both targets store
+// what they are given: a WebGL canvas cannot be sRGB, and natively an sRGB
+// framebuffer makes every multisampled fragment cost a quarter more.
 precision highp float;
 
 in vec3 v_normal;
@@ -13,23 +20,25 @@ in vec3 v_rest_normal;
 in vec2 v_uv;
 in vec3 v_world;
 
-uniform int u_layer;             // 0 skin, 1 eyeball, 2 mouth
 uniform sampler2D u_texture;
-uniform vec3 u_camera_position;
 uniform vec3 u_light_direction;  // toward the key light, world space
-uniform float u_specular;        // 0 for skin .. 1 for a wet eye
-uniform bool u_encode_srgb;      // the target stores what it is given
-uniform bool u_alpha_to_coverage;  // else alpha under 0.5 is discarded
 
-// Skin only.
+#ifdef FW_SPECULAR
+uniform vec3 u_camera_position;
+uniform float u_specular;        // 0 .. 1 for a wet eye
+#endif
+#ifdef FW_CLOSED_LID
 uniform sampler2D u_closed_lid;  // skin over the eyes, placed at u_closed_lid_rect
 uniform vec4 u_closed_lid_rect;  // u0, v0, u1, v1 of the skin texture
 uniform vec2 u_lid_closure;      // person's right, left: 0 open .. 1 closed
+#endif
+#ifdef FW_BLOOD
 uniform sampler2D u_masks_a;     // forehead, left cheek, right cheek (linear)
 uniform sampler2D u_masks_b;     // nose, sides, whole face (linear)
 uniform vec4 u_blush_a;          // forehead, left cheek, right cheek, nose: 0..1
 uniform float u_blush_sides;
 uniform float u_pallor;          // 0..1
+#endif
 
 out vec4 o_colour;
 
@@ -38,6 +47,7 @@ out vec4 o_colour;
 // red (Beer-Lambert, haemoglobin's absorption), so a blush reddens and
 // darkens a little, in proportion to each region's smooth Bezier shade;
 // less blood (pallor) drains the colour toward a lighter, cooler grey.
+#ifdef FW_BLOOD
 const vec3 kBloodAbsorption = vec3(0.18, 1.0, 0.82);
 const float kMaxBlood = 0.75;
 
@@ -54,6 +64,7 @@ vec3 vascular(vec3 linear_colour) {
   vec3 pale = vec3(luminance) * vec3(0.97, 1.0, 1.04) * 1.1;
   return mix(colour, pale, 0.65 * u_pallor * b_raw.b);
 }
+#endif
 
 // The photo already holds its own light. Only a change of the surface's
 // direction from the photo's (a turned head, a raised brow, a turned eye)
@@ -65,6 +76,8 @@ float relighting(vec3 n, vec3 rest) {
   return clamp(now / then, 0.45, 1.6);
 }
 
+// The multisample resolve then averages encoded values: an edge pixel comes
+// out a little darker than a linear average would make it, an accepted cost.
 vec3 encode_srgb(vec3 linear_colour) {
   vec3 c = clamp(linear_colour, 0.0, 1.0);
   return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
@@ -72,28 +85,30 @@ vec3 encode_srgb(vec3 linear_colour) {
 
 void main() {
   vec4 texel = texture(u_texture, v_uv);
-  if (u_layer == 0) {
-    // Closing lids: the skin that was over the eye in the photo fills the
-    // eye hole of the texture. Looked up at rest coordinates (v_uv), like
-    // the skin itself, so it moves with the lids and never lays the rest
-    // pose over a face that has moved (a brow raised during a blink).
-    vec2 lid_uv = (v_uv - u_closed_lid_rect.xy) / (u_closed_lid_rect.zw - u_closed_lid_rect.xy);
-    if (all(greaterThanEqual(lid_uv, vec2(0.0))) && all(lessThanEqual(lid_uv, vec2(1.0)))) {
-      float closure = v_uv.x < 0.5 ? u_lid_closure.x : u_lid_closure.y;
-      vec2 edge = min(lid_uv, vec2(1.0) - lid_uv);
-      float cover = closure * smoothstep(0.0, 0.12, min(edge.x, edge.y));
-      texel.rgb = mix(texel.rgb, texture(u_closed_lid, lid_uv).rgb, cover);
-      texel.a = max(texel.a, cover);
-    }
-    // Most frames carry no blood signal: skip its lookups and arithmetic.
-    if (any(greaterThan(u_blush_a, vec4(0.0))) || u_blush_sides > 0.0 || u_pallor > 0.0)
-      texel.rgb = vascular(texel.rgb);
+#ifdef FW_CLOSED_LID
+  // Closing lids: the skin that was over the eye in the photo fills the
+  // eye hole of the texture. Looked up at rest coordinates (v_uv), like
+  // the skin itself, so it moves with the lids and never lays the rest
+  // pose over a face that has moved (a brow raised during a blink).
+  vec2 lid_uv = (v_uv - u_closed_lid_rect.xy) / (u_closed_lid_rect.zw - u_closed_lid_rect.xy);
+  if (all(greaterThanEqual(lid_uv, vec2(0.0))) && all(lessThanEqual(lid_uv, vec2(1.0)))) {
+    float closure = v_uv.x < 0.5 ? u_lid_closure.x : u_lid_closure.y;
+    vec2 edge = min(lid_uv, vec2(1.0) - lid_uv);
+    float cover = closure * smoothstep(0.0, 0.12, min(edge.x, edge.y));
+    texel.rgb = mix(texel.rgb, texture(u_closed_lid, lid_uv).rgb, cover);
+    texel.a = max(texel.a, cover);
   }
-  // Alpha marks the holes (the eyes): the layer behind shows through. With
-  // multisampling, alpha becomes the share of samples covered, so the eye's
-  // outline is smooth instead of a stair of whole pixels.
-  if (!u_alpha_to_coverage && texel.a < 0.5) discard;
-  if (texel.a < 0.004) discard;
+#endif
+#ifdef FW_BLOOD
+  texel.rgb = vascular(texel.rgb);
+#endif
+  // Alpha marks the holes (the eyes) and the head's outline: what is behind
+  // shows through. With multisampling, alpha becomes the share of samples
+  // covered (alpha to coverage), so outlines are smooth instead of a stair
+  // of whole pixels.
+#ifdef FW_ALPHA_TEST
+  if (texel.a < 0.5) discard;
+#endif
   vec3 n = normalize(v_normal);
   vec3 rest = normalize(v_rest_normal);
   if (!gl_FrontFacing) {
@@ -101,11 +116,11 @@ void main() {
     rest = -rest;
   }
   vec3 colour = texel.rgb * relighting(n, rest);
+#ifdef FW_SPECULAR
   // A wet eye reflects the key light: the one highlight the photo cannot
   // hold, since the eye turns.
-  if (u_specular > 0.0) {
-    vec3 half_vector = normalize(normalize(u_light_direction) + normalize(u_camera_position - v_world));
-    colour += vec3(u_specular * pow(max(dot(n, half_vector), 0.0), 120.0));
-  }
-  o_colour = vec4(u_encode_srgb ? encode_srgb(colour) : colour, texel.a);
+  vec3 half_vector = normalize(normalize(u_light_direction) + normalize(u_camera_position - v_world));
+  colour += vec3(u_specular * pow(max(dot(n, half_vector), 0.0), 120.0));
+#endif
+  o_colour = vec4(encode_srgb(colour), texel.a);
 }

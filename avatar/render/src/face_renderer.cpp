@@ -8,6 +8,7 @@
 
 #include "fw/render/offscreen_context.hpp"
 #include "gpu_resources.hpp"
+#include "shader_variants.hpp"
 
 namespace fw::embedded {
 extern const std::string_view face_vert;  // shaders/face.vert
@@ -15,12 +16,9 @@ extern const std::string_view face_frag;  // shaders/face.frag
 }  // namespace fw::embedded
 
 namespace fw::render {
-namespace {
 
-constexpr int kMinSize = 16, kMaxSize = 4096;
-// Skin and mouth keep the photo's own light: no highlight of their own.
-constexpr float kSkinSpecular = 0.0f, kEyeSpecular = 0.5f, kMouthSpecular = 0.0f;
-
+// One face's GL resources. Outside the anonymous namespace: Impl, which has
+// linkage, holds them.
 struct GpuFace {
   GpuMesh skin, mouth;
   GpuMesh head;  // the shell behind the face, in the skin's texture; moves only with the head pose
@@ -33,14 +31,13 @@ struct GpuFace {
   glm::vec4 closed_lid_rect{0.0f};
 };
 
-// Where the uniforms of the one shader program live.
-struct Uniforms {
-  GLint model = -1, view_projection = -1, camera_position = -1, light_direction = -1, specular = -1, texture = -1;
-  GLint layer = -1, closed_lid = -1, closed_lid_rect = -1, lid_closure = -1, masks_a = -1, masks_b = -1,
-        blush_a = -1, blush_sides = -1, pallor = -1, encode_srgb = -1, alpha_to_coverage = -1;
-};
+namespace {
 
-enum Layer : GLint { kSkinLayer = 0, kEyeLayer = 1, kMouthLayer = 2 };
+constexpr int kMinSize = 16, kMaxSize = 4096;
+// Only the eye has a highlight of its own: the skin and the mouth keep the
+// photo's light.
+constexpr float kEyeSpecular = 0.5f;
+
 // Texture units: the part's own texture, then the skin's extra ones.
 enum Unit : GLint { kMainUnit = 0, kClosedLidUnit = 1, kMasksAUnit = 2, kMasksBUnit = 3 };
 
@@ -52,20 +49,12 @@ model::RgbaImage or_black(const model::RgbaImage& image) {
   return black;
 }
 
-glm::vec3 srgb_to_linear(glm::vec3 c) {
-  const auto channel = [](float v) {
-    return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
-  };
-  return {channel(c.r), channel(c.g), channel(c.b)};
-}
-
 }  // namespace
 
 struct FaceRenderer::Impl {
   RendererOptions options;
   std::unique_ptr<OffscreenContext> context;
-  Program program;
-  Uniforms uniforms;
+  std::array<ShaderVariant, kPartShaderCount> shaders;
   // Multisampled target drawn into, then resolved into a plain one to read.
   Framebuffer draw_framebuffer, resolve_framebuffer;
   Renderbuffer draw_colour, draw_depth, resolve_colour;
@@ -73,7 +62,12 @@ struct FaceRenderer::Impl {
   std::vector<GpuFace> faces;
 
   bool set_up_framebuffers(std::string& error);
-  void draw_mesh(const GpuMesh& mesh, const Texture& texture, const glm::mat4& model, float specular, Layer layer);
+  const ShaderUniforms& use(PartShader kind) {
+    glUseProgram(shaders[static_cast<std::size_t>(kind)].program.get());
+    return shaders[static_cast<std::size_t>(kind)].uniforms;
+  }
+  void set_frame_uniforms(const Camera& camera);
+  void draw_face(const GpuFace& face, const FaceDraw& draw);
 };
 
 bool FaceRenderer::Impl::set_up_framebuffers(std::string& error) {
@@ -84,9 +78,9 @@ bool FaceRenderer::Impl::set_up_framebuffers(std::string& error) {
 
   draw_colour = generate<Renderbuffer, glGenRenderbuffers>();
   glBindRenderbuffer(GL_RENDERBUFFER, draw_colour.get());
-  // sRGB targets: the shader works in linear light, the framebuffer
-  // encodes (GL_FRAMEBUFFER_SRGB) and multisamples resolve in linear light.
-  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_SRGB8_ALPHA8, w, h);
+  // Plain 8-bit targets: the shader encodes its linear light to sRGB (see
+  // face.frag on why not an sRGB framebuffer).
+  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_RGBA8, w, h);
   draw_depth = generate<Renderbuffer, glGenRenderbuffers>();
   glBindRenderbuffer(GL_RENDERBUFFER, draw_depth.get());
   glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, w, h);
@@ -100,7 +94,7 @@ bool FaceRenderer::Impl::set_up_framebuffers(std::string& error) {
   }
   resolve_colour = generate<Renderbuffer, glGenRenderbuffers>();
   glBindRenderbuffer(GL_RENDERBUFFER, resolve_colour.get());
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_SRGB8_ALPHA8, w, h);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, w, h);
   resolve_framebuffer = generate<Framebuffer, glGenFramebuffers>();
   glBindFramebuffer(GL_FRAMEBUFFER, resolve_framebuffer.get());
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, resolve_colour.get());
@@ -111,15 +105,73 @@ bool FaceRenderer::Impl::set_up_framebuffers(std::string& error) {
   return true;
 }
 
-void FaceRenderer::Impl::draw_mesh(const GpuMesh& mesh, const Texture& texture, const glm::mat4& model,
-                                   float specular, Layer layer) {
+namespace {
+
+void draw_mesh(const GpuMesh& mesh, const Texture& texture, const ShaderUniforms& uniforms, const glm::mat4& model) {
   glUniformMatrix4fv(uniforms.model, 1, GL_FALSE, glm::value_ptr(model));
-  glUniform1f(uniforms.specular, specular);
-  glUniform1i(uniforms.layer, layer);
   glActiveTexture(GL_TEXTURE0 + kMainUnit);
   glBindTexture(GL_TEXTURE_2D, texture.get());
   glBindVertexArray(mesh.vertex_array.get());
   glDrawElements(GL_TRIANGLES, mesh.index_count, GL_UNSIGNED_INT, nullptr);
+}
+
+void bind_texture(Unit unit, const Texture& texture) {
+  glActiveTexture(GL_TEXTURE0 + unit);
+  glBindTexture(GL_TEXTURE_2D, texture.get());
+}
+
+}  // namespace
+
+void FaceRenderer::Impl::set_frame_uniforms(const Camera& camera) {
+  const glm::vec3 light(0.45f, 0.6f, 0.9f);  // key light above and to the viewer's right
+  for (std::size_t i = 0; i < kPartShaderCount; ++i) {
+    const ShaderUniforms& u = use(static_cast<PartShader>(i));
+    glUniformMatrix4fv(u.view_projection, 1, GL_FALSE, glm::value_ptr(camera.view_projection()));
+    glUniform3fv(u.camera_position, 1, glm::value_ptr(camera.position));
+    glUniform3fv(u.light_direction, 1, glm::value_ptr(light));
+    glUniform1i(u.texture, kMainUnit);
+    glUniform1i(u.closed_lid, kClosedLidUnit);
+    glUniform1i(u.masks_a, kMasksAUnit);
+    glUniform1i(u.masks_b, kMasksBUnit);
+    glUniform1f(u.specular, kEyeSpecular);
+  }
+}
+
+void FaceRenderer::Impl::draw_face(const GpuFace& face, const FaceDraw& draw) {
+  // Nearest first: what lies behind (the eyeballs, the mouth cavity, the
+  // head shell behind the face) then fails the depth test before it is
+  // shaded, which a software renderer feels.
+  const bool blood = std::any_of(draw.blush.begin(), draw.blush.end(), [](float b) { return b > 0.0f; }) ||
+                     draw.pallor > 0.0f;
+  const ShaderUniforms& skin = use(blood ? PartShader::skin_with_blood : PartShader::skin);
+  bind_texture(kClosedLidUnit, face.closed_lid);
+  glUniform4fv(skin.closed_lid_rect, 1, glm::value_ptr(face.closed_lid_rect));
+  glUniform2fv(skin.lid_closure, 1, glm::value_ptr(draw.lid_closure));
+  if (blood) {
+    bind_texture(kMasksAUnit, face.masks_a);
+    bind_texture(kMasksBUnit, face.masks_b);
+    glUniform4f(skin.blush_a, draw.blush[0], draw.blush[1], draw.blush[2], draw.blush[3]);
+    glUniform1f(skin.blush_sides, draw.blush[4]);
+    glUniform1f(skin.pallor, draw.pallor);
+  }
+  draw_mesh(face.skin, face.skin_texture, skin, draw.model);
+  if (!face.eye_layer) {
+    draw_mesh(face.eye_covers, face.skin_texture, skin, draw.model);
+  } else {
+    const ShaderUniforms& eye = use(PartShader::eye);
+    for (std::size_t side = 0; side < 2; ++side) {
+      const glm::vec2 yaw_pitch = draw.eye_yaw_pitch_rad[side];
+      const glm::mat4 eye_model = draw.model * eye_transform(face.eye_centres[side], yaw_pitch.x, yaw_pitch.y);
+      draw_mesh(face.eyes[side], face.eye_texture, eye, eye_model);
+    }
+  }
+  const ShaderUniforms& plain = use(PartShader::plain);
+  draw_mesh(face.mouth, face.mouth_texture, plain, draw.model);
+  // The shell is closed wherever it can be seen, with its triangles facing
+  // out: its far side need not be drawn at all.
+  glEnable(GL_CULL_FACE);
+  draw_mesh(face.head, face.skin_texture, plain, draw.model);
+  glDisable(GL_CULL_FACE);
 }
 
 FaceRenderer::FaceRenderer() : impl_(std::make_unique<Impl>()) {}
@@ -142,17 +194,10 @@ std::unique_ptr<FaceRenderer> FaceRenderer::create(const RendererOptions& option
   impl.options = options;
   impl.context = OffscreenContext::create(error);
   if (!impl.context) return nullptr;
-  auto program = build_program(embedded::face_vert, embedded::face_frag, error);
-  if (!program) return nullptr;
-  impl.program = std::move(*program);
-  const GLuint p = impl.program.get();
-  const auto at = [p](const char* name) { return glGetUniformLocation(p, name); };
-  impl.uniforms = {at("u_model"),      at("u_view_projection"), at("u_camera_position"), at("u_light_direction"),
-                   at("u_specular"),   at("u_texture"),         at("u_layer"),           at("u_closed_lid"),
-                   at("u_closed_lid_rect"), at("u_lid_closure"), at("u_masks_a"),         at("u_masks_b"),
-                   at("u_blush_a"),     at("u_blush_sides"),     at("u_pallor"),          at("u_encode_srgb"),
-                   at("u_alpha_to_coverage")};
   if (!impl.set_up_framebuffers(error)) return nullptr;
+  auto shaders = build_part_shaders(embedded::face_vert, embedded::face_frag, impl.samples == 0, error);
+  if (!shaders) return nullptr;
+  impl.shaders = std::move(*shaders);
   return self;
 }
 
@@ -202,62 +247,26 @@ model::RgbaImage FaceRenderer::render(std::span<const FaceDraw> draws, const Cam
   const int w = impl.options.width, h = impl.options.height;
   glBindFramebuffer(GL_FRAMEBUFFER, impl.draw_framebuffer.get());
   glViewport(0, 0, w, h);
-  // The background is given in sRGB like any colour; the framebuffer encodes.
-  const glm::vec3 background = srgb_to_linear(impl.options.background);
-  glEnable(GL_FRAMEBUFFER_SRGB);
+  // Targets store what they are given, and the background is given in sRGB.
+  const glm::vec3 background = impl.options.background;
   glClearColor(background.r, background.g, background.b, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
-  glDisable(GL_CULL_FACE);  // a turned head shows the inside of its rim
-  // Soft edges of the eye holes as coverage; what is drawn stays opaque.
+  // Only the head shell is culled (draw_face): the skin is open, and a
+  // turned head shows the inside of its rim.
+  glCullFace(GL_BACK);
+  // Soft edges (the eye holes, the head's outline) as coverage; what is
+  // drawn stays opaque.
   const bool alpha_to_coverage = impl.samples > 0;
   if (alpha_to_coverage) {
     glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
     glEnable(GL_SAMPLE_ALPHA_TO_ONE);
   }
-
-  glUseProgram(impl.program.get());
-  glUniformMatrix4fv(impl.uniforms.view_projection, 1, GL_FALSE, glm::value_ptr(camera.view_projection()));
-  glUniform3fv(impl.uniforms.camera_position, 1, glm::value_ptr(camera.position));
-  const glm::vec3 light(0.45f, 0.6f, 0.9f);  // key light above and to the viewer's right
-  glUniform3fv(impl.uniforms.light_direction, 1, glm::value_ptr(light));
-  glUniform1i(impl.uniforms.texture, kMainUnit);
-  glUniform1i(impl.uniforms.encode_srgb, 0);
-  glUniform1i(impl.uniforms.alpha_to_coverage, alpha_to_coverage ? 1 : 0);
-  glUniform1i(impl.uniforms.closed_lid, kClosedLidUnit);
-  glUniform1i(impl.uniforms.masks_a, kMasksAUnit);
-  glUniform1i(impl.uniforms.masks_b, kMasksBUnit);
-
+  impl.set_frame_uniforms(camera);
   for (const FaceDraw& draw : draws) {
     if (draw.face >= impl.faces.size()) continue;  // an id from another renderer: nothing to draw
-    const GpuFace& face = impl.faces[draw.face];
-    glActiveTexture(GL_TEXTURE0 + kClosedLidUnit);
-    glBindTexture(GL_TEXTURE_2D, face.closed_lid.get());
-    glActiveTexture(GL_TEXTURE0 + kMasksAUnit);
-    glBindTexture(GL_TEXTURE_2D, face.masks_a.get());
-    glActiveTexture(GL_TEXTURE0 + kMasksBUnit);
-    glBindTexture(GL_TEXTURE_2D, face.masks_b.get());
-    glUniform4fv(impl.uniforms.closed_lid_rect, 1, glm::value_ptr(face.closed_lid_rect));
-    glUniform2fv(impl.uniforms.lid_closure, 1, glm::value_ptr(draw.lid_closure));
-    glUniform4f(impl.uniforms.blush_a, draw.blush[0], draw.blush[1], draw.blush[2], draw.blush[3]);
-    glUniform1f(impl.uniforms.blush_sides, draw.blush[4]);
-    glUniform1f(impl.uniforms.pallor, draw.pallor);
-    // Nearest first: what lies behind (the eyeballs, the mouth cavity, the
-    // head shell behind the face) then fails the depth test before it is
-    // shaded, which a software renderer feels.
-    impl.draw_mesh(face.skin, face.skin_texture, draw.model, kSkinSpecular, kSkinLayer);
-    if (!face.eye_layer) {
-      impl.draw_mesh(face.eye_covers, face.skin_texture, draw.model, kSkinSpecular, kSkinLayer);
-    } else {
-      for (std::size_t side = 0; side < 2; ++side) {
-        const glm::vec2 yaw_pitch = draw.eye_yaw_pitch_rad[side];
-        const glm::mat4 eye_model = draw.model * eye_transform(face.eye_centres[side], yaw_pitch.x, yaw_pitch.y);
-        impl.draw_mesh(face.eyes[side], face.eye_texture, eye_model, kEyeSpecular, kEyeLayer);
-      }
-    }
-    impl.draw_mesh(face.mouth, face.mouth_texture, draw.model, kMouthSpecular, kMouthLayer);
-    impl.draw_mesh(face.head, face.skin_texture, draw.model, kSkinSpecular, kSkinLayer);
+    impl.draw_face(impl.faces[draw.face], draw);
   }
   glBindVertexArray(0);
   glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <numbers>
 
 namespace fw::facegen {
@@ -50,15 +51,21 @@ float front_at(float off_axis) {
   return eyeball_profile(low) * std::cos(low);
 }
 
+// The rings of the cap, as angles from the front pole: close where the
+// cornea curves, wide behind the lids where little is ever seen. The iris
+// and pupil are in the texture, so the mesh needs only the shape; every
+// triangle costs a software renderer, sixteen eyes to a room's frame.
+constexpr float kRingAngles[] = {0.17f, 0.34f, 0.51f, 0.8f, 1.1f, 1.5f, 2.0f, kCapAngle};
+constexpr int kSegments = 16;
+
 // The front cap of the eyeball, in rings around the +z pole. The uv puts the
 // front pole at (0.5, 0.5) and the angle from it linearly at the uv radius.
 Mesh eyeball_mesh(glm::vec3 centre) {
-  constexpr int kRings = 20, kSegments = 24;
+  constexpr int kRings = static_cast<int>(std::size(kRingAngles));
   Mesh mesh;
   mesh.positions.push_back(centre + glm::vec3(0, 0, eyeball_profile(0.0f)));
   mesh.uvs.emplace_back(0.5f, 0.5f);
-  for (int ring = 1; ring <= kRings; ++ring) {
-    const float theta = kCapAngle * static_cast<float>(ring) / kRings;
+  for (const float theta : kRingAngles) {
     for (int s = 0; s < kSegments; ++s) {
       const float phi = 2.0f * std::numbers::pi_v<float> * static_cast<float>(s) / kSegments;
       const glm::vec3 direction(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));

@@ -19,8 +19,9 @@ constexpr float kPi = std::numbers::pi_v<float>;
 // kRaysFrontToBack steps from the front pole to the back one.
 constexpr int kRaysAround = 32;
 constexpr int kRaysFrontToBack = 14;
-// The point inside the head every ray starts from; its x and y are the
-// outline's centre.
+// The point every ray starts from; its x and y are the outline's centre.
+// It lies inside the shell's solid (behind the face's front limit), so that
+// every ray leaves the solid at a point of its own.
 constexpr glm::vec3 kCentre(0.0f, -0.2f, 0.2f);
 
 struct Ellipsoid {
@@ -48,29 +49,50 @@ bool inside_head(glm::vec3 p) {
   return p.y < -0.6f && p.y > -4.6f && glm::dot(across, across) <= 1.0f;
 }
 
-// The farthest point of the head along a ray from the centre.
-float head_radius(glm::vec3 direction) {
-  constexpr float kFar = 5.5f, kStep = 0.01f;
-  float t = kFar;
-  while (t > 0 && !inside_head(kCentre + t * direction)) t -= kStep;
-  float inside = t, outside = t + kStep;
-  for (int i = 0; i < 20; ++i) {
-    const float middle = 0.5f * (inside + outside);
-    (inside_head(kCentre + middle * direction) ? inside : outside) = middle;
-  }
-  return inside;
-}
+// Where the face's footprint (an ellipse about its rim, at 1) begins to be
+// deep, and where the shell is left open behind it.
+constexpr float kDeepFootprint = 0.92f, kHiddenFootprint = 0.9f;
 
 // Within the face mesh's footprint the shell stays behind the face: 0.3 units
 // behind its surface under the rim (which is set back 0.25), much deeper
 // inside, so that neither the eyeballs nor the mouth cavity behind the face's
-// holes ever meet it. Beyond the rim the limit relaxes outward.
+// holes ever meet it. Just beyond the rim the limit comes forward quickly,
+// so that the ears, beside a face whose depth falls away toward them, keep
+// their width.
 float front_limit(glm::vec2 p) {
   const glm::vec2 q(p.x / 1.38f, (p.y + 0.24f) / 1.84f);
   const float e = glm::length(q);  // about 1 on the face's rim
-  const float deep = std::clamp((0.92f - e) / 0.22f, 0.0f, 1.0f);
-  const float beyond = std::max(0.0f, e - 1.15f);
-  return model::face_depth(p) - 0.3f - 1.0f * deep * deep * (3.0f - 2.0f * deep) + 2.0f * beyond;
+  const float deep = std::clamp((kDeepFootprint - e) / 0.22f, 0.0f, 1.0f);
+  const float beyond = std::max(0.0f, e - 1.0f);
+  return model::face_depth(p) - 0.3f - 1.0f * deep * deep * (3.0f - 2.0f * deep) + 10.0f * beyond;
+}
+
+// The shell's solid: the head, cut back wherever it would come near the face.
+bool inside_shell(glm::vec3 p) { return inside_head(p) && p.z <= front_limit(glm::vec2(p)); }
+
+// The farthest point of the shell's solid along a ray from the centre. Every
+// vertex on its own ray keeps the surface star-shaped about the centre, so
+// its triangles all face outward: the renderer may cull the far side.
+float shell_radius(glm::vec3 direction) {
+  constexpr float kFar = 5.5f, kStep = 0.01f;
+  float t = kFar;
+  while (t > 0 && !inside_shell(kCentre + t * direction)) t -= kStep;
+  float inside = t, outside = t + kStep;
+  for (int i = 0; i < 20; ++i) {
+    const float middle = 0.5f * (inside + outside);
+    (inside_shell(kCentre + middle * direction) ? inside : outside) = middle;
+  }
+  return inside;
+}
+
+// Deep behind the face, where no view reaches past the face's skin, eyes
+// and mouth (but for a pixel through closed lips seen steeply from below):
+// the part of the shell cut flat by the front limit well inside the face's
+// footprint. The shell leaves it open, since a software renderer pays for
+// every sample even of what the depth test then hides.
+bool hidden_behind_face(glm::vec3 p) {
+  const bool on_the_cut = p.z > front_limit(glm::vec2(p)) - 0.01f;
+  return on_the_cut && glm::length(glm::vec2(p.x / 1.38f, (p.y + 0.24f) / 1.84f)) < kHiddenFootprint;
 }
 
 glm::vec3 ray_direction(int ring, int segment) {
@@ -92,16 +114,13 @@ HeadShell build_head_shell(const model::Mesh& skin, const model::TextureFrame& f
   for (int s = 0; s < kRaysAround; ++s)
     for (int ring = 1; ring < kRaysFrontToBack; ++ring) {
       const glm::vec3 d = ray_direction(ring, s);
-      glm::vec3 p = kCentre + head_radius(d) * d;
-      p.z = std::min(p.z, front_limit(glm::vec2(p)));
-      rays[static_cast<std::size_t>(s)].push_back(p);
+      rays[static_cast<std::size_t>(s)].push_back(kCentre + shell_radius(d) * d);
     }
 
   std::vector<glm::vec2> rim;
   for (std::uint32_t v : model::face_rim_loop(skin)) rim.emplace_back(skin.positions[v]);
 
-  const auto front_pole_z = std::min(kCentre.z + head_radius({0, 0, 1}), front_limit(shell.centre));
-  mesh.positions.push_back({shell.centre, front_pole_z});
+  mesh.positions.push_back(kCentre + shell_radius({0, 0, 1}) * glm::vec3(0, 0, 1));
   mesh.uvs.push_back(frame.to_uv(shell.centre));
   for (int s = 0; s < kRaysAround; ++s) {
     const auto& ray = rays[static_cast<std::size_t>(s)];
@@ -128,7 +147,7 @@ HeadShell build_head_shell(const model::Mesh& skin, const model::TextureFrame& f
   // The back pole once per segment, each copy with its segment's colour, so
   // the back does not smear the face across the head (the copies coincide:
   // the surface is closed though its texture has seams there).
-  const glm::vec3 back_pole = kCentre - head_radius({0, 0, -1}) * glm::vec3(0, 0, 1);
+  const glm::vec3 back_pole = kCentre - shell_radius({0, 0, -1}) * glm::vec3(0, 0, 1);
   const std::uint32_t first_back_pole = static_cast<std::uint32_t>(mesh.positions.size());
   for (int s = 0; s < kRaysAround; ++s) {
     mesh.positions.push_back(back_pole);
@@ -139,11 +158,15 @@ HeadShell build_head_shell(const model::Mesh& skin, const model::TextureFrame& f
     return static_cast<std::uint32_t>(1 + (s % kRaysAround) * (kRaysFrontToBack - 1) + (ring - 1));
   };
   // Counter-clockwise seen from outside: outward normals.
+  const auto add = [&mesh](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    const auto hidden = [&mesh](std::uint32_t v) { return hidden_behind_face(mesh.positions[v]); };
+    if (!(hidden(a) && hidden(b) && hidden(c))) mesh.triangles.emplace_back(a, b, c);
+  };
   for (int s = 0; s < kRaysAround; ++s) {
-    mesh.triangles.emplace_back(0u, at(1, s), at(1, s + 1));
+    add(0u, at(1, s), at(1, s + 1));
     for (int ring = 1; ring + 1 < kRaysFrontToBack; ++ring) {
-      mesh.triangles.emplace_back(at(ring, s), at(ring + 1, s), at(ring + 1, s + 1));
-      mesh.triangles.emplace_back(at(ring, s), at(ring + 1, s + 1), at(ring, s + 1));
+      add(at(ring, s), at(ring + 1, s), at(ring + 1, s + 1));
+      add(at(ring, s), at(ring + 1, s + 1), at(ring, s + 1));
     }
     mesh.triangles.emplace_back(at(kRaysFrontToBack - 1, s), first_back_pole + static_cast<std::uint32_t>(s),
                                 at(kRaysFrontToBack - 1, s + 1));

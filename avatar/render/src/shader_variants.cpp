@@ -1,0 +1,50 @@
+#include "shader_variants.hpp"
+
+#include <vector>
+
+#include "gpu_resources.hpp"
+
+namespace fw::render {
+
+std::string with_defines(std::string_view source, std::span<const std::string_view> defines) {
+  const std::size_t line_end = source.find('\n');
+  const std::size_t split = line_end == std::string_view::npos ? source.size() : line_end + 1;
+  std::string out(source.substr(0, split));
+  if (line_end == std::string_view::npos) out += '\n';
+  for (std::string_view name : defines) {
+    out += "#define ";
+    out += name;
+    out += '\n';
+  }
+  out += source.substr(split);
+  return out;
+}
+
+std::optional<std::array<ShaderVariant, kPartShaderCount>> build_part_shaders(std::string_view vertex_source,
+                                                                               std::string_view fragment_source,
+                                                                               bool alpha_test, std::string& error) {
+  std::array<ShaderVariant, kPartShaderCount> variants;
+  for (std::size_t i = 0; i < kPartShaderCount; ++i) {
+    std::vector<std::string_view> defines;
+    if (alpha_test) defines.push_back("FW_ALPHA_TEST");
+    switch (static_cast<PartShader>(i)) {
+      case PartShader::plain: break;
+      case PartShader::skin: defines.push_back("FW_CLOSED_LID"); break;
+      case PartShader::skin_with_blood: defines.insert(defines.end(), {"FW_CLOSED_LID", "FW_BLOOD"}); break;
+      case PartShader::eye: defines.push_back("FW_SPECULAR"); break;
+    }
+    auto program = build_program(vertex_source, with_defines(fragment_source, defines), error);
+    if (!program) return std::nullopt;
+    const GLuint p = program->get();
+    const auto at = [p](const char* name) { return glGetUniformLocation(p, name); };
+    variants[i].uniforms = {at("u_model"),      at("u_view_projection"), at("u_camera_position"),
+                            at("u_light_direction"), at("u_specular"), at("u_texture"),
+                            at("u_closed_lid"), at("u_closed_lid_rect"), at("u_lid_closure"),
+                            at("u_masks_a"),    at("u_masks_b"),         at("u_blush_a"),
+                            at("u_blush_sides"), at("u_pallor")};
+    variants[i].program = std::move(*program);
+  }
+  return variants;
+}
+
+}  // namespace fw::render

@@ -1,0 +1,39 @@
+#pragma once
+// The fragment shader's variants (see the head of shaders/face.frag): one
+// program per kind of part, and where each one's uniforms live.
+#include <array>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "gl_objects.hpp"
+
+namespace fw::render {
+
+enum class PartShader { plain, skin, skin_with_blood, eye };
+inline constexpr std::size_t kPartShaderCount = 4;
+
+/// `source` with a `#define NAME` line for each of `defines` after its first
+/// line (the #version line, which must stay first).
+std::string with_defines(std::string_view source, std::span<const std::string_view> defines);
+
+/// Where a program's uniforms are; -1 for those its variant does not have.
+struct ShaderUniforms {
+  GLint model = -1, view_projection = -1, camera_position = -1, light_direction = -1, specular = -1, texture = -1;
+  GLint closed_lid = -1, closed_lid_rect = -1, lid_closure = -1, masks_a = -1, masks_b = -1, blush_a = -1,
+        blush_sides = -1, pallor = -1;
+};
+
+struct ShaderVariant {
+  Program program;
+  ShaderUniforms uniforms;
+};
+
+/// Builds every variant; `alpha_test` (no multisampling) makes alpha under
+/// 0.5 a hole instead of partial coverage. nullopt and `error` on failure.
+std::optional<std::array<ShaderVariant, kPartShaderCount>> build_part_shaders(std::string_view vertex_source,
+                                                                               std::string_view fragment_source,
+                                                                               bool alpha_test, std::string& error);
+
+}  // namespace fw::render
