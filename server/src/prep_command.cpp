@@ -54,7 +54,8 @@ int prep(const PrepArgs& args) {
   const photo::PrepReport& r = avatar->report;
   std::cout << "wrote " << args.output << " (" << package.size() << " bytes): " << r.faces_found << " face(s) found, "
             << std::lround(r.inter_ocular_px) << " px between the eyes, eye line " << std::lround(r.roll_deg)
-            << " deg, head turned about " << std::lround(r.yaw_deg) << " deg\n";
+            << " deg, head turned about " << std::lround(r.yaw_deg) << " deg and tilted "
+            << std::lround(r.head_pitch_deg) << " deg\n";
   // The expression the photo showed, which the avatar's neutral face leaves out.
   std::string expression;
   for (std::size_t c = 0; c < codec::kAuChannelCount; ++c) {

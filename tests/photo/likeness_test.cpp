@@ -1,8 +1,10 @@
 // Likeness, as an independent observer sees it: dlib's 68 landmarks on each
-// avatar's neutral render against those on the photo it was made from,
-// after the similarity that best aligns them.
+// avatar's neutral render (in the head pose the photo shows) against those
+// on the photo it was made from, after the similarity that best aligns them.
 #include <algorithm>
 #include <complex>
+#include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +22,7 @@ namespace fw::photo {
 namespace {
 
 using Landmarks = std::array<glm::vec2, model::kLandmarkCount>;
+constexpr float kRadiansPerDegree = 3.14159265f / 180.0f;
 
 // The median distance between b's landmarks and a's after the similarity
 // (rotation, scale, shift) that takes a onto b best, in b's inter-ocular
@@ -59,7 +62,7 @@ class Likeness : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     people_ = new std::vector<Person>;
-    for (const std::string name : {"astronaut.png", "grace_hopper.jpg"}) {
+    for (const std::string name : {"astronaut.png", "grace_hopper.jpg", "kphotoalbum_jesper.jpg"}) {
       Person person{name};
       const cv::Mat photo = cv::imread(test::test_photo(name), cv::IMREAD_COLOR);
       ASSERT_FALSE(photo.empty()) << name;
@@ -67,9 +70,16 @@ class Likeness : public ::testing::Test {
       const auto avatar = test::shared_preparer().prepare(test::encode(photo), {}, error);
       ASSERT_TRUE(avatar.has_value()) << name << ": " << error.message;
       person.on_photo = avatar->report.photo_landmarks;
+      // The neutral face seen as the photo's camera saw the head: a
+      // similarity cannot undo a turn or a tilt, so a frontal render of a
+      // photo taken from a little above would differ from it by the pose,
+      // not by the person.
       test::RenderedAvatar rendered(avatar->package, 512, {0.5f, 0.5f, 0.5f});
-      const auto seen = test::shared_preparer().prepare(test::encode(test::to_bgr(rendered.draw(codec::FaceParams{}))),
-                                                        {}, error);
+      codec::FaceParams as_photographed;
+      as_photographed.head_yaw_rad = avatar->report.head_yaw_deg * kRadiansPerDegree;
+      as_photographed.head_pitch_rad = avatar->report.head_pitch_deg * kRadiansPerDegree;
+      const auto seen =
+          test::shared_preparer().prepare(test::encode(test::to_bgr(rendered.draw(as_photographed))), {}, error);
       ASSERT_TRUE(seen.has_value()) << "dlib finds no face on " << name << "'s avatar: " << error.message;
       person.on_avatar = seen->report.photo_landmarks;
       people_->push_back(person);
@@ -80,8 +90,11 @@ class Likeness : public ::testing::Test {
 };
 
 TEST_F(Likeness, EachAvatarsLandmarksFollowItsPhotosClosely) {
-  for (const Person& person : *people_)
-    EXPECT_LE(aligned_median_error(person.on_avatar, person.on_photo), 0.05f) << person.photo;
+  for (const Person& person : *people_) {
+    const float error = aligned_median_error(person.on_avatar, person.on_photo);
+    std::cout << person.photo << ": median landmark error " << error << " inter-ocular\n";
+    EXPECT_LE(error, 0.05f) << person.photo;
+  }
 }
 
 TEST_F(Likeness, EachAvatarIsCloserToItsOwnPhotoThanToAnyOther) {
@@ -94,31 +107,81 @@ TEST_F(Likeness, EachAvatarIsCloserToItsOwnPhotoThanToAnyOther) {
     }
 }
 
-TEST(TurnedHead, ItsPoseIsFoundAndItsFrontalAvatarMatchesTheFrontalOnes) {
-  // The astronaut's avatar turned 30 degrees each way and prepared again:
-  // the pose found is the one rendered, and the new avatar, frontal, shows
-  // the landmarks of the original avatar's frontal render.
-  PrepError error;
-  const auto original = test::shared_preparer().prepare(test::encode(test::load_astronaut()), {}, error);
-  ASSERT_TRUE(original.has_value()) << error.message;
-  test::RenderedAvatar avatar(original->package, 512, {0.5f, 0.5f, 0.5f});
-  const auto frontal = test::shared_preparer().prepare(test::encode(test::to_bgr(avatar.draw(codec::FaceParams{}))),
-                                                       {}, error);
-  ASSERT_TRUE(frontal.has_value()) << error.message;
-  for (const float yaw_deg : {30.0f, -30.0f}) {
-    codec::FaceParams turned;
-    turned.head_yaw_rad = yaw_deg / 57.29578f;
-    const auto again = test::shared_preparer().prepare(test::encode(test::to_bgr(avatar.draw(turned))), {}, error);
-    ASSERT_TRUE(again.has_value()) << yaw_deg << ": " << error.message;
-    // dlib on a perspective render reads a turn a few degrees larger than
-    // the orthographic fit assumes: about 5 degrees at 30.
-    EXPECT_NEAR(again->report.head_yaw_deg, yaw_deg, 8.0f);
+// The astronaut's avatar turned or tilted and prepared again: the pose found
+// is the one rendered, and the new avatar, frontal, shows the landmarks of
+// the original avatar's frontal render.
+class PosedHead : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    PrepError error;
+    const auto prepared = test::shared_preparer().prepare(test::encode(test::load_astronaut()), {}, error);
+    ASSERT_TRUE(prepared.has_value()) << error.message;
+    original_ = new model::AvatarPackage(prepared->package);
+    test::RenderedAvatar avatar(*original_, 512, {0.5f, 0.5f, 0.5f});
+    const auto frontal = test::shared_preparer().prepare(test::encode(test::to_bgr(avatar.draw(codec::FaceParams{}))),
+                                                         {}, error);
+    ASSERT_TRUE(frontal.has_value()) << error.message;
+    frontal_ = new Landmarks(frontal->report.photo_landmarks);
+  }
+  static void TearDownTestSuite() {
+    delete original_;
+    delete frontal_;
+  }
+
+  // Renders the avatar in `pose`, prepares the render, and returns what was
+  // found; the remade avatar's frontal landmarks go to `remade_frontal`.
+  static std::optional<PreparedAvatar> prepare_posed(const codec::FaceParams& pose, Landmarks& remade_frontal) {
+    PrepError error;
+    test::RenderedAvatar avatar(*original_, 512, {0.5f, 0.5f, 0.5f});
+    auto again = test::shared_preparer().prepare(test::encode(test::to_bgr(avatar.draw(pose))), {}, error);
+    EXPECT_TRUE(again.has_value()) << error.message;
+    if (!again) return again;
     test::RenderedAvatar remade(again->package, 512, {0.5f, 0.5f, 0.5f});
     const auto seen = test::shared_preparer().prepare(test::encode(test::to_bgr(remade.draw(codec::FaceParams{}))),
                                                       {}, error);
-    ASSERT_TRUE(seen.has_value()) << "dlib finds no face on the remade avatar: " << error.message;
-    EXPECT_LE(aligned_median_error(seen->report.photo_landmarks, frontal->report.photo_landmarks), 0.08f) << yaw_deg;
+    EXPECT_TRUE(seen.has_value()) << "dlib finds no face on the remade avatar: " << error.message;
+    if (seen) remade_frontal = seen->report.photo_landmarks;
+    return again;
   }
+  static inline model::AvatarPackage* original_ = nullptr;
+  static inline Landmarks* frontal_ = nullptr;
+};
+
+TEST_F(PosedHead, TurnedItsPoseIsFoundAndItsFrontalAvatarMatchesTheFrontalOnes) {
+  for (const float yaw_deg : {30.0f, -30.0f}) {
+    codec::FaceParams turned;
+    turned.head_yaw_rad = yaw_deg * kRadiansPerDegree;
+    Landmarks remade{};
+    const auto again = prepare_posed(turned, remade);
+    ASSERT_TRUE(again.has_value()) << yaw_deg;
+    // dlib on a perspective render reads a turn a few degrees larger than
+    // the orthographic fit assumes: about 5 degrees at 30.
+    EXPECT_NEAR(again->report.head_yaw_deg, yaw_deg, 8.0f);
+    EXPECT_LE(aligned_median_error(remade, *frontal_), 0.08f) << yaw_deg;
+  }
+}
+
+// Tilted back 20 degrees, the avatar made from it is the frontal one again.
+// At 30, past what dlib's detector finds, the second detector finds the face
+// and the fit reads the tilt; the avatar it makes is rough there (the
+// texture of a face seen from below), so only the finding is asserted.
+TEST_F(PosedHead, TiltedBackItIsFoundAndItsTiltTakenOut) {
+  codec::FaceParams tilted;
+  tilted.head_pitch_rad = 20.0f * kRadiansPerDegree;
+  Landmarks remade{};
+  const auto again = prepare_posed(tilted, remade);
+  ASSERT_TRUE(again.has_value());
+  EXPECT_NEAR(again->report.head_pitch_deg, 20.0f, 8.0f);
+  EXPECT_LE(aligned_median_error(remade, *frontal_), 0.08f);
+
+  tilted.head_pitch_rad = 30.0f * kRadiansPerDegree;
+  test::RenderedAvatar avatar(*original_, 512, {0.5f, 0.5f, 0.5f});
+  PrepError error;
+  const auto far = test::shared_preparer().prepare(test::encode(test::to_bgr(avatar.draw(tilted))), {}, error);
+  ASSERT_TRUE(far.has_value()) << error.message;
+  // The fit reads a tilt a little smaller: the shape predictor's landmarks
+  // on a face seen from below gather toward the middle.
+  EXPECT_NEAR(far->report.head_pitch_deg, 30.0f, 10.0f);
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
-// What makes a found face unusable, on landmarks made in code: turned past
-// the limit or not, any roll, eyes shut.
+// What makes a found face unusable, on landmarks made in code: turned or
+// tilted past the limit or not, any roll, eyes shut.
 #include "pose_checks.hpp"
 
 #include <cmath>
@@ -41,7 +41,9 @@ Face turned(float degrees) {
   return f;
 }
 
-std::optional<PrepError> check(const Face& f) { return check_face(f.box, f.photo, cv::Size(600, 600), f.model); }
+std::optional<PrepError> check(const Face& f, float pitch_deg = 0.0f) {
+  return check_face(f.box, f.photo, cv::Size(600, 600), f.model, pitch_deg);
+}
 
 TEST(PoseChecks, AFrontalFaceIsUsable) {
   const auto problem = check(template_face());
@@ -59,6 +61,22 @@ TEST(PoseChecks, TurnedUpTo35DegreesIsUsableAndFartherIsRefusedWithAdvice) {
     ASSERT_TRUE(problem.has_value()) << degrees;
     EXPECT_EQ(problem->code, PrepErrorCode::head_turned);
     EXPECT_NE(problem->message.find("use a photo facing the camera (within about 35 degrees)"), std::string::npos)
+        << problem->message;
+  }
+}
+
+TEST(PoseChecks, TiltedUpTo35DegreesIsUsableAndFartherIsRefusedWithAdvice) {
+  for (const float degrees : {-33.0f, -20.0f, 25.0f, 34.0f}) {
+    const auto problem = check(template_face(), degrees);
+    EXPECT_FALSE(problem.has_value()) << degrees << ": " << problem->message;
+  }
+  for (const auto& [degrees, words] : {std::pair{40.0f, "tilted back about 40 degrees"},
+                                       std::pair{-37.0f, "tilted down about 37 degrees"}}) {
+    const auto problem = check(template_face(), degrees);
+    ASSERT_TRUE(problem.has_value()) << degrees;
+    EXPECT_EQ(problem->code, PrepErrorCode::head_tilted);
+    EXPECT_NE(problem->message.find(words), std::string::npos) << problem->message;
+    EXPECT_NE(problem->message.find("level with the camera (within about 35 degrees)"), std::string::npos)
         << problem->message;
   }
 }

@@ -1,7 +1,8 @@
 #pragma once
 // Faces and their 68 landmarks in a photo, with dlib: the HOG frontal face
-// detector on a reduced copy (fast on large photos), the 68-point shape
-// predictor on the full-resolution image.
+// detector on a reduced copy (fast on large photos; OpenCV's face cascade
+// when it finds nothing), the 68-point shape predictor on the
+// full-resolution image.
 #include <array>
 #include <filesystem>
 #include <memory>
@@ -26,6 +27,7 @@ struct FoundFace {
   cv::Matx23d photo_to_view{1, 0, 0, 0, 1, 0};  ///< photo pixels to the detector's view
   cv::Rect view_box;             ///< the detector's box in that view
   double turn_deg = 0;           ///< how far the view is turned, counterclockwise
+  bool by_fallback = false;      ///< found by OpenCV's cascade, not dlib's detector
 };
 
 class FaceFinder {
@@ -38,7 +40,8 @@ class FaceFinder {
   /// as it is, then, unless it found a face there confidently, turned by 90,
   /// -90 and 180 degrees (a phone photo stored sideways or upside down) and
   /// by the odd multiples of 45 degrees (a head rolled far over), and keeps
-  /// the faces of the view with the most confident one. Not thread-safe:
+  /// the faces of the view with the most confident one. When no view shows
+  /// one, OpenCV's face cascade looks at the photo as it is. Not thread-safe:
   /// dlib's detector keeps scratch state.
   std::vector<FoundFace> detect(const cv::Mat& gray);
 
@@ -53,6 +56,9 @@ class FaceFinder {
   /// The detector's boxes in `view`, largest first, and the best one's
   /// confidence; boxes below kMinConfidence only when nothing scores higher.
   std::vector<cv::Rect> detect_in(const cv::Mat& view, double& best_confidence);
+  /// OpenCV's face cascade on the upright photo, its boxes framed like
+  /// dlib's, largest first: for when dlib's detector sees nothing.
+  std::vector<cv::Rect> detect_with_fallback(const cv::Mat& gray);
   PhotoLandmarks predict(const cv::Mat& gray, const cv::Matx23d& photo_to_patch, cv::Size size,
                          const cv::Rect2d& box) const;
   struct Impl;

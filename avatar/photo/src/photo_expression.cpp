@@ -19,7 +19,7 @@ namespace lm = model::landmarks;
 // The action units a casual photo shows, which its landmarks can tell:
 // inner and outer brow raiser, brow lowerer, cheek raiser, lip corner
 // puller (the smile), lip corner depressor, lips part, jaw drop.
-constexpr std::array<int, 8> kEstimatedUnits = {1, 2, 4, 6, 12, 15, 25, 26};
+constexpr std::array<int, 7> kEstimatedUnits = {1, 2, 4, 6, 12, 25, 26};
 // How strongly each unit is pulled toward 0 (squared model units): brows
 // sit high or low by nature, so their raisers need more evidence than a
 // mouth whose corners turn up.

@@ -36,7 +36,7 @@ float estimate_yaw_deg(const ModelLandmarks& l) {
 }
 
 std::optional<PrepError> check_face(const cv::Rect& box, const PhotoLandmarks& photo_landmarks, cv::Size photo_size,
-                                    const ModelLandmarks& landmarks) {
+                                    const ModelLandmarks& landmarks, float pitch_deg) {
   // Face width from ear to ear along the jaw line: the detector's box is
   // tighter than the face and varies with the detector.
   const glm::vec2 jaw = photo_landmarks[lm::kJawEnd - 1] - photo_landmarks[lm::kJawBegin];
@@ -61,14 +61,11 @@ std::optional<PrepError> check_face(const cv::Rect& box, const PhotoLandmarks& p
     return PrepError{PrepErrorCode::head_turned, "the head is turned about " + rounded(std::abs(yaw)) +
                                                      " degrees; use a photo facing the camera (within about " +
                                                      rounded(kMaxYawDeg) + " degrees)"};
-  // Pitch: the nose tip's height between the eyes and the chin (0.31 on the
-  // template) shrinks when the head tips back and grows when it bows.
-  const float eyes_to_chin = -landmarks[lm::kChin].y;
-  const float nose_share = eyes_to_chin > 0 ? -landmarks[lm::kNoseTip].y / eyes_to_chin : 0.0f;
-  if (nose_share < 0.18f || nose_share > 0.45f)
-    return PrepError{PrepErrorCode::head_tilted, std::string("the head is tilted ") +
-                                                     (nose_share < 0.18f ? "back" : "down") +
-                                                     " too far; use a photo with the face level with the camera"};
+  if (std::abs(pitch_deg) > kMaxPitchDeg)
+    return PrepError{PrepErrorCode::head_tilted, std::string("the head is tilted ") + (pitch_deg > 0 ? "back" : "down") +
+                                                     " about " + rounded(std::abs(pitch_deg)) +
+                                                     " degrees; use a photo with the face level with the camera (within "
+                                                     "about " + rounded(kMaxPitchDeg) + " degrees)"};
   if (opening(landmarks, lm::kEyeRightBegin) < 0.1f || opening(landmarks, lm::kEyeLeftBegin) < 0.1f)
     return PrepError{PrepErrorCode::eyes_closed, "the eyes are closed or nearly closed; use a photo with open eyes"};
   return std::nullopt;

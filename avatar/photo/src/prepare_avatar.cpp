@@ -29,6 +29,9 @@
 namespace fw::photo {
 namespace {
 
+// A face only the fallback detector finds is tilted back at least this far.
+constexpr float kMinFallbackPitchDeg = 12.0f;
+
 constexpr int kMaskSize = 64;     // vascular masks are smooth: 3.8 units over 64 px is plenty
 constexpr int kEyeTextureSize = 96;  // the iris about 20 px across: as sharp as a good photo's
 constexpr int kPreviewSize = 48;
@@ -83,10 +86,10 @@ std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8
   cv::cvtColor(*photo, gray, cv::COLOR_BGR2GRAY);
   const std::vector<FoundFace> faces = finder_->detect(gray);
   report.faces_found = static_cast<int>(faces.size());
-  if (faces.empty())
-    return fail(error, PrepErrorCode::no_face,
-                "no face found, even with the photo turned; take one facing the camera in good light, with the whole "
-                "face showing and at least about 100 px wide (a selfie at arm's length is right)");
+  const std::string no_face_advice =
+      "no face found, even with the photo turned; take one facing the camera in good light, with the whole face "
+      "showing and at least about 100 px wide (a selfie at arm's length is right)";
+  if (faces.empty()) return fail(error, PrepErrorCode::no_face, no_face_advice);
   if (options.face_index < 0 || options.face_index >= report.faces_found)
     return fail(error, PrepErrorCode::face_index_out_of_range,
                 "the photo has " + std::to_string(report.faces_found) + " face(s); the face index must be 0.." +
@@ -111,17 +114,21 @@ std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8
   report.inter_ocular_px = alignment.inter_ocular_px;
   report.roll_deg = alignment.roll_rad * 180.0f / std::numbers::pi_v<float>;
   report.yaw_deg = estimate_yaw_deg(landmarks);
-  if (auto problem = check_face(box, photo_landmarks, photo->size(), landmarks)) {
-    error = *problem;
-    return std::nullopt;
-  }
-
   const model::GenericFace& generic = model::generic_face();
   // The head as it would face the camera: its pose taken out of the
   // landmarks, and later out of the texture.
   const PoseFit pose_fit = fit_head_pose(generic, landmarks);
   report.head_yaw_deg = pose_fit.pose.yaw_deg;
   report.head_pitch_deg = pose_fit.pose.pitch_deg;
+  // Only the second detector saw this face, so it should be one tilted back
+  // past what dlib's detector knows. Landmarks that say it is level are the
+  // predictor lost on it, not a level face.
+  if (face.by_fallback && pose_fit.pose.pitch_deg < kMinFallbackPitchDeg)
+    return fail(error, PrepErrorCode::no_face, no_face_advice);
+  if (auto problem = check_face(box, photo_landmarks, photo->size(), landmarks, pose_fit.pose.pitch_deg)) {
+    error = *problem;
+    return std::nullopt;
+  }
   const ModelLandmarks& frontal = pose_fit.frontal;
   // The avatar is built on the person's neutral face: the physics adds every
   // expression to it, so a smile in the photo must not stay in the texture.

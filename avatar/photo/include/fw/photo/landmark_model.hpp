@@ -1,5 +1,6 @@
 #pragma once
-// Where dlib's 68-point shape predictor model is found.
+// Where dlib's 68-point shape predictor model, and OpenCV's face cascade
+// (the second detector), are found.
 #include <filesystem>
 #include <optional>
 
@@ -7,6 +8,10 @@ namespace fw::photo {
 
 /// Debian's libdlib-data installs the model here.
 inline constexpr const char* kDefaultLandmarkModel = "/usr/share/dlib/shape_predictor_68_face_landmarks.dat";
+
+/// Debian's opencv-data installs the cascade the finder falls back on when
+/// dlib's detector sees no face (a head tilted far back, mostly).
+inline constexpr const char* kFallbackFaceCascade = "/usr/share/opencv4/haarcascades/haarcascade_frontalface_alt2.xml";
 
 /// The model file to load: `configured` if given, else $FACEWIRE_LANDMARK_MODEL
 /// if set, else kDefaultLandmarkModel. nullopt if the chosen file is not a
