@@ -191,6 +191,8 @@ codec::MessageError RoomSession::dispatch(codec::MessageType type, std::span<con
     case MessageType::link_stats: return read_then(message, &RoomSession::on_link_stats);
     case MessageType::closing: return read_then(message, &RoomSession::on_closing);
     case MessageType::timed_room_frame: return read_then(message, &RoomSession::on_timed_room_frame);
+    case MessageType::seats: return read_then(message, &RoomSession::on_seats);
+    case MessageType::attention: return read_then(message, &RoomSession::on_attention);
     default: return codec::MessageError::wrong_type;  // an upstream message coming down
   }
 }
@@ -248,6 +250,16 @@ void RoomSession::on_chat(const codec::Chat& chat) {
   std::lock_guard lock(state_.mutex);
   const std::string name = state_.chat_line(chat);
   event(name + ": " + chat.text);
+}
+
+void RoomSession::on_seats(const codec::Seats& seats) {
+  std::lock_guard lock(state_.mutex);
+  state_.seats_changed(seats);
+}
+
+void RoomSession::on_attention(const codec::Attention& attention) {
+  std::lock_guard lock(state_.mutex);
+  state_.attention_changed(attention);
 }
 
 void RoomSession::on_command_result(const codec::CommandResult& result) {

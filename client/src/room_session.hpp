@@ -90,6 +90,8 @@ class RoomSession {
   void greet_once();
   void on_presence(const codec::Presence& presence);
   void on_chat(const codec::Chat& chat);
+  void on_seats(const codec::Seats& seats);
+  void on_attention(const codec::Attention& attention);
   void on_command_result(const codec::CommandResult& result);
   void on_package_chunk(const codec::PackageChunk& chunk);
   void on_pong(const codec::Pong& pong);

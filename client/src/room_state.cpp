@@ -35,6 +35,7 @@ void RoomState::welcomed(const codec::Welcome& welcome, const PackageBytes& own_
     avatar.info = info;
   }
   avatars = std::move(present);
+  attention.clear();  // the server sends everyone's after the welcome
   const auto own = avatars.find(welcome.you);
   if (own_package && own != avatars.end() && !own->second.package) {
     own->second.package = own_package;
@@ -52,9 +53,21 @@ void RoomState::avatar_joined(const codec::AvatarInfo& info) {
 std::string RoomState::avatar_left(std::uint32_t avatar) {
   std::string name = name_of(avatar);
   avatars.erase(avatar);
+  attention.erase(avatar);
   decoder.remove(avatar);
   record({"left", name, ""});
   return name;
+}
+
+void RoomState::seats_changed(const codec::Seats& seats) {
+  for (const codec::Seats::Entry& entry : seats.seats)
+    if (auto it = avatars.find(entry.avatar); it != avatars.end()) it->second.info.seat = entry.seat;
+}
+
+void RoomState::attention_changed(const codec::Attention& message) {
+  // An entry for an avatar that already left (the messages crossed) is dropped.
+  for (const codec::Attention::Entry& entry : message.entries)
+    if (avatars.count(entry.avatar)) attention[entry.avatar] = entry;
 }
 
 std::string RoomState::chat_line(const codec::Chat& chat) {

@@ -54,6 +54,8 @@ class RoomState {
   LinkStats stats;
   std::optional<codec::LinkStats> server_link;  ///< the server's last word on this link
   std::deque<RoomEventRecord> events;           ///< the last kMaxEvents
+  /// Whom each avatar's face attends (PROTOCOL.md 5.14), as the server last said.
+  std::map<std::uint32_t, codec::Attention::Entry> attention;
   /// Set when the client must stop: the server refused it for good (bad
   /// token, room full, ...), with what to do.
   std::optional<std::string> fatal_error;
@@ -89,6 +91,10 @@ class RoomState {
   void avatar_joined(const codec::AvatarInfo& info);
   /// Presence: an avatar left; its decoder goes with it. Returns its name.
   std::string avatar_left(std::uint32_t avatar);
+  /// The room was laid out again: the avatars' new seats.
+  void seats_changed(const codec::Seats& seats);
+  /// Faces whose attention changed.
+  void attention_changed(const codec::Attention& message);
   /// A chat line (recorded as an event). Returns the writer's name.
   std::string chat_line(const codec::Chat& chat);
   /// A whole package: the avatar's face from now on. False when it is

@@ -82,7 +82,7 @@ MessageError check_first_byte(ByteReader& r, std::size_t size, MessageType expec
   const std::uint8_t first = r.u8();
   if ((first & kSessionMessageBit) == 0) return MessageError::not_session_message;
   const std::uint8_t type = first & 0x7F;
-  if (type < static_cast<std::uint8_t>(MessageType::hello) || type > static_cast<std::uint8_t>(MessageType::timed_room_frame))
+  if (type < static_cast<std::uint8_t>(MessageType::hello) || type > static_cast<std::uint8_t>(kLastMessageType))
     return MessageError::unknown_type;
   if (type != static_cast<std::uint8_t>(expected)) return MessageError::wrong_type;
   return MessageError::ok;

@@ -11,7 +11,7 @@ MessageKind classify(std::span<const std::uint8_t> message) {
   if (first & kSessionMessageBit) {
     const std::uint8_t type = first & 0x7F;
     const bool known = type >= static_cast<std::uint8_t>(MessageType::hello) &&
-                       type <= static_cast<std::uint8_t>(MessageType::timed_room_frame);
+                       type <= static_cast<std::uint8_t>(kLastMessageType);
     return known ? MessageKind::session : MessageKind::invalid;
   }
   if ((first >> 4) != kFormatVersion) return MessageKind::invalid;

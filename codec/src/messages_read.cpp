@@ -27,6 +27,23 @@ std::uint32_t read_bounded(ByteReader& r, std::size_t max_varint_bytes, std::uin
   return value;
 }
 
+void read_seat(ByteReader& r, SeatInfo& seat, MessageError& error) {
+  seat.x_mm = r.i16_le();
+  seat.y_mm = r.i16_le();
+  seat.z_mm = r.i16_le();
+  const std::int16_t facing = r.i16_le();
+  if (!r.failed() && (facing > kMaxFacingTenThousandths || facing < -kMaxFacingTenThousandths))
+    fail(error, MessageError::value_out_of_range);
+  seat.facing_yaw_rad = static_cast<float>(facing) / 10000.0f;
+}
+
+/// A list's count; too_many_entries past kMaxWelcomeAvatars.
+std::uint32_t read_count(ByteReader& r, MessageError& error) {
+  const std::uint32_t count = r.varint(2);
+  if (!r.failed() && count > kMaxWelcomeAvatars) fail(error, MessageError::too_many_entries);
+  return count;
+}
+
 void read_avatar_info(ByteReader& r, AvatarInfo& a, MessageError& error) {
   a.id = read_bounded(r, 3, kMaxAvatarIdValue, error);
   const std::uint8_t flags = r.u8();
@@ -36,6 +53,7 @@ void read_avatar_info(ByteReader& r, AvatarInfo& a, MessageError& error) {
   read_string(r, kMaxAssetIdBytes, a.asset, error);
   a.preview_bytes = read_bounded(r, 4, kMaxPackageBytes, error);
   a.full_bytes = read_bounded(r, 4, kMaxPackageBytes, error);
+  read_seat(r, a.seat, error);
 }
 
 }  // namespace
@@ -76,9 +94,8 @@ MessageError read_message(std::span<const std::uint8_t> bytes, Welcome& m) {
   m.tick_hz = r.u8();
   if (!r.failed() && m.tick_hz == 0) fail(error, MessageError::value_out_of_range);
   m.max_bps = read_bounded(r, 4, kMaxBitsPerSecond, error);
-  const std::uint32_t count = r.varint(2);
+  const std::uint32_t count = read_count(r, error);
   m.avatars.clear();
-  if (!r.failed() && count > kMaxWelcomeAvatars) return error == MessageError::ok ? MessageError::too_many_entries : error;
   for (std::uint32_t i = 0; i < count && !r.failed() && error == MessageError::ok; ++i)
     read_avatar_info(r, m.avatars.emplace_back(), error);
   return finish(r, error);
@@ -238,6 +255,41 @@ MessageError read_message(std::span<const std::uint8_t> bytes, TimedRoomFrame& m
   if (r.remaining() == 0) return MessageError::truncated;
   m.room_frame = r.bytes(r.remaining());
   return MessageError::ok;
+}
+
+MessageError read_message(std::span<const std::uint8_t> bytes, Seats& m) {
+  ByteReader r(bytes);
+  if (auto e = check_first_byte(r, bytes.size(), MessageType::seats, kMaxDownstreamMessageBytes); e != MessageError::ok)
+    return e;
+  MessageError error = MessageError::ok;
+  const std::uint32_t count = read_count(r, error);
+  m.seats.clear();
+  for (std::uint32_t i = 0; i < count && !r.failed() && error == MessageError::ok; ++i) {
+    Seats::Entry& entry = m.seats.emplace_back();
+    entry.avatar = read_bounded(r, 3, kMaxAvatarIdValue, error);
+    read_seat(r, entry.seat, error);
+  }
+  return finish(r, error);
+}
+
+MessageError read_message(std::span<const std::uint8_t> bytes, Attention& m) {
+  ByteReader r(bytes);
+  if (auto e = check_first_byte(r, bytes.size(), MessageType::attention, kMaxDownstreamMessageBytes);
+      e != MessageError::ok)
+    return e;
+  MessageError error = MessageError::ok;
+  const std::uint32_t count = read_count(r, error);
+  m.entries.clear();
+  for (std::uint32_t i = 0; i < count && !r.failed() && error == MessageError::ok; ++i) {
+    Attention::Entry& entry = m.entries.emplace_back();
+    entry.avatar = read_bounded(r, 3, kMaxAvatarIdValue, error);
+    const std::uint8_t target = r.u8();
+    if (!r.failed() && target > static_cast<std::uint8_t>(AttentionTarget::avatar))
+      fail(error, MessageError::value_out_of_range);
+    entry.target = static_cast<AttentionTarget>(target);
+    entry.target_avatar = entry.target == AttentionTarget::avatar ? read_bounded(r, 3, kMaxAvatarIdValue, error) : 0;
+  }
+  return finish(r, error);
 }
 
 }  // namespace fw::codec

@@ -9,6 +9,19 @@ namespace {
 
 using namespace message_fields;
 
+// Whole millimetres and ten-thousandths of a radian, clamped to what an i16 holds.
+std::int16_t to_i16(float value, float scale, float limit) {
+  const float v = std::isfinite(value) ? std::fmin(limit, std::fmax(-limit, value * scale)) : 0.0f;
+  return static_cast<std::int16_t>(std::lround(v));
+}
+
+void write_seat(ByteWriter& w, const SeatInfo& seat) {
+  w.i16_le(to_i16(seat.x_mm, 1.0f, 32767.0f));
+  w.i16_le(to_i16(seat.y_mm, 1.0f, 32767.0f));
+  w.i16_le(to_i16(seat.z_mm, 1.0f, 32767.0f));
+  w.i16_le(to_i16(seat.facing_yaw_rad, 10000.0f, static_cast<float>(kMaxFacingTenThousandths)));
+}
+
 void write_avatar_info(ByteWriter& w, const AvatarInfo& a) {
   assert(a.id <= kMaxAvatarIdValue && a.name.size() <= kMaxDisplayNameBytes && a.asset.size() <= kMaxAssetIdBytes);
   assert(a.preview_bytes <= kMaxPackageBytes && a.full_bytes <= kMaxPackageBytes);
@@ -18,6 +31,7 @@ void write_avatar_info(ByteWriter& w, const AvatarInfo& a) {
   write_string(w, a.asset);
   w.varint(a.preview_bytes);
   w.varint(a.full_bytes);
+  write_seat(w, a.seat);
 }
 
 }  // namespace
@@ -159,6 +173,31 @@ void write_message(const TimedRoomFrame& m, std::vector<std::uint8_t>& out) {
   w.varint(m.tick);
   write_u64_le(w, m.server_time_us);
   w.bytes(m.room_frame);
+}
+
+void write_message(const Seats& m, std::vector<std::uint8_t>& out) {
+  assert(m.seats.size() <= kMaxWelcomeAvatars);
+  ByteWriter w(out);
+  w.u8(first_byte(MessageType::seats));
+  w.varint(static_cast<std::uint32_t>(m.seats.size()));
+  for (const Seats::Entry& e : m.seats) {
+    assert(e.avatar <= kMaxAvatarIdValue);
+    w.varint(e.avatar);
+    write_seat(w, e.seat);
+  }
+}
+
+void write_message(const Attention& m, std::vector<std::uint8_t>& out) {
+  assert(m.entries.size() <= kMaxWelcomeAvatars);
+  ByteWriter w(out);
+  w.u8(first_byte(MessageType::attention));
+  w.varint(static_cast<std::uint32_t>(m.entries.size()));
+  for (const Attention::Entry& e : m.entries) {
+    assert(e.avatar <= kMaxAvatarIdValue && e.target_avatar <= kMaxAvatarIdValue);
+    w.varint(e.avatar);
+    w.u8(static_cast<std::uint8_t>(e.target));
+    if (e.target == AttentionTarget::avatar) w.varint(e.target_avatar);
+  }
 }
 
 }  // namespace fw::codec

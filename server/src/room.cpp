@@ -123,18 +123,34 @@ void Room::do_join(JoinRequest request) {
   Member member;
   member.info = {id, request.name, request.avatar.asset,
                  static_cast<std::uint32_t>(request.avatar.preview ? request.avatar.preview->size() : 0),
-                 static_cast<std::uint32_t>(request.avatar.full ? request.avatar.full->size() : 0), person};
+                 static_cast<std::uint32_t>(request.avatar.full ? request.avatar.full->size() : 0), person,
+                 simulation_.seat(id)};
   member.avatar = request.avatar;
+  const SharedBytes moved = reseat();
   // Counted before anyone hears of the joiner: whoever reads the counts
   // after a welcome or a presence message finds the joiner in them.
   if (person) person_count_.fetch_add(1);
   avatar_count_.fetch_add(1);
   context_.metrics.avatars.fetch_add(1);
   introduce_to_others(member);
+  if (moved) broadcast(moved);
   if (person) {
     member.stream = welcome(member, request);
   }
   members_.emplace(id, std::move(member));
+  // The joiner hears everyone's attention; the others hear the joiner's.
+  const codec::Attention everyone = attention_now();
+  codec::Attention joiner;
+  for (const auto& entry : everyone.entries)
+    if (entry.avatar == id) joiner.entries.push_back(entry);
+  attention_sent_[id] = joiner.entries.front();
+  broadcast(encode_shared(joiner), id);
+  if (person) {
+    Member& seated = members_.at(id);
+    const auto bytes = encode_shared(everyone);
+    seated.stream->charge(bytes->size());
+    seated.stream->connection()->deliver(bytes);
+  }
   spdlog::info("room {}: {} joined as avatar {} ({})", name_, request.name, id, person ? "person" : "autonomous");
 }
 
@@ -197,6 +213,7 @@ void Room::do_leave(std::uint32_t avatar) {
   info.id = avatar;
   info.person = person;
   members_.erase(it);
+  attention_sent_.erase(avatar);
   simulation_.remove_avatar(avatar);
   avatar_count_.fetch_sub(1);
   context_.metrics.avatars.fetch_sub(1);
@@ -208,7 +225,43 @@ void Room::do_leave(std::uint32_t avatar) {
     member.stream->connection()->deliver(left);
     member.stream->charge(left->size());
   }
+  if (const SharedBytes moved = reseat()) broadcast(moved);
   if (person_count_.load() == 0 && !persistent_) context_.rooms->remove_if_empty(shared_from_this());
+}
+
+SharedBytes Room::reseat() {
+  bool moved = false;
+  codec::Seats seats;
+  for (auto& [id, member] : members_) {
+    const codec::SeatInfo seat = simulation_.seat(id);
+    moved = moved || !(seat == member.info.seat);
+    member.info.seat = seat;
+    if (seats.seats.size() < codec::kMaxWelcomeAvatars) seats.seats.push_back({id, seat});
+  }
+  if (!moved) return nullptr;
+  // The joiner, not yet a member, is in the layout too.
+  for (const std::uint32_t id : simulation_.avatars())
+    if (!members_.count(id) && seats.seats.size() < codec::kMaxWelcomeAvatars)
+      seats.seats.push_back({id, simulation_.seat(id)});
+  return encode_shared(seats);
+}
+
+codec::Attention Room::attention_now() const {
+  codec::Attention attention;
+  for (const auto& [id, member] : members_)
+    if (attention.entries.size() < codec::kMaxWelcomeAvatars) attention.entries.push_back(simulation_.attention(id));
+  return attention;
+}
+
+void Room::send_attention_changes() {
+  codec::Attention changed;
+  for (const auto& entry : attention_now().entries) {
+    codec::Attention::Entry& sent = attention_sent_[entry.avatar];
+    if (sent == entry) continue;
+    sent = entry;
+    changed.entries.push_back(entry);
+  }
+  if (!changed.entries.empty()) broadcast(encode_shared(changed));
 }
 
 void Room::broadcast(const SharedBytes& message, std::uint32_t except) {
@@ -260,6 +313,7 @@ void Room::on_tick() {
   const std::uint32_t tick = simulation_.tick_index();
   for (auto& [id, member] : members_)
     if (member.stream) member.stream->tick(tick, now_us, faces_);
+  send_attention_changes();
   context_.metrics.observe_tick(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
 }
 

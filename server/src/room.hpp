@@ -74,6 +74,13 @@ class Room : public std::enable_shared_from_this<Room> {
   /// The welcome to a person who joins, and the stream that follows it.
   std::unique_ptr<SubscriberStream> welcome(const Member& newcomer, const JoinRequest& request);
   void do_leave(std::uint32_t avatar);
+  /// Takes every member's seat from the simulation; a Seats message for
+  /// everyone when a seat already announced moved, else null.
+  SharedBytes reseat();
+  /// Everyone's attention now, and the message that says it.
+  codec::Attention attention_now() const;
+  /// After a tick: the attention that changed goes to everyone.
+  void send_attention_changes();
   void broadcast(const SharedBytes& message, std::uint32_t except = UINT32_MAX);
   std::chrono::microseconds tick_period() const;
   void schedule_tick();
@@ -87,6 +94,8 @@ class Room : public std::enable_shared_from_this<Room> {
   RoomSimulation simulation_;
   std::map<std::uint32_t, Member> members_;
   std::vector<AvatarFace> faces_;
+  /// Whom each face attended in the last Attention sent (PROTOCOL.md 5.14).
+  std::map<std::uint32_t, codec::Attention::Entry> attention_sent_;
   std::chrono::steady_clock::time_point next_tick_;
   std::size_t kinematic_faces_ = 0;  ///< this room's share of Metrics::kinematic_faces
   bool closed_ = false;

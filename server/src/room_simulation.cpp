@@ -228,6 +228,18 @@ const codec::FaceParams& RoomSimulation::face(AvatarId avatar) const {
   return it->second.face;
 }
 
+codec::SeatInfo RoomSimulation::seat(AvatarId avatar) const {
+  const behavior::Seat seat = state_->room.seat(avatar);
+  return {seat.origin_mm.x, seat.origin_mm.y, seat.origin_mm.z, seat.facing_yaw_rad};
+}
+
+codec::Attention::Entry RoomSimulation::attention(AvatarId avatar) const {
+  const behavior::BehaviorRoom& room = state_->room;
+  if (const auto target = room.attending(avatar)) return {avatar, codec::AttentionTarget::avatar, *target};
+  if (room.routine(avatar) == behavior::Routine::snubbing) return {avatar, codec::AttentionTarget::nobody, 0};
+  return {avatar, codec::AttentionTarget::room, 0};
+}
+
 bool RoomSimulation::resting(AvatarId avatar) const {
   const auto it = state_->avatars.find(avatar);
   return it != state_->avatars.end() && it->second.physics.resting;

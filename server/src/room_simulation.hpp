@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "fw/codec/face_params.hpp"
+#include "fw/codec/messages.hpp"
 
 namespace fw::server {
 
@@ -109,6 +110,11 @@ class RoomSimulation {
 
   /// The avatar's face after the last tick.
   const codec::FaceParams& face(AvatarId avatar) const;
+  /// Where the avatar sits (the layout changes as avatars join and leave).
+  codec::SeatInfo seat(AvatarId avatar) const;
+  /// Whom the avatar's face attends after the last tick: an avatar, the room
+  /// (searching it), or nobody (a snub: it looks away from everyone).
+  codec::Attention::Entry attention(AvatarId avatar) const;
   /// Whether the avatar's physics face sleeps (at rest, costs nothing).
   bool resting(AvatarId avatar) const;
 

@@ -43,7 +43,7 @@ TEST(Messages, HelloRoundTrips) {
 }
 
 TEST(Messages, HelloOfAnotherVersionIsRefusedBeforeItsFields) {
-  std::vector<std::uint8_t> bytes = {0x81, 0x02, 0x00, 0xFF};  // version 2, then bytes v1 would refuse
+  std::vector<std::uint8_t> bytes = {0x81, 0x01, 0x00, 0xFF};  // version 1, whose layout this reader does not know
   Hello back;
   EXPECT_EQ(read_message(bytes, back), MessageError::unsupported_version);
 }
@@ -53,7 +53,8 @@ TEST(Messages, WelcomeAndPresenceCarryAvatars) {
   welcome.you = 7;
   welcome.room = "lobby";
   welcome.max_bps = 12000;
-  welcome.avatars = {{0, "Ada", "abc", 1100, 40000, false}, {7, "Bo", "def", 0, 50000, true}};
+  welcome.avatars = {{0, "Ada", "abc", 1100, 40000, false, {-420.0f, 0.0f, 112.6f, 0.8726646f}},
+                     {7, "Bo", "def", 0, 50000, true, {}}};
   Welcome back;
   ASSERT_EQ(read_message(bytes_of(welcome), back), MessageError::ok);
   EXPECT_EQ(back.you, 7u);
@@ -62,12 +63,51 @@ TEST(Messages, WelcomeAndPresenceCarryAvatars) {
   EXPECT_FALSE(back.avatars[0].person);
   EXPECT_EQ(back.avatars[0].preview_bytes, 1100u);
   EXPECT_EQ(back.avatars[1].full_bytes, 50000u);
+  // Seats travel as whole millimetres and ten-thousandths of a radian.
+  EXPECT_EQ(back.avatars[0].seat.x_mm, -420.0f);
+  EXPECT_EQ(back.avatars[0].seat.z_mm, 113.0f);
+  EXPECT_NEAR(back.avatars[0].seat.facing_yaw_rad, 0.8726646f, 0.5e-4f);
+  EXPECT_EQ(back.avatars[1].seat, SeatInfo{});
 
   Presence left{Presence::Change::left, {7, "Bo", "", 0, 0, true}};
   Presence presence_back;
   ASSERT_EQ(read_message(bytes_of(left), presence_back), MessageError::ok);
   EXPECT_EQ(presence_back.change, Presence::Change::left);
   EXPECT_EQ(presence_back.avatar.id, 7u);
+}
+
+TEST(Messages, SeatsRoundTripAndRefuseAFacingPastPi) {
+  Seats seats;
+  seats.seats = {{1, {0.0f, 0.0f, 0.0f, 0.0f}}, {2, {300.0f, -5.0f, 90.0f, -3.14159f}}};
+  const auto bytes = bytes_of(seats);
+  EXPECT_EQ(bytes[0], 0x8E);
+  EXPECT_EQ(classify(bytes), MessageKind::session);
+  Seats back;
+  ASSERT_EQ(read_message(bytes, back), MessageError::ok);
+  ASSERT_EQ(back.seats.size(), 2u);
+  EXPECT_EQ(back.seats[1].avatar, 2u);
+  EXPECT_EQ(back.seats[1].seat.y_mm, -5.0f);
+  EXPECT_NEAR(back.seats[1].seat.facing_yaw_rad, -3.1416f, 1e-4f);
+  // 31417 ten-thousandths (0x7AB9) is past pi.
+  const std::vector<std::uint8_t> past_pi = {0x8E, 0x01, 0x01, 0, 0, 0, 0, 0, 0, 0xB9, 0x7A};
+  EXPECT_EQ(read_message(past_pi, back), MessageError::value_out_of_range);
+  std::vector<std::uint8_t> cut = bytes;
+  cut.pop_back();
+  EXPECT_EQ(read_message(cut, back), MessageError::truncated);
+}
+
+TEST(Messages, AttentionRoundTripsEveryTarget) {
+  Attention attention;
+  attention.entries = {{1, AttentionTarget::avatar, 2}, {2, AttentionTarget::room, 0}, {3, AttentionTarget::nobody, 0}};
+  const auto bytes = bytes_of(attention);
+  // Only an avatar target carries an id: 0x8F, count, (1, 2, 2), (2, 1), (3, 0).
+  EXPECT_EQ(bytes, (std::vector<std::uint8_t>{0x8F, 0x03, 0x01, 0x02, 0x02, 0x02, 0x01, 0x03, 0x00}));
+  Attention back;
+  ASSERT_EQ(read_message(bytes, back), MessageError::ok);
+  EXPECT_EQ(back.entries, attention.entries);
+  EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x8F, 0x01, 0x01, 0x03}, back), MessageError::value_out_of_range);
+  EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x8F, 0x41}, back), MessageError::too_many_entries);
+  EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x8F, 0x01, 0x01, 0x01, 0x00}, back), MessageError::trailing_bytes);
 }
 
 TEST(Messages, CommandsOfEveryKindRoundTrip) {
@@ -199,15 +239,17 @@ TEST(Messages, EveryReaderSurvivesRandomBytes) {
   for (int i = 0; i < 20000; ++i) {
     bytes.resize(rng() % 64);
     for (auto& b : bytes) b = static_cast<std::uint8_t>(rng());
-    if (!bytes.empty()) bytes[0] = static_cast<std::uint8_t>(0x80 | (1 + rng() % 13));
+    if (!bytes.empty()) bytes[0] = static_cast<std::uint8_t>(0x80 | (1 + rng() % 15));
     Hello a; Welcome b; Presence c; Chat d; Command e; CommandResult f; PackageChunk g;
-    SetRate h; Ping k; Pong l; LinkStats m; Closing n; TimedRoomFrame o;
+    SetRate h; Ping k; Pong l; LinkStats m; Closing n; TimedRoomFrame o; Seats p; Attention q;
     (void)read_message(bytes, a); (void)read_message(bytes, b); (void)read_message(bytes, c);
     (void)read_message(bytes, d); (void)read_message(bytes, e); (void)read_message(bytes, f);
     (void)read_message(bytes, g); (void)read_message(bytes, h); (void)read_message(bytes, k);
     (void)read_message(bytes, l); (void)read_message(bytes, m); (void)read_message(bytes, n);
-    (void)read_message(bytes, o);
+    (void)read_message(bytes, o); (void)read_message(bytes, p); (void)read_message(bytes, q);
     EXPECT_LE(b.avatars.size(), kMaxWelcomeAvatars);
+    EXPECT_LE(p.seats.size(), kMaxWelcomeAvatars);
+    EXPECT_LE(q.entries.size(), kMaxWelcomeAvatars);
   }
 }
 

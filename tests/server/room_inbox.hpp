@@ -1,6 +1,6 @@
 #pragma once
 // What a room-protocol client received, filed by kind: welcome, presence,
-// chat, command results, closing, link statistics, room frames decoded by a
+// chat, command results, closing, link statistics, seats, attention, room frames decoded by a
 // codec::RoomDecoder, package chunks reassembled, and anything a correct
 // server never sends. Shared by the socket client (room_test_client.hpp)
 // and the in-memory peer (in_memory_server.hpp).
@@ -26,6 +26,8 @@ struct RoomInbox {
   std::vector<codec::Chat> chat;
   std::vector<codec::CommandResult> results;
   std::vector<codec::Pong> pongs;
+  std::vector<codec::Seats> seats;
+  std::vector<codec::Attention> attention;
   std::uint64_t room_frames = 0;
   std::uint64_t bytes_received = 0;
   std::uint64_t room_frame_bytes = 0;  ///< of the codec room frames (timestamps excluded)
@@ -71,6 +73,8 @@ struct RoomInbox {
       case codec::MessageType::package_chunk: return file_package_chunk(m);
       case codec::MessageType::link_stats: return file_as(m, link, "link statistics");
       case codec::MessageType::pong: return file_into(m, pongs, "pong");
+      case codec::MessageType::seats: return file_into(m, seats, "seats");
+      case codec::MessageType::attention: return file_into(m, attention, "attention");
       default: errors.push_back("a message the server never sends"); return;
     }
   }

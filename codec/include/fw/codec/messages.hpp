@@ -1,8 +1,8 @@
 #pragma once
 // The room protocol's session messages (server/PROTOCOL.md is the normative
 // description; this header is its C++ API): hello, welcome, presence, chat,
-// commands, package chunks, rate, ping/pong, link statistics, closing and
-// timed room frames, plus the length prefix that delimits messages on TCP.
+// commands, package chunks, rate, ping/pong, link statistics, closing, timed
+// room frames, seats and attention, plus the length prefix that delimits messages on TCP.
 //
 // Every message is one WebSocket binary message, or one length-prefixed frame
 // on TCP. A session message's first byte is 0x80 | MessageType; the codec's
@@ -22,7 +22,9 @@ namespace fw::codec {
 
 /// The session protocol's version, carried in hello and welcome. A server
 /// answers a hello of another version with Closing{unsupported_version}.
-inline constexpr std::uint16_t kProtocolVersion = 1;
+/// Version 2 added the seats (in avatar_info, and the seats message) and the
+/// attention message.
+inline constexpr std::uint16_t kProtocolVersion = 2;
 
 /// The low seven bits of a session message's first byte. Values never change.
 enum class MessageType : std::uint8_t {
@@ -39,7 +41,10 @@ enum class MessageType : std::uint8_t {
   link_stats = 11,       ///< down: what the server measures of the link
   closing = 12,          ///< down: why the server closes the connection (last message)
   timed_room_frame = 13, ///< down: a codec room frame with its tick and server time
+  seats = 14,            ///< down: where every avatar sits, after the layout changed
+  attention = 15,        ///< down: whom faces attend, for those whose target changed
 };
+inline constexpr MessageType kLastMessageType = MessageType::attention;
 inline constexpr std::uint8_t kSessionMessageBit = 0x80;
 
 /// What a message on the connection is, from its first byte.
@@ -94,6 +99,8 @@ inline constexpr std::size_t kMaxChunkBytes = 16 * 1024;
 inline constexpr std::uint32_t kMaxBitsPerSecond = 100'000'000;
 inline constexpr std::uint32_t kMaxCommandMs = 600'000;
 inline constexpr std::uint32_t kMaxAvatarIdValue = (1u << 21) - 1;  ///< as codec::kMaxAvatarId
+/// A seat's facing in ten-thousandths of a radian: pi.
+inline constexpr std::int16_t kMaxFacingTenThousandths = 31416;
 
 // ---------------------------------------------------------------------------
 // Messages.
@@ -118,6 +125,17 @@ struct Hello {
   bool own_package = false;
 };
 
+/// Where an avatar sits in the room frame the server's gaze is computed in
+/// (PROTOCOL.md 4): millimetres, x to the right of someone looking at the
+/// arc, y up, z toward that onlooker; the head turned `facing_yaw_rad` about
+/// y (positive toward the person's own left). Carried as whole millimetres
+/// (|v| <= 32 767) and ten-thousandths of a radian (|facing| <= pi).
+struct SeatInfo {
+  float x_mm = 0, y_mm = 0, z_mm = 0;
+  float facing_yaw_rad = 0;
+  bool operator==(const SeatInfo&) const = default;
+};
+
 /// One avatar in the room.
 struct AvatarInfo {
   std::uint32_t id = 0;  ///< the room-frame avatar id
@@ -126,6 +144,7 @@ struct AvatarInfo {
   std::uint32_t preview_bytes = 0;  ///< size of the preview package, 0 if none
   std::uint32_t full_bytes = 0;     ///< size of the full package
   bool person = true;               ///< false for the room's autonomous avatars
+  SeatInfo seat;                    ///< its place at the table
 };
 
 /// Down, the answer to hello; the codec stream header follows it.
@@ -225,6 +244,31 @@ struct Closing {
   std::string reason;  ///< at most 120 bytes, for a person
 };
 
+/// Down: every avatar's seat, sent when a join or a leave laid the room out
+/// again (welcome and presence carry the seats of their moment).
+struct Seats {
+  struct Entry {
+    std::uint32_t avatar = 0;
+    SeatInfo seat;
+  };
+  std::vector<Entry> seats;  ///< at most kMaxWelcomeAvatars
+};
+
+/// What a face attends: another avatar, the room at large (searching it,
+/// no one in particular), or nobody (it looks away from everyone: a snub).
+enum class AttentionTarget : std::uint8_t { nobody = 0, room = 1, avatar = 2 };
+
+/// Down: whom faces attend, on change only; after the welcome, everyone's.
+struct Attention {
+  struct Entry {
+    std::uint32_t avatar = 0;
+    AttentionTarget target = AttentionTarget::room;
+    std::uint32_t target_avatar = 0;  ///< when target is avatar
+    bool operator==(const Entry&) const = default;
+  };
+  std::vector<Entry> entries;  ///< at most kMaxWelcomeAvatars
+};
+
 /// Down, instead of a bare room frame when the hello asked for timestamps.
 struct TimedRoomFrame {
   std::uint32_t tick = 0;            ///< the room's tick index
@@ -247,6 +291,8 @@ void write_message(const Pong& message, std::vector<std::uint8_t>& out);
 void write_message(const LinkStats& message, std::vector<std::uint8_t>& out);
 void write_message(const Closing& message, std::vector<std::uint8_t>& out);
 void write_message(const TimedRoomFrame& message, std::vector<std::uint8_t>& out);
+void write_message(const Seats& message, std::vector<std::uint8_t>& out);
+void write_message(const Attention& message, std::vector<std::uint8_t>& out);
 
 // Readers parse one whole message; on error the output holds no meaning.
 MessageError read_message(std::span<const std::uint8_t> bytes, Hello& message);
@@ -264,6 +310,8 @@ MessageError read_message(std::span<const std::uint8_t> bytes, Closing& message)
 /// `message.room_frame` views into `bytes`; the room frame itself is not
 /// checked here (read_room_frame does that).
 MessageError read_message(std::span<const std::uint8_t> bytes, TimedRoomFrame& message);
+MessageError read_message(std::span<const std::uint8_t> bytes, Seats& message);
+MessageError read_message(std::span<const std::uint8_t> bytes, Attention& message);
 
 // ---------------------------------------------------------------------------
 // TCP framing: every message is preceded by its length as an unsigned LEB128
