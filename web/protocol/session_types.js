@@ -1,0 +1,67 @@
+// The room protocol's session messages (server/PROTOCOL.md): their type
+// bytes, error codes and limits, as codec/include/fw/codec/messages.hpp
+// defines them. The numbers are part of the protocol and never change.
+
+export const PROTOCOL_VERSION = 2;
+export const SESSION_BIT = 0x80;
+
+export const MessageType = Object.freeze({
+  hello: 1, welcome: 2, presence: 3, chat: 4, command: 5, commandResult: 6, packageChunk: 7, setRate: 8,
+  ping: 9, pong: 10, linkStats: 11, closing: 12, timedRoomFrame: 13, seats: 14, attention: 15,
+});
+export const LAST_MESSAGE_TYPE = MessageType.attention;
+
+export const MessageError = Object.freeze({
+  ok: 0, empty: 1, notSessionMessage: 2, unknownType: 3, wrongType: 4, truncated: 5, tooLarge: 6,
+  stringTooLong: 7, badText: 8, valueOutOfRange: 9, trailingBytes: 10, tooManyEntries: 11,
+  unsupportedVersion: 12, badFlags: 13,
+});
+const errorNames = Object.fromEntries(Object.entries(MessageError).map(([k, v]) => [v, k]));
+export const messageErrorName = (code) => errorNames[code] ?? `error ${code}`;
+
+export const CloseCode = Object.freeze({
+  normal: 0, protocolError: 1, messageTooLarge: 2, unsupportedVersion: 3, unauthorized: 4, roomFull: 5,
+  rateLimited: 6, handshakeTimeout: 7, idleTimeout: 8, shuttingDown: 9, badRequest: 10, serverFull: 11,
+  avatarBeingPrepared: 12,
+});
+export const PresenceChange = Object.freeze({ joined: 0, left: 1 });
+export const CommandKind = Object.freeze({ express: 0, lookAt: 1, snub: 2, facs: 3 });
+export const PackageQuality = Object.freeze({ preview: 0, full: 1 });
+export const AttentionTarget = Object.freeze({ nobody: 0, room: 1, avatar: 2 });
+
+export const Limits = Object.freeze({
+  upstreamMessageBytes: 8 * 1024,
+  downstreamMessageBytes: 64 * 1024 + 64,
+  roomNameBytes: 64,
+  displayNameBytes: 32,
+  assetIdBytes: 64,
+  tokenBytes: 512,
+  chatBytes: 500,
+  emotionBytes: 16,
+  sentenceBytes: 4096,
+  reasonBytes: 120,
+  listEntries: 64,
+  packageBytes: 8 * 1024 * 1024,
+  chunkBytes: 16 * 1024,
+  bitsPerSecond: 100_000_000,
+  commandMs: 600_000,
+  avatarId: (1 << 21) - 1,
+  facingTenThousandths: 31416,
+});
+
+/** What a message on the connection is, from its first byte. */
+export function classify(bytes) {
+  if (bytes.length === 0) return 'invalid';
+  const first = bytes[0];
+  if (first & SESSION_BIT) {
+    const type = first & 0x7f;
+    return type >= MessageType.hello && type <= LAST_MESSAGE_TYPE ? 'session' : 'invalid';
+  }
+  if (first >> 4 !== 1) return 'invalid';  // the codec's format version
+  switch (first & 0x0f) {
+    case 0: return 'streamHeader';
+    case 3: return 'roomFrame';
+    case 4: return 'resyncRequest';
+    default: return 'invalid';  // bare key and predicted frames travel only inside room frames
+  }
+}
