@@ -193,6 +193,36 @@ TEST(BehaviorRoomCommands, ExpressAndFacsShowOnTheFace) {
   EXPECT_EQ(room.face(2).au_intensity(12), 0);  // the sentence wins over the autonomous expression
 }
 
+TEST(BehaviorRoomCommands, CunningTeasingAndBlushAreExpressionsToo) {
+  BehaviorRoom room = make_room(4, 0);
+  room.add(1, "a");
+  room.add(2, "b");
+  // Teasing: AU 12 on the left only (avatar/model/EXPRESSIONS.md).
+  ASSERT_EQ(room.express(2, "teasing", 1.0f, 2), "");
+  run(room, 1.0);
+  EXPECT_GT(room.face(2).au_intensity(12, codec::AuSide::left), 0.6f);
+  EXPECT_LT(room.face(2).au_intensity(12, codec::AuSide::right), 0.2f);
+  run(room, 2.5);
+  EXPECT_LT(room.face(2).au_intensity(12, codec::AuSide::left), 0.2f) << "it eases out after its seconds";
+  ASSERT_EQ(room.express(1, "cunning", 1.0f, 2), "");
+  run(room, 1.0);
+  EXPECT_GT(room.face(1).au_intensity(7), 0.4f);
+  // A blush colours the cheeks within a few seconds. Alone, so that no
+  // stare starts one by itself.
+  BehaviorRoom alone = make_room(5, 0);
+  alone.add(1, "a");
+  const auto cheek = [&] { return alone.face(1).blush[static_cast<std::size_t>(codec::ColourRegion::cheek_left)]; };
+  run(alone, 3);
+  EXPECT_EQ(cheek(), 0.0f);
+  ASSERT_EQ(alone.express(1, "blush", 1.0f, 8), "");
+  float cheeks = 0;
+  for (int i = 0; i < 5 * 30 && cheeks < 0.3f; ++i) {
+    alone.tick();
+    cheeks = cheek();
+  }
+  EXPECT_GE(cheeks, 0.3f);
+}
+
 TEST(BehaviorRoomChat, OthersLookAtTheWriterWhoseEmotionMoves) {
   BehaviorRoom room = make_room(6, 0);
   for (FaceId id : {1u, 2u, 3u}) room.add(id, "face" + std::to_string(id));

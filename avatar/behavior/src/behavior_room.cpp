@@ -21,6 +21,7 @@ namespace {
 constexpr double kMimicTimeConstantS = 0.3;
 constexpr double kChatAttentionS = 2.5;
 constexpr double kMaxCommandS = 600;
+constexpr double kShortestBlushS = 6.0;  ///< a commanded blush rises, holds and fades in no less
 
 std::uint64_t mix(std::uint64_t x) {  // splitmix64: one independent stream per face and part
   x += 0x9E3779B97F4A7C15ull;
@@ -265,13 +266,25 @@ std::string BehaviorRoom::express(FaceId face, std::string_view emotion, float i
   if (!(intensity >= 0 && intensity <= 1)) return "intensity must be between 0 and 1";
   if (emotion == "neutral") {
     f->emotion.reset();
-  } else {
-    const auto primary = primary_from_name(emotion);
-    if (!primary)
-      return std::string("unknown emotion '") + std::string(emotion) +
-             "' (use joy, sadness, anger, fear, surprise, disgust or neutral)";
+    f->facs.reset();
+  } else if (emotion == "blush") {
+    // A blush is colour, not a pose: the vascular episode a stare would
+    // start, at the asked strength; its stages need a few seconds to show.
+    f->vascular.start(builtin_vascular_emotion("blushing"), std::max(seconds, kShortestBlushS), intensity);
+    impl_->event(face, "command express blush");
+    return {};
+  } else if (const auto primary = primary_from_name(emotion)) {
     f->emotion.reset();
     f->emotion.express(*primary, envelope_for(seconds, intensity, 0.6f));
+  } else if (const auto expression = model::expression_from_name(emotion)) {
+    // Cunning and teasing have no place in the emotion space: played as a
+    // track of their action units, as a FACS sentence would be.
+    f->emotion.reset();
+    f->facs = expression_track(*expression, intensity, seconds);
+    f->facs_t_s = 0;
+  } else {
+    return std::string("unknown emotion '") + std::string(emotion) +
+           "' (use joy, sadness, anger, fear, surprise, disgust, cunning, teasing, blush or neutral)";
   }
   f->mind.hold_expression(seconds + 1.0);
   impl_->event(face, std::string("command express ") + std::string(emotion));

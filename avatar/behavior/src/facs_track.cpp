@@ -74,4 +74,15 @@ bool facs_track(std::string_view sentence, AuTrack& track, std::string& error) {
   return true;
 }
 
+AuTrack expression_track(model::Expression expression, float intensity, double seconds) {
+  // As fast in and out as the emotion model's expressions (expression_envelope).
+  constexpr double kEaseS = 0.4;
+  codec::FaceParams pose;
+  model::apply_expression(expression, intensity, pose);
+  AuTrack track;
+  track.times_s = {0.0, kEaseS, kEaseS + seconds, 2 * kEaseS + seconds};
+  track.poses = {AuTargets{}, pose.au, pose.au, AuTargets{}};
+  return track;
+}
+
 }  // namespace fw::behavior

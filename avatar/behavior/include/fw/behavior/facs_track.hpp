@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "fw/codec/face_params.hpp"
+#include "fw/model/expressions.hpp"
 
 namespace fw::behavior {
 
@@ -30,5 +31,10 @@ struct AuTrack {
 /// The track of the first expression sentence in `sentence`; false and
 /// `error` (the script's first error, or "no expression sentence") if none.
 bool facs_track(std::string_view sentence, AuTrack& track, std::string& error);
+
+/// A track that eases into one of avatar/model's expressions (cunning,
+/// teasing: those the emotion model has no primary for) at `intensity`,
+/// holds it for `seconds` and eases out.
+AuTrack expression_track(model::Expression expression, float intensity, double seconds);
 
 }  // namespace fw::behavior
