@@ -1,0 +1,51 @@
+// A face's aim moved from the server's room to the viewer's (PROTOCOL.md
+// 6.1). The server aimed the face's eyes and head at its target's seat; the
+// viewer sees it from elsewhere, with the target somewhere else. The decoded
+// head and eyes are moved by the difference between the two aims, split the
+// way the server's eye-head coordination splits a settled gaze
+// (avatar/behavior's EyeHeadController: the eyes alone take the first 8
+// degrees, the head 90 % of the rest), so that what the face does around its
+// aim (saccades, drift, tremor, head noise) stays on top, and a face that
+// attends the viewer ends with its head and eyes on the viewer: eye contact.
+import { directionAngles, roomToSeat } from './view_geometry.js';
+
+const HEAD_FREE_RAD = 0.14;
+const HEAD_SHARE = 0.9;
+const EYE_RANGE_RAD = 0.8;
+
+/** The head's share of a settled gaze at angle `a` (one axis). */
+export function headShare(a) {
+  return Math.sign(a) * HEAD_SHARE * Math.max(0, Math.abs(a) - HEAD_FREE_RAD);
+}
+
+/** Yaw and pitch, in `seat`'s frame, from its eyes (`eyeMid`, head frame) to room point `target`. */
+export function aimAt(seat, eyeMid, target) {
+  const from = roomToSeat(seat, target);
+  return directionAngles(from.map((v, i) => v - eyeMid[i]));
+}
+
+const clampEye = (v) => Math.max(-EYE_RANGE_RAD, Math.min(EYE_RANGE_RAD, v));
+
+/**
+ * FaceParams `params` re-aimed: from `serverAim` to `viewAim` (each { yaw,
+ * pitch } in the face's own seat frame), blended by `weight` (0: as decoded,
+ * 1: fully re-aimed; the page eases it when the target changes). Returns a
+ * new object; the decoded one is left alone.
+ */
+export function reaim(params, serverAim, viewAim, weight = 1) {
+  const shift = (axis) => {
+    const head = weight * (headShare(viewAim[axis]) - headShare(serverAim[axis]));
+    const total = weight * (viewAim[axis] - serverAim[axis]);
+    return { head, eye: total - head };
+  };
+  const yaw = shift('yaw');
+  const pitch = shift('pitch');
+  const eye = (e) => ({ yaw_rad: clampEye(e.yaw_rad + yaw.eye), pitch_rad: clampEye(e.pitch_rad + pitch.eye) });
+  return {
+    ...params,
+    head_yaw_rad: params.head_yaw_rad + yaw.head,
+    head_pitch_rad: params.head_pitch_rad + pitch.head,
+    eye_left: eye(params.eye_left),
+    eye_right: eye(params.eye_right),
+  };
+}
