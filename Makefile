@@ -31,8 +31,16 @@ build: deps
 run: build
 	./build/bin/facewire-server serve --tcp 127.0.0.1:8081 $(SERVER_ARGS)
 
+# The browser tests' playwright-core (it drives Debian's chromium; no browser
+# is downloaded), installed exactly as tests/web/package-lock.json pins it,
+# and again only when the lock file changes. Only `make test` needs it.
+WEB_TEST_DEPS := tests/web/node_modules/.package-lock.json
+$(WEB_TEST_DEPS): tests/web/package.json tests/web/package-lock.json | deps
+	npm ci --prefix tests/web --no-audit --no-fund
+	@touch $@
+
 # Every suite; the log is kept so that the slowest tests can be listed.
-test: build
+test: build $(WEB_TEST_DEPS)
 	@mkdir -p build/logs
 	ctest --preset release-all -j $(TEST_JOBS) 2>&1 | tee build/logs/release-tests.log; \
 	  status=$${PIPESTATUS[0]}; sh tests/slowest_tests.sh build/logs/release-tests.log 20; exit $$status

@@ -54,7 +54,9 @@ void HttpSession::do_read() {
 bool HttpSession::answer_read_error(beast::error_code ec) {
   if (ec == http::error::end_of_stream || ec == beast::error::timeout || ec == net::error::operation_aborted ||
       ec == net::error::connection_reset || ec == net::error::eof) {
-    do_close();
+    // The peer left or went quiet: nothing to linger for.
+    beast::error_code ignored;
+    stream_.socket().shutdown(net::ip::tcp::socket::shutdown_send, ignored);
     return true;
   }
   if (ec == http::error::header_limit) {
@@ -136,6 +138,22 @@ void HttpSession::on_write(bool close, beast::error_code ec, std::size_t) {
 void HttpSession::do_close() {
   beast::error_code ec;
   stream_.socket().shutdown(net::ip::tcp::socket::shutdown_send, ec);
+  // A lingering close (limits::kLingerTimeout): the session lives on while
+  // it reads what the peer still sends, until the peer closes too.
+  stream_.expires_after(limits::kLingerTimeout);
+  linger();
+}
+
+void HttpSession::linger() {
+  // The parse buffer is done with; reuse it rather than allocate.
+  buffer_.clear();
+  stream_.async_read_some(buffer_.prepare(16 * 1024), [self = shared_from_this()](beast::error_code ec, std::size_t n) {
+    self->lingered_bytes_ += n;
+    // Bounded in bytes as well as in time: a photo straight from a camera
+    // may be several times the upload limit.
+    if (ec || self->lingered_bytes_ > limits::kMaxLingerBytes) return;
+    self->linger();
+  });
 }
 
 }  // namespace fw::server

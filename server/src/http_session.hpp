@@ -32,6 +32,7 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
   void send(boost::beast::http::response<boost::beast::http::string_body>&& response);
   void on_write(bool close, boost::beast::error_code ec, std::size_t bytes);
   void do_close();
+  void linger();
 
   ServerContext& context_;
   PhotoPreparation& photos_;
@@ -43,6 +44,7 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
   std::string peer_address_;
   bool first_request_ = true;
   bool upload_ = false;
+  std::size_t lingered_bytes_ = 0;
 };
 
 }  // namespace fw::server

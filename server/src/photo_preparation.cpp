@@ -1,5 +1,7 @@
 #include "photo_preparation.hpp"
 
+#include <algorithm>
+
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
 
@@ -16,15 +18,21 @@ namespace http = boost::beast::http;
 
 PhotoPreparation::PhotoPreparation(ServerContext& context, PhotoWorker& worker) : context_(context), worker_(worker) {}
 
-bool PhotoPreparation::allow(const std::string& peer_address) {
+std::optional<int> PhotoPreparation::wait_before_upload(const std::string& peer_address) {
   std::lock_guard lock(mutex_);
   const auto now = std::chrono::steady_clock::now();
+  constexpr auto kWindow = std::chrono::minutes(1);
   auto& times = recent_[peer_address];
-  std::erase_if(times, [&](auto t) { return now - t > std::chrono::minutes(1); });
+  std::erase_if(times, [&](auto t) { return now - t > kWindow; });
   if (recent_.size() > 10000) recent_.clear();  // bounded: a flood of addresses forgets the old ones
-  if (static_cast<int>(times.size()) >= limits::kUploadsPerMinute) return false;
+  if (static_cast<int>(times.size()) >= limits::kUploadsPerMinute) {
+    // The oldest upload in the window leaves it first; round up, so that
+    // an uploader who waits as told is not refused again.
+    const auto wait = std::chrono::ceil<std::chrono::seconds>(times.front() + kWindow - now);
+    return std::max<int>(1, static_cast<int>(wait.count()));
+  }
   times.push_back(now);
-  return true;
+  return std::nullopt;
 }
 
 void PhotoPreparation::upload(Request request, std::string peer_address, std::function<void(Response)> done) {
@@ -33,8 +41,14 @@ void PhotoPreparation::upload(Request request, std::string peer_address, std::fu
   };
   if (context_.draining.load())
     return done(error(http::status::service_unavailable, "the server is shutting down; upload again in a moment"));
-  if (!allow(peer_address))
-    return done(error(http::status::too_many_requests, "at most 6 uploads a minute; wait a little"));
+  if (const auto wait = wait_before_upload(peer_address)) {
+    Response refusal = error(http::status::too_many_requests,
+                             "at most " + std::to_string(limits::kUploadsPerMinute) +
+                                 " uploads a minute from one address; try again in " + std::to_string(*wait) +
+                                 (*wait == 1 ? " second" : " seconds"));
+    refusal.set(http::field::retry_after, std::to_string(*wait));
+    return done(std::move(refusal));
+  }
   worker_.post([this, request = std::move(request), done = std::move(done)] { done(handle(request)); });
 }
 
@@ -64,16 +78,18 @@ std::optional<Response> PhotoPreparation::prepare_photo(const Request& request, 
   if (!prepared) return prep_refusal(request, prep_error);
   upload.package = model::serialize_avatar_package(prepared->package);
   upload.photo = photo;
+  upload.advice = prepared->report.warnings;
   return std::nullopt;
 }
 
 namespace {
 
-// A package and the photo it was prepared from, in one multipart body: the
-// photo is only checked (a photo's format and size), not prepared; the
-// package is validated by the store.
-std::optional<Response> read_package_and_photo(const Request& request, std::span<const std::uint8_t> body,
-                                               PhotoPreparation::Upload& upload) {
+bool is_photo_type(std::string_view type) { return type == "image/jpeg" || type == "image/png" || type == "image/webp"; }
+
+}  // namespace
+
+std::optional<Response> PhotoPreparation::read_multipart_upload(const Request& request,
+                                                                std::span<const std::uint8_t> body, Upload& upload) {
   const auto refuse = [&](http::status status, const std::string& message) {
     return error_response(status, request.version(), message);
   };
@@ -82,9 +98,26 @@ std::optional<Response> read_package_and_photo(const Request& request, std::span
   const auto content_type = request[http::field::content_type];
   if (!read_multipart(body, multipart_boundary({content_type.data(), content_type.size()}), parts, why))
     return refuse(http::status::bad_request, why);
-  if (!parts.contains("package"))
-    return refuse(http::status::bad_request,
-                  "a multipart upload needs a part named 'package' (the .fwa) and may add one named 'photo'");
+  if (!parts.contains("package")) {
+    // A photo alone, as a browser's form or FormData sends a file: the
+    // browser names the type from the file's name, or gives none (or
+    // octet-stream) when it does not know it; the photo's own first bytes
+    // then decide.
+    if (!parts.contains("photo"))
+      return refuse(http::status::bad_request,
+                    "a multipart upload needs a part named 'photo' (a JPEG, PNG or WebP photo), or one named "
+                    "'package' (a .fwa) and may add the photo it was prepared from");
+    const MultipartPart& photo = parts["photo"];
+    if (!is_photo_type(photo.content_type) && photo.content_type != "application/octet-stream" &&
+        !photo.content_type.empty())
+      return refuse(http::status::unsupported_media_type,
+                    "the photo is " + photo.content_type.substr(0, 64) +
+                        "; send a JPEG, PNG or WebP photo (take a snapshot, or save the photo as JPEG)");
+    if (photo.data.empty()) return refuse(http::status::bad_request, "the photo is empty; choose a photo file");
+    return prepare_photo(request, photo.data, upload);
+  }
+  // A package and the photo it was prepared from: the photo is only checked
+  // (a photo's format and size), not prepared; the store validates the package.
   upload.package.assign(parts["package"].data.begin(), parts["package"].data.end());
   if (!parts.contains("photo")) return std::nullopt;
   const MultipartPart& photo = parts["photo"];
@@ -96,8 +129,6 @@ std::optional<Response> read_package_and_photo(const Request& request, std::span
   return std::nullopt;
 }
 
-}  // namespace
-
 Response PhotoPreparation::handle(const Request& request) {
   const auto error = [&](http::status status, const std::string& message) {
     return error_response(status, request.version(), message);
@@ -108,16 +139,17 @@ Response PhotoPreparation::handle(const Request& request) {
   if (bytes.empty()) return error(http::status::bad_request, "the upload is empty; send a photo or a .fwa package");
   Upload upload;
   std::optional<Response> refusal;
-  if (type == "image/jpeg" || type == "image/png") {
+  if (is_photo_type(type)) {
     refusal = prepare_photo(request, bytes, upload);
   } else if (type == "application/x-facewire-avatar" || type == "application/octet-stream") {
     upload.package.assign(bytes.begin(), bytes.end());
   } else if (type == "multipart/form-data") {
-    refusal = read_package_and_photo(request, bytes, upload);
+    refusal = read_multipart_upload(request, bytes, upload);
   } else {
     return error(http::status::unsupported_media_type,
-                 "send a photo (Content-Type image/jpeg or image/png), a package (application/x-facewire-avatar), "
-                 "or both (multipart/form-data, parts 'package' and 'photo')");
+                 "send a photo (Content-Type image/jpeg, image/png or image/webp, or multipart/form-data with a "
+                 "part 'photo'), a package (application/x-facewire-avatar), or both (multipart/form-data, parts "
+                 "'package' and 'photo')");
   }
   if (refusal) return *refusal;
   std::string why;
@@ -126,8 +158,11 @@ Response PhotoPreparation::handle(const Request& request) {
   context_.metrics.uploads.fetch_add(1);
   spdlog::info("stored avatar {} ({} bytes, preview {} bytes{})", stored->asset, stored->full->size(),
                stored->preview->size(), upload.photo.empty() ? "" : ", with its photo");
-  const nlohmann::json answer = {
-      {"asset", stored->asset}, {"bytes", stored->full->size()}, {"preview_bytes", stored->preview->size()}};
+  const nlohmann::json answer = {{"asset", stored->asset},
+                                 {"package", "/api/packages/" + stored->asset},
+                                 {"bytes", stored->full->size()},
+                                 {"preview_bytes", stored->preview->size()},
+                                 {"advice", upload.advice}};
   return json_response(http::status::created, request.version(), false, answer.dump() + "\n");
 }
 

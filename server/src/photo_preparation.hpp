@@ -28,17 +28,25 @@ class PhotoPreparation {
   void upload(Request request, std::string peer_address, std::function<void(Response)> done);
 
   /// What an upload stores: the package, and the photo to keep beside it
-  /// (empty when none came; a view into the request).
+  /// (empty when none came; a view into the request); and the preparation's
+  /// advice on the photo (empty for an uploaded package), for the answer.
   struct Upload {
     std::vector<std::uint8_t> package;
     std::span<const std::uint8_t> photo;
+    std::vector<std::string> advice;
   };
 
  private:
   Response handle(const Request& request);
   /// The photo prepared into `upload`; the refusal when it makes no avatar.
   std::optional<Response> prepare_photo(const Request& request, std::span<const std::uint8_t> photo, Upload& upload);
-  bool allow(const std::string& peer_address);
+  /// A multipart body: a package (and the photo it was prepared from), or a
+  /// photo alone, as a browser's form sends it.
+  std::optional<Response> read_multipart_upload(const Request& request, std::span<const std::uint8_t> body,
+                                                Upload& upload);
+  /// Counts an upload from `peer_address`; nullopt when it may go ahead,
+  /// else the seconds until it may (the rate limit is a sliding minute).
+  std::optional<int> wait_before_upload(const std::string& peer_address);
 
   ServerContext& context_;
   PhotoWorker& worker_;

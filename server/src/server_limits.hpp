@@ -14,6 +14,12 @@ inline constexpr std::size_t kMaxBodyBytes = 64 * 1024;
 inline constexpr std::chrono::seconds kRequestTimeout{15};
 /// Time allowed for an upload's body (a 4 MiB photo at 2.5 Mbit/s).
 inline constexpr std::chrono::seconds kUploadTimeout{15};
+/// After an answer that closes the connection, what the peer still sends
+/// (the rest of a refused upload) is read and dropped for at most this long
+/// before the socket closes: closing it with unread bytes would reset the
+/// connection, and a browser would then show the reset, not the answer.
+inline constexpr std::chrono::seconds kLingerTimeout{3};
+inline constexpr std::size_t kMaxLingerBytes = 32 * 1024 * 1024;
 /// An idle keep-alive connection is closed after this.
 inline constexpr std::chrono::seconds kIdleTimeout{30};
 /// Connections served at once on each port; more wait in the kernel's backlog.

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <iostream>
 
+#include "invite_link.hpp"
 #include "join_token.hpp"
 
 namespace fw::server {
@@ -13,6 +14,7 @@ struct TokenArgs {
   std::string name;
   std::int64_t ttl_seconds = 86400;
   std::string secret;
+  std::string url = "http://127.0.0.1:8080/";
 };
 
 int mint(const TokenArgs& args) {
@@ -23,7 +25,16 @@ int mint(const TokenArgs& args) {
   const auto now = std::chrono::duration_cast<std::chrono::seconds>(
                        std::chrono::system_clock::now().time_since_epoch())
                        .count();
-  std::cout << mint_join_token({args.room, args.name, now + args.ttl_seconds}, args.secret) << "\n";
+  const std::string token = mint_join_token({args.room, args.name, now + args.ttl_seconds}, args.secret);
+  std::string error;
+  const auto link = invite_link(args.url, args.room, args.name, token, error);
+  if (!link) {
+    std::cerr << "facewire-server token: --url: " << error << "\n";
+    return 2;
+  }
+  // The token alone on the first line (for scripts and the native client's
+  // --token), the link for a browser on the second.
+  std::cout << token << "\n" << *link << "\n";
   return 0;
 }
 
@@ -36,6 +47,9 @@ void add_token_command(CLI::App& app) {
   cmd->add_option("--name", args->name, "the only display name it admits (default: any)");
   cmd->add_option("--ttl", args->ttl_seconds, "seconds until it expires")
       ->check(CLI::Range(std::int64_t{1}, std::int64_t{366} * 86400))
+      ->capture_default_str();
+  cmd->add_option("--url", args->url, "the server's public address, the start of the invite link")
+      ->envname("FACEWIRE_PUBLIC_URL")
       ->capture_default_str();
   cmd->add_option("--auth-secret", args->secret, "the server's --auth-secret")->envname("FACEWIRE_AUTH_SECRET");
   cmd->callback([args] { std::exit(mint(*args)); });

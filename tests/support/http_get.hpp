@@ -18,10 +18,10 @@ struct HttpReply {
 };
 
 /// Sends `raw` to 127.0.0.1:`port` and reads until the server closes or
-/// 5 seconds pass.
-inline HttpReply http_exchange(int port, const std::string& raw) {
+/// `timeout_s` seconds pass.
+inline HttpReply http_exchange(int port, const std::string& raw, int timeout_s = 5) {
   HttpReply reply;
-  const int fd = connect_loopback(port, 5);
+  const int fd = connect_loopback(port, timeout_s);
   if (fd < 0) return reply;
   ::send(fd, raw.data(), raw.size(), MSG_NOSIGNAL);
   std::string received;

@@ -62,8 +62,6 @@ function uploadMesh(gl, mesh, dynamic = false) {
 function uploadImage(gl, image, srgb) {
   const t = gl.createTexture();
   gl.bindTexture(gl.TEXTURE_2D, t);
-  gl.pixelStorei(gl.UNPACK_FLIP_Y_WEBGL, true);  // image rows run down, v runs up
-  gl.pixelStorei(gl.UNPACK_COLORSPACE_CONVERSION_WEBGL, gl.NONE);
   gl.texImage2D(gl.TEXTURE_2D, 0, srgb ? gl.SRGB8_ALPHA8 : gl.RGBA8, gl.RGBA, gl.UNSIGNED_BYTE, image);
   gl.generateMipmap(gl.TEXTURE_2D);
   gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR_MIPMAP_LINEAR);
@@ -80,10 +78,16 @@ function black(gl) {
   return t;
 }
 
-/** Decodes a package's image member (WebP or PNG) in the browser. */
+/**
+ * Decodes a package's image member (WebP or PNG) in the browser. Flipped
+ * here, since WebGL ignores its own flip for an ImageBitmap: image rows run
+ * down, v runs up. Colours as stored (no premultiplying, no colour
+ * management): the shader decodes sRGB itself.
+ */
 export async function decodeImage(member) {
   if (!member) return null;
-  return createImageBitmap(new Blob([member.bytes], { type: member.type }), { premultiplyAlpha: 'none', colorSpaceConversion: 'none' });
+  return createImageBitmap(new Blob([member.bytes], { type: member.type }),
+    { imageOrientation: 'flipY', premultiplyAlpha: 'none', colorSpaceConversion: 'none' });
 }
 
 export class FaceRenderer {

@@ -18,6 +18,15 @@ export function headShare(a) {
   return Math.sign(a) * HEAD_SHARE * Math.max(0, Math.abs(a) - HEAD_FREE_RAD);
 }
 
+/**
+ * How far a face turns toward another in the view, as a share of the true
+ * angle. Every face of the view rests looking at the viewer, so its
+ * neighbours sit nearly square to it: turned all the way it would show its
+ * profile. A face turns at most to three-quarter, still clearly toward the
+ * one it attends; at the viewer it looks straight out (that angle is ~0).
+ */
+export const TURN_SHARE = 0.6;
+
 /** Yaw and pitch, in `seat`'s frame, from its eyes (`eyeMid`, head frame) to room point `target`. */
 export function aimAt(seat, eyeMid, target) {
   const from = roomToSeat(seat, target);

@@ -48,6 +48,8 @@ export class RoomClient {
     this.stopped = false;
     this.pingTimer = null;
     this.retryTimer = null;
+    /** When things first happened (the clock's ms): welcome, a face's first frame, every full package. */
+    this.timeline = { welcomeMs: null, firstFrameMs: null, fullPackagesMs: null };
   }
 
   start() {
@@ -181,6 +183,7 @@ export class RoomClient {
       const entry = this.avatars.get(avatar);
       if (error === 0 && entry) {
         entry.lastFrameMs = now;
+        this.timeline.firstFrameMs ??= now;
         this.meter.frameDecoded(now, avatar);
       }
     }
@@ -225,6 +228,7 @@ export class RoomClient {
 
   welcomed(m, now) {
     this.policy.welcomed();
+    this.timeline.welcomeMs ??= now;
     this.status = 'joined';
     this.error = '';
     this.you = m.you;
@@ -262,6 +266,8 @@ export class RoomClient {
     // A late preview never replaces the full package.
     if (!entry || (entry.package && entry.package.quality > done.quality)) return;
     entry.package = { quality: done.quality, bytes: done.bytes };
+    const everyone = [...this.avatars.values()].every((a) => a.package?.quality === 1 || (a.info.id === this.you && this.options.ownPackage));
+    if (everyone) this.timeline.fullPackagesMs ??= this.options.now();
     this.notify('package');
   }
 }

@@ -2,7 +2,6 @@
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
-#include <zlib.h>
 
 #include "avatar_package_layout.hpp"
 #include "package_checksum.hpp"

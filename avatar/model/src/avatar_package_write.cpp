@@ -1,7 +1,6 @@
 #include <cmath>
 
 #include <nlohmann/json.hpp>
-#include <zlib.h>
 
 #include "avatar_package_layout.hpp"
 #include "package_checksum.hpp"

@@ -1,0 +1,188 @@
+// Avatar models for JavaScript: fw::model::make_avatar_model (the fit and
+// the motion-cloned action units) and fw::model::reconstruct_face (the skin
+// for one frame's FaceParams) themselves, so that the browser shows exactly
+// what the native client shows. web/engine/avatar_model.js wraps these.
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include <emscripten/emscripten.h>
+
+#include "exports_state.hpp"
+#include "face_params_floats.hpp"
+#include "fw/model/avatar_model.hpp"
+#include "fw/model/avatar_package.hpp"
+#include "fw/model/face_reconstruction.hpp"
+#include "fw/model/mesh.hpp"
+
+namespace fw::wasm {
+const model::AvatarPackage* find_package(int handle);  // package_exports.cpp
+}
+
+namespace {
+
+using fw::model::Mesh;
+
+// Numbers shared with web/engine/avatar_model.js.
+enum Part { skin = 0, eye_right = 1, eye_left = 2, mouth_cavity = 3, head_shell = 4, part_count = 5 };
+enum MeshField { positions = 0, uvs = 1, triangles = 2, normals = 3 };
+enum FloatsField { texture_frame = 0, eye_centres = 1, eye_shapes = 2, head_centre = 3, head_outline = 4 };
+enum IndexField { landmark_vertices = 0, eye_hole_right = 1, eye_hole_left = 2, mouth_slit = 3, triangle_regions = 4 };
+
+struct Avatar {
+  fw::model::AvatarModel model;
+  std::array<std::vector<glm::vec3>, part_count> rest_normals;  // each mesh's, at rest
+  std::array<float, 3> frame_floats{};                           // texture frame
+  std::array<float, 6> centres{}, shapes{};
+  std::vector<std::uint32_t> regions;
+  std::vector<float> frame;  // the last frame: positions 3V, uvs 2V, normals 3V
+};
+
+fw::wasm::Handles<Avatar> avatars;
+
+const Mesh& mesh_of(const fw::model::GenericFace& face, int part) {
+  switch (part) {
+    case eye_right: return face.eyes[0].mesh;
+    case eye_left: return face.eyes[1].mesh;
+    case mouth_cavity: return face.mouth_cavity;
+    case head_shell: return face.head.mesh;
+    default: return face.skin;
+  }
+}
+
+int add_avatar(fw::model::AvatarModel model) {
+  auto a = std::make_unique<Avatar>();
+  a->model = std::move(model);
+  const fw::model::GenericFace& face = a->model.face;
+  for (int part = 0; part < part_count; ++part) a->rest_normals[part] = fw::model::vertex_normals(mesh_of(face, part));
+  a->frame_floats = {face.texture_frame.origin.x, face.texture_frame.origin.y, face.texture_frame.size};
+  for (std::size_t side = 0; side < 2; ++side) {
+    for (int k = 0; k < 3; ++k) a->centres[side * 3 + k] = face.eyes[side].centre[k];
+    a->shapes[side * 2] = face.eyes[side].radius;
+    a->shapes[side * 2 + 1] = face.eyes[side].cap_angle_rad;
+  }
+  for (const fw::model::FaceRegion r : face.triangle_regions) a->regions.push_back(static_cast<std::uint32_t>(r));
+  return avatars.add(std::move(a));
+}
+
+template <typename T>
+std::span<const float> as_floats(const std::vector<T>& v) {
+  return {reinterpret_cast<const float*>(v.data()), v.size() * sizeof(T) / sizeof(float)};
+}
+
+std::span<const float> mesh_floats(const Avatar& a, int part, int field) {
+  const Mesh& mesh = mesh_of(a.model.face, part);
+  if (field == positions) return as_floats(mesh.positions);
+  if (field == uvs) return as_floats(mesh.uvs);
+  if (field == normals) return as_floats(a.rest_normals[static_cast<std::size_t>(part)]);
+  return {};
+}
+
+std::span<const float> avatar_floats(const Avatar& a, int which) {
+  switch (which) {
+    case texture_frame: return a.frame_floats;
+    case eye_centres: return a.centres;
+    case eye_shapes: return a.shapes;
+    case head_centre: return {&a.model.face.head.centre.x, 2};
+    case head_outline: return a.model.face.head.outline;
+    default: return {};
+  }
+}
+
+std::span<const std::uint32_t> avatar_indices(const Avatar& a, int which) {
+  const fw::model::GenericFace& face = a.model.face;
+  switch (which) {
+    case landmark_vertices: return face.landmark_vertices;
+    case eye_hole_right: return face.eye_holes[0];
+    case eye_hole_left: return face.eye_holes[1];
+    case mouth_slit: return face.mouth_slit;
+    case triangle_regions: return a.regions;
+    default: return {};
+  }
+}
+
+}  // namespace
+
+extern "C" {
+
+/// The avatar of a parsed package. @return a handle, or 0 and fw_last_error()
+EMSCRIPTEN_KEEPALIVE int fw_avatar_from_package(int package_handle) {
+  const auto* p = fw::wasm::find_package(package_handle);
+  if (!p) return 0;
+  return add_avatar(fw::model::make_avatar_model(fw::model::generic_face(), p->fitted_vertices, p->head_outline));
+}
+
+/// The generic face itself, for avatars without a package.
+EMSCRIPTEN_KEEPALIVE int fw_avatar_generic() { return add_avatar(fw::model::generic_avatar_model()); }
+
+EMSCRIPTEN_KEEPALIVE void fw_avatar_release(int handle) { avatars.release(handle); }
+
+/// A static mesh's floats (positions, uvs, rest normals) of one part.
+EMSCRIPTEN_KEEPALIVE const float* fw_avatar_mesh_floats(int handle, int part, int field) {
+  const Avatar* a = avatars.find(handle);
+  return a ? mesh_floats(*a, part, field).data() : nullptr;
+}
+EMSCRIPTEN_KEEPALIVE int fw_avatar_mesh_floats_count(int handle, int part, int field) {
+  const Avatar* a = avatars.find(handle);
+  return a ? static_cast<int>(mesh_floats(*a, part, field).size()) : 0;
+}
+/// A part's triangles, three vertex indices each.
+EMSCRIPTEN_KEEPALIVE const std::uint32_t* fw_avatar_triangles(int handle, int part) {
+  const Avatar* a = avatars.find(handle);
+  return a ? &mesh_of(a->model.face, part).triangles.data()->x : nullptr;
+}
+EMSCRIPTEN_KEEPALIVE int fw_avatar_triangles_count(int handle, int part) {
+  const Avatar* a = avatars.find(handle);
+  return a ? static_cast<int>(mesh_of(a->model.face, part).triangles.size() * 3) : 0;
+}
+
+EMSCRIPTEN_KEEPALIVE const float* fw_avatar_floats(int handle, int which) {
+  const Avatar* a = avatars.find(handle);
+  return a ? avatar_floats(*a, which).data() : nullptr;
+}
+EMSCRIPTEN_KEEPALIVE int fw_avatar_floats_count(int handle, int which) {
+  const Avatar* a = avatars.find(handle);
+  return a ? static_cast<int>(avatar_floats(*a, which).size()) : 0;
+}
+
+EMSCRIPTEN_KEEPALIVE const std::uint32_t* fw_avatar_indices(int handle, int which) {
+  const Avatar* a = avatars.find(handle);
+  return a ? avatar_indices(*a, which).data() : nullptr;
+}
+EMSCRIPTEN_KEEPALIVE int fw_avatar_indices_count(int handle, int which) {
+  const Avatar* a = avatars.find(handle);
+  return a ? static_cast<int>(avatar_indices(*a, which).size()) : 0;
+}
+
+/// One action unit channel's cloned morph: field 0 vertex_delta (3V), 1 uv_delta (2V).
+EMSCRIPTEN_KEEPALIVE const float* fw_avatar_morph(int handle, int channel, int field) {
+  const Avatar* a = avatars.find(handle);
+  if (!a || channel < 0 || channel >= static_cast<int>(fw::codec::kAuChannelCount)) return nullptr;
+  const fw::model::Morph& m = a->model.morphs[static_cast<std::size_t>(channel)];
+  return field == 0 ? as_floats(m.vertex_delta).data() : as_floats(m.uv_delta).data();
+}
+
+/// The skin for one frame: reconstruct_face, then the normals the renderer
+/// computes from it (fw::model::vertex_normals). Takes FaceParams as 47
+/// floats (face_params_floats.hpp).
+/// @return positions (3V), uvs (2V) and normals (3V) back to back, valid
+///         until the next frame of this avatar; null for an unknown handle
+EMSCRIPTEN_KEEPALIVE const float* fw_avatar_frame(int handle, const float* params) {
+  Avatar* a = avatars.find(handle);
+  if (!a) return nullptr;
+  const fw::model::FaceShape shape = fw::model::reconstruct_face(a->model, fw::wasm::face_params_from_floats(params));
+  Mesh mesh;
+  mesh.positions = shape.positions;
+  mesh.triangles = a->model.face.skin.triangles;
+  const std::vector<glm::vec3> frame_normals = fw::model::vertex_normals(mesh);
+  a->frame.clear();
+  for (const auto part : {as_floats(shape.positions), as_floats(shape.uvs), as_floats(frame_normals)})
+    a->frame.insert(a->frame.end(), part.begin(), part.end());
+  return a->frame.data();
+}
+
+EMSCRIPTEN_KEEPALIVE int fw_face_params_floats() { return static_cast<int>(fw::wasm::kFaceParamsFloats); }
+
+}

@@ -1,0 +1,67 @@
+# fw_wasm_module(NAME name OUTPUT_DIR dir SOURCES src... INCLUDES dir...
+#                [SYSTEM_INCLUDES dir...] EXPORTS symbol... [COMPILE_OPTIONS opt...]
+#                [LINK_OPTIONS opt...])
+# Compiles C++ sources with Debian's emscripten (em++) into an ES module
+# `dir/name.js` and its `dir/name.wasm`, as part of the normal build: target
+# `name`, in ALL. The host compiler builds the rest of the tree; emscripten is
+# a second toolchain, so its compilations are custom commands (one per
+# source, with a depfile so header changes rebuild them) rather than a CMake
+# target of their own.
+#
+# Only what Debian's package ships prebuilt is used (libc, libc++ with
+# exceptions): its system library cache is frozen, and emscripten's ports
+# (zlib and others) would be downloaded at build time, which a machine
+# without internet cannot do. A missing em++ fails the configuration: the
+# browser engine is not optional.
+find_program(FW_EMXX NAMES em++)
+if(NOT FW_EMXX)
+  message(FATAL_ERROR "em++ (emscripten) not found: the browser engine (web/engine) is compiled to WebAssembly "
+                      "with it. Run deploy/install-deps.sh, or `apt-get install emscripten`.")
+endif()
+# Emscripten's JavaScript optimiser passes need acorn, which Debian keeps in
+# its node module directory rather than emscripten's.
+set(FW_EM_ENV ${CMAKE_COMMAND} -E env NODE_PATH=/usr/share/nodejs)
+# -O2 rather than -O3: the module is small, and binaryen's extra passes would
+# only lengthen the link.
+set(FW_EM_FLAGS -std=c++20 -O2 -fexceptions -DNDEBUG
+    -Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor -Wcast-align -Woverloaded-virtual -Wimplicit-fallthrough)
+
+function(fw_wasm_module)
+  cmake_parse_arguments(ARG "" "NAME;OUTPUT_DIR" "SOURCES;INCLUDES;SYSTEM_INCLUDES;EXPORTS;COMPILE_OPTIONS;LINK_OPTIONS" ${ARGN})
+  if(ARG_UNPARSED_ARGUMENTS OR NOT ARG_NAME OR NOT ARG_OUTPUT_DIR OR NOT ARG_SOURCES)
+    message(FATAL_ERROR "fw_wasm_module: NAME, OUTPUT_DIR and SOURCES are required; unknown: ${ARG_UNPARSED_ARGUMENTS}")
+  endif()
+  set(include_flags)
+  foreach(dir ${ARG_INCLUDES})
+    list(APPEND include_flags -I${dir})
+  endforeach()
+  foreach(dir ${ARG_SYSTEM_INCLUDES})
+    list(APPEND include_flags -isystem ${dir})
+  endforeach()
+  set(objects)
+  foreach(source ${ARG_SOURCES})
+    get_filename_component(source_abs ${source} ABSOLUTE)
+    string(MAKE_C_IDENTIFIER "${source}" object_name)
+    set(object ${CMAKE_CURRENT_BINARY_DIR}/${ARG_NAME}_objects/${object_name}.o)
+    add_custom_command(
+      OUTPUT ${object}
+      COMMAND ${FW_EM_ENV} ${FW_EMXX} ${FW_EM_FLAGS} ${ARG_COMPILE_OPTIONS} ${include_flags}
+              -MD -MF ${object}.d -c ${source_abs} -o ${object}
+      DEPENDS ${source_abs}
+      DEPFILE ${object}.d
+      COMMENT "em++ ${source}"
+      VERBATIM)
+    list(APPEND objects ${object})
+  endforeach()
+  list(JOIN ARG_EXPORTS "," exports)
+  set(module ${ARG_OUTPUT_DIR}/${ARG_NAME}.js)
+  add_custom_command(
+    OUTPUT ${module} ${ARG_OUTPUT_DIR}/${ARG_NAME}.wasm
+    COMMAND ${CMAKE_COMMAND} -E make_directory ${ARG_OUTPUT_DIR}
+    COMMAND ${FW_EM_ENV} ${FW_EMXX} ${FW_EM_FLAGS} ${objects} -o ${module}
+            -sEXPORTED_FUNCTIONS=${exports} ${ARG_LINK_OPTIONS}
+    DEPENDS ${objects}
+    COMMENT "Linking the WebAssembly module ${ARG_NAME}"
+    VERBATIM)
+  add_custom_target(${ARG_NAME} ALL DEPENDS ${module})
+endfunction()

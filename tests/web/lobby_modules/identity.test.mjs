@@ -1,0 +1,23 @@
+// The name and avatar kept across reloads, and a storage that fails.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+
+import { loadIdentity, saveIdentity } from '../../../web/lobby/identity.js';
+
+function memoryStorage() {
+  const items = new Map();
+  return { getItem: (k) => items.get(k) ?? null, setItem: (k, v) => items.set(k, String(v)) };
+}
+
+test('what is saved is loaded', () => {
+  const storage = memoryStorage();
+  assert.deepEqual(loadIdentity(storage), { name: '', asset: '' });
+  saveIdentity({ name: 'Ann', asset: 'ab'.repeat(16) }, storage);
+  assert.deepEqual(loadIdentity(storage), { name: 'Ann', asset: 'ab'.repeat(16) });
+});
+
+test('a broken or refusing storage loses nothing but the memory', () => {
+  const broken = { getItem: () => '{not json', setItem: () => { throw new Error('QuotaExceededError'); } };
+  assert.deepEqual(loadIdentity(broken), { name: '', asset: '' });
+  assert.doesNotThrow(() => saveIdentity({ name: 'Ann', asset: '' }, broken));
+});

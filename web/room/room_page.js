@@ -1,0 +1,257 @@
+// The room page: joins the room named in its address (room.html?room=R&
+// name=N&asset=A&token=T, as the lobby sends a person here), draws it from
+// the person's own place (room_view.js), and wires the controls: chat, the
+// expression and blush buttons, FACS sentences, looking at or snubbing a
+// face, the stream budget, and the meter.
+import { loadEngineFromServer } from '../engine/engine.js';
+import { AttentionTarget } from '../protocol/session_types.js';
+import { FaceRenderer } from './face_renderer.js';
+import { RoomClient } from './room_client.js';
+import { RoomView } from './room_view.js';
+
+const EXPRESSIONS = ['joy', 'sadness', 'anger', 'fear', 'surprise', 'disgust', 'cunning', 'teasing', 'blush'];
+const BUDGET_KEY = 'facewire.budget';
+const $ = (id) => document.getElementById(id);
+
+const query = new URLSearchParams(location.search);
+const identity = { room: query.get('room') || '', name: query.get('name') || '', asset: query.get('asset') || '', token: query.get('token') || '' };
+
+function fail(message) {
+  $('status').textContent = message;
+  $('status').classList.add('error');
+}
+
+async function fetchText(url) {
+  const response = await fetch(url);
+  if (!response.ok) throw new Error(`${url}: HTTP ${response.status}`);
+  return response.text();
+}
+
+/** The page's own package, when the person uploaded a photo: shown at once, never sent back down. */
+async function fetchOwnPackage(asset) {
+  if (!asset) return null;
+  const response = await fetch(`/api/packages/${encodeURIComponent(asset)}`);
+  if (!response.ok) return null;
+  return new Uint8Array(await response.arrayBuffer());
+}
+
+function socketUrl() {
+  const scheme = location.protocol === 'https:' ? 'wss:' : 'ws:';
+  return query.get('servers') || `${scheme}//${location.host}/ws`;
+}
+
+async function main() {
+  if (!identity.room || !identity.name) {
+    location.replace('./');
+    return;
+  }
+  $('room-name').textContent = identity.room;
+  document.title = `facewire: ${identity.room}`;
+  const canvas = $('room-canvas');
+  // Opaque: the shader's alpha is coverage, not transparency.
+  const gl = canvas.getContext('webgl2', { antialias: true, alpha: false, preserveDrawingBuffer: true });
+  if (!gl) return fail('this browser has no WebGL2, which the room needs');
+
+  const ownPackage = fetchOwnPackage(identity.asset);
+  const [engine, vertexSource, fragmentSource] = await Promise.all([
+    loadEngineFromServer(), fetchText('/shaders/face.vert'), fetchText('/shaders/face.frag')]);
+  const renderer = new FaceRenderer(gl, vertexSource, fragmentSource);
+  const budget = $('budget');
+  budget.value = localStorage.getItem(BUDGET_KEY) ?? budget.value;
+  const own = await ownPackage;
+
+  const client = new RoomClient({
+    url: socketUrl(), room: identity.room, name: identity.name, asset: identity.asset, token: identity.token,
+    maxBps: budgetBps(budget.value), ownPackage: Boolean(own), openSocket: (url) => new WebSocket(url),
+    onChange: (what) => changed(what),
+  });
+  const view = new RoomView({ gl, engine, renderer, client });
+  if (own) await view.setOwnPackage(own).catch((error) => console.warn(`own package: ${error.message}`));
+  window.facewireRoom = { client, view };  // for whoever inspects the page (and its tests)
+  client.start();
+
+  budget.addEventListener('change', () => {
+    localStorage.setItem(BUDGET_KEY, budget.value);
+    client.setRate(budgetBps(budget.value));
+  });
+  wireControls(client);
+
+  const frame = (now) => {
+    const ratio = Math.min(2, window.devicePixelRatio || 1);
+    const width = canvas.clientWidth;
+    const height = canvas.clientHeight;
+    if (canvas.width !== Math.round(width * ratio) || canvas.height !== Math.round(height * ratio)) {
+      canvas.width = Math.round(width * ratio);
+      canvas.height = Math.round(height * ratio);
+    }
+    view.draw(width, height, ratio, now);
+    placeOverlays(client, view);
+    canvas.dataset.frames = String(view.frames);
+    requestAnimationFrame(frame);
+  };
+  requestAnimationFrame(frame);
+  setInterval(() => showMeter(client), 500);
+
+  function changed(what) {
+    if (what === 'chat') showChat(client);
+    if (what === 'result') showResults(client);
+    if (['welcome', 'presence', 'attention', 'closed', 'reconnecting', 'closing'].includes(what)) showStatus(client);
+    if (['welcome', 'presence'].includes(what)) showPeople(client);
+  }
+}
+
+/** 0 asks for "unlimited": the server's own cap. */
+const budgetBps = (value) => (Number(value) === 0 ? 100_000_000 : Number(value));
+
+function showStatus(client) {
+  const status = $('status');
+  status.classList.toggle('error', client.status === 'closed' && Boolean(client.error));
+  if (client.status === 'joined') status.textContent = `in the room as ${client.nameOf(client.you)}`;
+  else if (client.status === 'reconnecting') status.textContent = `connection lost${client.error ? ` (${client.error})` : ''}; reconnecting…`;
+  else if (client.status === 'closed') status.textContent = client.error || 'left the room';
+}
+
+function showMeter(client) {
+  const reading = client.meter.reading(performance.now());
+  $('meter').textContent = `${reading.kbps.toFixed(1)} kbit/s`;
+  $('meter').dataset.kbps = reading.kbps.toFixed(3);
+  for (const item of document.querySelectorAll('#people li')) {
+    const fps = reading.fps.get(Number(item.dataset.avatar)) ?? 0;
+    item.querySelector('.fps').textContent = `${fps.toFixed(0)} f/s`;
+  }
+}
+
+function showChat(client) {
+  const log = $('chat-log');
+  const line = client.chatLines.at(-1);
+  const item = document.createElement('li');
+  const from = document.createElement('span');
+  from.className = 'from';
+  from.textContent = line.name;
+  item.append(from, document.createTextNode(line.text));
+  log.append(item);
+  while (log.children.length > 200) log.firstChild.remove();
+  log.scrollTop = log.scrollHeight;
+  $('caption').textContent = `${line.name}: ${line.text}`;
+}
+
+function showPeople(client) {
+  const list = $('people');
+  list.replaceChildren();
+  for (const [id, { info }] of client.avatars) {
+    const item = document.createElement('li');
+    item.dataset.avatar = String(id);
+    const who = document.createElement('span');
+    who.className = 'who';
+    who.textContent = `${info.name}${id === client.you ? ' (you)' : ''}${info.person ? '' : ' · resident'}`;
+    const fps = document.createElement('span');
+    fps.className = 'fps';
+    item.append(who, fps);
+    if (id !== client.you) {
+      for (const [label, act] of [['look', () => client.lookAt(id)], ['snub', () => client.snub(id)]]) {
+        const button = document.createElement('button');
+        button.className = 'button';
+        button.type = 'button';
+        button.textContent = label;
+        button.setAttribute('aria-label', `${label} ${info.name}`);
+        button.addEventListener('click', act);
+        item.append(button);
+      }
+    }
+    list.append(item);
+  }
+}
+
+const pending = new Map();  // request id -> button
+
+function showResults(client) {
+  for (const [id, button] of pending) {
+    if (!client.results.has(id)) continue;
+    const error = client.results.get(id);
+    pending.delete(id);
+    button.classList.remove('sent');
+    button.classList.add(error ? 'refused' : 'accepted');
+    $('command-result').textContent = error ? `refused: ${error}` : `${button.dataset.label}: on your face now`;
+    setTimeout(() => button.classList.remove('accepted', 'refused'), 2500);
+  }
+}
+
+function wireControls(client) {
+  const buttons = $('expressions');
+  for (const name of EXPRESSIONS) {
+    const button = document.createElement('button');
+    button.className = 'button';
+    button.type = 'button';
+    button.textContent = name;
+    button.dataset.label = name;
+    button.dataset.expression = name;
+    button.addEventListener('click', () => {
+      const id = client.express(name, 1, name === 'blush' ? 8000 : 3000);
+      button.classList.remove('accepted', 'refused');
+      button.classList.add('sent');
+      pending.set(id, button);
+    });
+    buttons.append(button);
+  }
+  $('facs-form').addEventListener('submit', (event) => {
+    event.preventDefault();
+    const sentence = $('facs').value.trim();
+    if (!sentence) return;
+    const id = client.facs(sentence);
+    const submit = event.target.querySelector('button');
+    submit.dataset.label = 'FACS sentence';
+    pending.set(id, submit);
+  });
+  $('chat-form').addEventListener('submit', (event) => {
+    event.preventDefault();
+    const text = $('chat-text').value.trim();
+    if (!text) return;
+    client.chat(text);
+    $('chat-text').value = '';
+  });
+  const menu = $('face-menu');
+  let menuFor = 0;
+  $('look-at').addEventListener('click', () => { client.lookAt(menuFor); menu.hidden = true; });
+  $('snub').addEventListener('click', () => { client.snub(menuFor); menu.hidden = true; });
+  $('overlay').addEventListener('click', (event) => {
+    const tile = event.target.closest('.tile:not(.self)');
+    if (!tile) return;
+    menuFor = Number(tile.dataset.avatar);
+    $('face-menu-name').textContent = tile.querySelector('.name').textContent;
+    menu.style.left = `${tile.offsetLeft + 8}px`;
+    menu.style.top = `${tile.offsetTop + 8}px`;
+    menu.hidden = false;
+  });
+  document.addEventListener('keydown', (event) => { if (event.key === 'Escape') menu.hidden = true; });
+}
+
+/** Names under the faces, each tile clickable; the self-view's frame. */
+function placeOverlays(client, view) {
+  const overlay = $('overlay');
+  const wanted = view.tiles.map((t) => ({ ...t, self: false }));
+  if (view.selfTile) wanted.push({ id: client.you, name: `${identity.name} (you)`, rect: view.selfTile, drawn: true, self: true });
+  while (overlay.children.length > wanted.length) overlay.lastChild.remove();
+  while (overlay.children.length < wanted.length) {
+    const tile = document.createElement('div');
+    tile.className = 'tile';
+    tile.tabIndex = 0;
+    const name = document.createElement('p');
+    name.className = 'name';
+    const waiting = document.createElement('p');
+    waiting.className = 'waiting';
+    tile.append(name, waiting);
+    overlay.append(tile);
+  }
+  wanted.forEach((t, i) => {
+    const tile = overlay.children[i];
+    tile.dataset.avatar = String(t.id);
+    tile.classList.toggle('self', t.self);
+    const attention = client.attention.get(t.id);
+    tile.classList.toggle('attends-you', !t.self && attention?.target === AttentionTarget.avatar && attention.targetAvatar === client.you);
+    Object.assign(tile.style, { left: `${t.rect.x}px`, top: `${t.rect.y}px`, width: `${t.rect.w}px`, height: `${t.rect.h}px` });
+    if (tile.querySelector('.name').textContent !== t.name) tile.querySelector('.name').textContent = t.name;
+    tile.querySelector('.waiting').textContent = t.drawn ? '' : 'arriving…';
+  });
+}
+
+main().catch((error) => fail(`the room cannot start: ${error.message}`));

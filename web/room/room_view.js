@@ -1,0 +1,227 @@
+// The room drawn from the viewer's own place (PROTOCOL.md 6.1): each of the
+// others in a tile, seen from the viewer's eyes as it sits on the view's arc
+// (view_geometry.js), its eyes and head re-aimed at where its attention
+// target sits in this view (gaze_reaim.js); the viewer's own face in a small
+// tile, at once, from the page's own package. Names and the last chat line
+// are HTML laid over the canvas (room_page.js places them from `tiles`).
+import { mat4 } from '../mat4.js';
+import { TURN_SHARE, aimAt, reaim } from './gaze_reaim.js';
+import { decodeImage } from './face_renderer.js';
+import { MM_PER_UNIT, eyeMidMm, screenOrder, seatToRoom, serverSeat, viewSeats } from './view_geometry.js';
+import { tileLayout } from './tile_layout.js';
+
+/** How long a face takes to turn to a new target in the view (s): the server's head moves as smoothly. */
+const RETARGET_S = 0.35;
+/** How much of the head a tile shows, in model units: its height with hair and some neck, and its width. */
+const TILE_SPAN_UNITS = 4.2;
+const TILE_WIDTH_UNITS = 3.1;
+const BACKGROUND = [0.16, 0.17, 0.2];
+
+const NEUTRAL = {
+  head_yaw_rad: 0, head_pitch_rad: 0, head_roll_rad: 0, head_translation_mm: [0, 0, 0],
+  eye_left: { yaw_rad: 0, pitch_rad: 0 }, eye_right: { yaw_rad: 0, pitch_rad: 0 },
+  lid_left: 0, lid_right: 0, blush: [0, 0, 0, 0, 0], pallor: 0, au: [],
+};
+
+/** A face's place: translate(origin) * rotate_y(facing), model units. */
+const placeOf = (seat) => mat4.multiply(mat4.translation(seat.origin.map((v) => v / MM_PER_UNIT)), mat4.rotationY(seat.facingYawRad));
+
+export class RoomView {
+  constructor({ gl, engine, renderer, client }) {
+    this.gl = gl;
+    this.engine = engine;
+    this.renderer = renderer;
+    this.client = client;
+    this.faces = new Map();   // avatar id -> { bytes, model, gpu } once its package is built
+    this.building = new Map();  // avatar id -> bytes being built
+    this.retarget = new Map();  // avatar id -> { key, since }
+    this.generic = engine.genericAvatar();
+    this.eyeMid = eyeMidMm(this.generic.face.eyes.map((e) => e.centre));
+    this.ownFace = null;
+    this.tiles = [];
+    this.frames = 0;
+    /** When the viewer's own face was first drawn (performance.now()), for the page's tests. */
+    this.selfDrawnMs = null;
+    /** What each tile showed last: avatar id (or 'self') -> { area, viewProjection, model, landmarks }. */
+    this.shown = new Map();
+  }
+
+  /** The viewer's own face, from the package the page holds (before any server message). */
+  async setOwnPackage(bytes) {
+    this.ownFace = await this.build(bytes);
+  }
+
+  async build(bytes) {
+    const pkg = this.engine.readPackage(bytes);
+    try {
+      const model = this.engine.avatarFromPackage(pkg);
+      const names = ['faceTexture', 'eye', 'mouth', 'closedLid', 'colourMasksA', 'colourMasksB'];
+      const decoded = await Promise.all(names.map((n) => decodeImage(pkg.images[n])));
+      const images = Object.fromEntries(names.map((n, i) => [n, decoded[i]]));
+      const gpu = this.renderer.addFace(model, images, pkg.closedLidRect);
+      return { bytes, model, gpu };
+    } finally {
+      pkg.release();
+    }
+  }
+
+  /** Builds what arrived since the last frame, and lets go of who left. */
+  syncPackages() {
+    for (const [id, entry] of this.client.avatars) {
+      const bytes = entry.package?.bytes;
+      if (!bytes || this.faces.get(id)?.bytes === bytes || this.building.get(id) === bytes) continue;
+      this.building.set(id, bytes);
+      this.build(bytes).then((face) => {
+        if (this.building.get(id) !== bytes) return this.release(face);
+        this.building.delete(id);
+        const old = this.faces.get(id);
+        this.faces.set(id, face);
+        if (old) this.release(old);
+        return undefined;
+      }).catch((error) => {
+        this.building.delete(id);
+        console.warn(`avatar ${id}: ${error.message}`);
+      });
+    }
+    for (const [id, face] of this.faces) {
+      if (!this.client.avatars.has(id)) {
+        this.faces.delete(id);
+        this.release(face);
+      }
+    }
+  }
+
+  release(face) {
+    this.renderer.removeFace(face.gpu);
+    face.model.release();
+  }
+
+  /** Where a face attending `entry` aims: a room point in the server's room and in the view, or null. */
+  targets(id, entry, serverSeats, viewPlaces) {
+    if (!entry || entry.target !== 2) return null;
+    const target = entry.targetAvatar;
+    const server = serverSeats.get(target);
+    if (!server) return null;
+    const inView = target === this.client.you ? [0, 0, 0] : viewPlaces.get(target)?.eyes;
+    if (!inView) return null;
+    return { server: seatToRoom(server, this.eyeMid), view: inView, viewer: target === this.client.you, key: `${target}` };
+  }
+
+  /** The weight of the re-aim, eased in over RETARGET_S after a change of target. */
+  easing(id, key, nowMs) {
+    const last = this.retarget.get(id);
+    if (!last || last.key !== key) {
+      this.retarget.set(id, { key, since: nowMs });
+      return 0;
+    }
+    const t = Math.min(1, (nowMs - last.since) / 1000 / RETARGET_S);
+    return t * t * (3 - 2 * t);
+  }
+
+  /** Draws one frame on a canvas of `width` x `height` CSS pixels at `pixelRatio`. */
+  draw(width, height, pixelRatio, nowMs) {
+    const gl = this.gl;
+    this.syncPackages();
+    const client = this.client;
+    const infos = [...client.avatars.values()].map((a) => a.info);
+    const others = client.you ? screenOrder(infos, client.you) : [];
+    const layout = tileLayout(others.length, width, height);
+    const seats = viewSeats(others.length, this.eyeMid);
+    const viewPlaces = new Map(others.map((info, i) => [info.id, seats[i]]));
+    const serverSeats = new Map(infos.map((info) => [info.id, serverSeat(info.seat)]));
+
+    gl.viewport(0, 0, gl.drawingBufferWidth, gl.drawingBufferHeight);
+    gl.disable(gl.SCISSOR_TEST);
+    gl.clearColor(0.11, 0.12, 0.14, 1);
+    gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
+
+    this.tiles = others.map((info, i) => {
+      const rect = layout.tiles[i];
+      const face = this.faces.get(info.id);
+      const decoded = client.face(info.id, nowMs);
+      const drawn = Boolean(face && decoded);
+      if (drawn) {
+        const seat = seats[i];
+        const entry = client.attention.get(info.id);
+        const aim = this.targets(info.id, entry, serverSeats, viewPlaces);
+        let params = decoded;
+        if (aim) {
+          const weight = this.easing(info.id, aim.key, nowMs);
+          const view = aimAt(seat, this.eyeMid, aim.view);
+          if (!aim.viewer) view.yaw *= TURN_SHARE;
+          params = reaim(decoded, aimAt(serverSeats.get(info.id), this.eyeMid, aim.server), view, weight);
+        } else {
+          this.retarget.delete(info.id);
+        }
+        this.drawTile(info.id, rect, layout.nameBand, height, pixelRatio, face, params, placeOf(seat), this.tileCamera(seat, rect, layout.nameBand));
+      }
+      return { id: info.id, name: info.name, person: info.person, rect, drawn };
+    });
+
+    // The viewer's own face, as a mirror: the package the page holds at
+    // once, the decoded face once the stream brings it.
+    const own = this.ownFace ?? this.faces.get(client.you);
+    if (own) {
+      const params = (client.you && client.face(client.you, nowMs)) || NEUTRAL;
+      const rect = layout.self;
+      const aspect = rect.w / rect.h;
+      const camera = { position: [0, -0.25, 8.2 / Math.min(1, aspect)], target: [0, -0.25, 0] };
+      this.drawTile('self', rect, 0, height, pixelRatio, own, params, mat4.translation([0, 0, 0]), this.camera(camera, 0.5236, aspect));
+      this.selfTile = rect;
+      this.selfDrawnMs ??= nowMs;
+    }
+    this.frames += 1;
+  }
+
+  /** The viewer's eyes looking at a seat's face, framing the head in the tile. */
+  tileCamera(seat, rect, nameBand) {
+    const eyes = seat.eyes.map((v) => v / MM_PER_UNIT);
+    // The middle of the head (a little below the eyes), and the span to fit.
+    const target = [eyes[0], eyes[1] - 0.3, eyes[2]];
+    const distance = Math.hypot(...target);
+    const aspect = rect.w / Math.max(1, rect.h - nameBand);
+    const spanY = Math.max(TILE_SPAN_UNITS, TILE_WIDTH_UNITS / aspect);
+    return this.camera({ position: [0, 0, 0], target }, 2 * Math.atan(spanY / 2 / distance), aspect);
+  }
+
+  camera({ position, target }, fovY, aspect) {
+    const viewProjection = mat4.multiply(mat4.perspective(fovY, aspect, 0.5, 100), mat4.lookAt(position, target, [0, 1, 0]));
+    return { viewProjection, position };
+  }
+
+  drawTile(key, rect, nameBand, height, pixelRatio, face, params, place, camera) {
+    const gl = this.gl;
+    // GL's origin is bottom left; the name band stays free under the face.
+    const x = Math.round(rect.x * pixelRatio);
+    const y = Math.round((height - rect.y - rect.h + nameBand) * pixelRatio);
+    const w = Math.round(rect.w * pixelRatio);
+    const h = Math.round((rect.h - nameBand) * pixelRatio);
+    gl.viewport(x, y, w, h);
+    gl.scissor(x, y, w, h);
+    gl.enable(gl.SCISSOR_TEST);
+    gl.clearColor(...BACKGROUND, 1);
+    gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
+    const frame = face.model.frame(params, place);
+    this.renderer.draw([{ face: face.gpu, frame }], camera);
+    gl.disable(gl.SCISSOR_TEST);
+    const landmarks = Array.from(face.model.face.landmarkVertices, (v) => Array.from(frame.positions.subarray(3 * v, 3 * v + 3)));
+    this.shown.set(key, { area: { x: rect.x, y: rect.y, w: rect.w, h: rect.h - nameBand }, viewProjection: camera.viewProjection, model: frame.model, landmarks });
+  }
+
+  /**
+   * Where landmarks (the 68-point scheme) of the face a tile showed last lie
+   * on the canvas, CSS pixels from its top left: for whoever inspects the
+   * page (its tests find eyes and mouths this way).
+   */
+  landmarksOnScreen(key, indices) {
+    const shown = this.shown.get(key);
+    if (!shown) return null;
+    const m = mat4.multiply(shown.viewProjection, shown.model);
+    return indices.map((i) => {
+      const [x, y, z] = shown.landmarks[i];
+      const clip = [0, 1, 2, 3].map((r) => m[r] * x + m[4 + r] * y + m[8 + r] * z + m[12 + r]);
+      const { area } = shown;
+      return [area.x + (clip[0] / clip[3] + 1) / 2 * area.w, area.y + (1 - clip[1] / clip[3]) / 2 * area.h];
+    });
+  }
+}
