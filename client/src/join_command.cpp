@@ -11,6 +11,7 @@
 #include "join_loop.hpp"
 #include "room_summary.hpp"
 #include "room_view.hpp"
+#include "self_view.hpp"
 #include "session_thread.hpp"
 #include "command_failure.hpp"
 
@@ -72,11 +73,21 @@ void run(const JoinArgs& args, const JoinNetwork& network) {
   std::string error;
   JoinPlan plan;
   if (!plan_join(args, plan, error)) fail_command("join", 2, error);
-  UploadedAvatar uploaded;
-  if (!upload_own_avatar(args, plan.url, network.upload_avatar, uploaded, error)) fail_command("join", 2, error);
+  OwnAvatar own;
+  UploadTarget target;
+  if (brings_own_avatar(args) && (!upload_target(args, plan.url, target, error) || !prepare_own_avatar(args, own, error)))
+    fail_command("join", 2, error);
   FrameOutputs outputs;
   if (!open_frame_outputs(args, plan.render.width, plan.render.height, outputs, error)) fail_command("join", 2, error);
   const std::unique_ptr<RoomView> view = start_view(outputs, plan.render);
+  // The self view shows before the upload and before the server says anything.
+  if (view) {
+    if (!set_self_look(*view, own, error)) std::cerr << "facewire-client join: your own face cannot be shown (" << error << ")\n";
+    if (!show_self_view(*view, outputs, args.name, error)) fail_command("join", 1, error);
+  }
+  UploadedAvatar uploaded;
+  if (!upload_prepared_avatar(args, plan.url, network.upload_avatar, std::move(own), uploaded, error))
+    fail_command("join", 2, error);
   watch_signals();
   RoomState state;
   const JoinOutcome outcome = play_room(args, plan, network, uploaded, state, view.get(), outputs);

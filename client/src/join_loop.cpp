@@ -28,9 +28,10 @@ bool JoinLoop::step(Clock::time_point now, const std::atomic<bool>& interrupted)
     return false;
   }
   if (time_is_up(now) || !follow_room(now) || !joined_in_time(now)) return false;
-  if (!outcome_.ever_joined) return true;
+  // Before the welcome the frames show the self view alone (the viewer's own
+  // package or photo): they go out, but --frames counts frames in the room.
   if (view_ && !show_frame(now)) return false;
-  ++outcome_.frames;
+  if (outcome_.ever_joined) ++outcome_.frames;
   return true;
 }
 
@@ -64,16 +65,16 @@ bool JoinLoop::joined_in_time(Clock::time_point now) {
   return false;
 }
 
-// Renders every avatar's face as it is now (the newest decoded frame,
+// Renders the room as it is now (the newest decoded frame,
 // extrapolated) and writes the frame to every output; false when one failed.
 bool JoinLoop::show_frame(Clock::time_point now) {
   appearances_.load_new(state_, *view_);
-  std::vector<AvatarFace> faces;
+  RoomScene scene;
   {
     std::lock_guard lock(state_.mutex);
-    faces = state_.faces(now);
+    scene = state_.scene(now, args_.name);
   }
-  if (outputs_.write(view_->render(faces), outcome_.error)) return true;
+  if (outputs_.write(view_->render(scene), outcome_.error)) return true;
   outcome_.status = 1;
   return false;
 }

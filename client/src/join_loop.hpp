@@ -2,8 +2,9 @@
 // The render loop of `join`, on the main thread while the session runs on
 // its own (session_thread.hpp): --fps times a second it checks whether to
 // stop (Ctrl-C, --frames, --seconds, a refusal, no welcome in time), prints
-// the live statistics line, and once in the room renders every avatar's
-// newest face and writes the frame to every output. A frame that takes too
+// the live statistics line, and renders the room (every avatar's newest
+// face; before the welcome the self view alone) and writes the frame to
+// every output. A frame that takes too
 // long is not caught up on: the next one is drawn from the state of then.
 #include <atomic>
 #include <chrono>

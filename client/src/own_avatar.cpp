@@ -19,7 +19,8 @@ bool read_photo(const std::string& path, OwnAvatar& avatar, std::string& error) 
     error = "--photo " + path + ": " + error;
     return false;
   }
-  avatar.bytes = std::move(photo.jpeg);
+  avatar.photo = std::move(photo.jpeg);
+  avatar.bytes = avatar.photo;
   avatar.content_type = "image/jpeg";
   return true;
 }
@@ -46,6 +47,7 @@ bool read_package_and_photo(const JoinArgs& args, OwnAvatar& avatar, std::string
   MultipartUpload upload = package_with_photo(avatar.package, photo.bytes, photo.content_type);
   avatar.content_type = std::move(upload.content_type);
   avatar.bytes = std::move(upload.body);
+  avatar.photo = std::move(photo.photo);
   return true;
 }
 
@@ -83,10 +85,18 @@ int upload_timeout_s(std::size_t bytes, double max_kbps) {
 
 bool upload_own_avatar(const JoinArgs& args, const ServerUrl& url, const AvatarUploader& uploader,
                        UploadedAvatar& uploaded, std::string& error) {
-  if (args.photo.empty() && args.avatar.empty()) return true;
+  if (!brings_own_avatar(args)) return true;
   UploadTarget target;
   OwnAvatar avatar;
   if (!upload_target(args, url, target, error) || !prepare_own_avatar(args, avatar, error)) return false;
+  return upload_prepared_avatar(args, url, uploader, std::move(avatar), uploaded, error);
+}
+
+bool upload_prepared_avatar(const JoinArgs& args, const ServerUrl& url, const AvatarUploader& uploader,
+                            OwnAvatar avatar, UploadedAvatar& uploaded, std::string& error) {
+  if (!brings_own_avatar(args)) return true;
+  UploadTarget target;
+  if (!upload_target(args, url, target, error)) return false;
   const int timeout_s = upload_timeout_s(avatar.bytes.size(), args.max_kbps);
   if (!uploader(target, avatar.content_type, avatar.bytes, timeout_s, uploaded.asset, error)) return false;
   uploaded.bytes = avatar.bytes.size();

@@ -34,6 +34,7 @@ struct OwnAvatar {
   std::string content_type;  ///< "image/jpeg", "application/x-facewire-avatar" or multipart/form-data
   std::vector<std::uint8_t> bytes;    ///< the upload's body
   std::vector<std::uint8_t> package;  ///< the package, when one goes up (the client draws its own face from it)
+  std::vector<std::uint8_t> photo;    ///< the downsized photo (JPEG), when one goes up: the self view until the face comes
 };
 
 /// What came of the upload.
@@ -43,6 +44,9 @@ struct UploadedAvatar {
   /// The package, when one was uploaded: the client draws its own face from it.
   std::shared_ptr<const std::vector<std::uint8_t>> own_package;
 };
+
+/// Whether the command line brings a face of its own (--photo or --avatar).
+inline bool brings_own_avatar(const JoinArgs& args) { return !args.photo.empty() || !args.avatar.empty(); }
 
 /// Where uploads go: --api, or the ws:// URL's own host and port (the
 /// WebSocket shares the HTTP port). A tcp:// URL needs --api.
@@ -63,5 +67,9 @@ int upload_timeout_s(std::size_t bytes, double max_kbps);
 /// (and `uploaded` stays empty); else prepare, then upload through `uploader`.
 bool upload_own_avatar(const JoinArgs& args, const ServerUrl& url, const AvatarUploader& uploader,
                        UploadedAvatar& uploaded, std::string& error);
+/// The upload alone, of an avatar prepare_own_avatar made (so that the
+/// self view can show it while the upload runs).
+bool upload_prepared_avatar(const JoinArgs& args, const ServerUrl& url, const AvatarUploader& uploader,
+                            OwnAvatar avatar, UploadedAvatar& uploaded, std::string& error);
 
 }  // namespace fw::client

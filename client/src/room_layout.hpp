@@ -1,8 +1,9 @@
 #pragma once
-// Where a room's avatars stand: on an arc around a point in front of them,
-// each turned toward that point, so they face one another as the three
-// faces of the behavioral-animation paper's Figure 9 do, with the viewer
-// looking in from the open side.
+// Where the faces of a room of `count` avatars appear in the frames one of
+// them renders (first_person_layout): the others on the arc in front, then
+// the viewer's own face in the self view. For code that looks at the frames
+// from outside, knowing only how many are in the room (the end-to-end
+// tests): the view itself orders the others by their seats.
 #include <vector>
 
 #include <glm/mat4x4.hpp>
@@ -12,16 +13,14 @@
 
 namespace fw::client {
 
-/// The place (model matrix before the head's own pose) of each of `count`
-/// avatars, left to right as the viewer sees them: translate(seat) *
-/// rotate_y(facing). One avatar stands at the origin facing the viewer; more
-/// sit on behavior::seat_layout's arc (up to three avatars exactly; larger
-/// rooms on an arc narrowed to 120 degrees).
-/// @param[in] count  0 .. 64
-std::vector<glm::mat4> room_places(int count);
+/// The client's default frame shape (640x360).
+inline constexpr float kDefaultAspect = 16.0f / 9.0f;
 
-/// A camera that sees every avatar of room_places(count) whole.
-/// @param[in] aspect  image width / height
+/// The places of the faces a member of a room of `count` (1 .. 65) sees,
+/// in a frame of `aspect`: count - 1 others left to right, then the self view.
+std::vector<glm::mat4> room_places(int count, float aspect = kDefaultAspect);
+
+/// The camera of those frames.
 render::Camera room_camera(int count, float aspect);
 
 /// A point on the middle of the face standing at `place` (between the eyes

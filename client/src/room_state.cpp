@@ -16,6 +16,28 @@ std::vector<AvatarFace> RoomState::faces(std::chrono::steady_clock::time_point n
   return out;
 }
 
+RoomScene RoomState::scene(std::chrono::steady_clock::time_point now, const std::string& your_name) const {
+  RoomScene scene;
+  scene.now = now;
+  scene.you = you;
+  scene.your_name = your_name;
+  std::map<std::uint32_t, codec::FaceParams> decoded;
+  for (AvatarFace& face : faces(now)) decoded[face.avatar] = face.params;
+  for (const auto& [id, avatar] : avatars) {
+    SceneMember member{id, avatar.info.name, avatar.info.seat, std::nullopt, {id, codec::AttentionTarget::room, 0}};
+    if (const auto it = decoded.find(id); it != decoded.end()) member.face = it->second;
+    if (const auto it = attention.find(id); it != attention.end()) member.attention = it->second;
+    if (id == scene.you && !avatar.info.name.empty()) scene.your_name = avatar.info.name;
+    scene.members.push_back(std::move(member));
+  }
+  for (auto it = events.rbegin(); it != events.rend(); ++it)
+    if (it->kind == "chat") {
+      scene.caption = it->name + ": " + it->text;
+      break;
+    }
+  return scene;
+}
+
 void RoomState::connection_started() {
   joined = false;
   decoder = codec::RoomDecoder();

@@ -20,7 +20,7 @@
 #include "fw/codec/messages.hpp"
 #include "link_stats.hpp"
 #include "package_assembler.hpp"
-#include "room_view.hpp"
+#include "room_scene.hpp"
 
 namespace fw::client {
 
@@ -109,6 +109,11 @@ class RoomState {
   /// order (avatar id: the order they joined in). Avatars none of whose
   /// frames arrived yet are left out.
   std::vector<AvatarFace> faces(std::chrono::steady_clock::time_point now) const;
+
+  /// What the room view draws now: everyone with their seat, attention and
+  /// face (as faces() has it), the last chat line as the caption.
+  /// `your_name` names the self view before the welcome.
+  RoomScene scene(std::chrono::steady_clock::time_point now, const std::string& your_name) const;
 };
 
 }  // namespace fw::client

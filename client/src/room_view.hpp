@@ -1,8 +1,12 @@
 #pragma once
-// The room as the client shows it: every avatar's face rebuilt from its
-// FaceParams and drawn in one space (room_layout), offscreen with OSMesa.
-// Avatars whose package has not arrived yet are drawn as the generic face.
-// Lives on one thread (it owns the GL context).
+// The room as the client shows it, from the viewer's own place at the
+// table (first_person_layout): the others' faces rebuilt from their
+// FaceParams, each re-aimed at where its attention target sits in this view
+// (gaze_reaim), with their names under them, the last chat line as a caption
+// and the viewer's own face in a self-view tile; rendered offscreen with
+// OSMesa. Avatars whose package has not arrived yet are drawn as the generic
+// face; the self view shows the viewer's own package or photo from the first
+// frame. Lives on one thread (it owns the GL context).
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -13,14 +17,10 @@
 #include "fw/model/image.hpp"
 #include "fw/render/avatar_appearance.hpp"
 #include "fw/render/face_renderer.hpp"
+#include "gaze_reaim.hpp"
+#include "room_scene.hpp"
 
 namespace fw::client {
-
-/// One avatar in one frame.
-struct AvatarFace {
-  std::uint32_t avatar = 0;  ///< room-frame avatar id
-  codec::FaceParams params;
-};
 
 class RoomView {
  public:
@@ -32,9 +32,14 @@ class RoomView {
   /// after the preview).
   void set_appearance(std::uint32_t avatar, std::shared_ptr<const render::AvatarAppearance> appearance);
 
-  /// Draws `faces` (seated left to right in the given order) and returns
-  /// the image. Avatars the view knew that are not in `faces` are forgotten.
-  model::RgbaImage render(const std::vector<AvatarFace>& faces);
+  /// The viewer's own face before the server has sent anything: the package
+  /// it uploaded, or else the photo it uploaded (shown flat in the tile until
+  /// its avatar's package arrives). Either may be null / empty.
+  void set_self_look(std::shared_ptr<const render::AvatarAppearance> appearance, model::RgbaImage photo);
+
+  /// Draws `scene` and returns the image. Avatars the view knew that are not
+  /// in the scene are forgotten.
+  model::RgbaImage render(const RoomScene& scene);
 
   int width() const { return options_.width; }
   int height() const { return options_.height; }
@@ -49,11 +54,20 @@ class RoomView {
   void upload(Shown& shown);
   void forget(std::uint32_t avatar);
   bool restart_renderer(std::string& error);
+  void forget_absent(const RoomScene& scene);
+  render::FaceDraw draw_of(Shown& shown, const codec::FaceParams& params, const glm::mat4& place);
+  const render::AvatarAppearance& appearance_of(const Shown& shown) const;
+  /// The self view's face, or null when the tile shows the photo instead.
+  Shown* self_face(const RoomScene& scene);
 
   render::RendererOptions options_;
   std::unique_ptr<render::FaceRenderer> renderer_;
   std::shared_ptr<const render::AvatarAppearance> placeholder_;
   std::map<std::uint32_t, Shown> shown_;
+  std::map<std::uint32_t, GazeBlend> blends_;  ///< by avatar: its correction while its target changes
+  Shown self_;                                 ///< the self view's face (its own GL face)
+  std::shared_ptr<const render::AvatarAppearance> self_appearance_;
+  model::RgbaImage self_photo_;
   // FaceRenderer never frees a face: after this many replaced or departed
   // faces the renderer is rebuilt, so a long session's GPU memory stays bounded.
   int retired_faces_ = 0;

@@ -99,6 +99,33 @@ TEST(RoomState, FacesAreTheDecodedOnesInSeatOrderExtrapolatedToNow) {
   EXPECT_EQ(state.avatars.at(3).last_frame_at, at);
 }
 
+TEST(RoomState, TheSceneHasSeatsAttentionFacesAndTheLastChatLine) {
+  RoomState state;
+  EXPECT_EQ(state.scene(Clock::now(), "me").you, 0u) << "before the welcome";
+  EXPECT_EQ(state.scene(Clock::now(), "me").your_name, "me");
+  codec::AvatarInfo ada = avatar_info(1, "ada"), bob = avatar_info(2, "bob");
+  ada.seat = {-210.0f, 0.0f, 47.0f, 0.44f};
+  state.welcomed(welcome_of(2, {ada, bob}), {}, Clock::now());
+  state.stream_started(codec::StreamOptions{});
+  FaceStream ada_face;
+  const auto at = Clock::now();
+  ASSERT_TRUE(state.decode_room_frame(room_frame({{1, ada_face.frame(face(0.5f))}}), at));
+  state.attention_changed({{{1, codec::AttentionTarget::avatar, 2}}});
+  state.chat_line({1, "first"});
+  state.chat_line({2, "second"});
+  const RoomScene scene = state.scene(at, "me");
+  EXPECT_EQ(scene.you, 2u);
+  EXPECT_EQ(scene.your_name, "bob") << "the room's name for the viewer, once there";
+  ASSERT_EQ(scene.members.size(), 2u);
+  EXPECT_EQ(scene.members[0].seat, ada.seat);
+  ASSERT_TRUE(scene.members[0].face.has_value());
+  EXPECT_EQ(scene.members[0].attention.target, codec::AttentionTarget::avatar);
+  EXPECT_EQ(scene.members[0].attention.target_avatar, 2u);
+  EXPECT_FALSE(scene.members[1].face.has_value()) << "bob sent no frame";
+  EXPECT_EQ(scene.members[1].attention.target, codec::AttentionTarget::room) << "the room until told";
+  EXPECT_EQ(scene.caption, "bob: second");
+}
+
 TEST(RoomState, UndecodableFramesAreCounted) {
   RoomState state;
   state.stream_started(codec::StreamOptions{});

@@ -7,6 +7,7 @@
 
 #include "fw/behavior/eye_head.hpp"
 #include "fw/model/procedural_texture.hpp"
+#include "polygon_inset.hpp"
 
 namespace fw::render {
 namespace {
@@ -230,16 +231,7 @@ std::vector<glm::ivec2> pixels_inside(const std::vector<glm::vec2>& polygon, flo
   std::vector<glm::ivec2> inside;
   for (int y = static_cast<int>(low.y); y <= static_cast<int>(high.y); ++y)
     for (int x = static_cast<int>(low.x); x <= static_cast<int>(high.x); ++x) {
-      const glm::vec2 c(x + 0.5f, y + 0.5f);
-      bool in = false;
-      float edge = 1e9f;
-      for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
-        const glm::vec2 a = polygon[i], b = polygon[j];
-        if ((a.y > c.y) != (b.y > c.y) && c.x < (b.x - a.x) * (c.y - a.y) / (b.y - a.y) + a.x) in = !in;
-        const float t = glm::clamp(glm::dot(c - a, b - a) / glm::dot(b - a, b - a), 0.0f, 1.0f);
-        edge = std::min(edge, glm::length(c - (a + t * (b - a))));
-      }
-      if (in && edge >= inset) inside.emplace_back(x, y);
+      if (test::inside_inset(polygon, {x + 0.5f, y + 0.5f}, inset)) inside.emplace_back(x, y);
     }
   return inside;
 }

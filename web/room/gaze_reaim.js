@@ -34,6 +34,33 @@ export function aimAt(seat, eyeMid, target) {
 }
 
 const clampEye = (v) => Math.max(-EYE_RANGE_RAD, Math.min(EYE_RANGE_RAD, v));
+const mix = (a, b, t) => a + (b - a) * t;
+
+/**
+ * FaceParams `params` of a face that attends the viewer, turned onto the
+ * viewer: the head straight at `viewAim` (no sway: the server's head lags
+ * its gaze by an amount no rule here predicts, and any of it left in the
+ * head would show as irises off the centre of the eyes), the eyes carrying
+ * only what the gaze does around the server's aim, converged on the
+ * viewer's distance (`vergenceRad` each) rather than on the server's target.
+ */
+export function reaimAtViewer(params, serverAim, viewAim, vergenceRad, weight = 1) {
+  const fine = (axis, key) => params[key] + (params.eye_left[axis] + params.eye_right[axis]) / 2 - serverAim[axis === 'yaw_rad' ? 'yaw' : 'pitch'];
+  const yaw = fine('yaw_rad', 'head_yaw_rad');
+  const pitch = fine('pitch_rad', 'head_pitch_rad');
+  // The person's right eye turns toward the person's left (+yaw) to converge.
+  const eye = (e, inward) => ({
+    yaw_rad: mix(e.yaw_rad, clampEye(yaw + inward * vergenceRad), weight),
+    pitch_rad: mix(e.pitch_rad, clampEye(pitch), weight),
+  });
+  return {
+    ...params,
+    head_yaw_rad: mix(params.head_yaw_rad, viewAim.yaw, weight),
+    head_pitch_rad: mix(params.head_pitch_rad, viewAim.pitch, weight),
+    eye_right: eye(params.eye_right, 1),
+    eye_left: eye(params.eye_left, -1),
+  };
+}
 
 /**
  * FaceParams `params` re-aimed: from `serverAim` to `viewAim` (each { yaw,

@@ -5,9 +5,9 @@
 // tile, at once, from the page's own package. Names and the last chat line
 // are HTML laid over the canvas (room_page.js places them from `tiles`).
 import { mat4 } from '../mat4.js';
-import { TURN_SHARE, aimAt, reaim } from './gaze_reaim.js';
+import { TURN_SHARE, aimAt, reaim, reaimAtViewer } from './gaze_reaim.js';
 import { decodeImage } from './face_renderer.js';
-import { MM_PER_UNIT, eyeMidMm, screenOrder, seatToRoom, serverSeat, viewSeats } from './view_geometry.js';
+import { MM_PER_UNIT, VIEW_DISTANCE_MM, eyeMidMm, screenOrder, seatToRoom, serverSeat, viewSeats } from './view_geometry.js';
 import { tileLayout } from './tile_layout.js';
 
 /** How long a face takes to turn to a new target in the view (s): the server's head moves as smoothly. */
@@ -36,7 +36,11 @@ export class RoomView {
     this.building = new Map();  // avatar id -> bytes being built
     this.retarget = new Map();  // avatar id -> { key, since }
     this.generic = engine.genericAvatar();
-    this.eyeMid = eyeMidMm(this.generic.face.eyes.map((e) => e.centre));
+    const eyeCentres = this.generic.face.eyes.map((e) => e.centre);
+    this.eyeMid = eyeMidMm(eyeCentres);
+    // Each eye's turn inward to meet at the viewer's eyes, VIEW_DISTANCE_MM away.
+    const halfInterocular = (Math.abs(eyeCentres[0][0] - eyeCentres[1][0]) / 2) * MM_PER_UNIT;
+    this.vergence = Math.atan2(halfInterocular, VIEW_DISTANCE_MM);
     this.ownFace = null;
     this.tiles = [];
     this.frames = 0;
@@ -148,8 +152,13 @@ export class RoomView {
         if (aim) {
           const weight = this.easing(info.id, aim.key, nowMs);
           const view = aimAt(seat, this.eyeMid, aim.view);
-          if (!aim.viewer) view.yaw *= TURN_SHARE;
-          params = reaim(decoded, aimAt(serverSeats.get(info.id), this.eyeMid, aim.server), view, weight);
+          const serverAim = aimAt(serverSeats.get(info.id), this.eyeMid, aim.server);
+          if (aim.viewer) {
+            params = reaimAtViewer(decoded, serverAim, view, this.vergence, weight);
+          } else {
+            view.yaw *= TURN_SHARE;
+            params = reaim(decoded, serverAim, view, weight);
+          }
         } else {
           this.retarget.delete(info.id);
         }
@@ -162,7 +171,7 @@ export class RoomView {
     // once, the decoded face once the stream brings it.
     const own = this.ownFace ?? this.faces.get(client.you);
     if (own) {
-      const params = (client.you && client.face(client.you, nowMs)) || NEUTRAL;
+      const params = this.ownParams(serverSeats, nowMs);
       const rect = layout.self;
       const aspect = rect.w / rect.h;
       const camera = { position: [0, -0.25, 8.2 / Math.min(1, aspect)], target: [0, -0.25, 0] };
@@ -171,6 +180,24 @@ export class RoomView {
       this.selfDrawnMs ??= nowMs;
     }
     this.frames += 1;
+  }
+
+  /**
+   * The viewer's own face for the self view: as decoded, but what it aims at
+   * in the server's room is moved to the camera, as a mirror would show a
+   * person looking at someone on the screen: the expression stays, the face
+   * does not turn away.
+   */
+  ownParams(serverSeats, nowMs) {
+    const client = this.client;
+    const decoded = client.you ? client.face(client.you, nowMs) : null;
+    if (!decoded) return NEUTRAL;
+    const entry = client.attention.get(client.you);
+    const seat = serverSeats.get(client.you);
+    const target = entry?.target === 2 ? serverSeats.get(entry.targetAvatar) : null;
+    if (!seat || !target) return decoded;
+    const serverAim = aimAt(seat, this.eyeMid, seatToRoom(target, this.eyeMid));
+    return reaim(decoded, serverAim, { yaw: 0, pitch: 0 });
   }
 
   /** The viewer's eyes looking at a seat's face, framing the head in the tile. */

@@ -3,7 +3,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 
-import { aimAt, headShare, reaim } from '../../../web/room/gaze_reaim.js';
+import { aimAt, headShare, reaim, reaimAtViewer } from '../../../web/room/gaze_reaim.js';
 import { rotateY, screenOrder, serverSeat, viewSeats } from '../../../web/room/view_geometry.js';
 
 const EYE_MID = [0, 0, 20];  // a head's eyes, mm, in front of its origin
@@ -40,7 +40,7 @@ test('neighbours at the table stay neighbours on the screen, the viewer left out
   assert.deepEqual(order, [3, 4, 1]);
 });
 
-test('a face attending the viewer ends with head and eyes on the viewer; its fine motion stays', () => {
+test('a face attending the viewer ends with head and eyes on the viewer; its fine motion stays; a neighbour turns it', () => {
   const room = serverRoom();
   const face = serverSeat(room[0].seat);
   const target = serverSeat(room[3].seat);
@@ -55,10 +55,20 @@ test('a face attending the viewer ends with head and eyes on the viewer; its fin
   };
   const view = viewSeats(3, EYE_MID)[0];
   const viewAim = aimAt(view, EYE_MID, [0, 0, 0]);
-  const out = reaim(decoded, serverAim, viewAim);
-  near(out.head_yaw_rad, 0, 1e-9, 'head on the viewer');
-  near(out.eye_left.yaw_rad, saccade, 1e-9, 'eyes on the viewer, the saccade on top');
-  near(out.eye_right.pitch_rad, 0, 1e-9, 'eye pitch');
+  // However the server split the gaze between head and eyes (here its
+  // settled split, and a head lagging by 0.1 rad), the head ends on the
+  // viewer and the eyes keep only the saccade, converged on the viewer.
+  const vergence = 0.03;
+  for (const lag of [0, 0.1]) {
+    const lagging = { ...decoded, head_yaw_rad: decoded.head_yaw_rad - lag,
+      eye_left: { ...decoded.eye_left, yaw_rad: decoded.eye_left.yaw_rad + lag },
+      eye_right: { ...decoded.eye_right, yaw_rad: decoded.eye_right.yaw_rad + lag } };
+    const out = reaimAtViewer(lagging, serverAim, viewAim, vergence);
+    near(out.head_yaw_rad, viewAim.yaw, 1e-9, 'head on the viewer');
+    near(out.eye_left.yaw_rad, saccade - vergence, 1e-9, 'left eye: the saccade, turned in');
+    near(out.eye_right.yaw_rad, saccade + vergence, 1e-9, 'right eye: the saccade, turned in');
+    near(out.eye_right.pitch_rad, 0, 1e-9, 'eye pitch');
+  }
   assert.equal(decoded.head_yaw_rad, settled(serverAim.yaw).head, 'the decoded face is left alone');
 
   // Toward a neighbour on the screen's right: eyes and head turn to the
@@ -68,6 +78,6 @@ test('a face attending the viewer ends with head and eyes on the viewer; its fin
   assert.ok(toNeighbour.head_yaw_rad > 5 * DEG);
   assert.ok(toNeighbour.eye_left.yaw_rad - saccade > 2 * DEG);
   // Half weight: half way.
-  const half = reaim(decoded, serverAim, viewAim, 0.5);
-  near(half.head_yaw_rad, decoded.head_yaw_rad / 2, 1e-9, 'half way');
+  const half = reaimAtViewer(decoded, serverAim, viewAim, 0, 0.5);
+  near(half.head_yaw_rad, (decoded.head_yaw_rad + viewAim.yaw) / 2, 1e-9, 'half way');
 });

@@ -1,0 +1,203 @@
+// The room in the browser, end to end: a person uploads a photo in the
+// lobby and joins a room with a 9.6 kbit/s stream; a native facewire-client
+// and a second browser person join too. What each sees is judged from the
+// rendered pixels: faces drawn where the layout puts them, chat on both
+// sides, "joy" changing only the presser's mouth, eye contact, the meter
+// under the budget, and a page that fits a phone.
+import { after, before, test } from 'node:test';
+import assert from 'node:assert/strict';
+import { spawn } from 'node:child_process';
+
+import { openWeb, program, sourceFile } from '../support/harness.mjs';
+import { canvasPixels, faceShare, irisOffset, meanAbsDifference, mouthSamples, spread } from '../support/room_pixels.mjs';
+
+const ROOM = 'e2e';
+const BUDGET_BPS = 9600;
+let web;
+let native;
+let nativeOutput = '';
+const pages = {};
+
+before(async () => { web = await openWeb(['--no-demo-room']); });
+after(async () => {
+  native?.kill('SIGKILL');
+  await web?.close();
+});
+
+const room = (page) => page.evaluate(() => {
+  if (!window.facewireRoom) return null;  // the page is still starting
+  const { client, view } = window.facewireRoom;
+  return {
+    you: client.you, status: client.status, timeline: client.timeline, selfDrawnMs: view.selfDrawnMs,
+    tiles: view.tiles, self: view.selfTile, attention: [...client.attention.values()],
+    names: Object.fromEntries([...client.avatars].map(([id, a]) => [a.info.name, id])),
+  };
+});
+const landmarks = (page, key, indices) => page.evaluate(([k, i]) => window.facewireRoom.view.landmarksOnScreen(k, i), [key, indices]);
+async function until(page, predicate, what, timeout = 30000) {
+  const start = Date.now();
+  for (;;) {
+    const state = await room(page);
+    if (state && predicate(state)) return state;
+    if (Date.now() - start > timeout) throw new Error(`${what} did not happen within ${timeout / 1000} s: ${JSON.stringify(state)}`);
+    await page.waitForTimeout(200);
+  }
+}
+const tileOf = (state, name) => state.tiles.find((t) => t.id === state.names[name]);
+/** FW_ROOM_SHOTS=DIR keeps screenshots of what the tests looked at, for people to look at too. */
+async function keep(page, name) {
+  if (process.env.FW_ROOM_SHOTS) await page.screenshot({ path: `${process.env.FW_ROOM_SHOTS}/${name}.png` });
+}
+
+test('join from the lobby with a photo: the self view at once, then the room within the budget', { timeout: 180000 }, async () => {
+  const page = await web.page({ width: 1280, height: 800 });
+  pages.web = page;
+  await page.addInitScript((bps) => localStorage.setItem('facewire.budget', String(bps)), BUDGET_BPS);
+  await page.goto(web.server.url);
+  await page.fill('#name', 'Web');
+  await page.setInputFiles('#photo-file', sourceFile('tests/data/astronaut.png'));
+  await page.locator('#avatar-preview').waitFor({ state: 'visible', timeout: 90000 });
+  await page.fill('#room', ROOM);
+  await page.click('#join');
+  await page.waitForURL(/room\.html/);
+  const joined = await until(page, (s) => s.status === 'joined' && s.selfDrawnMs !== null, 'joining and the self view');
+  assert.equal(await page.locator('#budget').inputValue(), String(BUDGET_BPS));
+  // The page holds its own package: its face shows before or within a second of the welcome.
+  assert.ok(joined.selfDrawnMs - joined.timeline.welcomeMs < 1000,
+    `self view ${Math.round(joined.selfDrawnMs - joined.timeline.welcomeMs)} ms after the welcome`);
+  const self = await canvasPixels(page, joined.self);
+  assert.ok(faceShare(self) > 0.2, `the self view shows a face (${faceShare(self).toFixed(2)})`);
+  // Alone: no tile, and the stage is empty background where a first face will sit.
+  assert.equal(joined.tiles.length, 0);
+  const future = await page.evaluate(async () => {
+    const { tileLayout } = await import('/room/tile_layout.js');
+    const canvas = document.getElementById('room-canvas');
+    return tileLayout(1, canvas.clientWidth, canvas.clientHeight).tiles[0];
+  });
+  const empty = await canvasPixels(page, future);
+  assert.ok(spread(empty) < 12 && faceShare(empty) < 0.01, `the place of the first face is empty (spread ${spread(empty)})`);
+  pages.future = future;
+});
+
+test('a native client joins: its face appears where the layout puts it, and chat shows on both sides', { timeout: 120000 }, async () => {
+  const page = pages.web;
+  native = spawn(program('facewire-client'), ['join', `ws://127.0.0.1:${web.server.port}/`, '--room', ROOM, '--name', 'Native',
+    '--seconds', '75', '--say', 'hello from native', '--json', '-q'], { stdio: ['ignore', 'pipe', 'pipe'] });
+  native.stdout.on('data', (chunk) => { nativeOutput += chunk; });
+  const state = await until(page, (s) => s.tiles.some((t) => t.name === 'Native' && t.drawn), 'the native face', 60000);
+  const tile = tileOf(state, 'Native');
+  assert.deepEqual(tile.rect, pages.future, 'drawn where the layout puts the first face');
+  await page.waitForTimeout(500);
+  const pixels = await canvasPixels(page, tile.rect);
+  assert.ok(faceShare(pixels) > 0.15, `the native face is drawn in its tile (${faceShare(pixels).toFixed(2)})`);
+  await page.locator('#chat-log li', { hasText: 'hello from native' }).waitFor({ timeout: 20000 });
+  assert.match(await page.locator('#caption').textContent(), /Native: hello from native/);
+  await page.fill('#chat-text', 'hello from the browser');
+  await page.click('#chat-form button');
+  await page.locator('#chat-log li', { hasText: 'hello from the browser' }).waitFor();
+  pages.chatSent = true;
+});
+
+test('the meter stays under the 9.6 kbit/s budget', { timeout: 60000 }, async () => {
+  const page = pages.web;
+  const readings = [];
+  for (let i = 0; i < 16; ++i) {
+    await page.waitForTimeout(500);
+    readings.push(Number(await page.locator('#meter').getAttribute('data-kbps')));
+  }
+  assert.ok(Math.max(...readings) < BUDGET_BPS / 1000, `meter readings ${readings.join(', ')} kbit/s`);
+  assert.ok(Math.max(...readings) > 0.5, 'the meter moves');
+  const { timeline } = await room(page);
+  console.log(`9.6 kbit/s session: first frame ${Math.round(timeline.firstFrameMs - timeline.welcomeMs)} ms after the welcome, ` +
+    `all full packages ${timeline.fullPackagesMs ? `${Math.round(timeline.fullPackagesMs - timeline.welcomeMs)} ms` : 'not yet'}`);
+});
+
+test('pressing joy changes the presser\'s mouth and no other face\'s', { timeout: 60000 }, async () => {
+  const page = pages.web;
+  const state = await room(page);
+  const nativeKey = state.names.Native;
+  const samples = async () => ({
+    self: await mouthSamples(page, await landmarks(page, 'self', [36, 45])),
+    other: await mouthSamples(page, await landmarks(page, nativeKey, [36, 45])),
+  });
+  // Pressed when the presser's own face is at rest (a chat line a moment
+  // ago may have stirred it): two looks 400 ms apart that agree.
+  let before = await samples();
+  let still;
+  for (let i = 0; i < 25; ++i) {
+    await page.waitForTimeout(400);
+    still = await samples();
+    if (meanAbsDifference(before.self, still.self) < 4) break;
+    before = still;
+  }
+  await page.click('[data-expression="joy"]');
+  await page.locator('[data-expression="joy"].accepted').waitFor({ timeout: 10000 });
+  await page.waitForTimeout(1200);
+  const after = await samples();
+  await keep(page, 'joy');
+  const selfChange = meanAbsDifference(before.self, after.self);
+  const otherChange = meanAbsDifference(before.other, after.other);
+  const noise = Math.max(meanAbsDifference(before.self, still.self), meanAbsDifference(before.other, still.other));
+  console.log(`joy: own mouth ${selfChange.toFixed(1)}, the native face's ${otherChange.toFixed(1)}, noise ${noise.toFixed(1)}`);
+  assert.ok(selfChange > 6 && selfChange > 3 * noise, `the presser's mouth changed by ${selfChange.toFixed(1)} (noise ${noise.toFixed(1)})`);
+  assert.ok(otherChange < selfChange / 2, `the other face's mouth changed by ${otherChange.toFixed(1)}`);
+});
+
+test('a face told to look at the viewer shows its irises centred; at a neighbour, turned toward it', { timeout: 120000 }, async () => {
+  // The second person watches the first (a photo's eyes: an iris on a white
+  // sclera), whom the test has look at the watcher, then at the native face.
+  const page = await web.page({ width: 1100, height: 700 });
+  pages.other = page;
+  await page.goto(`${web.server.url}room.html?room=${ROOM}&name=Other`);
+  const state = await until(page, (s) => s.status === 'joined' && tileOf(s, 'Web')?.drawn && tileOf(s, 'Native')?.drawn,
+    'the second person seeing both faces', 60000);
+  const watcher = state.you;
+  const webId = state.names.Web;
+  const nativeId = state.names.Native;
+  const eyes = async () => {
+    const [r0, r1, l0, l1] = await landmarks(page, webId, [36, 39, 42, 45]);
+    return [await irisOffset(page, [r0, r1]), await irisOffset(page, [l0, l1])];
+  };
+  const look = (target) => pages.web.evaluate((t) => window.facewireRoom.client.lookAt(t, 20000), target);
+  const settle = () => page.waitForTimeout(1500);  // the head (0.3 s) and the view's re-aim (0.35 s) settle
+
+  await look(watcher);
+  await until(page, (s) => s.attention.some((a) => a.avatar === webId && a.target === 2 && a.targetAvatar === watcher), 'attention on the watcher');
+  await settle();
+  const atViewer = await eyes();
+  await keep(page, 'web-looks-at-viewer');
+  await look(nativeId);
+  await until(page, (s) => s.attention.some((a) => a.avatar === webId && a.targetAvatar === nativeId), 'attention on the native face');
+  await settle();
+  const atNative = await eyes();
+  await keep(page, 'web-looks-at-native');
+  const now = await room(page);
+  // Which way, on the screen, the native face sits from the looker's tile.
+  const toward = Math.sign(tileOf(now, 'Native').rect.x - tileOf(now, 'Web').rect.x);
+  console.log(`irises (eye widths, + toward the screen's right): at the viewer ${atViewer.map((v) => v.toFixed(3))}, ` +
+    `at the neighbour ${atNative.map((v) => v.toFixed(3))} (it sits ${toward > 0 ? 'right' : 'left'})`);
+  for (const offset of atViewer) assert.ok(Math.abs(offset) < 0.08, `an iris ${offset.toFixed(3)} eye widths off centre`);
+  // Turned away, the far eye is foreshortened and moves less on the screen.
+  for (const offset of atNative) assert.ok(offset * toward > 0, `an iris ${offset.toFixed(3)} away from the neighbour`);
+  assert.ok((atNative[0] + atNative[1]) * toward / 2 > 0.05, `irises ${atNative.map((v) => v.toFixed(3))} hardly toward the neighbour`);
+});
+
+test('the native client saw the browser\'s chat line', { timeout: 100000 }, async () => {
+  assert.ok(pages.chatSent);
+  const exit = native.exitCode !== null ? native.exitCode : await new Promise((resolve) => native.once('exit', resolve));
+  assert.equal(exit, 0, nativeOutput);
+  const summary = JSON.parse(nativeOutput.trim().split('\n').at(-1));
+  assert.ok(summary.events.some((e) => e.kind === 'chat' && e.text === 'hello from the browser'), JSON.stringify(summary.events));
+});
+
+test('the room fits a phone without sideways scrolling', { timeout: 60000 }, async () => {
+  const page = await web.page({ width: 390, height: 844 });
+  await page.goto(`${web.server.url}room.html?room=${ROOM}&name=Phone`);
+  await until(page, (s) => s.status === 'joined' && s.tiles.some((t) => t.drawn), 'the phone joining');
+  await page.waitForTimeout(1500);
+  await keep(page, 'phone');
+  const widths = await page.evaluate(() => [document.documentElement.scrollWidth, document.documentElement.clientWidth]);
+  assert.ok(widths[0] <= 390, `the page is ${widths[0]} px wide`);
+  for (const tile of (await room(page)).tiles) assert.ok(tile.rect.x >= 0 && tile.rect.x + tile.rect.w <= 390, JSON.stringify(tile.rect));
+  assert.deepEqual(web.pageErrors, []);
+});
