@@ -62,16 +62,21 @@ export function reaimAtViewer(params, serverAim, viewAim, vergenceRad, weight = 
   };
 }
 
+/** A face turned toward someone other than the viewer: the eyes' share of the turn. */
+export const EYE_SHARE = 0.4;
+
 /**
  * FaceParams `params` re-aimed: from `serverAim` to `viewAim` (each { yaw,
  * pitch } in the face's own seat frame), blended by `weight` (0: as decoded,
- * 1: fully re-aimed; the page eases it when the target changes). Returns a
- * new object; the decoded one is left alone.
+ * 1: fully re-aimed; the page eases it when the target changes). The head
+ * leaves the server's settled share of its aim and takes 60 % of the new
+ * one, the eyes the rest: a face turned toward a neighbour shows its eyes
+ * turned that way too. Returns a new object; the decoded one is left alone.
  */
 export function reaim(params, serverAim, viewAim, weight = 1) {
   const shift = (axis) => {
-    const head = weight * (headShare(viewAim[axis]) - headShare(serverAim[axis]));
     const total = weight * (viewAim[axis] - serverAim[axis]);
+    const head = weight * ((1 - EYE_SHARE) * viewAim[axis] - headShare(serverAim[axis]));
     return { head, eye: total - head };
   };
   const yaw = shift('yaw');

@@ -76,7 +76,13 @@ async function main() {
   });
   wireControls(client);
 
+  let lastDraw = -Infinity;
   const frame = (now) => {
+    requestAnimationFrame(frame);
+    // Faces change at most at the room's tick rate (30 Hz): drawing more
+    // often only burns the battery, or a software renderer's cores.
+    if (now - lastDraw < 1000 / 32) return;
+    lastDraw = now;
     const ratio = Math.min(2, window.devicePixelRatio || 1);
     const width = canvas.clientWidth;
     const height = canvas.clientHeight;
@@ -87,7 +93,6 @@ async function main() {
     view.draw(width, height, ratio, now);
     placeOverlays(client, view);
     canvas.dataset.frames = String(view.frames);
-    requestAnimationFrame(frame);
   };
   requestAnimationFrame(frame);
   setInterval(() => showMeter(client), 500);

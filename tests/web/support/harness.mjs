@@ -82,25 +82,26 @@ export async function startServer(args = []) {
   };
 }
 
-/// Launches headless Chromium through playwright-core.
-export async function launchBrowser() {
+/// Launches headless Chromium through playwright-core, with `extraArgs`
+/// besides the usual ones (a fake camera, say).
+export async function launchBrowser(extraArgs = []) {
   let chromium;
   try {
     ({ chromium } = await import('playwright-core'));
   } catch {
     throw new Error('playwright-core is not installed: run `make test`, or `npm ci` in tests/web');
   }
-  return chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_ARGS, timeout: 30000 });
+  return chromium.launch({ executablePath: CHROMIUM, args: [...CHROMIUM_ARGS, ...extraArgs], timeout: 30000 });
 }
 
 /// A server and a browser for one test file: `const env = await openWeb()`,
 /// then `env.page(viewport)` for a fresh page and `env.close()` at the end.
 /// Errors the pages throw are collected in env.pageErrors.
-export async function openWeb(serverArgs = []) {
+export async function openWeb(serverArgs = [], { browserArgs = [] } = {}) {
   const server = await startServer(serverArgs);
   let browser;
   try {
-    browser = await launchBrowser();
+    browser = await launchBrowser(browserArgs);
   } catch (error) {
     await server.stop();
     throw error;
