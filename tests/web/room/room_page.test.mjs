@@ -135,20 +135,21 @@ test('pressing joy changes the presser\'s mouth and no other face\'s', { timeout
     && s.selfDrawnMs !== null, 'the second person seeing both faces', 60000);
   assert.ok(state.you > 0);
   // The first person holds still, as a person can: looking at the native
-  // face and keeping a neutral expression for 20 s, so that neither a new
-  // face nor the room's moods move it (autonomy yields to its person).
+  // face and keeping a neutral expression for a minute, longer than this
+  // test on a loaded machine, so that neither a new face nor the room's
+  // moods move it (autonomy yields to its person).
   await pages.web.evaluate((nativeId) => {
     const { client } = window.facewireRoom;
-    client.lookAt(nativeId, 20000);
-    client.express('neutral', 1, 20000);
+    client.lookAt(nativeId, 60000);
+    client.express('neutral', 1, 60000);
   }, state.names.Native);
   const samples = async () => ({
     self: await mouthSamples(page, await landmarks(page, 'self', [36, 45])),
     smiles: await page.evaluate(() => {
       const { client } = window.facewireRoom;
       // au12_left, au12_right: channels 15 and 16 of web/codec/decoder.js.
-      return [...client.avatars.keys()].filter((id) => id !== client.you)
-        .map((id) => Math.max(client.face(id)?.au[15] ?? 0, client.face(id)?.au[16] ?? 0));
+      return Object.fromEntries([...client.avatars].filter(([id]) => id !== client.you)
+        .map(([id, a]) => [a.info.name, Math.max(client.face(id)?.au[15] ?? 0, client.face(id)?.au[16] ?? 0)]));
     }),
   });
   // Pressed when both faces are at rest (a chat line a moment ago may have
@@ -168,12 +169,17 @@ test('pressing joy changes the presser\'s mouth and no other face\'s', { timeout
   const after = await samples();
   await keep(page, 'joy');
   const selfChange = meanAbsDifference(before.self, after.self);
-  const otherSmile = Math.max(...after.smiles);
+  const smiles = Object.entries(after.smiles);
+  const otherSmile = Math.max(...Object.values(after.smiles));
   const noise = meanAbsDifference(before.self, still.self);
-  console.log(`joy: own mouth ${selfChange.toFixed(1)} (noise ${noise.toFixed(1)}), the others' AU 12 ${after.smiles.map((v) => v.toFixed(2))}`);
+  console.log(`joy: own mouth ${selfChange.toFixed(1)} (noise ${noise.toFixed(1)}), the others' AU 12 ${smiles.map(([n, v]) => `${n} ${v.toFixed(2)}`).join(', ')}`);
   assert.ok(selfChange > 8 && selfChange > 3 * noise, `the presser's mouth changed by ${selfChange.toFixed(1)} (noise ${noise.toFixed(1)})`);
-  assert.equal(after.smiles.length, 2);
-  assert.ok(otherSmile < 0.3, `another face smiles: AU 12 at ${otherSmile.toFixed(2)}`);
+  assert.equal(smiles.length, 2);
+  // A smile elsewhere most likely means the room changed under the test (a
+  // page that reconnected joins last, and the leader changes): the server's
+  // log of comings and goings says.
+  const comings = web.server.log().split('\n').filter((l) => /join|left|leav|clos|drop|refus/i.test(l)).slice(-12).join('\n');
+  assert.ok(otherSmile < 0.3, `another face smiles: AU 12 ${JSON.stringify(after.smiles)}; the server's log:\n${comings}`);
 });
 
 test('a face told to look at the viewer shows its irises centred; at a neighbour, turned toward it', { timeout: 120000 }, async () => {
