@@ -2,6 +2,8 @@
 
 #include <sstream>
 
+#include "abuse_log.hpp"
+
 namespace fw::server {
 
 void Metrics::observe_tick(double seconds) {
@@ -11,7 +13,7 @@ void Metrics::observe_tick(double seconds) {
   tick_sum_us.fetch_add(static_cast<std::uint64_t>(seconds * 1e6), std::memory_order_relaxed);
 }
 
-std::string Metrics::render(double physics_share) const {
+std::string Metrics::render(double physics_share, const AbuseLog& abuse) const {
   std::ostringstream out;
   const auto family = [&](const char* name, const char* type, const char* help, auto value) {
     out << "# HELP " << name << " " << help << "\n# TYPE " << name << " " << type << "\n"
@@ -51,6 +53,13 @@ std::string Metrics::render(double physics_share) const {
          outdated_avatars.load());
   family("facewire_damaged_avatars_total", "counter", "Stored avatar packages found corrupt and refused.",
          damaged_avatars.load());
+
+  out << "# HELP facewire_refusals_total Requests, connections and messages refused or cut off, by kind.\n"
+      << "# TYPE facewire_refusals_total counter\n";
+  for (std::size_t i = 0; i < kAbuseKinds; ++i) {
+    const auto kind = static_cast<Abuse>(i);
+    out << "facewire_refusals_total{kind=\"" << abuse_name(kind) << "\"} " << abuse.count(kind) << "\n";
+  }
 
   out << "# HELP facewire_tick_duration_seconds Simulation and encoding time of one room tick.\n"
       << "# TYPE facewire_tick_duration_seconds histogram\n";

@@ -44,7 +44,8 @@ struct Metrics {
   void observe_tick(double seconds);
   /// The whole exposition, one family after another. `physics_share` is the
   /// PhysicsGovernor's, which owns it.
-  std::string render(double physics_share) const;
+  /// `abuse` adds its refusals by kind.
+  std::string render(double physics_share, const class AbuseLog& abuse) const;
 };
 
 }  // namespace fw::server

@@ -84,7 +84,7 @@ std::optional<Response> respond_to_api(ServerContext& context, const Request& re
                  context.draining.load() ? "draining\n" : "starting\n");
   }
   if (path == "/metrics") {
-    Response response = plain(http::status::ok, request, context.metrics.render(context.physics_lod.share()));
+    Response response = plain(http::status::ok, request, context.metrics.render(context.physics_lod.share(), context.abuse));
     response.set(http::field::content_type, "text/plain; version=0.0.4; charset=utf-8");
     return response;
   }

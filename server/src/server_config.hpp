@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <string>
 
+#include "abuse_limits.hpp"
 #include "server_limits.hpp"
 
 namespace fw::server {
@@ -44,6 +45,7 @@ struct ServerConfig {
   bool log_json = false;
   std::string landmark_model;    ///< for photo uploads; empty: the default place
   SessionTimeouts timeouts;
+  AbuseLimits abuse;             ///< per address and per room
 };
 
 }  // namespace fw::server

@@ -8,6 +8,8 @@
 
 #include <boost/asio/thread_pool.hpp>
 
+#include "abuse_log.hpp"
+#include "address_limits.hpp"
 #include "avatar_store.hpp"
 #include "metrics.hpp"
 #include "physics_governor.hpp"
@@ -23,6 +25,8 @@ struct ServerContext {
   PhysicsGovernor physics_lod;  ///< physics level of detail under load (config.physics_lod)
   boost::asio::thread_pool* workers = nullptr; ///< room ticks, encoding
   AvatarStore* store = nullptr;
+  AddressLimits* addresses = nullptr;  ///< per-address connections, rates and upload bytes (config.abuse)
+  AbuseLog abuse;                      ///< refusals by kind, for the log and /metrics
   RoomRegistry* rooms = nullptr;
   /// Procedural faces for clients that join without a package (and the lobby).
   std::vector<StoredAvatar> demo_avatars;

@@ -7,6 +7,8 @@ namespace fw::server {
 ServerCore::ServerCore(const ServerConfig& config)
     : workers_(static_cast<std::size_t>(config.workers)), rooms_(context_) {
   context_.config = config;
+  addresses_ = std::make_unique<AddressLimits>(config.abuse);
+  context_.addresses = addresses_.get();
   context_.physics_lod.set_enabled(config.physics && config.physics_lod);
   context_.workers = &workers_;
   context_.rooms = &rooms_;

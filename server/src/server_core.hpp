@@ -44,6 +44,7 @@ class ServerCore {
  private:
   ServerContext context_;
   std::unique_ptr<AvatarStore> store_;
+  std::unique_ptr<AddressLimits> addresses_;
   boost::asio::thread_pool workers_;
   RoomRegistry rooms_;
   bool stopped_ = false;

@@ -125,7 +125,7 @@ TEST_F(Repreparation, AnOutOfDateAvatarIsServedAgainUnderTheSameIdAfterARestart)
   EXPECT_EQ(metrics.repreparations_started.load(), 1u);
   EXPECT_TRUE(test::eventually([&] { return metrics.repreparations.load() == 1; }))
       << "counted once it is stored, which a join may beat";
-  EXPECT_NE(metrics.render(1.0).find("facewire_repreparations_total 1\n"), std::string::npos);
+  EXPECT_NE(metrics.render(1.0, server.context().abuse).find("facewire_repreparations_total 1\n"), std::string::npos);
 }
 
 TEST_F(Repreparation, APhotoThatNoLongerMakesAnAvatarIsReportedAndRefused) {

@@ -1,0 +1,36 @@
+#pragma once
+// Limits per peer address (address_key(): an IPv4 address or an IPv6 /64)
+// and per room, held across reconnections, so that one client cannot take
+// what belongs to everyone (PROTOCOL.md, "Limits"). ServerConfig::abuse
+// holds them; tests and benchmarks that run many clients from one loopback
+// address raise them.
+#include <cstddef>
+
+#include "token_bucket.hpp"
+
+namespace fw::server {
+
+struct AbuseLimits {
+  /// Connections open at once from one address, from accept to close,
+  /// whatever they carry (HTTP, WebSocket, TCP).
+  std::size_t connections_per_address = 64;
+  /// Hellos from one address (room joins, reconnections included).
+  BucketRate joins{1.0, 20};
+  /// Chat lines from one address, over all its connections.
+  BucketRate chat{2.0, 10};
+  /// Chat lines into one room, from everyone in it.
+  BucketRate room_chat{5.0, 20};
+  /// Photo and package uploads from one address.
+  BucketRate uploads{6.0 / 60.0, 6};
+  /// Rooms one address may create.
+  BucketRate room_creations{5.0 / 60.0, 5};
+  /// Seats one address may hold in one room; 0: half the room size.
+  std::size_t seats_per_address = 0;
+  /// Upload body bytes being received at once, from one address and in all.
+  std::size_t upload_bytes_per_address = 8 * 1024 * 1024;
+  std::size_t upload_bytes_total = 64 * 1024 * 1024;
+  /// Photos waiting to be prepared; more are answered 503 with Retry-After.
+  std::size_t photo_queue = 8;
+};
+
+}  // namespace fw::server

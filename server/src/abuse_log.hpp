@@ -1,0 +1,60 @@
+#pragma once
+// Refusals and protocol violations, counted by kind for /metrics and logged
+// at a bounded rate: an attacker who makes the server refuse a million
+// requests must not also fill its disk with a million lines. Thread-safe.
+#include <array>
+#include <atomic>
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <mutex>
+#include <string_view>
+
+namespace fw::server {
+
+enum class Abuse {
+  connection_limit,          ///< the server's connections are all taken
+  address_connection_limit,  ///< one address holds its share of connections
+  descriptors_exhausted,     ///< accept() failed for want of file descriptors
+  handshake_timeout,         ///< no whole request or hello in time
+  http_bad_request,          ///< HTTP 4xx answered
+  protocol_violation,        ///< malformed or out-of-place room messages, WebSocket violations
+  message_rate,              ///< room messages (pings included) over the rate
+  join_rate,                 ///< hellos from one address over the rate
+  chat_rate,                 ///< chat lines over the address's or the room's rate
+  upload_rate,               ///< uploads from one address over the rate
+  upload_bytes,              ///< upload bytes in flight over the address's or the server's share
+  photo_queue_full,          ///< photos waiting to be prepared at the limit
+  room_creation,             ///< rooms created by one address over the rate
+  room_seats,                ///< one address holds its share of a room's seats
+  idle_person,               ///< a person who neither sent nor read for too long, let go
+  not_reading,               ///< a connection whose send queue overflowed
+  unauthorized,              ///< a missing, bad or expired token, or a wrong operator secret
+  token_in_use,              ///< a token another live session holds
+  face_not_yours,            ///< a hello naming an asset without its secret
+  bad_name,                  ///< a display name with control, bidi or zero-width characters
+};
+inline constexpr std::size_t kAbuseKinds = 20;
+
+/// The kind's name in logs and in /metrics' label.
+std::string_view abuse_name(Abuse kind);
+
+class AbuseLog {
+ public:
+  /// Counts one `kind` refused from `peer`, and logs `what` unless more
+  /// than kLinesPerSecond lines went out this second (then the next line
+  /// that goes out says how many were left out).
+  void note(Abuse kind, std::string_view peer, std::string_view what);
+  std::uint64_t count(Abuse kind) const { return counts_[static_cast<std::size_t>(kind)].load(); }
+
+  static constexpr int kLinesPerSecond = 20;
+
+ private:
+  std::array<std::atomic<std::uint64_t>, kAbuseKinds> counts_{};
+  std::mutex mutex_;
+  std::chrono::steady_clock::time_point second_{};
+  int lines_this_second_ = 0;
+  std::uint64_t suppressed_ = 0;
+};
+
+}  // namespace fw::server

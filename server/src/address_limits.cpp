@@ -1,0 +1,88 @@
+#include "address_limits.hpp"
+
+namespace fw::server {
+
+AddressLimits::AddressLimits(const AbuseLimits& limits) : limits_(limits) {}
+
+bool AddressLimits::open_connection(const std::string& key) {
+  std::lock_guard lock(mutex_);
+  Entry& entry = entries_[key];
+  if (entry.connections >= limits_.connections_per_address) return false;
+  ++entry.connections;
+  return true;
+}
+
+void AddressLimits::close_connection(const std::string& key) {
+  std::lock_guard lock(mutex_);
+  const auto it = entries_.find(key);
+  if (it == entries_.end() || it->second.connections == 0) return;
+  --it->second.connections;
+  forget_if_idle(it, Clock::now());
+}
+
+std::size_t AddressLimits::connections(const std::string& key) const {
+  std::lock_guard lock(mutex_);
+  const auto it = entries_.find(key);
+  return it == entries_.end() ? 0 : it->second.connections;
+}
+
+BucketRate AddressLimits::rate_of(AddressRate rate) const {
+  switch (rate) {
+    case AddressRate::join: return limits_.joins;
+    case AddressRate::chat: return limits_.chat;
+    case AddressRate::upload: return limits_.uploads;
+    case AddressRate::room_creation: return limits_.room_creations;
+  }
+  return {};
+}
+
+std::optional<double> AddressLimits::take(AddressRate rate, const std::string& key, Clock::time_point now) {
+  std::lock_guard lock(mutex_);
+  if (++takes_since_sweep_ >= 4096 && takes_since_sweep_ >= entries_.size()) sweep(now);
+  auto it = entries_.try_emplace(key).first;
+  auto& bucket = it->second.buckets[static_cast<std::size_t>(rate)];
+  if (!bucket) bucket.emplace(rate_of(rate), now);
+  if (bucket->take(now)) return std::nullopt;
+  return bucket->seconds_until(now);
+}
+
+bool AddressLimits::reserve_upload(const std::string& key, std::size_t bytes) {
+  std::lock_guard lock(mutex_);
+  Entry& entry = entries_[key];
+  if (entry.upload_bytes + bytes > limits_.upload_bytes_per_address ||
+      upload_bytes_ + bytes > limits_.upload_bytes_total)
+    return false;
+  entry.upload_bytes += bytes;
+  upload_bytes_ += bytes;
+  return true;
+}
+
+void AddressLimits::release_upload(const std::string& key, std::size_t bytes) {
+  std::lock_guard lock(mutex_);
+  const auto it = entries_.find(key);
+  if (it == entries_.end()) return;
+  bytes = std::min(bytes, it->second.upload_bytes);
+  it->second.upload_bytes -= bytes;
+  upload_bytes_ -= std::min(bytes, upload_bytes_);
+  forget_if_idle(it, Clock::now());
+}
+
+std::size_t AddressLimits::upload_bytes() const {
+  std::lock_guard lock(mutex_);
+  return upload_bytes_;
+}
+
+void AddressLimits::forget_if_idle(std::map<std::string, Entry>::iterator it, Clock::time_point now) {
+  Entry& entry = it->second;
+  if (entry.connections != 0 || entry.upload_bytes != 0) return;
+  for (auto& bucket : entry.buckets)
+    if (bucket && !bucket->full(now)) return;  // its limits still remember
+  entries_.erase(it);
+}
+
+void AddressLimits::sweep(Clock::time_point now) {
+  takes_since_sweep_ = 0;
+  for (auto it = entries_.begin(); it != entries_.end();) forget_if_idle(it++, now);
+}
+
+}  // namespace fw::server

@@ -1,0 +1,99 @@
+#pragma once
+// What each peer address (address_key()) holds and may still take: its open
+// connections, its upload bytes in flight, and a token bucket for each kind
+// of rate limit. Shared by every connection and held across reconnections:
+// a client that leaves and joins again finds its buckets as it left them.
+// Thread-safe. Entries of addresses that hold nothing and whose buckets are
+// full are forgotten, so a flood of addresses costs bounded memory.
+#include <array>
+#include <chrono>
+#include <cstddef>
+#include <map>
+#include <mutex>
+#include <optional>
+#include <string>
+
+#include "abuse_limits.hpp"
+#include "token_bucket.hpp"
+
+namespace fw::server {
+
+enum class AddressRate { join, chat, upload, room_creation };
+inline constexpr std::size_t kAddressRateCount = 4;
+
+class AddressLimits {
+ public:
+  using Clock = std::chrono::steady_clock;
+
+  explicit AddressLimits(const AbuseLimits& limits);
+
+  /// One more connection from `key`; false (and nothing counted) when the
+  /// address already holds its share.
+  bool open_connection(const std::string& key);
+  void close_connection(const std::string& key);
+  std::size_t connections(const std::string& key) const;
+
+  /// Takes one token of `rate` for `key`; nullopt if granted, else the
+  /// seconds to wait before one is there.
+  std::optional<double> take(AddressRate rate, const std::string& key, Clock::time_point now = Clock::now());
+
+  /// Reserves `bytes` of upload body for `key`; false when the address's or
+  /// the server's share is taken.
+  bool reserve_upload(const std::string& key, std::size_t bytes);
+  void release_upload(const std::string& key, std::size_t bytes);
+  std::size_t upload_bytes() const;
+
+  const AbuseLimits& limits() const { return limits_; }
+
+ private:
+  struct Entry {
+    std::size_t connections = 0;
+    std::size_t upload_bytes = 0;
+    std::array<std::optional<TokenBucket>, kAddressRateCount> buckets;
+  };
+  BucketRate rate_of(AddressRate rate) const;
+  void forget_if_idle(std::map<std::string, Entry>::iterator it, Clock::time_point now);
+  /// Forgets every idle entry; amortised over many takes.
+  void sweep(Clock::time_point now);
+
+  AbuseLimits limits_;
+  mutable std::mutex mutex_;
+  std::map<std::string, Entry> entries_;
+  std::size_t upload_bytes_ = 0;
+  std::size_t takes_since_sweep_ = 0;
+};
+
+/// One connection counted against its address from accept to close: the
+/// session that carries it (through an upgrade too) owns it.
+class ConnectionSlot {
+ public:
+  ConnectionSlot() = default;
+  ConnectionSlot(AddressLimits& limits, std::string key) : limits_(&limits), key_(std::move(key)) {}
+  ConnectionSlot(ConnectionSlot&& other) noexcept : limits_(other.limits_), key_(std::move(other.key_)) {
+    other.limits_ = nullptr;
+  }
+  ConnectionSlot& operator=(ConnectionSlot&& other) noexcept {
+    if (this != &other) {
+      release();
+      limits_ = other.limits_;
+      key_ = std::move(other.key_);
+      other.limits_ = nullptr;
+    }
+    return *this;
+  }
+  ConnectionSlot(const ConnectionSlot&) = delete;
+  ConnectionSlot& operator=(const ConnectionSlot&) = delete;
+  ~ConnectionSlot() { release(); }
+
+  const std::string& key() const { return key_; }
+
+ private:
+  void release() {
+    if (limits_) limits_->close_connection(key_);
+    limits_ = nullptr;
+  }
+  AddressLimits* limits_ = nullptr;
+  std::string key_;
+};
+
+}  // namespace fw::server
