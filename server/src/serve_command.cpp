@@ -2,6 +2,7 @@
 
 #include <cstdlib>
 #include <memory>
+#include <string>
 
 #include "endpoint.hpp"
 #include "logging.hpp"
@@ -74,6 +75,35 @@ void add_limit_flags(CLI::App& cmd, ServerConfig& config) {
       ->envname("FACEWIRE_AUTH_SECRET");
 }
 
+/// A rate flag in events a minute (or an hour), kept as a token bucket's
+/// rate a second; the burst stays the default's.
+void add_rate_flag(CLI::App& cmd, const std::string& flag, BucketRate& rate, double per, const std::string& what) {
+  cmd.add_option_function<double>(
+         flag, [&rate, per](double n) { rate.per_second = n / per; },
+         what + " (default " + std::to_string(static_cast<int>(rate.per_second * per + 0.5)) + ", burst " +
+             std::to_string(static_cast<int>(rate.burst)) + ")")
+      ->check(CLI::Range(0.01, 1e7));
+}
+
+void add_address_limit_flags(CLI::App& cmd, ServerConfig& config) {
+  AbuseLimits& abuse = config.abuse;
+  cmd.add_option("--max-connections-per-address", abuse.connections_per_address,
+                 "connections open at once from one address (IPv6: one /64)")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{1'000'000}))
+      ->capture_default_str();
+  add_rate_flag(cmd, "--joins-per-minute", abuse.joins, 60, "room joins from one address a minute");
+  add_rate_flag(cmd, "--chat-per-minute", abuse.chat, 60, "chat lines from one address a minute");
+  add_rate_flag(cmd, "--room-chat-per-minute", abuse.room_chat, 60, "chat lines into one room a minute");
+  add_rate_flag(cmd, "--uploads-per-minute", abuse.uploads, 60, "uploads from one address a minute");
+  add_rate_flag(cmd, "--rooms-per-hour", abuse.room_creations, 3600, "rooms one address may create an hour");
+  cmd.add_option("--seats-per-address", abuse.seats_per_address,
+                 "seats one address may hold in one room (0: half the room size)")
+      ->capture_default_str();
+  cmd.add_option("--photo-queue", abuse.photo_queue, "photos waiting to be prepared before uploads get 503")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{10'000}))
+      ->capture_default_str();
+}
+
 void add_simulation_flags(CLI::App& cmd, ServerConfig& config) {
   cmd.add_flag("!--no-physics", config.physics, "drive faces by behavior only (no physics face)");
   cmd.add_flag("!--physics-always-awake", config.physics_sleeps, "faces at rest keep stepping (for benchmarks)");
@@ -108,6 +138,7 @@ CLI::App* add_serve_command(CLI::App& app) {
   add_thread_flags(*cmd, *config);
   add_room_flags(*cmd, *config);
   add_limit_flags(*cmd, *config);
+  add_address_limit_flags(*cmd, *config);
   add_simulation_flags(*cmd, *config);
   add_operation_flags(*cmd, *config);
   cmd->callback([config] {
