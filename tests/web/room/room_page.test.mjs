@@ -113,7 +113,7 @@ test('the meter stays under the 9.6 kbit/s budget', { timeout: 60000 }, async ()
     `all full packages ${timeline.fullPackagesMs ? `${Math.round(timeline.fullPackagesMs - timeline.welcomeMs)} ms` : 'not yet'}`);
 });
 
-test('pressing joy changes the presser\'s mouth and no other face\'s', { timeout: 60000 }, async () => {
+test('pressing joy changes the presser\'s mouth and no other face\'s', { timeout: 150000 }, async () => {
   // Pressed by a second person. The first to join leads the room and the
   // others mimic the leader's expressions by design; nobody mimics a
   // follower. The presser's mouth is read from the pixels of its self view,
