@@ -17,6 +17,7 @@ build_packages=(
   libjpeg-dev                                 # photos: the client downsizes them before upload
   libdlib-dev libdlib-data                    # face detector + 68-landmark model
   nlohmann-json3-dev libcli11-dev libspdlog-dev
+  libicu-dev                                  # display names: NFC and character classes
   libgtest-dev libgmock-dev googletest
   libhiredis-dev                              # Redis client (cluster mode)
   libcgal-dev                                 # constrained triangulation in the face generator

@@ -23,6 +23,7 @@ Request upload_request(const UploadTarget& target, const std::string& content_ty
   request.set(http::field::host, target.host + ":" + target.port);
   request.set(http::field::user_agent, "facewire-client");
   request.set(http::field::content_type, content_type);
+  if (!target.token.empty()) request.set(http::field::authorization, "Bearer " + target.token);
   request.body().assign(body.begin(), body.end());
   request.prepare_payload();
   return request;
@@ -61,8 +62,8 @@ boost::system::error_code exchange(const UploadTarget& target, const Request& re
   return ec;
 }
 
-// The server's answer: 201 (or 200) with {"asset": ID}, else its explanation.
-bool read_asset(const Response& response, std::string& asset, std::string& error) {
+// The server's answer: 201 (or 200) with {"asset": ID, "key": KEY}, else its explanation.
+bool read_answer(const Response& response, UploadAnswer& answer, std::string& error) {
   if (response.result() != http::status::created && response.result() != http::status::ok) {
     error = "the server refused the avatar (" + std::to_string(response.result_int()) + "): " + response.body();
     return false;
@@ -73,14 +74,19 @@ bool read_asset(const Response& response, std::string& asset, std::string& error
     error = "the server's answer to the upload has no asset id: " + response.body().substr(0, 200);
     return false;
   }
-  asset = json["asset"].get<std::string>();
+  answer.asset = json["asset"].get<std::string>();
+  if (!json.contains("key") || !json["key"].is_string()) {
+    error = "the server's answer to the upload has no key (is it an older server?): " + response.body().substr(0, 200);
+    return false;
+  }
+  answer.key = json["key"].get<std::string>();
   return true;
 }
 
 }  // namespace
 
 bool upload_avatar(const UploadTarget& target, const std::string& content_type, std::span<const std::uint8_t> body,
-                   int timeout_s, std::string& asset, std::string& error) {
+                   int timeout_s, UploadAnswer& answer, std::string& error) {
   const std::string where = "http://" + target.host + ":" + target.port + "/api/avatars";
   Response response;
   const boost::system::error_code ec = exchange(target, upload_request(target, content_type, body), timeout_s, response);
@@ -89,7 +95,7 @@ bool upload_avatar(const UploadTarget& target, const std::string& content_type, 
             (ec == beast::error::timeout ? "no answer within " + std::to_string(timeout_s) + " s" : ec.message());
     return false;
   }
-  return read_asset(response, asset, error);
+  return read_answer(response, answer, error);
 }
 
 }  // namespace fw::client

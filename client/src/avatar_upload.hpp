@@ -13,9 +13,9 @@ namespace fw::client {
 
 /// @param[in]  content_type  "image/jpeg", "image/png" or "application/x-facewire-avatar"
 /// @param[in]  timeout_s     for the whole exchange (the server prepares a photo before it answers)
-/// @param[out] asset         the asset id to use in hello
+/// @param[out] answer        the asset id and its key, to use in hello
 /// @param[out] error         the server's explanation (422: no face found, 413: too large, ...) or the I/O error
 bool upload_avatar(const UploadTarget& target, const std::string& content_type, std::span<const std::uint8_t> body,
-                   int timeout_s, std::string& asset, std::string& error);
+                   int timeout_s, UploadAnswer& answer, std::string& error);
 
 }  // namespace fw::client

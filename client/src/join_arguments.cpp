@@ -84,12 +84,13 @@ bool wants_timestamps(const JoinArgs& args) {
   return args.timestamps == "on" || (args.timestamps == "auto" && (args.max_kbps == 0 || args.max_kbps >= 32));
 }
 
-SessionOptions session_options(const JoinArgs& args, const std::string& asset,
+SessionOptions session_options(const JoinArgs& args, const std::string& asset, const std::string& key,
                                std::shared_ptr<const std::vector<std::uint8_t>> own_package) {
   SessionOptions options;
   options.room = args.room;
   options.name = args.name;
   options.avatar_asset = asset;
+  options.avatar_key = key;
   options.own_package = std::move(own_package);
   options.token = args.token;
   options.max_bps = static_cast<std::uint32_t>(args.max_kbps * 1000.0);

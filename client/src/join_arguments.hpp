@@ -47,8 +47,9 @@ bool wants_timestamps(const JoinArgs& args);
 
 /// The session's options for these arguments (without on_event).
 /// @param asset        the uploaded avatar's asset id, or ""
+/// @param key          the key the upload answered, or ""
 /// @param own_package  the uploaded package, when it was one
-SessionOptions session_options(const JoinArgs& args, const std::string& asset,
+SessionOptions session_options(const JoinArgs& args, const std::string& asset, const std::string& key,
                                std::shared_ptr<const std::vector<std::uint8_t>> own_package);
 
 }  // namespace fw::client

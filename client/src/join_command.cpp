@@ -41,7 +41,7 @@ std::unique_ptr<RoomView> start_view(const FrameOutputs& outputs, const render::
 // session is stopped before the summary is made.
 JoinOutcome play_room(const JoinArgs& args, const JoinPlan& plan, const JoinNetwork& network,
                       const UploadedAvatar& uploaded, RoomState& state, RoomView* view, FrameOutputs& outputs) {
-  SessionOptions options = session_options(args, uploaded.asset, uploaded.own_package);
+  SessionOptions options = session_options(args, uploaded.asset, uploaded.key, uploaded.own_package);
   options.on_event = [](const std::string& text) { std::cerr << text << "\n"; };
   SessionThread session(std::move(options), state, [&network, url = plan.url](boost::asio::io_context& io) {
     return network.open_transport(io, url);

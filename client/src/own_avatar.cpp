@@ -62,7 +62,7 @@ bool upload_target(const JoinArgs& args, const ServerUrl& url, UploadTarget& tar
       error = "--api must look like http://HOST:PORT (the server's HTTP port), not '" + args.api + "'";
       return false;
     }
-    target = {api.host, api.port};
+    target = {api.host, api.port, args.token};
     return true;
   }
   if (url.scheme == ServerUrl::Scheme::tcp) {
@@ -70,7 +70,7 @@ bool upload_target(const JoinArgs& args, const ServerUrl& url, UploadTarget& tar
             "http://HOST:PORT so that the photo or package can be uploaded";
     return false;
   }
-  target = {url.host, url.port};
+  target = {url.host, url.port, args.token};
   return true;
 }
 
@@ -98,7 +98,10 @@ bool upload_prepared_avatar(const JoinArgs& args, const ServerUrl& url, const Av
   UploadTarget target;
   if (!upload_target(args, url, target, error)) return false;
   const int timeout_s = upload_timeout_s(avatar.bytes.size(), args.max_kbps);
-  if (!uploader(target, avatar.content_type, avatar.bytes, timeout_s, uploaded.asset, error)) return false;
+  UploadAnswer answer;
+  if (!uploader(target, avatar.content_type, avatar.bytes, timeout_s, answer, error)) return false;
+  uploaded.asset = std::move(answer.asset);
+  uploaded.key = std::move(answer.key);
   uploaded.bytes = avatar.bytes.size();
   if (!avatar.package.empty())
     uploaded.own_package = std::make_shared<const std::vector<std::uint8_t>>(std::move(avatar.package));

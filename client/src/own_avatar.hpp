@@ -20,13 +20,20 @@ namespace fw::client {
 
 struct UploadTarget {
   std::string host;
-  std::string port;  ///< the server's HTTP port
+  std::string port;   ///< the server's HTTP port
+  std::string token;  ///< the join token, sent as a bearer token: a server with --auth-secret wants it
+};
+
+/// The server's answer to an upload.
+struct UploadAnswer {
+  std::string asset;  ///< the asset id, for hello
+  std::string key;    ///< the secret that lets this client wear the face, for hello
 };
 
 /// Posts `body` to the target's /api/avatars within `timeout_s`; true and
-/// the asset id, or false and what went wrong (the server's explanation).
+/// the answer, or false and what went wrong (the server's explanation).
 using AvatarUploader = std::function<bool(const UploadTarget& target, const std::string& content_type,
-                                          std::span<const std::uint8_t> body, int timeout_s, std::string& asset,
+                                          std::span<const std::uint8_t> body, int timeout_s, UploadAnswer& answer,
                                           std::string& error)>;
 
 /// What goes up: the downsized photo, the package as it was read, or both.
@@ -40,6 +47,7 @@ struct OwnAvatar {
 /// What came of the upload.
 struct UploadedAvatar {
   std::string asset;         ///< for hello; empty: the server makes a face for the name
+  std::string key;           ///< the asset's key, for hello
   std::size_t bytes = 0;     ///< uploaded
   /// The package, when one was uploaded: the client draws its own face from it.
   std::shared_ptr<const std::vector<std::uint8_t>> own_package;

@@ -105,6 +105,10 @@ void RoomSession::say_hello() {
   hello.name = options_.name;
   hello.avatar = options_.avatar_asset;
   hello.token = options_.token;
+  hello.avatar_key = options_.avatar_key;
+  // After a drop: the server may not have noticed it yet, and still hold
+  // the token for the old connection; this key shows it is the same person.
+  hello.resume = resume_key_;
   hello.max_bps = options_.max_bps;
   hello.timestamps = options_.timestamps;
   hello.own_package = options_.own_package != nullptr;
@@ -208,6 +212,7 @@ codec::MessageError RoomSession::read_then(std::span<const std::uint8_t> bytes,
 }
 
 void RoomSession::on_welcome(const codec::Welcome& welcome) {
+  resume_key_ = welcome.resume;
   {
     std::lock_guard lock(state_.mutex);
     if (greeted_) state_.stats.reconnected();  // a welcome before this one: the link came back

@@ -29,6 +29,7 @@ struct SessionOptions {
   std::string room;
   std::string name;
   std::string avatar_asset;  ///< empty: the server makes a procedural face
+  std::string avatar_key;    ///< the key the upload of avatar_asset answered
   /// The package behind avatar_asset when the client uploaded it itself: the
   /// server is asked not to send it back, and the own face uses it at once.
   std::shared_ptr<const std::vector<std::uint8_t>> own_package;
@@ -125,6 +126,7 @@ class RoomSession {
   bool writing_ = false;
   bool stopped_ = false;
   bool greeted_ = false;  ///< the --say/--emote of the first welcome went out
+  std::string resume_key_;  ///< the last welcome's, for the next hello after a drop
   int failed_attempts_ = 0;
   std::uint64_t connection_serial_ = 0;  ///< handlers of an old connection see a newer serial and stop
   std::uint32_t ping_nonce_ = 0;

@@ -77,6 +77,8 @@ MessageError read_message(std::span<const std::uint8_t> bytes, Hello& m) {
   read_string(r, kMaxDisplayNameBytes, m.name, error);
   read_string(r, kMaxAssetIdBytes, m.avatar, error);
   read_string(r, kMaxTokenBytes, m.token, error);
+  read_string(r, kMaxKeyBytes, m.avatar_key, error);
+  read_string(r, kMaxKeyBytes, m.resume, error);
   return finish(r, error);
 }
 
@@ -98,6 +100,7 @@ MessageError read_message(std::span<const std::uint8_t> bytes, Welcome& m) {
   m.avatars.clear();
   for (std::uint32_t i = 0; i < count && !r.failed() && error == MessageError::ok; ++i)
     read_avatar_info(r, m.avatars.emplace_back(), error);
+  read_string(r, kMaxKeyBytes, m.resume, error);
   return finish(r, error);
 }
 

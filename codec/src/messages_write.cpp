@@ -39,6 +39,7 @@ void write_avatar_info(ByteWriter& w, const AvatarInfo& a) {
 void write_message(const Hello& m, std::vector<std::uint8_t>& out) {
   assert(m.room.size() <= kMaxRoomNameBytes && m.name.size() <= kMaxDisplayNameBytes);
   assert(m.avatar.size() <= kMaxAssetIdBytes && m.token.size() <= kMaxTokenBytes && m.max_bps <= kMaxBitsPerSecond);
+  assert(m.avatar_key.size() <= kMaxKeyBytes && m.resume.size() <= kMaxKeyBytes);
   ByteWriter w(out);
   w.u8(first_byte(MessageType::hello));
   w.u16_le(m.protocol_version);
@@ -48,11 +49,13 @@ void write_message(const Hello& m, std::vector<std::uint8_t>& out) {
   write_string(w, m.name);
   write_string(w, m.avatar);
   write_string(w, m.token);
+  write_string(w, m.avatar_key);
+  write_string(w, m.resume);
 }
 
 void write_message(const Welcome& m, std::vector<std::uint8_t>& out) {
   assert(m.you <= kMaxAvatarIdValue && m.room.size() <= kMaxRoomNameBytes && m.tick_hz > 0);
-  assert(m.avatars.size() <= kMaxWelcomeAvatars && m.max_bps <= kMaxBitsPerSecond);
+  assert(m.avatars.size() <= kMaxWelcomeAvatars && m.max_bps <= kMaxBitsPerSecond && m.resume.size() <= kMaxKeyBytes);
   ByteWriter w(out);
   w.u8(first_byte(MessageType::welcome));
   w.u16_le(m.protocol_version);
@@ -62,6 +65,7 @@ void write_message(const Welcome& m, std::vector<std::uint8_t>& out) {
   w.varint(m.max_bps);
   w.varint(static_cast<std::uint32_t>(m.avatars.size()));
   for (const AvatarInfo& a : m.avatars) write_avatar_info(w, a);
+  write_string(w, m.resume);
 }
 
 void write_message(const Presence& m, std::vector<std::uint8_t>& out) {

@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "api_access.hpp"
 #include "room_registry.hpp"
 
 namespace fw::server {
@@ -84,14 +85,23 @@ std::optional<Response> respond_to_api(ServerContext& context, const Request& re
                  context.draining.load() ? "draining\n" : "starting\n");
   }
   if (path == "/metrics") {
+    if (Response refusal; !operator_access(context, request, refusal)) {
+      context.abuse.note(Abuse::unauthorized, "metrics", "a request for /metrics without the operator's secret");
+      return refusal;
+    }
     Response response = plain(http::status::ok, request, context.metrics.render(context.physics_lod.share(), context.abuse));
     response.set(http::field::content_type, "text/plain; version=0.0.4; charset=utf-8");
     return response;
   }
   if (path == "/api/rooms") {
+    Response refusal;
+    const auto access = api_access(context, request, refusal);
+    if (!access) return refusal;
     nlohmann::json rooms = nlohmann::json::array();
     for (const RoomSummary& room : context.rooms->list())
-      rooms.push_back({{"name", room.name}, {"avatars", room.avatars}, {"persons", room.persons}});
+      // A token opens one room: a holder sees that room alone, not which
+      // other rooms exist or who is in them.
+      if (access->open || room.name == access->claims->room) rooms.push_back({{"name", room.name}, {"avatars", room.avatars}, {"persons", room.persons}});
     return json_response(http::status::ok, request.version(), request.keep_alive(),
                          nlohmann::json{{"rooms", rooms}}.dump() + "\n");
   }

@@ -17,6 +17,9 @@ struct SessionTimeouts {
   std::chrono::milliseconds handshake = limits::kHandshakeTimeout;
   std::chrono::milliseconds idle = limits::kSessionIdleTimeout;
   std::chrono::milliseconds close = limits::kCloseTimeout;
+  /// A person who neither sends anything but pings nor reads what waits
+  /// for them this long is let go: a seat held for nothing.
+  std::chrono::milliseconds idle_person = limits::kIdlePersonTimeout;
 };
 
 struct ServerConfig {
@@ -32,6 +35,7 @@ struct ServerConfig {
   std::uint32_t max_client_bps = 1'000'000;
   std::size_t max_upload_bytes = 4 * 1024 * 1024;
   std::string auth_secret;       ///< empty: no tokens needed
+  std::string metrics_secret;    ///< empty: /metrics open, unless auth_secret is set (then closed)
   bool demo_room = true;         ///< the "lobby" with three autonomous avatars
   /// Procedural faces made at start, for clients without a package (chosen
   /// by name) and the lobby's three. Not a flag; a tenth of a second each,
@@ -44,8 +48,16 @@ struct ServerConfig {
   std::string log_level = "info";
   bool log_json = false;
   std::string landmark_model;    ///< for photo uploads; empty: the default place
+  /// Photos prepared at once; each thread beyond the first loads its own
+  /// landmark model (about 100 MB) when two photos are first prepared at once.
+  std::size_t photo_threads = 2;
   SessionTimeouts timeouts;
   AbuseLimits abuse;             ///< per address and per room
+  /// Avatar ids a room hands out (1 .. avatar_id_space - 1: the codec's 21
+  /// bits), and how long an id rests after its avatar left before it is
+  /// handed out again. Not flags; tests shrink them.
+  std::uint32_t avatar_id_space = std::uint32_t{1} << 21;
+  std::chrono::milliseconds avatar_id_quiet = limits::kAvatarIdQuiet;
 };
 
 }  // namespace fw::server

@@ -1,6 +1,7 @@
 #include "server_core.hpp"
 
 #include "demo_room.hpp"
+#include "server_keys.hpp"
 
 namespace fw::server {
 
@@ -23,6 +24,8 @@ bool ServerCore::open(std::string& error) {
     return false;
   }
   context_.store = store_.get();
+  context_.server_key = load_or_create_server_key(context_.config.data, error);
+  if (context_.server_key.empty()) return false;
   return make_demo_avatars(context_, error);
 }
 

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <iostream>
 
+#include "display_name.hpp"
 #include "invite_link.hpp"
 #include "join_token.hpp"
 
@@ -22,12 +23,19 @@ int mint(const TokenArgs& args) {
     std::cerr << "facewire-server token: no secret; pass --auth-secret or set FACEWIRE_AUTH_SECRET to the server's\n";
     return 2;
   }
+  // The name as the server will compare it: normalised, and refused when it
+  // could not be a display name.
+  std::string name;
+  if (const std::string why = normalize_display_name(args.name, name); !why.empty()) {
+    std::cerr << "facewire-server token: --name: " << why << "\n";
+    return 2;
+  }
   const auto now = std::chrono::duration_cast<std::chrono::seconds>(
                        std::chrono::system_clock::now().time_since_epoch())
                        .count();
-  const std::string token = mint_join_token({args.room, args.name, now + args.ttl_seconds}, args.secret);
+  const std::string token = mint_join_token({args.room, name, now + args.ttl_seconds}, args.secret);
   std::string error;
-  const auto link = invite_link(args.url, args.room, args.name, token, error);
+  const auto link = invite_link(args.url, args.room, name, token, error);
   if (!link) {
     std::cerr << "facewire-server token: --url: " << error << "\n";
     return 2;
@@ -42,9 +50,11 @@ int mint(const TokenArgs& args) {
 
 void add_token_command(CLI::App& app) {
   auto args = std::make_shared<TokenArgs>();
-  CLI::App* cmd = app.add_subcommand("token", "Mint a join token for one room (and optionally one name)");
+  CLI::App* cmd = app.add_subcommand("token", "Mint a join token for one person (a name) in one room");
   cmd->add_option("--room", args->room, "the room the token opens")->required();
-  cmd->add_option("--name", args->name, "the only display name it admits (default: any)");
+  // A token admits one person at a time, under one name: one without a
+  // name would admit whoever saw it.
+  cmd->add_option("--name", args->name, "the display name of the person it invites")->required();
   cmd->add_option("--ttl", args->ttl_seconds, "seconds until it expires")
       ->check(CLI::Range(std::int64_t{1}, std::int64_t{366} * 86400))
       ->capture_default_str();

@@ -88,10 +88,11 @@ TEST(JoinArguments, TheSessionGetsTheRoomTheFaceAndTheBudget) {
   args.say = {"hi"};
   args.emote = "joy";
   const auto own = std::make_shared<const std::vector<std::uint8_t>>(std::vector<std::uint8_t>{1});
-  const SessionOptions options = session_options(args, "asset7", own);
+  const SessionOptions options = session_options(args, "asset7", "key7", own);
   EXPECT_EQ(options.room, "lobby");
   EXPECT_EQ(options.name, "Ada L.");
   EXPECT_EQ(options.avatar_asset, "asset7");
+  EXPECT_EQ(options.avatar_key, "key7");
   EXPECT_EQ(options.own_package, own);
   EXPECT_EQ(options.token, "fw1.x");
   EXPECT_EQ(options.max_bps, 9600u);

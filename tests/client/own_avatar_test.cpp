@@ -28,13 +28,14 @@ struct FakeUploader {
 
   AvatarUploader uploader() {
     return [this](const UploadTarget& t, const std::string& type, std::span<const std::uint8_t> b, int timeout,
-                  std::string& asset, std::string&) {
+                  UploadAnswer& answer, std::string&) {
       ++calls;
       target = t;
       content_type = type;
       body.assign(b.begin(), b.end());
       timeout_s = timeout;
-      asset = "asset42";
+      answer.asset = "asset42";
+      answer.key = "key42";
       return true;
     };
   }
@@ -93,6 +94,7 @@ TEST_F(OwnAvatarTest, APackageIsUploadedAsItIsAndKeptForTheOwnFace) {
   EXPECT_EQ(fake_.target.host, "127.0.0.1");
   EXPECT_EQ(fake_.target.port, "8080");
   EXPECT_EQ(uploaded.asset, "asset42");
+  EXPECT_EQ(uploaded.key, "key42") << "the key goes into the hello";
   EXPECT_EQ(uploaded.bytes, package.size());
   ASSERT_TRUE(uploaded.own_package);
   EXPECT_EQ(*uploaded.own_package, package);

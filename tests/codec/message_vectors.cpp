@@ -41,13 +41,13 @@ json info_json(const AvatarInfo& a) {
 json fields(const Hello& m) {
   return {{"protocolVersion", m.protocol_version}, {"timestamps", m.timestamps}, {"noPackages", m.no_packages},
           {"ownPackage", m.own_package}, {"maxBps", m.max_bps}, {"room", m.room}, {"name", m.name},
-          {"avatar", m.avatar}, {"token", m.token}};
+          {"avatar", m.avatar}, {"token", m.token}, {"avatarKey", m.avatar_key}, {"resume", m.resume}};
 }
 json fields(const Welcome& m) {
   json avatars = json::array();
   for (const auto& a : m.avatars) avatars.push_back(info_json(a));
   return {{"protocolVersion", m.protocol_version}, {"you", m.you}, {"room", m.room}, {"tickHz", m.tick_hz},
-          {"maxBps", m.max_bps}, {"avatars", avatars}};
+          {"maxBps", m.max_bps}, {"avatars", avatars}, {"resume", m.resume}};
 }
 json fields(const Presence& m) { return {{"change", static_cast<int>(m.change)}, {"avatar", info_json(m.avatar)}}; }
 json fields(const Chat& m) { return {{"from", m.from}, {"text", m.text}}; }
@@ -154,12 +154,15 @@ json make_vectors() {
   hello.max_bps = 9600;
   hello.timestamps = true;
   hello.own_package = true;
+  hello.avatar_key = "k3y-_AZaz09k3y-_AZaz09";
+  hello.resume = "r-e_sume0123456789abcd";
   v.add(hello);
   Welcome welcome;
   welcome.you = 300;
   welcome.room = "r-1.x";
   welcome.tick_hz = 30;
   welcome.max_bps = 56000;
+  welcome.resume = "r-e_sume0123456789abcd";
   welcome.avatars = {{1, "Ada", "", 0, 0, false, {-364.0f, 0.0f, 210.0f, 1.0471976f}},
                      {300, "Bo 🙂", "ffeeddccbbaa99887766554433221100", 1100, 19652, true, {0, 0, -40.0f, -3.1415926f}}};
   v.add(welcome);

@@ -178,12 +178,12 @@ TEST(InviteLink, TheTokenCommandPrintsTheTokenThenTheLink) {
   const std::string link = minted.output.substr(token.size() + 1, minted.output.find('\n', token.size() + 1) - token.size() - 1);
   EXPECT_EQ(link, "https://faces.example.org:8443/?room=team.a&name=Ann%20Lee&token=" + token);
 
-  const auto default_url = test::run_command(test::bin("facewire-server") + " token --room r --auth-secret s", false);
+  const auto default_url = test::run_command(test::bin("facewire-server") + " token --room r --name Bo --auth-secret s", false);
   ASSERT_EQ(default_url.status, 0) << default_url.output;
-  EXPECT_NE(default_url.output.find("\nhttp://127.0.0.1:8080/?room=r&token=fw1."), std::string::npos)
+  EXPECT_NE(default_url.output.find("\nhttp://127.0.0.1:8080/?room=r&name=Bo&token=fw1."), std::string::npos)
       << default_url.output;
 
-  const auto bad = test::run_command(test::bin("facewire-server") + " token --room r --auth-secret s --url ftp://x");
+  const auto bad = test::run_command(test::bin("facewire-server") + " token --room r --name Bo --auth-secret s --url ftp://x");
   EXPECT_EQ(bad.status, 2);
   EXPECT_NE(bad.output.find("http://HOST:PORT/"), std::string::npos) << bad.output;
 }

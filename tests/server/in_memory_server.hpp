@@ -7,6 +7,7 @@
 #include <chrono>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <thread>
 #include <unistd.h>
@@ -19,6 +20,7 @@
 #include "in_memory_session.hpp"
 #include "room_inbox.hpp"
 #include "server_core.hpp"
+#include "server_keys.hpp"
 
 namespace fw::test {
 
@@ -43,6 +45,9 @@ struct HelloOptions {
   bool timestamps = false;
   bool no_packages = false;
   std::string avatar{};
+  /// The avatar's key; unset: the right one (InMemoryServer::join), as the uploader has it.
+  std::optional<std::string> avatar_key{};
+  std::string resume{};
 };
 
 /// The peer of one in-memory connection: sends upstream messages and files
@@ -74,6 +79,8 @@ class InMemoryPeer : public RoomInbox {
     h.timestamps = options.timestamps;
     h.no_packages = options.no_packages;
     h.avatar = options.avatar;
+    h.avatar_key = options.avatar_key.value_or("");
+    h.resume = options.resume;
     send(h);
   }
 
@@ -117,6 +124,11 @@ class InMemoryServer {
     config.workers = 1;
     config.demo_room = false;
     config.demo_faces = faces;
+    // Every in-memory peer comes from one address ("in-memory"): what one
+    // address may do is raised, so that a test can seat many; the tests of
+    // those limits set them back.
+    config.abuse.joins = config.abuse.chat = config.abuse.room_creations = {1e6, 1e6};
+    config.abuse.seats_per_address = 64;
     return config;
   }
 
@@ -152,9 +164,10 @@ class InMemoryServer {
   server::ServerContext& context() { return core_.context(); }
   boost::asio::io_context& io() { return io_; }
 
-  /// A connection whose session has started (its clock runs), not greeted yet.
-  std::unique_ptr<InMemoryPeer> connect() {
-    auto session = std::make_shared<InMemorySession>(context(), boost::asio::make_strand(io_));
+  /// A connection whose session has started (its clock runs), not greeted
+  /// yet, from the peer address `from`.
+  std::unique_ptr<InMemoryPeer> connect(const std::string& from = "in-memory") {
+    auto session = std::make_shared<InMemorySession>(context(), boost::asio::make_strand(io_), from);
     session->run();
     return std::make_unique<InMemoryPeer>(std::move(session));
   }
@@ -162,7 +175,10 @@ class InMemoryServer {
   std::unique_ptr<InMemoryPeer> join(const std::string& room, const std::string& name,
                                      const HelloOptions& options = {}) {
     auto peer = connect();
-    peer->hello(room, name, options);
+    HelloOptions with_key = options;
+    if (!with_key.avatar.empty() && !with_key.avatar_key)
+      with_key.avatar_key = server::avatar_key(context().server_key, with_key.avatar);
+    peer->hello(room, name, with_key);
     peer->read_until([&] { return peer->welcome.has_value() || peer->closing.has_value(); });
     return peer;
   }

@@ -13,9 +13,29 @@ TEST(JoinToken, AdmitsItsRoomAndName) {
   EXPECT_EQ(check_join_token(token, "secret", "a", "Ann", kNow), "");
 }
 
-TEST(JoinToken, WithoutANameAdmitsAnyName) {
+TEST(JoinToken, WithoutANameAdmitsNobody) {
+  // Signed and in date, but it names nobody: it would admit anyone who saw it.
   const std::string token = mint_join_token({"a", "", kNow + 60}, "secret");
-  EXPECT_EQ(check_join_token(token, "secret", "a", "Whoever", kNow), "");
+  EXPECT_NE(check_join_token(token, "secret", "a", "Whoever", kNow).find("names nobody"), std::string::npos);
+  std::string why;
+  EXPECT_FALSE(verify_join_token(token, "secret", kNow, why));
+  EXPECT_NE(why.find("--name"), std::string::npos) << why;
+}
+
+TEST(JoinToken, TheSignatureHasOneSpelling) {
+  // A 32-byte signature is 43 base64url characters: the last carries 4
+  // bits of it and 2 unused bits. Setting an unused bit spells the same
+  // bytes another way; a second spelling would let a token be altered and
+  // still pass, so it is refused.
+  const std::string token = mint_join_token({"a", "Ann", kNow + 60}, "secret");
+  const std::string alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789-_";
+  std::string other = token;
+  const auto last = alphabet.find(other.back());
+  ASSERT_EQ(last % 4, 0u) << "the unused bits are zero in the canonical spelling";
+  other.back() = alphabet[last + 1];
+  EXPECT_NE(check_join_token(other, "secret", "a", "Ann", kNow), "");
+  EXPECT_NE(check_join_token(token + "A", "secret", "a", "Ann", kNow), "") << "a dangling character";
+  EXPECT_EQ(check_join_token(token, "secret", "a", "Ann", kNow), "");
 }
 
 TEST(JoinToken, RefusesAnotherRoomAnotherNameAndExpiry) {

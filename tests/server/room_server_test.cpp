@@ -14,6 +14,7 @@
 #include "room_test_client.hpp"
 #include "room_test_server.hpp"
 #include "run_command.hpp"
+#include "server_keys.hpp"
 #include "server_process.hpp"
 
 namespace fw::server {
@@ -203,7 +204,12 @@ TEST(RoomServerTokens, ATokenForRoomADoesNotOpenRoomB) {
     ASSERT_TRUE(refused->closing) << room << " " << name;
     EXPECT_EQ(refused->closing->code, codec::CloseCode::unauthorized) << refused->closing->reason;
   }
-  const auto rooms = test::http_get(server.http_port(), "/api/rooms");
+  // The room list shows a token's holder the token's room alone: one for b.
+  const auto for_b =
+      test::run_command(test::bin("facewire-server") + " token --room b --name Ann --ttl 60 --auth-secret s3cret", false);
+  const auto rooms = test::http_get(server.http_port(), "/api/rooms",
+                                    "Authorization: Bearer " + for_b.output.substr(0, for_b.output.find('\n')) + "\r\n");
+  ASSERT_EQ(rooms.status, 200) << rooms.body;
   EXPECT_EQ(rooms.body.find("\"b\""), std::string::npos) << "refused joins create no rooms";
 }
 
@@ -331,6 +337,7 @@ TEST(RoomServerRest, AClientHoldingItsOwnPackageIsNotSentItBack) {
   hello.room = "lobby";
   hello.name = "Holder";
   hello.avatar = nlohmann::json::parse(uploaded.body)["asset"];
+  hello.avatar_key = nlohmann::json::parse(uploaded.body)["key"];
   hello.own_package = true;
   client.send_message(hello);
   ASSERT_TRUE(client.pump_until([&] { return client.welcome.has_value() || client.closing.has_value(); }, 5s));
@@ -423,6 +430,10 @@ TEST(RoomServerRest, StoredAvatarsKeepTheirPhotoAndArePreparedAgainFromIt) {
   hello.room = "elsewhere";
   hello.name = "Returning";
   hello.avatar = with_photo;
+  // Stored by hand here, so the key is made as the server makes it, from its own key.
+  std::vector<std::uint8_t> server_key;
+  ASSERT_TRUE(model::read_file(server.data() / "server.key", 64, server_key, error)) << error;
+  hello.avatar_key = avatar_key(std::string(server_key.begin(), server_key.end()), with_photo);
   client.send_message(hello);
   ASSERT_TRUE(client.pump_until([&] { return client.welcome.has_value() || client.closing.has_value(); }, 5s));
   ASSERT_TRUE(client.welcome) << (client.closing ? client.closing->reason : "no answer");

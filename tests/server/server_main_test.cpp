@@ -124,7 +124,7 @@ TEST(ServerCli, PortInUseIsExplained) {
 }
 
 TEST(ServerCli, TokenNeedsASecret) {
-  const auto result = test::run_command("env -u FACEWIRE_AUTH_SECRET " + test::bin("facewire-server") + " token --room a");
+  const auto result = test::run_command("env -u FACEWIRE_AUTH_SECRET " + test::bin("facewire-server") + " token --room a --name Ann");
   EXPECT_EQ(result.status, 2);
   EXPECT_NE(result.output.find("--auth-secret"), std::string::npos) << result.output;
 }
@@ -170,7 +170,7 @@ TEST(ServerCli, FlagsWithoutASubcommandServe) {
 TEST(ServerCli, AnUnknownFlagIsAUsageErrorThatNamesIt) {
   // Every subcommand, given what it requires, so that the unknown flag is the only error.
   const std::string scene = test::bin("facewire-server");  // any file that exists
-  for (const std::string& command : {std::string(""), std::string("serve"), std::string("token --room r"),
+  for (const std::string& command : {std::string(""), std::string("serve"), std::string("token --room r --name Ann"),
                                      std::string("prep photo.jpg -o out.fwa"), std::string("script file.fws"),
                                      std::string("simulate -o out.fws"), "render-scene " + scene}) {
     const auto result = test::run_command(server_command(command + " --no-such-flag"));
@@ -190,7 +190,9 @@ TEST(ServerCli, ABadValueIsAUsageErrorThatNamesTheFlag) {
            {"--http localhost", "--http"},
            {"--tcp 127.0.0.1:http", "--tcp"},
            {"--http", "--http"},
-           {"token --room r --ttl -5", "--ttl"},
+           {"token --room r --name Ann --ttl -5", "--ttl"},
+           {"token --room r", "--name"},
+           {"token --room r --name \u202Eevil --auth-secret s", "--name"},
            {"prep photo.jpg -o out.fwa --quality 500", "--quality"},
            {"simulate -o out.fws --avatars 0", "--avatars"},
            {"render-scene " + scene + " --every 0", "--every"}}) {

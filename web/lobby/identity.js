@@ -1,21 +1,26 @@
-// The name and the avatar a person chose, kept in localStorage so that a
-// reload (or the next visit) keeps them. Storage may be off (private
-// windows, policies): then nothing is kept, and nothing fails.
+// The name and the avatar a person chose, with the avatar's key (the
+// secret its upload answered, without which the server does not let
+// anyone wear it), kept in localStorage so that a reload (or the next
+// visit) keeps them. Storage may be off (private windows, policies): then
+// nothing is kept, and nothing fails.
 
 const KEY = 'facewire.identity';
 
 export function loadIdentity(storage = globalThis.localStorage) {
   try {
     const saved = JSON.parse(storage.getItem(KEY) || '{}');
-    return { name: typeof saved.name === 'string' ? saved.name : '', asset: typeof saved.asset === 'string' ? saved.asset : '' };
+    const text = (value) => (typeof value === 'string' ? value : '');
+    // An avatar without its key cannot be worn: it is forgotten.
+    const keyed = text(saved.asset) !== '' && text(saved.key) !== '';
+    return { name: text(saved.name), asset: keyed ? saved.asset : '', key: keyed ? saved.key : '' };
   } catch {
-    return { name: '', asset: '' };
+    return { name: '', asset: '', key: '' };
   }
 }
 
 export function saveIdentity(identity, storage = globalThis.localStorage) {
   try {
-    storage.setItem(KEY, JSON.stringify({ name: identity.name, asset: identity.asset }));
+    storage.setItem(KEY, JSON.stringify({ name: identity.name, asset: identity.asset, key: identity.key }));
   } catch {
     // storage is off or full: the page works without it
   }

@@ -17,7 +17,7 @@ const $ = (id) => document.getElementById(id);
 
 const invite = readInvite(location.search);
 const identity = loadIdentity();
-const state = { asset: identity.asset, uploading: false };
+const state = { asset: identity.asset, key: identity.key, uploading: false };
 
 function showError(element, message) {
   element.textContent = message;
@@ -41,7 +41,7 @@ if (invite.name && invite.token) {
 }
 nameField.addEventListener('input', () => {
   showError($('name-error'), '');
-  saveIdentity({ name: nameField.value.trim(), asset: state.asset });
+  saveIdentity({ name: nameField.value.trim(), asset: state.asset, key: state.key });
 });
 
 // --- the avatar: preview and advice ----------------------------------------
@@ -77,7 +77,8 @@ if (state.asset) {
     // Gone from this server (another server, or it must be uploaded
     // again): forget it; the generic face stays.
     state.asset = '';
-    saveIdentity({ name: nameField.value.trim(), asset: '' });
+    state.key = '';
+    saveIdentity({ name: nameField.value.trim(), asset: '', key: '' });
   });
 }
 
@@ -101,9 +102,10 @@ async function upload(photo, name) {
     const answer = await uploadPhoto(fitted.blob, fitted.name, (fraction) => {
       if (fraction !== null && fraction >= 1) setProgress(null, 'Uploaded. Preparing your avatar…');
       else setProgress(fraction, `Uploading your photo… ${fraction === null ? '' : `${Math.round(fraction * 100)} %`}`);
-    });
+    }, invite.token);
     state.asset = answer.asset;
-    saveIdentity({ name: nameField.value.trim(), asset: state.asset });
+    state.key = answer.key;
+    saveIdentity({ name: nameField.value.trim(), asset: state.asset, key: state.key });
     await showStoredAvatar(answer.asset, answer.advice);
     $('upload').hidden = true;
   } catch (error) {
@@ -179,7 +181,7 @@ roomField.addEventListener('input', () => {
 
 async function refreshRooms() {
   try {
-    rooms = await fetchRooms();
+    rooms = await fetchRooms(invite.token);
     renderRooms($('room-list'), rooms, roomField.value, pick);
   } catch (error) {
     const item = document.createElement('li');
@@ -201,6 +203,6 @@ $('join').addEventListener('click', () => {
   if (nameProblem) return nameField.focus();
   if (roomProblem) return roomField.focus();
   if (state.uploading) return showError($('upload-error'), 'Wait until your photo is prepared, then join.');
-  saveIdentity({ name, asset: state.asset });
-  location.href = roomPageUrl({ room, name, asset: state.asset, token: invite.token });
+  saveIdentity({ name, asset: state.asset, key: state.key });
+  location.href = roomPageUrl({ room, name, asset: state.asset, key: state.key, token: invite.token });
 });

@@ -2,8 +2,10 @@
 // a room. `persons` are people connected; `avatars` every face in the room,
 // the demo room's own included.
 
-export async function fetchRooms() {
-  const response = await fetch('api/rooms', { cache: 'no-store' });
+/// `token`: the invitation's; a server with join tokens lists the room it opens.
+export async function fetchRooms(token = '') {
+  const headers = token ? { Authorization: `Bearer ${token}` } : {};
+  const response = await fetch('api/rooms', { cache: 'no-store', headers });
   if (!response.ok) throw new Error(`the room list is unavailable (HTTP ${response.status})`);
   return (await response.json()).rooms || [];
 }

@@ -5,14 +5,16 @@ import { uploadErrorMessage } from './upload_errors.js';
 
 /// Uploads `photo` (a Blob) named `fileName`; `onProgress(fraction)` is
 /// called as it goes (fraction 0..1, or null when the size is unknown).
-/// Resolves with the server's answer ({asset, package, bytes, advice, ...});
-/// rejects with an Error whose message is for the person.
-export function uploadPhoto(photo, fileName, onProgress = () => {}) {
+/// Resolves with the server's answer ({asset, key, package, bytes, advice, ...});
+/// rejects with an Error whose message is for the person. `token`: the
+/// invitation's, which a server with join tokens wants for uploads too.
+export function uploadPhoto(photo, fileName, onProgress = () => {}, token = '') {
   return new Promise((resolve, reject) => {
     const form = new FormData();
     form.append('photo', photo, fileName);
     const request = new XMLHttpRequest();
     request.open('POST', '/api/avatars');
+    if (token) request.setRequestHeader('Authorization', `Bearer ${token}`);
     request.upload.addEventListener('progress', (event) => {
       onProgress(event.lengthComputable ? event.loaded / event.total : null);
     });

@@ -102,9 +102,11 @@ const readers = {
     const name = f.string(Limits.displayNameBytes);
     const avatar = f.string(Limits.assetIdBytes);
     const token = f.string(Limits.tokenBytes);
+    const avatarKey = f.string(Limits.keyBytes);
+    const resume = f.string(Limits.keyBytes);
     return f.finish({
       protocolVersion: PROTOCOL_VERSION, timestamps: (flags & 1) !== 0, noPackages: (flags & 2) !== 0,
-      ownPackage: (flags & 4) !== 0, maxBps, room, name, avatar, token,
+      ownPackage: (flags & 4) !== 0, maxBps, room, name, avatar, token, avatarKey, resume,
     });
   }],
   [MessageType.welcome]: [Limits.downstreamMessageBytes, (f) => {
@@ -118,7 +120,8 @@ const readers = {
     const count = f.count();
     const avatars = [];
     for (let i = 0; i < count && f.going; ++i) avatars.push(avatarInfo(f));
-    return f.finish({ protocolVersion: PROTOCOL_VERSION, you, room, tickHz, maxBps, avatars });
+    const resume = f.string(Limits.keyBytes);
+    return f.finish({ protocolVersion: PROTOCOL_VERSION, you, room, tickHz, maxBps, avatars, resume });
   }],
   [MessageType.presence]: [Limits.downstreamMessageBytes, (f) => {
     const change = f.r.u8();

@@ -2,7 +2,7 @@
 // bytes, error codes and limits, as codec/include/fw/codec/messages.hpp
 // defines them. The numbers are part of the protocol and never change.
 
-export const PROTOCOL_VERSION = 2;
+export const PROTOCOL_VERSION = 3;
 export const SESSION_BIT = 0x80;
 
 export const MessageType = Object.freeze({
@@ -36,6 +36,7 @@ export const Limits = Object.freeze({
   displayNameBytes: 32,
   assetIdBytes: 64,
   tokenBytes: 512,
+  keyBytes: 64,
   chatBytes: 500,
   emotionBytes: 16,
   sentenceBytes: 4096,

@@ -45,6 +45,8 @@ const writers = {
     w.string(m.name);
     w.string(m.avatar ?? '');
     w.string(m.token ?? '');
+    w.string(m.avatarKey ?? '');
+    w.string(m.resume ?? '');
   },
   [MessageType.welcome]: (w, m) => {
     w.u16(m.protocolVersion ?? PROTOCOL_VERSION);
@@ -54,6 +56,7 @@ const writers = {
     w.varint(m.maxBps);
     w.varint(m.avatars.length);
     for (const a of m.avatars) avatarInfo(w, a);
+    w.string(m.resume ?? '');
   },
   [MessageType.presence]: (w, m) => {
     w.u8(m.change);

@@ -20,7 +20,7 @@ const MAX_CHAT_LINES = 200;
 export class RoomClient {
   /**
    * @param options.url          ws://host:port/ (or several, comma-separated: the next after a failure)
-   * @param options.room, options.name, options.asset, options.token   the hello's fields
+   * @param options.room, options.name, options.asset, options.avatarKey, options.token   the hello's fields
    * @param options.maxBps       downstream budget, 0: the server's default
    * @param options.ownPackage   the page holds its own avatar's package (the server sends it none)
    * @param options.openSocket   url -> WebSocket-like ({binaryType, send, close, onopen, onmessage, onclose})
@@ -28,7 +28,8 @@ export class RoomClient {
    * @param options.now          clock in ms (performance.now)
    */
   constructor(options) {
-    this.options = { maxBps: 0, ownPackage: false, asset: '', token: '', now: () => performance.now(), ...options };
+    this.resume = '';
+    this.options = { maxBps: 0, ownPackage: false, asset: '', avatarKey: '', token: '', now: () => performance.now(), ...options };
     this.urls = String(this.options.url).split(',').map((u) => u.trim()).filter(Boolean);
     this.urlIndex = 0;
     this.policy = new ReconnectPolicy();
@@ -111,8 +112,11 @@ export class RoomClient {
     socket.onopen = () => {
       const o = this.options;
       socket.send(writeMessage(MessageType.hello, {
-        room: o.room, name: o.name, avatar: o.asset, token: o.token, maxBps: o.maxBps, ownPackage: o.ownPackage,
-        timestamps: false, noPackages: false,
+        room: o.room, name: o.name, avatar: o.asset, avatarKey: o.avatarKey, token: o.token, maxBps: o.maxBps,
+        ownPackage: o.ownPackage, timestamps: false, noPackages: false,
+        // After a drop: the server may still hold the token for the old
+        // connection; the last welcome's key shows this is the same person.
+        resume: this.resume,
       }));
       this.pingTimer = setInterval(() => this.ping(), PING_EVERY_MS);
     };
@@ -228,6 +232,7 @@ export class RoomClient {
 
   welcomed(m, now) {
     this.policy.welcomed();
+    this.resume = m.resume;
     this.timeline.welcomeMs ??= now;
     this.status = 'joined';
     this.error = '';

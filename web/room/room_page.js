@@ -1,5 +1,5 @@
 // The room page: joins the room named in its address (room.html?room=R&
-// name=N&asset=A&token=T, as the lobby sends a person here), draws it from
+// name=N&asset=A&key=K&token=T, as the lobby sends a person here), draws it from
 // the person's own place (room_view.js), and wires the controls: chat, the
 // expression and blush buttons, FACS sentences, looking at or snubbing a
 // face, the stream budget, and the meter.
@@ -14,7 +14,7 @@ const BUDGET_KEY = 'facewire.budget';
 const $ = (id) => document.getElementById(id);
 
 const query = new URLSearchParams(location.search);
-const identity = { room: query.get('room') || '', name: query.get('name') || '', asset: query.get('asset') || '', token: query.get('token') || '' };
+const identity = { room: query.get('room') || '', name: query.get('name') || '', asset: query.get('asset') || '', key: query.get('key') || '', token: query.get('token') || '' };
 
 function fail(message) {
   $('status').textContent = message;
@@ -61,7 +61,7 @@ async function main() {
   const own = await ownPackage;
 
   const client = new RoomClient({
-    url: socketUrl(), room: identity.room, name: identity.name, asset: identity.asset, token: identity.token,
+    url: socketUrl(), room: identity.room, name: identity.name, asset: identity.asset, avatarKey: identity.key, token: identity.token,
     maxBps: budgetBps(budget.value), ownPackage: Boolean(own), openSocket: (url) => new WebSocket(url),
     onChange: (what) => changed(what),
   });

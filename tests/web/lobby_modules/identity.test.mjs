@@ -11,13 +11,19 @@ function memoryStorage() {
 
 test('what is saved is loaded', () => {
   const storage = memoryStorage();
-  assert.deepEqual(loadIdentity(storage), { name: '', asset: '' });
-  saveIdentity({ name: 'Ann', asset: 'ab'.repeat(16) }, storage);
-  assert.deepEqual(loadIdentity(storage), { name: 'Ann', asset: 'ab'.repeat(16) });
+  assert.deepEqual(loadIdentity(storage), { name: '', asset: '', key: '' });
+  saveIdentity({ name: 'Ann', asset: 'ab'.repeat(16), key: 'k3y' }, storage);
+  assert.deepEqual(loadIdentity(storage), { name: 'Ann', asset: 'ab'.repeat(16), key: 'k3y' });
+});
+
+test('an avatar saved without its key is forgotten: it could not be worn', () => {
+  const storage = memoryStorage();
+  saveIdentity({ name: 'Ann', asset: 'ab'.repeat(16), key: '' }, storage);
+  assert.deepEqual(loadIdentity(storage), { name: 'Ann', asset: '', key: '' });
 });
 
 test('a broken or refusing storage loses nothing but the memory', () => {
   const broken = { getItem: () => '{not json', setItem: () => { throw new Error('QuotaExceededError'); } };
-  assert.deepEqual(loadIdentity(broken), { name: '', asset: '' });
+  assert.deepEqual(loadIdentity(broken), { name: '', asset: '', key: '' });
   assert.doesNotThrow(() => saveIdentity({ name: 'Ann', asset: '' }, broken));
 });

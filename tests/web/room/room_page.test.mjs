@@ -127,10 +127,10 @@ test('pressing joy changes the presser\'s mouth and no other face\'s', { timeout
     method: 'POST', headers: { 'Content-Type': 'image/jpeg' }, body: readFileSync(sourceFile('tests/data/grace_hopper.jpg')),
   });
   assert.equal(upload.status, 201, await upload.clone().text());
-  const { asset } = await upload.json();
+  const { asset, key } = await upload.json();
   const page = await web.page({ width: 1280, height: 800 });
   pages.other = page;
-  await page.goto(`${web.server.url}room.html?room=${ROOM}&name=Other&asset=${asset}`);
+  await page.goto(`${web.server.url}room.html?room=${ROOM}&name=Other&asset=${asset}&key=${key}`);
   const state = await until(page, (s) => s.status === 'joined' && tileOf(s, 'Web')?.drawn && tileOf(s, 'Native')?.drawn
     && s.selfDrawnMs !== null, 'the second person seeing both faces', 60000);
   assert.ok(state.you > 0);

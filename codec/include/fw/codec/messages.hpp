@@ -24,7 +24,7 @@ namespace fw::codec {
 /// answers a hello of another version with Closing{unsupported_version}.
 /// Version 2 added the seats (in avatar_info, and the seats message) and the
 /// attention message.
-inline constexpr std::uint16_t kProtocolVersion = 2;
+inline constexpr std::uint16_t kProtocolVersion = 3;
 
 /// The low seven bits of a session message's first byte. Values never change.
 enum class MessageType : std::uint8_t {
@@ -89,6 +89,8 @@ inline constexpr std::size_t kMaxRoomNameBytes = 64;
 inline constexpr std::size_t kMaxDisplayNameBytes = 32;
 inline constexpr std::size_t kMaxAssetIdBytes = 64;
 inline constexpr std::size_t kMaxTokenBytes = 512;
+/// An avatar key (the secret an upload returns) and a resume key (a welcome's).
+inline constexpr std::size_t kMaxKeyBytes = 64;
 inline constexpr std::size_t kMaxChatBytes = 500;
 inline constexpr std::size_t kMaxEmotionBytes = 16;
 inline constexpr std::size_t kMaxSentenceBytes = 4096;
@@ -112,6 +114,12 @@ struct Hello {
   std::string name;    ///< display name, 1 .. 32 bytes
   std::string avatar;  ///< asset id of an uploaded package; empty: the server makes a procedural face
   std::string token;   ///< join token; empty when the server needs none
+  /// The secret the upload of `avatar` returned: only who uploaded a face
+  /// may wear it. Empty with no `avatar`.
+  std::string avatar_key;
+  /// A previous welcome's resume key, when this connection replaces one
+  /// that dropped: it takes over the join token the old one still holds.
+  std::string resume;
   /// Downstream budget in bits per second, every byte of every message
   /// counted; 0: the server's default.
   std::uint32_t max_bps = 0;
@@ -155,6 +163,10 @@ struct Welcome {
   std::uint8_t tick_hz = 30;   ///< simulation ticks per second
   std::uint32_t max_bps = 0;   ///< the downstream budget the server starts with
   std::vector<AvatarInfo> avatars;  ///< everybody in the room, the joiner included
+  /// Kept by the client and sent in the hello of its next connection after
+  /// a drop, so that it resumes in place of this one (a token admits one
+  /// connection at a time).
+  std::string resume;
 };
 
 /// Down: an avatar joined (with everything about it) or left (id only).

@@ -1,0 +1,26 @@
+#pragma once
+// The server's own secrets: the key that signs avatar keys, kept in the
+// data directory so that the keys uploads handed out stay valid across
+// restarts, and fresh random keys (resume keys).
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace fw::server {
+
+std::string hmac_sha256(std::string_view secret, std::string_view data);
+
+/// DIR/server.key, made (32 random bytes, readable by the owner only) if
+/// it is not there; empty and `error` if it cannot be read or made.
+std::string load_or_create_server_key(const std::filesystem::path& dir, std::string& error);
+
+/// The secret an upload of `asset` answers with (22 base64url characters,
+/// 128 bits): whoever holds it may wear the face (PROTOCOL.md 8.1).
+std::string avatar_key(std::string_view server_key, std::string_view asset);
+/// Whether `key` is `asset`'s, compared in constant time.
+bool avatar_key_matches(std::string_view server_key, std::string_view asset, std::string_view key);
+
+/// `bytes` random bytes from the system's generator, in base64url.
+std::string random_key(std::size_t bytes = 16);
+
+}  // namespace fw::server
