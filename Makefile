@@ -8,6 +8,7 @@ JOBS ?= $(shell nproc)
 TEST_JOBS ?= $(shell echo $$(( 2 * $$(nproc) )))
 SERVER_ARGS ?=
 FUZZ_SECONDS ?= 300
+FUZZ_TARGETS ?=
 
 # The compiler cache (every preset compiles through ccache) keys on paths
 # relative to the clone, so that another clone of the same tree hits it too.
@@ -54,9 +55,11 @@ test-asan: deps
 	ctest --preset asan -j $(TEST_JOBS) 2>&1 | tee build-asan/logs/asan-tests.log; \
 	  status=$${PIPESTATUS[0]}; sh tests/slowest_tests.sh build-asan/logs/asan-tests.log 20; exit $$status
 
-# Every fuzz target for FUZZ_SECONDS each (make test runs them briefly).
+# Every fuzz target (or those FUZZ_TARGETS names) for FUZZ_SECONDS each,
+# going on from what earlier runs found (build/fuzz/NAME-grown); make test
+# runs each briefly from its seeds alone.
 fuzz: build
-	sh tests/fuzz/run_fuzzers.sh build $(FUZZ_SECONDS)
+	sh tests/fuzz/run_fuzzers.sh build $(FUZZ_SECONDS) $(FUZZ_TARGETS)
 
 bench: build
 	./build/bin/facewire-bench render --json

@@ -1,5 +1,5 @@
 # fw_fuzz_target(NAME name SOURCES ... [INCLUDES ...] [SEEDS file...] [SECONDS s]
-#                [LINK -lfoo...] [AFTER target...])
+#                [LINK -lfoo...] [AFTER target...] [SEEDS_MUST_READ])
 #
 # Builds a libFuzzer target with Debian's clang (the main build may use GCC,
 # which has no libFuzzer): the listed sources, the fuzz entry point among
@@ -14,13 +14,20 @@
 # any crash, leak or sanitizer report; `make fuzz` runs every target for as
 # long as you ask (tests/fuzz/run_fuzzers.sh).
 #
+# SEEDS_MUST_READ: every seed is an input the code reads (none is there to
+# be refused), and the target calls seed_refused() (seed_check.hpp) where it
+# refuses one. The test then runs the seeds once with
+# FW_FUZZ_SEEDS_MUST_READ set before it fuzzes, and fails if one has gone
+# stale (an old version, say), since a stale seed explores nothing past the
+# check that refuses it.
+#
 # The sanitizer build (FW_SANITIZE) builds no fuzz target: they carry their
 # own sanitizers and run in the release pass only.
 find_program(FW_CLANGXX NAMES clang++-14 clang++)
 find_program(FW_CCACHE NAMES ccache)
 
 function(fw_fuzz_target)
-  cmake_parse_arguments(ARG "" "NAME;SECONDS" "SOURCES;INCLUDES;SEEDS;LINK;AFTER" ${ARGN})
+  cmake_parse_arguments(ARG "SEEDS_MUST_READ" "NAME;SECONDS" "SOURCES;INCLUDES;SEEDS;LINK;AFTER" ${ARGN})
   if(ARG_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "fw_fuzz_target(${ARG_NAME}): unknown arguments ${ARG_UNPARSED_ARGUMENTS}")
   endif()
@@ -98,4 +105,7 @@ function(fw_fuzz_target)
   # PROCESSORS 2: a fuzzer keeps a whole core busy (tests/CMakeLists.txt, CORES).
   set_tests_properties(fuzz_${ARG_NAME} PROPERTIES LABELS "fuzz;slow" TIMEOUT ${timeout} COST ${ARG_SECONDS}
                        PROCESSORS 2)
+  if(ARG_SEEDS_MUST_READ)
+    set_tests_properties(fuzz_${ARG_NAME} PROPERTIES ENVIRONMENT FW_FUZZ_SEEDS_MUST_READ=1)
+  endif()
 endfunction()

@@ -14,6 +14,7 @@
 
 #include "fw/behavior/scene_file.hpp"
 #include "fw/codec/codec.hpp"
+#include "seed_check.hpp"
 
 namespace {
 
@@ -53,7 +54,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::string error;
   const bool ok = read_scene_bytes(bytes, scene, error);
   if (ok == !error.empty()) std::abort();  // exactly one of: a scene, or a reason
-  if (!ok) return 0;
+  if (!ok) {
+    fw::fuzz::seed_refused(error);
+    return 0;
+  }
   if (!scene_adds_up(scene, size >= 8 && data[7] == '2')) std::abort();
   std::vector<std::uint8_t> written;
   if (!write_scene_bytes(scene, written, error)) std::abort();

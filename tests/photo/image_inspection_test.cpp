@@ -70,6 +70,42 @@ TEST(ImageInspection, ReadsWebPHeadersAndFindsTruncation) {
   }
 }
 
+// A restart marker has no length: libjpeg steps over its two bytes alone.
+TEST(ImageInspection, ReadsAJpegWithARestartMarkerBeforeItsFrame) {
+  auto jpeg = encoded(64, 48, ".jpg");
+  const std::uint8_t restart[] = {0xFF, 0xD0};
+  jpeg.insert(jpeg.begin() + 2, std::begin(restart), std::end(restart));
+  PrepError error;
+  const auto header = inspect_photo(jpeg, error);
+  ASSERT_TRUE(header.has_value()) << error.message;
+  EXPECT_EQ(header->width, 64);
+  EXPECT_EQ(header->height, 48);
+}
+
+// Read as a segment with a length, a restart marker let the check skip the
+// 8192x8192 frame header libjpeg reads and take a 16x16 one hidden in an
+// APP0 segment instead (tests/fuzz/photo_header_fuzz, which asks libjpeg
+// too, flags this file).
+TEST(ImageInspection, ARestartMarkerDoesNotHideABomb) {
+  const auto frame = [](std::uint8_t size_high) {
+    return std::vector<std::uint8_t>{0xFF, 0xC0, 0x00, 0x11, 0x08, size_high, 0x00, size_high, 0x00, 3,
+                                     1,    0x22, 0,    2,    0x11, 1,         3,    0x11,      1};
+  };
+  std::vector<std::uint8_t> jpeg = {0xFF, 0xD8, 0xFF, 0xD0, 0x00, 25};  // "length" 25 lands in the APP0
+  const auto big = frame(0x20), small = frame(0x00);
+  jpeg.insert(jpeg.end(), big.begin(), big.end());
+  jpeg.insert(jpeg.end(), {0xFF, 0xE0, 0x00, 21});
+  jpeg.insert(jpeg.end(), small.begin(), small.end());
+  jpeg[jpeg.size() - 13] = 16;  // the hidden frame: 16 x 16
+  jpeg[jpeg.size() - 11] = 16;
+  jpeg.insert(jpeg.end(), {0xFF, 0xDA, 0x00, 0x0C, 3, 1, 0x00, 2, 0x11, 3, 0x11, 0x00, 0x3F, 0x00});
+  jpeg.insert(jpeg.end(), 20, 0x00);
+  jpeg.insert(jpeg.end(), {0xFF, 0xD9});
+  PrepError error;
+  const auto header = inspect_photo(jpeg, error);
+  EXPECT_FALSE(header.has_value()) << "read as " << header->width << "x" << header->height;
+}
+
 }  // namespace
 }  // namespace fw::photo
 

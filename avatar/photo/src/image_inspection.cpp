@@ -101,6 +101,13 @@ std::optional<PhotoHeader> inspect_jpeg(std::span<const std::uint8_t> b, PrepErr
     if (b[at] != 0xFF) return fail(error, PrepErrorCode::undecodable, "the JPEG file is damaged (a marker is missing)");
     const std::uint8_t marker = b[at + 1];
     if (marker == 0xD9) return fail(error, PrepErrorCode::undecodable, "the JPEG file has no image data");
+    // Restart markers and TEM stand alone, with no length (T.81 B.1.1.3), as
+    // libjpeg reads them: reading two bytes after one as a length would skip
+    // a frame header the decoder sees, and a bomb's size with it.
+    if ((marker >= 0xD0 && marker <= 0xD7) || marker == 0x01) {
+      at += 2;
+      continue;
+    }
     const std::uint16_t length = be16(b.data() + at + 2);
     if (length < 2 || at + 2 + length > b.size()) return fail(error, PrepErrorCode::truncated, "the JPEG file is truncated (a segment runs past its end); send the whole file");
     const bool start_of_frame = marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 && marker != 0xCC;
