@@ -46,6 +46,11 @@ class AbuseLog {
   /// that goes out says how many were left out).
   void note(Abuse kind, std::string_view peer, std::string_view what);
   std::uint64_t count(Abuse kind) const { return counts_[static_cast<std::size_t>(kind)].load(); }
+  /// Counts `n` of `kind` without a line, for a caller that logs a summary
+  /// of many itself (the listener when descriptors run out).
+  void count_quietly(Abuse kind, std::uint64_t n) {
+    counts_[static_cast<std::size_t>(kind)].fetch_add(n, std::memory_order_relaxed);
+  }
 
   static constexpr int kLinesPerSecond = 20;
 

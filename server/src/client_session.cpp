@@ -154,6 +154,15 @@ void ClientSession::note_received(std::size_t bytes) {
   context_.metrics.bytes_received.fetch_add(bytes, std::memory_order_relaxed);
 }
 
+bool ClientSession::note_control_frame(std::size_t bytes) {
+  if (state_ == State::closing || state_ == State::closed) return false;
+  refill_tokens(std::chrono::steady_clock::now());
+  if (take_token(message_tokens_, 1) && take_token(byte_tokens_, static_cast<double>(bytes))) return true;
+  context_.abuse.note(Abuse::message_rate, peer_, "WebSocket pings over the message rate");
+  on_transport_error(CloseCode::rate_limited, "too many messages (WebSocket pings count); at most 50 a second");
+  return false;
+}
+
 void ClientSession::refill_tokens(std::chrono::steady_clock::time_point now) {
   const double elapsed = std::chrono::duration<double>(now - last_refill_).count();
   last_refill_ = now;
@@ -353,6 +362,7 @@ void ClientSession::on_clock() {
   const auto& timeouts = context_.config.timeouts;
   if (state_ == State::greeting && now - opened_ > timeouts.handshake) {
     context_.metrics.rejected_joins.fetch_add(1);
+    context_.abuse.note(Abuse::handshake_timeout, peer_, "no hello within " + seconds_text(timeouts.handshake));
     do_close(CloseCode::handshake_timeout, "no hello within " + seconds_text(timeouts.handshake) + " of connecting");
   } else if (state_ == State::joined && now - last_heard_ > timeouts.idle) {
     do_close(CloseCode::idle_timeout,

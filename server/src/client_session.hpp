@@ -48,6 +48,10 @@ class ClientSession : public RoomConnection, public std::enable_shared_from_this
   void on_transport_closed();
   void on_write_done(bool ok, std::size_t bytes);
   void note_received(std::size_t bytes);
+  /// A transport's control frame (a WebSocket ping or pong, answered by the
+  /// transport itself) of `bytes`: counted as a message in the rate limits.
+  /// False, and the connection closing with rate_limited, past them.
+  bool note_control_frame(std::size_t bytes);
 
   virtual void start_reading() = 0;
   /// Writes one message; calls on_write_done when finished. One at a time.

@@ -6,6 +6,7 @@
 #include <spdlog/spdlog.h>
 
 #include "http_responses.hpp"
+#include "log_text.hpp"
 #include "photo_preparation.hpp"
 #include "rest_api.hpp"
 #include "server_limits.hpp"
@@ -17,19 +18,25 @@ namespace beast = boost::beast;
 namespace http = beast::http;
 namespace net = boost::asio;
 
+namespace {
+
+/// The request's target as a log line may show it.
+std::string loggable_target(const Request& request) {
+  return printable({request.target().data(), request.target().size()}, 80);
+}
+
+}  // namespace
+
 HttpSession::HttpSession(ServerContext& context, PhotoPreparation& photos, net::ip::tcp::socket&& socket,
-                         std::shared_ptr<std::atomic<std::size_t>> open_connections)
+                         ConnectionTicket ticket)
     : context_(context), photos_(photos), stream_(std::move(socket)),
-      buffer_(limits::kMaxHeaderBytes + limits::kMaxBodyBytes), open_connections_(std::move(open_connections)) {
+      buffer_(limits::kMaxHeaderBytes + limits::kMaxBodyBytes), ticket_(std::move(ticket)) {
   beast::error_code ec;
   peer_address_ = stream_.socket().remote_endpoint(ec).address().to_string();
   context_.metrics.http_connections.fetch_add(1);
 }
 
-HttpSession::~HttpSession() {
-  --*open_connections_;
-  context_.metrics.http_connections.fetch_sub(1);
-}
+HttpSession::~HttpSession() { context_.metrics.http_connections.fetch_sub(1); }
 
 void HttpSession::run() {
   // Sessions run on their own strand (the socket was accepted onto one).
@@ -43,23 +50,51 @@ void HttpSession::do_read() {
   // larger one (Beast checks Content-Length while parsing it), on_header
   // then holds other requests to theirs.
   parser_->body_limit(std::max<std::uint64_t>(limits::kMaxBodyBytes, context_.config.max_upload_bytes));
-  // A keep-alive connection may idle a while; a started request must finish soon.
-  stream_.expires_after(first_request_ ? limits::kRequestTimeout : limits::kIdleTimeout);
+  if (first_request_ || buffer_.size() > 0) return read_header();
+  // A keep-alive connection may idle a while before its next request; the
+  // header's deadline starts with the request's first byte.
+  reading_ = Reading::idle;
+  stream_.expires_after(limits::kIdleTimeout);
+  stream_.async_read_some(buffer_.prepare(limits::kMaxHeaderBytes),
+                          [self = shared_from_this()](beast::error_code ec, std::size_t bytes) {
+                            if (self->answer_read_error(ec)) return;
+                            self->buffer_.commit(bytes);
+                            self->read_header();
+                          });
+}
+
+void HttpSession::read_header() {
+  // The first request's header counts from accept: a connection that sends
+  // nothing, or dribbles its header a byte at a time, holds its place (and
+  // the address's share) for this long at most. Set once, not per read.
+  reading_ = Reading::header;
+  stream_.expires_after(limits::kHeaderTimeout);
   first_request_ = false;
   // The header first: an upload may be larger than other requests' bodies.
   http::async_read_header(stream_, buffer_, *parser_,
                           beast::bind_front_handler(&HttpSession::on_header, shared_from_this()));
 }
 
+void HttpSession::note_bad_request(unsigned status, const std::string& what) {
+  context_.abuse.note(Abuse::http_bad_request, peer_address_, std::to_string(status) + ": " + what);
+}
+
 bool HttpSession::answer_read_error(beast::error_code ec) {
   if (ec == http::error::end_of_stream || ec == beast::error::timeout || ec == net::error::operation_aborted ||
       ec == net::error::connection_reset || ec == net::error::eof) {
-    // The peer left or went quiet: nothing to linger for.
+    // The peer left or went quiet: nothing to linger for. Quiet past a
+    // deadline while a request was under way is a slow request (slowloris).
+    if (ec == beast::error::timeout && reading_ != Reading::idle)
+      context_.abuse.note(Abuse::handshake_timeout, peer_address_,
+                          reading_ == Reading::header ? "no whole request header within " +
+                                                            std::to_string(limits::kHeaderTimeout.count()) + " s"
+                                                      : std::string("the request body did not arrive in time"));
     beast::error_code ignored;
     stream_.socket().shutdown(net::ip::tcp::socket::shutdown_send, ignored);
     return true;
   }
   if (ec == http::error::header_limit) {
+    note_bad_request(431, "request headers over 8 KiB");
     send(error_response(http::status::request_header_fields_too_large, 11,
                         "request headers exceed 8 KiB; send fewer or shorter headers"));
     return true;
@@ -67,6 +102,7 @@ bool HttpSession::answer_read_error(beast::error_code ec) {
   if (ec == http::error::body_limit) {
     // Beast may refuse while still parsing the header, before the target is
     // known here: the message covers both kinds of request.
+    note_bad_request(413, "request body too large");
     send(error_response(http::status::payload_too_large, 11,
                         "the request body is too large: uploads (POST /api/avatars) take at most " +
                             std::to_string(context_.config.max_upload_bytes / 1024) +
@@ -74,6 +110,7 @@ bool HttpSession::answer_read_error(beast::error_code ec) {
     return true;
   }
   if (ec) {
+    note_bad_request(400, "malformed HTTP request: " + ec.message());
     send(error_response(http::status::bad_request, 11, "malformed HTTP request: " + ec.message()));
     return true;
   }
@@ -88,6 +125,8 @@ void HttpSession::on_header(beast::error_code ec, std::size_t) {
   if (parser_->content_length() && *parser_->content_length() > limit)
     return (void)answer_read_error(http::error::body_limit);
   parser_->body_limit(limit);  // for chunked bodies
+  reading_ = Reading::body;
+  stream_.expires_after(limits::kRequestTimeout);
   if (upload_) stream_.expires_after(limits::kUploadTimeout);
   http::async_read(stream_, buffer_, *parser_, beast::bind_front_handler(&HttpSession::on_read, shared_from_this()));
 }
@@ -96,9 +135,11 @@ void HttpSession::on_read(beast::error_code ec, std::size_t) {
   if (answer_read_error(ec)) return;
   Request request = parser_->release();
   if (beast::websocket::is_upgrade(request)) {
-    if (request.target() != "/" && request.target() != "/ws")
+    if (request.target() != "/" && request.target() != "/ws") {
+      note_bad_request(404, "a WebSocket upgrade to " + loggable_target(request));
       return send(error_response(http::status::not_found, request.version(), "the room protocol is at /ws"));
-    auto session = std::make_shared<WebSocketSession>(context_, std::move(stream_), peer_address_);
+    }
+    auto session = std::make_shared<WebSocketSession>(context_, std::move(stream_), peer_address_, std::move(ticket_));
     session->run(std::move(request));
     return;  // this HttpSession ends here; the connection lives on in the WebSocket session
   }
@@ -110,9 +151,19 @@ void HttpSession::on_read(beast::error_code ec, std::size_t) {
     });
     return;
   }
+  std::optional<Response> response;
   if (request.method() == http::verb::get || request.method() == http::verb::head)
-    if (auto response = respond_to_api(context_, request)) return send(std::move(*response));
-  send(respond_to(request));
+    response = respond_to_api(context_, request);
+  if (!response) response = respond_to(request);
+  note_if_refused(*response, request);
+  send(std::move(*response));
+}
+
+void HttpSession::note_if_refused(const Response& response, const Request& request) {
+  const unsigned status = response.result_int();
+  // 401, 403 and 429 are counted where they are decided (unauthorized, rate limits).
+  if (status < 400 || status >= 500 || status == 401 || status == 403 || status == 429) return;
+  note_bad_request(status, std::string(request.method_string()) + " " + loggable_target(request));
 }
 
 void HttpSession::send(http::response<http::string_body>&& response) {

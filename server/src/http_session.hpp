@@ -1,14 +1,16 @@
 #pragma once
 // One HTTP/1.1 connection: reads requests within the limits, answers them
 // (static content, the API, uploads) and keeps the connection alive while
-// the peer wants; hands the connection to a WebSocketSession on an upgrade.
-#include <atomic>
+// the peer wants; hands the connection, and its ConnectionTicket, to a
+// WebSocketSession on an upgrade. A request's header must arrive within
+// limits::kHeaderTimeout, however slowly its bytes come.
 #include <memory>
 #include <optional>
 
 #include <boost/beast/core.hpp>
 #include <boost/beast/http.hpp>
 
+#include "connection_admission.hpp"
 #include "server_context.hpp"
 
 namespace fw::server {
@@ -17,18 +19,25 @@ class PhotoPreparation;
 
 class HttpSession : public std::enable_shared_from_this<HttpSession> {
  public:
-  /// `open_connections` counts live sessions (the listener's limit);
-  /// `photos` takes the uploads.
+  /// `ticket` counts the connection until it closes (or, upgraded, until
+  /// the WebSocket closes); `photos` takes the uploads.
   HttpSession(ServerContext& context, PhotoPreparation& photos, boost::asio::ip::tcp::socket&& socket,
-              std::shared_ptr<std::atomic<std::size_t>> open_connections);
+              ConnectionTicket ticket);
   ~HttpSession();
   void run();
 
  private:
   void do_read();
+  /// The header of a request whose first bytes (if any) are in buffer_.
+  void read_header();
   void on_header(boost::beast::error_code ec, std::size_t bytes);
   void on_read(boost::beast::error_code ec, std::size_t bytes);
   bool answer_read_error(boost::beast::error_code ec);
+  /// Counts and logs (AbuseLog) a 4xx answer that says the peer erred.
+  void note_bad_request(unsigned status, const std::string& what);
+  /// The same for an answer to a whole request (404, 405...).
+  void note_if_refused(const boost::beast::http::response<boost::beast::http::string_body>& response,
+                       const boost::beast::http::request<boost::beast::http::string_body>& request);
   void send(boost::beast::http::response<boost::beast::http::string_body>&& response);
   void on_write(bool close, boost::beast::error_code ec, std::size_t bytes);
   void do_close();
@@ -40,8 +49,11 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
   boost::beast::flat_buffer buffer_;
   std::optional<boost::beast::http::request_parser<boost::beast::http::string_body>> parser_;
   std::shared_ptr<void> response_;  // kept alive until its write completes
-  std::shared_ptr<std::atomic<std::size_t>> open_connections_;
+  ConnectionTicket ticket_;
   std::string peer_address_;
+  /// What the connection waits for: the next request (a keep-alive idle),
+  /// a header (under its deadline), or a body.
+  enum class Reading { idle, header, body } reading_ = Reading::header;
   bool first_request_ = true;
   bool upload_ = false;
   std::size_t lingered_bytes_ = 0;

@@ -1,39 +1,72 @@
 #pragma once
 // Accepts TCP connections and hands each to a session factory (HTTP or the
-// room protocol over TCP), up to the connection limit.
-#include <atomic>
+// room protocol over TCP) with its ConnectionTicket: counted against its
+// address and in the listener's total from accept to close. A connection
+// past either limit is sent a short refusal and closed at once. When the
+// process runs out of file descriptors, the listener refuses what waits
+// with a descriptor it keeps in reserve and pauses before accepting again,
+// rather than spin on accept().
+#include <chrono>
+#include <cstdint>
 #include <functional>
 #include <memory>
+#include <string>
 
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/ip/tcp.hpp>
+#include <boost/asio/steady_timer.hpp>
 #include <boost/beast/core/error.hpp>
+
+#include "connection_admission.hpp"
+#include "descriptor_reserve.hpp"
+#include "server_context.hpp"
 
 namespace fw::server {
 
 class Listener : public std::enable_shared_from_this<Listener> {
  public:
   /// Starts a session on an accepted socket (already on its own strand);
-  /// the counter is the listener's open connections, to be decremented
-  /// when the session ends.
-  using SessionFactory =
-      std::function<void(boost::asio::ip::tcp::socket&&, std::shared_ptr<std::atomic<std::size_t>>)>;
+  /// the session keeps the ticket until its connection closes.
+  using SessionFactory = std::function<void(boost::asio::ip::tcp::socket&&, ConnectionTicket&&)>;
+  /// What a refused connection is sent before it is closed
+  /// (connection_refusal.hpp), given why and the per-address limit.
+  using Refusal = std::function<std::string(Abuse why, std::size_t per_address)>;
+
   /// Opens, binds and listens; `ec` says why not (port in use, no permission).
-  Listener(boost::asio::io_context& ioc, const boost::asio::ip::tcp::endpoint& endpoint, SessionFactory factory,
-           boost::beast::error_code& ec);
+  Listener(ServerContext& context, boost::asio::io_context& ioc, const boost::asio::ip::tcp::endpoint& endpoint,
+           SessionFactory factory, Refusal refusal, boost::beast::error_code& ec);
   void run();
   void stop();
   /// The bound address, with the real port when 0 was asked for.
   boost::asio::ip::tcp::endpoint local_endpoint() const;
 
+  /// How long accepting pauses after accept() found no descriptor free.
+  static constexpr std::chrono::milliseconds kDescriptorBackoff{100};
+  /// Waiting connections refused with the reserve descriptor per pause.
+  static constexpr int kRefusalsPerBackoff = 16;
+
  private:
   void do_accept();
   void on_accept(boost::beast::error_code ec, boost::asio::ip::tcp::socket socket);
+  void admit(boost::asio::ip::tcp::socket socket);
+  /// Sends the refusal without waiting (it fits the empty socket buffer) and closes.
+  void refuse(boost::asio::ip::tcp::socket& socket, Abuse why);
+  /// accept() failed for want of descriptors: refuse what waits, then pause.
+  void on_descriptors_exhausted(const boost::beast::error_code& ec);
+  /// Accepts again after `delay` (a failed accept() would fail again at once).
+  void accept_after(std::chrono::milliseconds delay);
 
+  ServerContext& context_;
   boost::asio::io_context& ioc_;
   boost::asio::ip::tcp::acceptor acceptor_;
+  boost::asio::steady_timer pause_;
   SessionFactory factory_;
-  std::shared_ptr<std::atomic<std::size_t>> open_connections_ = std::make_shared<std::atomic<std::size_t>>(0);
+  Refusal refusal_;
+  ConnectionAdmission admission_;
+  DescriptorReserve reserve_;
+  // At most one log line a second about descriptors (AbuseLog counts every refusal).
+  std::chrono::steady_clock::time_point exhaustion_logged_{};
+  std::uint64_t exhaustion_refusals_unlogged_ = 0;
 };
 
 }  // namespace fw::server

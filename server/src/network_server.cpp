@@ -10,6 +10,8 @@
 #include <spdlog/spdlog.h>
 
 #include "avatar_repreparation.hpp"
+#include "connection_refusal.hpp"
+#include "descriptor_reserve.hpp"
 #include "drain_on_signal.hpp"
 #include "endpoint.hpp"
 #include "http_session.hpp"
@@ -17,6 +19,7 @@
 #include "photo_preparation.hpp"
 #include "photo_worker.hpp"
 #include "server_core.hpp"
+#include "server_limits.hpp"
 #include "tcp_session.hpp"
 
 namespace fw::server {
@@ -24,21 +27,25 @@ namespace {
 
 namespace net = boost::asio;
 
+/// Two ports of limits::kMaxConnections each, and files besides.
+constexpr unsigned long kDescriptorsWanted = 2 * limits::kMaxConnections + 1024;
+
 int cannot_start(const std::string& why) {
   std::cerr << "facewire-server: " << why << "\n";
   return 2;
 }
 
 /// A listener on `address` (the value of `flag`), accepting; null and `error` if it cannot listen.
-std::shared_ptr<Listener> listen(net::io_context& ioc, const std::string& flag, const std::string& address,
-                                 Listener::SessionFactory factory, std::string& error) {
+std::shared_ptr<Listener> listen(net::io_context& ioc, ServerContext& context, const std::string& flag,
+                                 const std::string& address, Listener::SessionFactory factory,
+                                 Listener::Refusal refusal, std::string& error) {
   const auto endpoint = parse_endpoint(address, error);
   if (!endpoint) {
     error = flag + " " + error;
     return nullptr;
   }
   boost::beast::error_code ec;
-  auto listener = std::make_shared<Listener>(ioc, *endpoint, std::move(factory), ec);
+  auto listener = std::make_shared<Listener>(context, ioc, *endpoint, std::move(factory), std::move(refusal), ec);
   if (ec) {
     error = "cannot listen on " + address + ": " + ec.message() +
             " (is another server using the port? choose another with " + flag + " ADDR:PORT)";
@@ -60,21 +67,19 @@ struct Listeners {
 
 bool open_listeners(net::io_context& ioc, ServerContext& context, PhotoPreparation& photos, Listeners& listeners,
                     std::string& error) {
-  const auto http_session = [&context, &photos](net::ip::tcp::socket&& socket, auto counter) {
-    std::make_shared<HttpSession>(context, photos, std::move(socket), std::move(counter))->run();
+  // Each session keeps its connection's ticket until the connection closes.
+  const auto http_session = [&context, &photos](net::ip::tcp::socket&& socket, ConnectionTicket&& ticket) {
+    std::make_shared<HttpSession>(context, photos, std::move(socket), std::move(ticket))->run();
   };
-  const auto tcp_session = [&context](net::ip::tcp::socket&& socket, auto counter) {
+  const auto tcp_session = [&context](net::ip::tcp::socket&& socket, ConnectionTicket&& ticket) {
     boost::system::error_code ec;
     std::string peer = socket.remote_endpoint(ec).address().to_string();
-    std::make_shared<TcpSession>(context, std::move(socket), std::move(peer))->run();
-    // Room connections are bounded by rooms x room size, not by the
-    // listener's count (which limits sockets still greeting).
-    --*counter;
+    std::make_shared<TcpSession>(context, std::move(socket), std::move(peer), std::move(ticket))->run();
   };
-  listeners.http = listen(ioc, "--http", context.config.http, http_session, error);
+  listeners.http = listen(ioc, context, "--http", context.config.http, http_session, http_refusal, error);
   if (!listeners.http) return false;
   if (context.config.tcp.empty()) return true;
-  listeners.tcp = listen(ioc, "--tcp", context.config.tcp, tcp_session, error);
+  listeners.tcp = listen(ioc, context, "--tcp", context.config.tcp, tcp_session, tcp_refusal, error);
   return listeners.tcp != nullptr;
 }
 
@@ -108,6 +113,10 @@ void run_io_threads(net::io_context& ioc, int threads) {
 }  // namespace
 
 int run_network_server(const ServerConfig& config) {
+  // Each connection takes a descriptor; the soft limit is often far below what the operator allows.
+  const unsigned long descriptors = raise_descriptor_limit(kDescriptorsWanted);
+  if (descriptors < 2 * limits::kMaxConnections)
+    spdlog::info("open files limited to {}: connections beyond about that many are refused (ulimit -n)", descriptors);
   ServerCore core(config);
   std::string error;
   if (!core.open(error)) return cannot_start(error);

@@ -12,6 +12,10 @@ inline constexpr std::size_t kMaxHeaderBytes = 8 * 1024;
 inline constexpr std::size_t kMaxBodyBytes = 64 * 1024;
 /// Time allowed to send one whole request, and to take one response.
 inline constexpr std::chrono::seconds kRequestTimeout{15};
+/// Time allowed for a request's header (the first request of a connection,
+/// a WebSocket upgrade included: from accept; a later one: from its first
+/// byte). A fixed deadline: dribbling bytes does not extend it.
+inline constexpr std::chrono::seconds kHeaderTimeout{10};
 /// Time allowed for an upload's body (a 4 MiB photo at 2.5 Mbit/s).
 inline constexpr std::chrono::seconds kUploadTimeout{15};
 /// After an answer that closes the connection, what the peer still sends
@@ -22,7 +26,8 @@ inline constexpr std::chrono::seconds kLingerTimeout{3};
 inline constexpr std::size_t kMaxLingerBytes = 32 * 1024 * 1024;
 /// An idle keep-alive connection is closed after this.
 inline constexpr std::chrono::seconds kIdleTimeout{30};
-/// Connections served at once on each port; more wait in the kernel's backlog.
+/// Connections open at once on each port, from accept to close (HTTP,
+/// WebSocket and TCP, greeting or in a room); more are refused.
 inline constexpr std::size_t kMaxConnections = 2048;
 /// Photo uploads per address and minute (preparing one costs about a second of CPU).
 inline constexpr int kUploadsPerMinute = 6;

@@ -11,8 +11,9 @@ namespace fw::server {
 namespace net = boost::asio;
 using codec::CloseCode;
 
-TcpSession::TcpSession(ServerContext& context, net::ip::tcp::socket&& socket, std::string peer)
-    : ClientSession(context, socket.get_executor(), std::move(peer)), socket_(std::move(socket)), linger_(executor_) {}
+TcpSession::TcpSession(ServerContext& context, net::ip::tcp::socket&& socket, std::string peer, ConnectionTicket ticket)
+    : ClientSession(context, socket.get_executor(), std::move(peer)), ticket_(std::move(ticket)),
+      socket_(std::move(socket)), linger_(executor_) {}
 
 std::size_t TcpSession::framing_bytes(std::size_t message_bytes) const {
   return message_bytes < 128 ? 1 : message_bytes < 16384 ? 2 : 3;
@@ -52,6 +53,8 @@ void TcpSession::on_read(boost::system::error_code ec, std::size_t bytes) {
       if (status == codec::TcpDeframer::Status::need_more) break;
       if (status == codec::TcpDeframer::Status::error) {
         const bool too_large = deframer_.error() == codec::MessageError::too_large;
+        context_.abuse.note(Abuse::protocol_violation, peer_,
+                            too_large ? "TCP: a message over 8 KiB" : "TCP: a malformed length prefix");
         on_transport_error(too_large ? CloseCode::message_too_large : CloseCode::protocol_error,
                            too_large ? "a message over 8 KiB" : "a malformed length prefix");
         break;

@@ -12,6 +12,9 @@ using codec::CloseCode;
 
 namespace {
 
+/// A client's control frame: two bytes of header and a four-byte mask.
+constexpr std::size_t kControlFrameHeaderBytes = 6;
+
 websocket::close_code close_code_for(CloseCode code) {
   switch (code) {
     case CloseCode::normal: return websocket::close_code::normal;
@@ -30,8 +33,10 @@ websocket::close_code close_code_for(CloseCode code) {
 
 }  // namespace
 
-WebSocketSession::WebSocketSession(ServerContext& context, beast::tcp_stream&& stream, std::string peer)
-    : ClientSession(context, stream.get_executor(), std::move(peer)), ws_(std::move(stream)) {}
+WebSocketSession::WebSocketSession(ServerContext& context, beast::tcp_stream&& stream, std::string peer,
+                                   ConnectionTicket ticket)
+    : ClientSession(context, stream.get_executor(), std::move(peer)), ticket_(std::move(ticket)),
+      ws_(std::move(stream)) {}
 
 std::size_t WebSocketSession::framing_bytes(std::size_t message_bytes) const {
   return message_bytes < 126 ? 2 : message_bytes < 65536 ? 4 : 10;  // server frames are not masked
@@ -51,10 +56,21 @@ void WebSocketSession::run(beast::http::request<beast::http::string_body> reques
   ws_.binary(true);
   ws_.set_option(websocket::stream_base::decorator(
       [](websocket::response_type& response) { response.set(beast::http::field::server, "facewire"); }));
+  // Beast answers pings by itself: each ping (and pong) is counted as a
+  // message, so that a flood of them is closed like any other. The stream
+  // only calls this while a read is under way, which holds the session.
+  ws_.control_callback([this](websocket::frame_type kind, beast::string_view payload) {
+    if (kind == websocket::frame_type::close) return;
+    note_received(payload.size() + kControlFrameHeaderBytes);
+    note_control_frame(payload.size() + kControlFrameHeaderBytes);
+  });
   auto self = std::static_pointer_cast<WebSocketSession>(shared_from_this());
   ws_.async_accept(request, [self](beast::error_code ec) {
     if (ec) {
-      spdlog::debug("{}: websocket handshake: {}", self->peer_, ec.message());
+      // Beast answered a bad upgrade request with 400 itself.
+      if (ec != beast::error::timeout && ec != boost::asio::error::connection_reset && ec != boost::asio::error::eof &&
+          ec != boost::asio::error::broken_pipe)
+        self->context_.abuse.note(Abuse::http_bad_request, self->peer_, "400: WebSocket upgrade: " + ec.message());
       return;
     }
     self->start();
@@ -70,12 +86,17 @@ void WebSocketSession::on_read(beast::error_code ec, std::size_t bytes) {
   if (ec == websocket::error::message_too_big) {
     // Beast has answered with close code 1009 already; the closing message
     // cannot follow on a closed stream, so this only counts and logs it.
+    context_.abuse.note(Abuse::protocol_violation, peer_, "a WebSocket message over 8 KiB");
     on_transport_error(CloseCode::message_too_large, "a message over 8 KiB");
     return on_transport_closed();
   }
-  if (ec) return on_transport_closed();
+  if (ec) {
+    note_violation(ec);
+    return on_transport_closed();
+  }
   note_received(bytes);
   if (!ws_.got_binary()) {
+    context_.abuse.note(Abuse::protocol_violation, peer_, "a WebSocket text message");
     on_transport_error(CloseCode::protocol_error, "a text message; the protocol sends binary messages only");
   } else {
     const auto data = buffer_.cdata();
@@ -83,6 +104,14 @@ void WebSocketSession::on_read(beast::error_code ec, std::size_t bytes) {
   }
   buffer_.consume(buffer_.size());
   start_reading();  // reading on lets the close handshake complete
+}
+
+void WebSocketSession::note_violation(const beast::error_code& ec) {
+  // Beast's own WebSocket errors: bad frames, bad masking, bad UTF-8 in a
+  // close... (its "closed" is the peer's orderly close, not a violation).
+  if (ec.category() != websocket::make_error_code(websocket::error::closed).category()) return;
+  if (ec == websocket::error::closed) return;
+  context_.abuse.note(Abuse::protocol_violation, peer_, "WebSocket: " + ec.message());
 }
 
 void WebSocketSession::start_write(const SharedBytes& message) {

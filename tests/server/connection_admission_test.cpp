@@ -1,0 +1,93 @@
+// Connection admission and refusals without sockets: the counts a ticket
+// holds, through a hand-over (an upgrade) and back, and the bytes a
+// refused connection is sent.
+#include <gtest/gtest.h>
+
+#include "connection_admission.hpp"
+#include "connection_refusal.hpp"
+#include "fw/codec/messages.hpp"
+
+namespace fw::server {
+namespace {
+
+AbuseLimits limits_of(std::size_t per_address) {
+  AbuseLimits limits;
+  limits.connections_per_address = per_address;
+  return limits;
+}
+
+TEST(ConnectionAdmission, AnAddressHoldsItsShareAndNoMore) {
+  AddressLimits addresses(limits_of(2));
+  ConnectionAdmission admission(addresses, 100);
+  auto first = admission.admit("10.0.0.1");
+  auto second = admission.admit("10.0.0.1");
+  ASSERT_TRUE(first.ticket && second.ticket);
+  const auto third = admission.admit("10.0.0.1");
+  EXPECT_FALSE(third.ticket);
+  EXPECT_EQ(third.refusal, Abuse::address_connection_limit);
+  EXPECT_TRUE(admission.admit("10.0.0.2").ticket) << "another address has its own share";
+  EXPECT_EQ(admission.open(), 2u) << "the refused one and the ended one are not counted";
+  first.ticket.reset();
+  EXPECT_TRUE(admission.admit("10.0.0.1").ticket) << "a closed connection gives its place back";
+}
+
+TEST(ConnectionAdmission, TheListenerHoldsItsTotalAndNoMore) {
+  AddressLimits addresses(limits_of(10));
+  ConnectionAdmission admission(addresses, 2);
+  auto a = admission.admit("10.0.0.1");
+  auto b = admission.admit("10.0.0.2");
+  const auto c = admission.admit("10.0.0.3");
+  EXPECT_FALSE(c.ticket);
+  EXPECT_EQ(c.refusal, Abuse::connection_limit);
+  EXPECT_EQ(addresses.connections("10.0.0.3"), 0u) << "nothing counted against the refused address";
+}
+
+TEST(ConnectionAdmission, ATicketHandedOnKeepsCountingUntilTheLastOwnerLetsGo) {
+  AddressLimits addresses(limits_of(5));
+  ConnectionAdmission admission(addresses, 100);
+  auto admitted = admission.admit("10.0.0.1");
+  ConnectionTicket http = std::move(*admitted.ticket);
+  admitted.ticket.reset();
+  EXPECT_EQ(addresses.connections("10.0.0.1"), 1u);
+  {
+    ConnectionTicket websocket = std::move(http);  // the upgrade
+    EXPECT_EQ(addresses.connections("10.0.0.1"), 1u);
+    EXPECT_EQ(admission.open(), 1u);
+    EXPECT_EQ(websocket.address(), "10.0.0.1");
+  }
+  EXPECT_EQ(addresses.connections("10.0.0.1"), 0u);
+  EXPECT_EQ(admission.open(), 0u);
+}
+
+TEST(ConnectionRefusal, HttpSaysWhyAndWhenToComeBack) {
+  const std::string address = http_refusal(Abuse::address_connection_limit, 64);
+  EXPECT_EQ(address.rfind("HTTP/1.1 429 ", 0), 0u);
+  EXPECT_NE(address.find("Retry-After: "), std::string::npos);
+  EXPECT_NE(address.find("at most 64 at once"), std::string::npos);
+  const auto body = address.substr(address.find("\r\n\r\n") + 4);
+  EXPECT_NE(address.find("Content-Length: " + std::to_string(body.size()) + "\r\n"), std::string::npos);
+  EXPECT_EQ(http_refusal(Abuse::descriptors_exhausted, 64).rfind("HTTP/1.1 503 ", 0), 0u);
+  EXPECT_EQ(http_refusal(Abuse::connection_limit, 64).rfind("HTTP/1.1 503 ", 0), 0u);
+}
+
+TEST(ConnectionRefusal, TcpSendsAClosingMessage) {
+  const std::string framed = tcp_refusal(Abuse::address_connection_limit, 8);
+  codec::TcpDeframer deframer{codec::kMaxDownstreamMessageBytes};
+  deframer.feed({reinterpret_cast<const std::uint8_t*>(framed.data()), framed.size()});
+  std::span<const std::uint8_t> message;
+  ASSERT_EQ(deframer.next(message), codec::TcpDeframer::Status::message);
+  codec::Closing closing;
+  ASSERT_EQ(codec::read_message(message, closing), codec::MessageError::ok);
+  EXPECT_EQ(closing.code, codec::CloseCode::rate_limited);
+  EXPECT_NE(closing.reason.find("too many connections"), std::string::npos);
+  EXPECT_LE(closing.reason.size(), codec::kMaxReasonBytes);
+  const std::string full = tcp_refusal(Abuse::connection_limit, 8);
+  deframer = codec::TcpDeframer{codec::kMaxDownstreamMessageBytes};
+  deframer.feed({reinterpret_cast<const std::uint8_t*>(full.data()), full.size()});
+  ASSERT_EQ(deframer.next(message), codec::TcpDeframer::Status::message);
+  ASSERT_EQ(codec::read_message(message, closing), codec::MessageError::ok);
+  EXPECT_EQ(closing.code, codec::CloseCode::server_full);
+}
+
+}  // namespace
+}  // namespace fw::server
