@@ -35,6 +35,10 @@ inline constexpr int kUploadsPerMinute = 6;
 // Room connections.
 inline constexpr std::chrono::seconds kHandshakeTimeout{5};
 inline constexpr std::chrono::seconds kSessionIdleTimeout{60};
+/// A person who sends nothing but pings and reads nothing is let go after this.
+inline constexpr std::chrono::minutes kIdlePersonTimeout{5};
+/// An avatar id rests this long after its avatar left before a newcomer gets it.
+inline constexpr std::chrono::seconds kAvatarIdQuiet{60};
 /// How long a closing message may take before the socket is closed anyway.
 inline constexpr std::chrono::seconds kCloseTimeout{3};
 inline constexpr double kMessagesPerSecond = 50;
