@@ -46,15 +46,19 @@ std::optional<double> AddressLimits::take(AddressRate rate, const std::string& k
   return bucket->seconds_until(now);
 }
 
-bool AddressLimits::reserve_upload(const std::string& key, std::size_t bytes) {
+UploadShare AddressLimits::reserve_upload(const std::string& key, std::size_t bytes) {
   std::lock_guard lock(mutex_);
-  Entry& entry = entries_[key];
-  if (entry.upload_bytes + bytes > limits_.upload_bytes_per_address ||
-      upload_bytes_ + bytes > limits_.upload_bytes_total)
-    return false;
+  const auto it = entries_.try_emplace(key).first;
+  Entry& entry = it->second;
+  if (entry.upload_bytes > 0 && entry.upload_bytes + bytes > limits_.upload_bytes_per_address)
+    return UploadShare::address_full;
+  if (upload_bytes_ > 0 && upload_bytes_ + bytes > limits_.upload_bytes_total) {
+    forget_if_idle(it, Clock::now());
+    return UploadShare::server_full;
+  }
   entry.upload_bytes += bytes;
   upload_bytes_ += bytes;
-  return true;
+  return UploadShare::granted;
 }
 
 void AddressLimits::release_upload(const std::string& key, std::size_t bytes) {

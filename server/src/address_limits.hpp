@@ -21,6 +21,9 @@ namespace fw::server {
 enum class AddressRate { join, chat, upload, room_creation };
 inline constexpr std::size_t kAddressRateCount = 4;
 
+/// Whether an upload's bytes fit: granted, or whose share is taken.
+enum class UploadShare { granted, address_full, server_full };
+
 class AddressLimits {
  public:
   using Clock = std::chrono::steady_clock;
@@ -37,9 +40,13 @@ class AddressLimits {
   /// seconds to wait before one is there.
   std::optional<double> take(AddressRate rate, const std::string& key, Clock::time_point now = Clock::now());
 
-  /// Reserves `bytes` of upload body for `key`; false when the address's or
-  /// the server's share is taken.
-  bool reserve_upload(const std::string& key, std::size_t bytes);
+  /// Reserves `bytes` of upload body for `key` unless that would take the
+  /// address's or the server's share past its limit. An address with no
+  /// upload in flight may always start one (if the server's share allows),
+  /// and anyone may when the server has none: a share smaller than the
+  /// largest upload then holds uploads to one at a time, never refuses one
+  /// for good.
+  UploadShare reserve_upload(const std::string& key, std::size_t bytes);
   void release_upload(const std::string& key, std::size_t bytes);
   std::size_t upload_bytes() const;
 

@@ -4,6 +4,7 @@
 #include <spdlog/spdlog.h>
 
 #include "fw/model/avatar_package.hpp"
+#include "durable_file.hpp"
 #include "fw/model/file_io.hpp"
 #include "preview_package.hpp"
 #include "room_connection.hpp"  // share
@@ -51,7 +52,7 @@ bool read_or_make_preview(const std::filesystem::path& path, const model::Avatar
       model::parse_avatar_package(preview, parsed, error))
     return true;
   if (!make_preview_package(full, preview, error)) return false;
-  if (!model::write_file_atomically(path, preview, error)) spdlog::warn("{}", error);
+  if (!write_file_durably(path, preview, error)) spdlog::warn("{}", error);
   return true;
 }
 
@@ -68,7 +69,14 @@ AvatarStore::AvatarStore(std::filesystem::path directory, Metrics& metrics, std:
     : directory_(std::move(directory) / "avatars"), metrics_(metrics) {
   std::error_code ec;
   std::filesystem::create_directories(directory_, ec);
-  if (ec) error = "cannot create the avatar store " + directory_.string() + ": " + ec.message();
+  if (ec) {
+    error = "cannot create the avatar store " + directory_.string() + ": " + ec.message();
+    return;
+  }
+  // What a crash mid-write left: never a stored file (they are only ever
+  // renamed into place whole), so nothing refers to them.
+  if (const auto removed = remove_temporary_files(directory_))
+    spdlog::info("removed {} temporary file(s) an interrupted write left in {}", removed, directory_.string());
 }
 
 std::filesystem::path AvatarStore::file(const std::string& asset, const char* suffix) const {
@@ -96,7 +104,7 @@ std::optional<StoredAvatar> AvatarStore::put(std::span<const std::uint8_t> packa
   // The photo goes first: a crash before the package leaves only a photo
   // that no id refers to yet.
   if (known.status == AvatarStatus::unknown && !photo.empty() &&
-      !model::write_file_atomically(file(asset, ".photo"), photo, error))
+      !write_file_durably(file(asset, ".photo"), photo, error))
     return std::nullopt;
   return write_and_remember(asset, package, parsed, error);
 }
@@ -106,8 +114,8 @@ std::optional<StoredAvatar> AvatarStore::write_and_remember(const std::string& a
                                                             const model::AvatarPackage& parsed, std::string& error) {
   std::vector<std::uint8_t> preview;
   if (!make_preview_package(parsed, preview, error) ||
-      !model::write_file_atomically(file(asset, ".fwa"), package, error) ||
-      !model::write_file_atomically(file(asset, ".preview.fwa"), preview, error))
+      !write_file_durably(file(asset, ".fwa"), package, error) ||
+      !write_file_durably(file(asset, ".preview.fwa"), preview, error))
     return std::nullopt;
   StoredAvatar stored{asset, content_id(package), share(std::vector<std::uint8_t>(package.begin(), package.end())),
                       share(std::move(preview))};

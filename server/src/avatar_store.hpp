@@ -2,7 +2,8 @@
 // Avatars by asset id, in a local directory: DIR/avatars/ID.fwa (the
 // package), ID.preview.fwa (its preview, made on the way in) and ID.photo
 // (the photo it was prepared from, as uploaded, when there was one). Every
-// file is written atomically. Held in memory once read; thread-safe.
+// file is written atomically and durably (durable_file.hpp): a crash or a
+// power cut leaves it whole or absent. Held in memory once read; thread-safe.
 //
 // The id names the stored avatar: it is the content hash of the package it
 // was first stored with, and stays when that package is prepared again from

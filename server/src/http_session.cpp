@@ -125,6 +125,14 @@ void HttpSession::on_header(beast::error_code ec, std::size_t) {
   if (parser_->content_length() && *parser_->content_length() > limit)
     return (void)answer_read_error(http::error::body_limit);
   parser_->body_limit(limit);  // for chunked bodies
+  // An upload is admitted or refused before its body is read (a refused
+  // body is drained by the lingering close): its address's rate, the bytes
+  // it may hold in memory (declared, or the largest upload when chunked),
+  // and the photo queue.
+  if (upload_)
+    if (auto refusal = photos_.admit(header.version(), parser_->content_length().value_or(limit), peer_address_,
+                                     upload_bytes_))
+      return send(std::move(*refusal));
   reading_ = Reading::body;
   stream_.expires_after(limits::kRequestTimeout);
   if (upload_) stream_.expires_after(limits::kUploadTimeout);
@@ -132,6 +140,7 @@ void HttpSession::on_header(beast::error_code ec, std::size_t) {
 }
 
 void HttpSession::on_read(beast::error_code ec, std::size_t) {
+  if (ec) upload_bytes_.release();  // an upload's body that failed to come holds nothing
   if (answer_read_error(ec)) return;
   Request request = parser_->release();
   if (beast::websocket::is_upgrade(request)) {
@@ -146,8 +155,10 @@ void HttpSession::on_read(beast::error_code ec, std::size_t) {
   if (upload_) {
     auto self = shared_from_this();
     photos_.upload(std::move(request), peer_address_, [self](Response response) {
-      net::post(self->stream_.get_executor(),
-                [self, response = std::move(response)]() mutable { self->send(std::move(response)); });
+      net::post(self->stream_.get_executor(), [self, response = std::move(response)]() mutable {
+        self->upload_bytes_.release();  // answered: its body is no longer held
+        self->send(std::move(response));
+      });
     });
     return;
   }

@@ -12,6 +12,7 @@
 
 #include "connection_admission.hpp"
 #include "server_context.hpp"
+#include "upload_reservation.hpp"
 
 namespace fw::server {
 
@@ -56,6 +57,8 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
   enum class Reading { idle, header, body } reading_ = Reading::header;
   bool first_request_ = true;
   bool upload_ = false;
+  /// The bytes of the upload being received or prepared (PhotoPreparation::admit).
+  UploadReservation upload_bytes_;
   std::size_t lingered_bytes_ = 0;
 };
 

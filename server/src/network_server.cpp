@@ -121,7 +121,7 @@ int run_network_server(const ServerConfig& config) {
   std::string error;
   if (!core.open(error)) return cannot_start(error);
   net::io_context ioc(config.io_threads);
-  PhotoWorker photo_worker(config.landmark_model);
+  PhotoWorker photo_worker(config.landmark_model, config.photo_threads, config.abuse.photo_queue);
   PhotoPreparation photos(core.context(), photo_worker);
   AvatarRepreparation repreparation(core.context(), photo_worker);
   Listeners listeners;

@@ -1,6 +1,7 @@
 #include "photo_preparation.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
@@ -8,6 +9,7 @@
 #include "fw/model/avatar_package.hpp"
 #include "fw/photo/prepare_avatar.hpp"
 #include "multipart_body.hpp"
+#include "peer_address.hpp"
 #include "photo_worker.hpp"
 #include "rest_api.hpp"
 #include "server_limits.hpp"
@@ -18,38 +20,77 @@ namespace http = boost::beast::http;
 
 PhotoPreparation::PhotoPreparation(ServerContext& context, PhotoWorker& worker) : context_(context), worker_(worker) {}
 
-std::optional<int> PhotoPreparation::wait_before_upload(const std::string& peer_address) {
-  std::lock_guard lock(mutex_);
-  const auto now = std::chrono::steady_clock::now();
-  constexpr auto kWindow = std::chrono::minutes(1);
-  auto& times = recent_[peer_address];
-  std::erase_if(times, [&](auto t) { return now - t > kWindow; });
-  if (recent_.size() > 10000) recent_.clear();  // bounded: a flood of addresses forgets the old ones
-  if (static_cast<int>(times.size()) >= limits::kUploadsPerMinute) {
-    // The oldest upload in the window leaves it first; round up, so that
-    // an uploader who waits as told is not refused again.
-    const auto wait = std::chrono::ceil<std::chrono::seconds>(times.front() + kWindow - now);
-    return std::max<int>(1, static_cast<int>(wait.count()));
+namespace {
+
+std::string seconds_text(int seconds) { return std::to_string(seconds) + (seconds == 1 ? " second" : " seconds"); }
+
+/// A refusal that says when to try again, in its Retry-After header and in
+/// its text alike.
+Response try_again_later(http::status status, unsigned version, const std::string& why, int seconds) {
+  Response refusal = error_response(status, version, why + "; try again in " + seconds_text(seconds));
+  refusal.set(http::field::retry_after, std::to_string(seconds));
+  return refusal;
+}
+
+}  // namespace
+
+std::optional<Response> PhotoPreparation::admit(unsigned version, std::uint64_t body_bytes,
+                                                const std::string& peer_address, UploadReservation& reservation) {
+  if (context_.draining.load())
+    return error_response(http::status::service_unavailable, version,
+                          "the server is shutting down; upload again in a moment");
+  const std::string key = address_key(peer_address);
+  // A full queue first: an upload refused for it costs no token of the rate.
+  if (worker_.full()) return queue_full(version, peer_address);
+  if (const auto wait = context_.addresses->take(AddressRate::upload, key)) {
+    // Rounded up, so that an uploader who waits as told is not refused again.
+    const int seconds = std::max(1, static_cast<int>(std::ceil(*wait)));
+    const int per_minute = static_cast<int>(std::lround(context_.addresses->limits().uploads.per_second * 60));
+    context_.abuse.note(Abuse::upload_rate, peer_address, "over " + std::to_string(per_minute) + " uploads a minute");
+    return try_again_later(http::status::too_many_requests, version,
+                           "at most " + std::to_string(per_minute) + " uploads a minute from one address",
+                           seconds);
   }
-  times.push_back(now);
+  const auto bytes = static_cast<std::size_t>(body_bytes);
+  // Bytes in flight are given back when uploads are answered, at the latest
+  // when their body's time runs out.
+  const int seconds = static_cast<int>(limits::kUploadTimeout.count());
+  switch (context_.addresses->reserve_upload(key, bytes)) {
+    case UploadShare::granted:
+      reservation = UploadReservation(*context_.addresses, key, bytes);
+      return std::nullopt;
+    case UploadShare::address_full:
+      context_.abuse.note(Abuse::upload_bytes, peer_address,
+                          "another " + std::to_string(bytes / 1024) +
+                              " KiB would take its uploads in flight past its share");
+      return try_again_later(http::status::too_many_requests, version,
+                             "your other uploads are still being received or prepared; send one photo at a time",
+                             seconds);
+    case UploadShare::server_full:
+      context_.abuse.note(Abuse::upload_bytes, peer_address, "the server's uploads in flight are at their limit");
+      return try_again_later(http::status::service_unavailable, version,
+                             "the server is receiving as many uploads as it can", seconds);
+  }
   return std::nullopt;
 }
 
+Response PhotoPreparation::queue_full(unsigned version, const std::string& peer_address) {
+  const int seconds = worker_.expected_wait_seconds();
+  context_.abuse.note(Abuse::photo_queue_full, peer_address,
+                      "photos waiting to be prepared are at the limit of " +
+                          std::to_string(context_.addresses->limits().photo_queue));
+  return try_again_later(http::status::service_unavailable, version,
+                         "the server has as many photos waiting to be prepared as it takes", seconds);
+}
+
 void PhotoPreparation::upload(Request request, std::string peer_address, std::function<void(Response)> done) {
-  const auto error = [&](http::status status, const std::string& message) {
-    return error_response(status, request.version(), message);
-  };
   if (context_.draining.load())
-    return done(error(http::status::service_unavailable, "the server is shutting down; upload again in a moment"));
-  if (const auto wait = wait_before_upload(peer_address)) {
-    Response refusal = error(http::status::too_many_requests,
-                             "at most " + std::to_string(limits::kUploadsPerMinute) +
-                                 " uploads a minute from one address; try again in " + std::to_string(*wait) +
-                                 (*wait == 1 ? " second" : " seconds"));
-    refusal.set(http::field::retry_after, std::to_string(*wait));
-    return done(std::move(refusal));
-  }
-  worker_.post([this, request = std::move(request), done = std::move(done)] { done(handle(request)); });
+    return done(error_response(http::status::service_unavailable, request.version(),
+                               "the server is shutting down; upload again in a moment"));
+  // The queue may have filled while the body came: it decides now.
+  const unsigned version = request.version();
+  auto job = [this, request = std::move(request), done] { done(handle(request)); };
+  if (!worker_.try_post(address_key(peer_address), std::move(job))) done(queue_full(version, peer_address));
 }
 
 namespace {

@@ -2,12 +2,12 @@
 // POST /api/avatars: a photo prepared into a package on the photo worker,
 // or a prepared package validated; either stored in the avatar store, the
 // photo beside its package (so the avatar can be prepared again when the
-// package format or the generic face changes).
-#include <chrono>
+// package format or the generic face changes). An upload is admitted from
+// its header, before its body is read: the address's rate, the bytes in
+// flight (its own and the server's) and the photo queue (PROTOCOL.md,
+// "Limits").
+#include <cstdint>
 #include <functional>
-#include <map>
-#include <memory>
-#include <mutex>
 #include <optional>
 #include <span>
 #include <string>
@@ -15,6 +15,7 @@
 
 #include "http_responses.hpp"
 #include "server_context.hpp"
+#include "upload_reservation.hpp"
 
 namespace fw::server {
 
@@ -24,7 +25,16 @@ class PhotoPreparation {
  public:
   PhotoPreparation(ServerContext& context, PhotoWorker& worker);
 
-  /// Handles one upload; `done` gets the response on the photo worker's thread.
+  /// Decides from an upload's header alone, before its body is read,
+  /// whether the body may come: nullopt, and `body_bytes` (its declared
+  /// length, or the largest upload for a chunked one) reserved in
+  /// `reservation`, when it may; else the refusal, 429 (this address's rate
+  /// or bytes in flight) or 503 (the server's bytes in flight, a full photo
+  /// queue), with Retry-After. Counts an upload of the address's rate.
+  std::optional<Response> admit(unsigned version, std::uint64_t body_bytes, const std::string& peer_address,
+                                UploadReservation& reservation);
+  /// Handles one upload admitted and read; `done` gets the response, on a
+  /// photo worker's thread (or on this one when the queue is full).
   void upload(Request request, std::string peer_address, std::function<void(Response)> done);
 
   /// What an upload stores: the package, and the photo to keep beside it
@@ -44,14 +54,11 @@ class PhotoPreparation {
   /// photo alone, as a browser's form sends it.
   std::optional<Response> read_multipart_upload(const Request& request, std::span<const std::uint8_t> body,
                                                 Upload& upload);
-  /// Counts an upload from `peer_address`; nullopt when it may go ahead,
-  /// else the seconds until it may (the rate limit is a sliding minute).
-  std::optional<int> wait_before_upload(const std::string& peer_address);
+  /// 503: the photo queue is full; Retry-After when it likely has room.
+  Response queue_full(unsigned version, const std::string& peer_address);
 
   ServerContext& context_;
   PhotoWorker& worker_;
-  std::mutex mutex_;
-  std::map<std::string, std::vector<std::chrono::steady_clock::time_point>> recent_;
 };
 
 }  // namespace fw::server

@@ -117,6 +117,11 @@ void add_operation_flags(CLI::App& cmd, ServerConfig& config) {
       ->capture_default_str();
   cmd.add_option("--landmark-model", config.landmark_model, "dlib 68-point model for photo uploads")
       ->envname("FACEWIRE_LANDMARK_MODEL");
+  cmd.add_option("--photo-threads", config.photo_threads,
+                 "photos prepared at once (one address's photos take turns on one; each thread after the first "
+                 "loads its own landmark model, about 100 MB, when it is first needed)")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{64}))
+      ->capture_default_str();
   cmd.add_option("--log-level", config.log_level, "trace, debug, info, warn, error")
       ->envname("FACEWIRE_LOG_LEVEL")
       ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error"}))

@@ -29,8 +29,6 @@ inline constexpr std::chrono::seconds kIdleTimeout{30};
 /// Connections open at once on each port, from accept to close (HTTP,
 /// WebSocket and TCP, greeting or in a room); more are refused.
 inline constexpr std::size_t kMaxConnections = 2048;
-/// Photo uploads per address and minute (preparing one costs about a second of CPU).
-inline constexpr int kUploadsPerMinute = 6;
 
 // Room connections.
 inline constexpr std::chrono::seconds kHandshakeTimeout{5};
