@@ -1,6 +1,7 @@
 #include "client_session.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include <boost/asio/post.hpp>
@@ -8,6 +9,7 @@
 
 #include "join_token.hpp"
 #include "monotonic_clock.hpp"
+#include "peer_address.hpp"
 #include "room.hpp"
 #include "room_registry.hpp"
 #include "server_limits.hpp"
@@ -17,6 +19,13 @@ namespace fw::server {
 namespace net = boost::asio;
 using codec::CloseCode;
 using codec::MessageError;
+
+namespace {
+
+/// "3 s": a wait as a person reads it, rounded up.
+std::string wait_text(double seconds) { return std::to_string(static_cast<long>(std::ceil(seconds))) + " s"; }
+
+}  // namespace
 
 ClientSession::ClientSession(ServerContext& context, net::any_io_executor executor, std::string peer)
     : context_(context), executor_(std::move(executor)), peer_(std::move(peer)), clock_(executor_),
@@ -30,7 +39,7 @@ void ClientSession::start() {
   context_.metrics.connections.fetch_add(1);
   counted_ = true;
   context_.rooms->add_session(shared_from_this());
-  opened_ = last_heard_ = last_refill_ = std::chrono::steady_clock::now();
+  opened_ = last_heard_ = last_refill_ = last_sent_ = read_progress_ = std::chrono::steady_clock::now();
   on_clock();
   start_reading();
 }
@@ -53,7 +62,7 @@ void ClientSession::do_deliver(SharedBytes message) {
     // Room frames and packages stop long before this; only a peer that
     // reads nothing while the room chats gets here. Its memory is bounded.
     queued_bytes_.fetch_sub(message->size(), std::memory_order_relaxed);
-    spdlog::info("{}: not reading ({} bytes waiting); closing", peer_, queued_bytes_.load());
+    context_.abuse.note(Abuse::not_reading, peer_, std::to_string(queued_bytes_.load()) + " bytes waiting; closed");
     state_ = State::closed;
     shutdown_transport(CloseCode::rate_limited, "the connection does not read what the server sends", true);
     return;
@@ -71,6 +80,7 @@ void ClientSession::write_next() {
     }
     return;
   }
+  if (!writing_) read_progress_ = std::chrono::steady_clock::now();  // from now on, bytes wait
   writing_ = true;
   start_write(queue_.front());
 }
@@ -87,6 +97,7 @@ void ClientSession::on_write_done(bool ok, std::size_t bytes) {
   }
   bytes_written_.fetch_add(bytes, std::memory_order_relaxed);
   context_.metrics.bytes_sent.fetch_add(bytes, std::memory_order_relaxed);
+  read_progress_ = std::chrono::steady_clock::now();
   write_next();
 }
 
@@ -204,6 +215,11 @@ void ClientSession::handle_hello(std::span<const std::uint8_t> message) {
     return protocol_error(CloseCode::protocol_error,
                           "the first message must be a hello: " + std::string(codec::describe(error)));
   if (const auto refusal = refusal_of(hello)) return refuse(refusal->first, refusal->second);
+  // Held by the address, so that leaving and joining again does not refill it.
+  if (const auto wait = context_.addresses->take(AddressRate::join, address_key(peer_))) {
+    context_.abuse.note(Abuse::join_rate, peer_, "too many joins");
+    return refuse(CloseCode::rate_limited, "too many joins from your address; try again in " + wait_text(*wait));
+  }
   const AvatarLookup avatar = avatar_for(hello);
   switch (avatar.status) {
     case AvatarStatus::found: break;
@@ -214,10 +230,16 @@ void ClientSession::handle_hello(std::span<const std::uint8_t> message) {
     case AvatarStatus::being_prepared: return refuse(CloseCode::avatar_being_prepared, avatar.message);
     default: return refuse(CloseCode::bad_request, avatar.message);
   }
-  room_ = context_.rooms->find_or_create(hello.room);
-  if (!room_) return refuse(CloseCode::server_full, "the server holds its maximum number of rooms; try later");
+  RoomOpening opening = context_.rooms->open_for(hello.room, address_key(peer_));
+  if (!opening.room) {
+    if (opening.abuse) context_.abuse.note(*opening.abuse, peer_, opening.refusal);
+    return refuse(opening.code, opening.refusal);
+  }
+  room_ = std::move(opening.room);
   state_ = State::joining;
-  room_->join(JoinRequest{hello.name, *avatar.avatar, stream_settings_for(hello), shared_from_this()});
+  JoinRequest request{hello.name, *avatar.avatar, stream_settings_for(hello), shared_from_this()};
+  request.address = address_key(peer_);
+  room_->join(std::move(request));
 }
 
 std::optional<std::pair<CloseCode, std::string>> ClientSession::refusal_of(const codec::Hello& hello) const {
@@ -278,6 +300,8 @@ void ClientSession::joined(std::uint32_t avatar, SharedBytes welcome) {
 
 void ClientSession::handle_joined_message(std::span<const std::uint8_t> message) {
   if (state_ != State::joined) return;
+  // Pings keep a connection open, not a seat (on_clock: idle persons).
+  if (codec::session_type(message) != codec::MessageType::ping) last_sent_ = std::chrono::steady_clock::now();
   switch (codec::classify(message)) {
     case codec::MessageKind::resync_request: return handle_resync(message);
     case codec::MessageKind::session: break;
@@ -313,6 +337,18 @@ void ClientSession::handle_chat(std::span<const std::uint8_t> message) {
   if (chat.text.empty()) return;
   if (!take_token(chat_tokens_, 1))
     return protocol_error(CloseCode::rate_limited, "too many chat lines; at most 2 a second");
+  // Over its address's rate (all its connections together; the room's rate
+  // is the room's to check) the line is dropped, and its writer told so in
+  // a line from the server, as a chat window shows a line that did not go.
+  // The connection stays: whoever shares the address (a household, an
+  // office behind one NAT) may be the one who chats, not this person.
+  if (const auto wait = context_.addresses->take(AddressRate::chat, address_key(peer_))) {
+    context_.abuse.note(Abuse::chat_rate, peer_, "chat over its address's rate");
+    auto notice = encode_shared(codec::Chat{0, "not sent: too many chat lines from your address; try again in " +
+                                                   wait_text(*wait)});
+    queued_bytes_.fetch_add(notice->size(), std::memory_order_relaxed);  // as deliver() does
+    return do_deliver(std::move(notice));
+  }
   room_->chat(avatar_, std::move(chat.text));
 }
 
@@ -353,7 +389,7 @@ std::chrono::milliseconds ClientSession::clock_period() const {
   // A quarter of the shortest time-out, so that each is kept within a
   // quarter of itself; never more often than every 10 ms.
   const auto& t = context_.config.timeouts;
-  const auto shortest = std::min({t.handshake, t.idle, t.close});
+  const auto shortest = std::min({t.handshake, t.idle, t.close, t.idle_person});
   return std::clamp<std::chrono::milliseconds>(shortest / 4, std::chrono::milliseconds(10), std::chrono::seconds(1));
 }
 
@@ -368,6 +404,14 @@ void ClientSession::on_clock() {
     do_close(CloseCode::idle_timeout,
              "nothing heard for " + seconds_text(timeouts.idle) + "; send a ping at least every " +
                  seconds_text(timeouts.idle / 3));
+  } else if (state_ == State::joined && now - last_sent_ > timeouts.idle_person && writing_ &&
+             now - read_progress_ > timeouts.idle_person) {
+    // Nothing but pings came, and what waits for the person is not taken:
+    // nobody is there, or someone holds a seat for nothing. A quiet viewer
+    // reads, so stays.
+    context_.abuse.note(Abuse::idle_person, peer_, "neither sent nor read; let go");
+    do_close(CloseCode::idle_timeout, "let go: you neither sent nor read anything for " +
+                                          seconds_text(timeouts.idle_person) + "; the seat is for someone who is here");
   } else if (state_ == State::closing && now - closing_since_ > timeouts.close) {
     state_ = State::closed;  // the peer does not take the closing message
     shutdown_transport(close_code_, close_reason_, true);

@@ -101,6 +101,10 @@ class ClientSession : public RoomConnection, public std::enable_shared_from_this
   std::atomic<std::uint64_t> bytes_written_{0};
   boost::asio::steady_timer clock_;
   std::chrono::steady_clock::time_point opened_, last_heard_, closing_since_, last_refill_;
+  /// The last message other than a ping, and the last time bytes waiting
+  /// for the peer moved (a write completed, or a wait began): who neither
+  /// sends nor reads for SessionTimeouts::idle_person is let go.
+  std::chrono::steady_clock::time_point last_sent_, read_progress_;
   double message_tokens_, byte_tokens_, chat_tokens_;
   bool counted_ = false;
   bool transport_gone_ = false;

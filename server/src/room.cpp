@@ -1,5 +1,7 @@
 #include "room.hpp"
 
+#include <cmath>
+
 #include <boost/asio/post.hpp>
 #include <spdlog/spdlog.h>
 
@@ -21,6 +23,18 @@ std::string clip_utf8(std::string text, std::size_t max) {
   return text;
 }
 
+RoomSimulationOptions simulation_options(const ServerConfig& config, std::uint64_t seed) {
+  RoomSimulationOptions options{seed, config.tick_hz, config.physics, config.physics_sleeps};
+  options.id_space = config.avatar_id_space;
+  // Ticks never run ahead of the clock, so this many of them last at least as long.
+  options.id_quiet_ticks =
+      static_cast<std::uint64_t>((config.avatar_id_quiet.count() * config.tick_hz + 999) / 1000);
+  return options;
+}
+
+/// "3 s": a wait as a person reads it, rounded up.
+std::string whole_seconds(double seconds) { return std::to_string(static_cast<long>(std::ceil(seconds))) + " s"; }
+
 AvatarCommand to_simulation(const codec::Command& c) {
   const double seconds = c.duration_ms / 1000.0;
   switch (c.kind) {
@@ -36,9 +50,8 @@ AvatarCommand to_simulation(const codec::Command& c) {
 
 Room::Room(ServerContext& context, std::string name, bool persistent, std::uint64_t seed)
     : context_(context), name_(std::move(name)), persistent_(persistent), strand_(net::make_strand(*context.workers)),
-      timer_(strand_),
-      simulation_(RoomSimulationOptions{seed, context.config.tick_hz, context.config.physics,
-                                        context.config.physics_sleeps}) {
+      timer_(strand_), simulation_(simulation_options(context.config, seed)),
+      chat_rate_(context.config.abuse.room_chat, TokenBucket::Clock::now()) {
   context_.metrics.rooms.fetch_add(1);
 }
 
@@ -70,6 +83,7 @@ void Room::then(std::function<void()> done) {
 }
 
 void Room::join(JoinRequest request) {
+  pending_joins_.fetch_add(1);
   net::post(strand_, [self = shared_from_this(), request = std::move(request)]() mutable {
     self->do_join(std::move(request));
   });
@@ -80,12 +94,36 @@ void Room::leave(std::uint32_t avatar) {
 }
 
 void Room::chat(std::uint32_t avatar, std::string text) {
-  net::post(strand_, [self = shared_from_this(), avatar, text = std::move(text)] {
-    if (self->closed_ || !self->members_.count(avatar)) return;
-    self->simulation_.chat(avatar, text);
-    self->context_.metrics.chat_lines.fetch_add(1, std::memory_order_relaxed);
-    self->broadcast(encode_shared(codec::Chat{avatar, text}));
+  net::post(strand_, [self = shared_from_this(), avatar, text = std::move(text)]() mutable {
+    self->do_chat(avatar, std::move(text));
   });
+}
+
+void Room::do_chat(std::uint32_t avatar, std::string text) {
+  const auto it = members_.find(avatar);
+  if (closed_ || it == members_.end()) return;
+  Member& writer = it->second;
+  if (!chat_rate_.take(TokenBucket::Clock::now())) {
+    // The room's chat is at its rate (many writers, or one from many
+    // addresses): the line is dropped and its writer told so, in place.
+    // Nobody is thrown out for it: the others may be the ones chatting.
+    const int per_minute = static_cast<int>(context_.config.abuse.room_chat.per_second * 60 + 0.5);
+    const double wait = chat_rate_.seconds_until(TokenBucket::Clock::now());
+    context_.abuse.note(Abuse::chat_rate, writer.address, "room '" + name_ + "' chats over its rate");
+    if (writer.stream)
+      notice(writer, "not sent: room '" + name_ + "' carries at most " + std::to_string(per_minute) +
+                         " chat lines a minute; try again in " + whole_seconds(wait));
+    return;
+  }
+  simulation_.chat(avatar, text);
+  context_.metrics.chat_lines.fetch_add(1, std::memory_order_relaxed);
+  const auto line = encode_shared(codec::Chat{avatar, text});
+  for (auto& [id, member] : members_)
+    if (member.stream) member.stream->post_chat(line);
+}
+
+void Room::notice(Member& member, const std::string& text) {
+  member.stream->post_chat(encode_shared(codec::Chat{0, clip_utf8(text, codec::kMaxChatBytes)}));
 }
 
 void Room::command(std::uint32_t avatar, codec::Command command) {
@@ -93,9 +131,8 @@ void Room::command(std::uint32_t avatar, codec::Command command) {
     auto it = self->members_.find(avatar);
     if (self->closed_ || it == self->members_.end() || !it->second.stream) return;
     std::string error = self->simulation_.command(avatar, to_simulation(command));
-    const auto result = encode_shared(codec::CommandResult{command.request_id, clip_utf8(std::move(error), codec::kMaxReasonBytes)});
-    it->second.stream->charge(result->size());
-    it->second.stream->connection()->deliver(result);
+    it->second.stream->post_result(
+        encode_shared(codec::CommandResult{command.request_id, clip_utf8(std::move(error), codec::kMaxReasonBytes)}));
   });
 }
 
@@ -116,11 +153,14 @@ void Room::set_rate(std::uint32_t avatar, std::uint32_t bps) {
 }
 
 void Room::do_join(JoinRequest request) {
+  pending_joins_.fetch_sub(1);
   if (closed_) return join_successor(std::move(request));
-  if (members_.size() >= context_.config.room_size) return refuse_full(request);
+  if (const auto refusal = refusal_of(request)) return refuse(request, refusal->first, refusal->second);
   const bool person = request.connection != nullptr;
   const std::uint32_t id = simulation_.add_avatar(AvatarSetup{request.name, person});
+  if (id == 0) return refuse(request, codec::CloseCode::room_full, "room '" + name_ + "' is full; try another room");
   Member member;
+  member.address = request.address;
   member.info = {id, request.name, request.avatar.asset,
                  static_cast<std::uint32_t>(request.avatar.preview ? request.avatar.preview->size() : 0),
                  static_cast<std::uint32_t>(request.avatar.full ? request.avatar.full->size() : 0), person,
@@ -133,7 +173,7 @@ void Room::do_join(JoinRequest request) {
   avatar_count_.fetch_add(1);
   context_.metrics.avatars.fetch_add(1);
   introduce_to_others(member);
-  if (moved) broadcast(moved);
+  if (moved) broadcast_seats(moved);
   if (person) {
     member.stream = welcome(member, request);
   }
@@ -144,7 +184,7 @@ void Room::do_join(JoinRequest request) {
   for (const auto& entry : everyone.entries)
     if (entry.avatar == id) joiner.entries.push_back(entry);
   attention_sent_[id] = joiner.entries.front();
-  broadcast(encode_shared(joiner), id);
+  broadcast_attention(joiner, id);
   if (person) {
     Member& seated = members_.at(id);
     const auto bytes = encode_shared(everyone);
@@ -165,20 +205,52 @@ void Room::join_successor(JoinRequest request) {
     request.connection->close(codec::CloseCode::server_full, "the server holds its maximum number of rooms");
 }
 
-void Room::refuse_full(const JoinRequest& request) {
+std::size_t Room::seats_of(const std::string& address) const {
+  std::size_t seats = 0;
+  for (const auto& [id, member] : members_) seats += member.stream && member.address == address;
+  return seats;
+}
+
+std::optional<std::pair<codec::CloseCode, std::string>> Room::refusal_of(const JoinRequest& request) {
+  const auto& config = context_.config;
+  if (members_.size() >= config.room_size)
+    return {{codec::CloseCode::room_full, "room '" + name_ + "' is full (" + std::to_string(config.room_size) +
+                                              " avatars); try another room"}};
+  if (request.connection && !request.address.empty()) {
+    // One address cannot fill a room (the lobby least of all): the others
+    // keep seats.
+    const std::size_t share = config.abuse.seats_per_address != 0 ? config.abuse.seats_per_address
+                                                                   : std::max<std::size_t>(1, config.room_size / 2);
+    if (seats_of(request.address) >= share) {
+      context_.abuse.note(Abuse::room_seats, request.address, "room '" + name_ + "' seats its share of them");
+      return {{codec::CloseCode::room_full, "room '" + name_ + "' already seats " + std::to_string(share) +
+                                                " people from your address, the most one address may hold; "
+                                                "try another room"}};
+    }
+  }
+  if (!simulation_.has_free_id())
+    return {{codec::CloseCode::server_full,
+             "room '" + name_ + "' has handed out all its avatar ids lately; try again in a minute"}};
+  return std::nullopt;
+}
+
+void Room::refuse(const JoinRequest& request, codec::CloseCode code, const std::string& why) {
   context_.metrics.rejected_joins.fetch_add(1);
-  if (request.connection)
-    request.connection->close(codec::CloseCode::room_full, "room '" + name_ + "' is full (" +
-                                                               std::to_string(context_.config.room_size) +
-                                                               " avatars); try another room");
+  spdlog::info("room {}: {} refused: {}", name_, request.name, why);
+  if (request.connection) request.connection->close(code, why);
+  close_if_unpeopled();  // a room made for this join alone goes again
+}
+
+void Room::close_if_unpeopled() {
+  if (persistent_ || person_count_.load() != 0 || pending_joins_.load() != 0) return;
+  context_.rooms->remove_if_empty(shared_from_this());
 }
 
 void Room::introduce_to_others(const Member& newcomer) {
   const auto joined = encode_shared(codec::Presence{codec::Presence::Change::joined, newcomer.info});
   for (auto& [other_id, other] : members_) {
     if (!other.stream) continue;
-    other.stream->connection()->deliver(joined);
-    other.stream->charge(joined->size());
+    other.stream->post_presence(codec::Presence::Change::joined, newcomer.info.id, joined);
     other.stream->add_avatar(newcomer.info.id, newcomer.avatar.preview, newcomer.avatar.full);
   }
 }
@@ -222,11 +294,10 @@ void Room::do_leave(std::uint32_t avatar) {
   for (auto& [id, member] : members_) {
     if (!member.stream) continue;
     member.stream->remove_avatar(avatar);
-    member.stream->connection()->deliver(left);
-    member.stream->charge(left->size());
+    member.stream->post_presence(codec::Presence::Change::left, avatar, left);
   }
-  if (const SharedBytes moved = reseat()) broadcast(moved);
-  if (person_count_.load() == 0 && !persistent_) context_.rooms->remove_if_empty(shared_from_this());
+  if (const SharedBytes moved = reseat()) broadcast_seats(moved);
+  close_if_unpeopled();
 }
 
 SharedBytes Room::reseat() {
@@ -261,15 +332,17 @@ void Room::send_attention_changes() {
     sent = entry;
     changed.entries.push_back(entry);
   }
-  if (!changed.entries.empty()) broadcast(encode_shared(changed));
+  if (!changed.entries.empty()) broadcast_attention(changed);
 }
 
-void Room::broadcast(const SharedBytes& message, std::uint32_t except) {
-  for (auto& [id, member] : members_) {
-    if (id == except || !member.stream) continue;
-    member.stream->charge(message->size());
-    member.stream->connection()->deliver(message);
-  }
+void Room::broadcast_seats(const SharedBytes& message) {
+  for (auto& [id, member] : members_)
+    if (member.stream) member.stream->post_seats(message);
+}
+
+void Room::broadcast_attention(const codec::Attention& attention, std::uint32_t except) {
+  for (auto& [id, member] : members_)
+    if (id != except && member.stream) member.stream->post_attention(attention);
 }
 
 std::chrono::microseconds Room::tick_period() const {
@@ -314,6 +387,10 @@ void Room::on_tick() {
   for (auto& [id, member] : members_)
     if (member.stream) member.stream->tick(tick, now_us, faces_);
   send_attention_changes();
+  if (++ticks_since_check_ >= static_cast<std::uint32_t>(context_.config.tick_hz)) {
+    ticks_since_check_ = 0;
+    close_if_unpeopled();
+  }
   context_.metrics.observe_tick(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
 }
 

@@ -9,7 +9,9 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <boost/asio/steady_timer.hpp>
@@ -22,6 +24,7 @@
 #include "room_simulation.hpp"
 #include "server_context.hpp"
 #include "subscriber_stream.hpp"
+#include "token_bucket.hpp"
 
 namespace fw::server {
 
@@ -30,6 +33,9 @@ struct JoinRequest {
   StoredAvatar avatar;
   StreamSettings stream;
   std::shared_ptr<RoomConnection> connection;  ///< null for the room's own autonomous avatars
+  /// The person's address (address_key()), for the seats one address may
+  /// hold; empty for autonomous avatars.
+  std::string address;
 };
 
 class Room : public std::enable_shared_from_this<Room> {
@@ -65,10 +71,23 @@ class Room : public std::enable_shared_from_this<Room> {
     codec::AvatarInfo info;
     StoredAvatar avatar;
     std::unique_ptr<SubscriberStream> stream;  ///< null for autonomous avatars
+    std::string address;                       ///< a person's address_key()
   };
   void do_join(JoinRequest request);
   void join_successor(JoinRequest request);
-  void refuse_full(const JoinRequest& request);
+  /// Why `request` cannot be seated (room full, its address holds its
+  /// share of seats, no avatar id free), or nullopt.
+  std::optional<std::pair<codec::CloseCode, std::string>> refusal_of(const JoinRequest& request);
+  void refuse(const JoinRequest& request, codec::CloseCode code, const std::string& why);
+  /// Seats the people from `address` hold here.
+  std::size_t seats_of(const std::string& address) const;
+  void do_chat(std::uint32_t avatar, std::string text);
+  /// A line from the server (avatar 0) to one person only.
+  void notice(Member& member, const std::string& text);
+  /// A room without persons closes (unless persistent): when its last
+  /// person leaves, when a join into a new room is refused, and at worst
+  /// a second later (a room created for a hello that never arrived).
+  void close_if_unpeopled();
   /// Presence to everyone already seated, and the newcomer's face in their streams.
   void introduce_to_others(const Member& newcomer);
   /// The welcome to a person who joins, and the stream that follows it.
@@ -81,7 +100,8 @@ class Room : public std::enable_shared_from_this<Room> {
   codec::Attention attention_now() const;
   /// After a tick: the attention that changed goes to everyone.
   void send_attention_changes();
-  void broadcast(const SharedBytes& message, std::uint32_t except = UINT32_MAX);
+  void broadcast_seats(const SharedBytes& message);
+  void broadcast_attention(const codec::Attention& attention, std::uint32_t except = UINT32_MAX);
   std::chrono::microseconds tick_period() const;
   void schedule_tick();
   void on_tick();
@@ -99,6 +119,9 @@ class Room : public std::enable_shared_from_this<Room> {
   std::chrono::steady_clock::time_point next_tick_;
   std::size_t kinematic_faces_ = 0;  ///< this room's share of Metrics::kinematic_faces
   bool closed_ = false;
+  TokenBucket chat_rate_;  ///< chat lines into this room, from everyone (AbuseLimits::room_chat)
+  std::uint32_t ticks_since_check_ = 0;  ///< for close_if_unpeopled once a second
+  std::atomic<int> pending_joins_{0};  ///< joins posted and not yet done
   std::atomic<std::size_t> avatar_count_{0};
   std::atomic<std::size_t> person_count_{0};
 };

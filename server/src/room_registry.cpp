@@ -1,5 +1,7 @@
 #include "room_registry.hpp"
 
+#include <cmath>
+
 #include "client_session.hpp"
 #include "room.hpp"
 
@@ -25,6 +27,24 @@ std::shared_ptr<Room> RoomRegistry::find_or_create(const std::string& name, bool
   rooms_.emplace(name, room);
   room->start();
   return room;
+}
+
+RoomOpening RoomRegistry::open_for(const std::string& name, const std::string& address) {
+  std::lock_guard lock(mutex_);
+  if (auto it = rooms_.find(name); it != rooms_.end()) return {it->second};
+  if (closed_) return {nullptr, codec::CloseCode::shutting_down, "the server is shutting down; try again soon"};
+  if (rooms_.size() >= context_.config.max_rooms)
+    return {nullptr, codec::CloseCode::server_full, "the server holds its maximum number of rooms; try later"};
+  if (const auto wait = context_.addresses->take(AddressRate::room_creation, address)) {
+    return {nullptr, codec::CloseCode::rate_limited,
+            "too many new rooms from your address; join one that exists, or try again in " +
+                std::to_string(static_cast<long>(std::ceil(*wait))) + " s",
+            Abuse::room_creation};
+  }
+  auto room = std::make_shared<Room>(context_, name, false, next_seed_++);
+  rooms_.emplace(name, room);
+  room->start();
+  return {room};
 }
 
 void RoomRegistry::remove_if_empty(const std::shared_ptr<Room>& room) {

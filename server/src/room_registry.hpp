@@ -5,15 +5,25 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "fw/codec/messages.hpp"
 #include "server_context.hpp"
 
 namespace fw::server {
 
 class Room;
 class ClientSession;
+
+/// A room for a hello, or why there is none.
+struct RoomOpening {
+  std::shared_ptr<Room> room;
+  codec::CloseCode code = codec::CloseCode::normal;
+  std::string refusal;
+  std::optional<Abuse> abuse;  ///< how the refusal is counted, if it is abuse
+};
 
 struct RoomSummary {
   std::string name;
@@ -29,6 +39,11 @@ class RoomRegistry {
   /// The room called `name`, created (and started) if needed; null when the
   /// server already holds its maximum number of rooms, or has stopped.
   std::shared_ptr<Room> find_or_create(const std::string& name, bool persistent = false);
+  /// The room called `name` for a person from `address` (address_key()):
+  /// created if needed, when that address may still create rooms
+  /// (AbuseLimits::room_creations) and the server holds fewer than its
+  /// maximum.
+  RoomOpening open_for(const std::string& name, const std::string& address);
   /// Closes and forgets `room` if nobody is in it any more.
   void remove_if_empty(const std::shared_ptr<Room>& room);
   std::vector<RoomSummary> list() const;

@@ -12,6 +12,7 @@
 #include "fw/model/generic_face.hpp"
 #include "fw/physics/face_simulation.hpp"
 #include "fw/physics/tissue_model.hpp"
+#include "avatar_ids.hpp"
 
 namespace fw::server {
 namespace {
@@ -125,7 +126,7 @@ double physics_rank(std::uint64_t key) {
 
 struct RoomSimulation::State {
   explicit State(const RoomSimulationOptions& o)
-      : options(o), room([&] {
+      : options(o), ids(o.id_space, o.id_quiet_ticks), room([&] {
           behavior::BehaviorRoomOptions b;
           b.seed = o.seed;
           b.tick_hz = o.tick_hz;
@@ -139,9 +140,9 @@ struct RoomSimulation::State {
     codec::FaceParams face;
   };
   RoomSimulationOptions options;
+  AvatarIds ids;
   behavior::BehaviorRoom room;
   std::map<AvatarId, Avatar> avatars;
-  AvatarId next_id = 1;
   std::vector<RoomEvent> events;
   double physics_share = 1;
   std::size_t physics_faces = 0, kinematic_faces = 0;
@@ -161,17 +162,26 @@ RoomSimulation& RoomSimulation::operator=(RoomSimulation&&) noexcept = default;
 
 AvatarId RoomSimulation::add_avatar(const AvatarSetup& setup) {
   State& s = *state_;
-  const AvatarId id = s.next_id;
-  if (!s.room.add(id, setup.name)) return 0;  // the room is full
-  ++s.next_id;
+  const AvatarId id = s.ids.take(s.room.tick_index());
+  if (id == 0) return 0;  // every id in use or resting
+  if (!s.room.add(id, setup.name)) {
+    s.ids.cancel(id);  // the room is full
+    return 0;
+  }
   s.avatars[id] = {setup, {}, {}};
   s.collect_events();
   return id;
 }
 
+bool RoomSimulation::has_free_id() const {
+  State& s = *state_;
+  return s.ids.in_use() + s.ids.resting(s.room.tick_index()) + 1 < s.ids.space();
+}
+
 void RoomSimulation::remove_avatar(AvatarId avatar) {
+  if (state_->avatars.erase(avatar) == 0) return;
   state_->room.remove(avatar);
-  state_->avatars.erase(avatar);
+  state_->ids.give_back(avatar, state_->room.tick_index());
   state_->collect_events();
 }
 

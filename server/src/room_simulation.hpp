@@ -32,6 +32,11 @@ struct RoomSimulationOptions {
   /// take the first free one); 0: as many as avatars present, laid out again
   /// whenever one joins or leaves.
   int seats = 0;
+  /// Avatar ids handed out: 1 .. id_space - 1 (the codec's 21 bits), each
+  /// handed out again only after resting id_quiet_ticks since its avatar
+  /// left (avatar_ids.hpp). Tests shrink both.
+  AvatarId id_space = codec::kMaxAvatarIdValue + 1;
+  std::uint64_t id_quiet_ticks = 60 * 30;
 };
 
 struct AvatarSetup {
@@ -76,8 +81,11 @@ class RoomSimulation {
   RoomSimulation(RoomSimulation&&) noexcept;
   RoomSimulation& operator=(RoomSimulation&&) noexcept;
 
-  /// Seats a new avatar (the first one leads, as in the paper's experiment).
+  /// Seats a new avatar (the first one leads, as in the paper's experiment);
+  /// 0 when the room is full or every id is in use or resting.
   AvatarId add_avatar(const AvatarSetup& setup);
+  /// Whether add_avatar would find an id now (false: all are in use or rest).
+  bool has_free_id() const;
   void remove_avatar(AvatarId avatar);
   std::vector<AvatarId> avatars() const;
 

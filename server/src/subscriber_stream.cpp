@@ -34,6 +34,13 @@ constexpr double kMinWeight = 0.5, kMaxWeight = 2.5;
 /// absorbs what no count here sees (rounding, a late tick, IP headers a
 /// client may count).
 constexpr double kHeadroom = 0.97;
+/// Chat lines waiting for the budget are dropped, oldest first, past this
+/// many seconds of it (and past SubscriberStream::kMaxWaitingChat lines).
+constexpr double kMaxChatWaitSeconds = 4.0;
+/// The room's messages go at once while the budget is overdrawn by less than
+/// this (then they wait): a presence or a line as it happens, and a burst
+/// of them paid back over the next half second. Only a flood waits.
+constexpr double kMessageOverdraftSeconds = 0.5;
 
 }  // namespace
 
@@ -97,6 +104,124 @@ void SubscriberStream::set_budget(std::uint32_t bps) {
 
 void SubscriberStream::charge(std::size_t bytes) { credit_bytes_ -= static_cast<double>(bytes); }
 
+// --- room messages, within the budget ----------------------------------------
+
+void SubscriberStream::post_presence(codec::Presence::Change change, std::uint32_t avatar, SharedBytes message) {
+  if (change == codec::Presence::Change::left) {
+    // A face that comes and goes before this client heard of it is never
+    // mentioned: under a join/leave flood, a slow link is not filled with
+    // the comings and goings of faces it never saw.
+    const auto joined = std::find_if(waiting_.begin(), waiting_.end(), [avatar](const Waiting& w) {
+      return w.kind == Kind::joined && w.avatar == avatar;
+    });
+    if (joined != waiting_.end()) {
+      waiting_.erase(joined);
+      return;
+    }
+  }
+  waiting_.push_back({change == codec::Presence::Change::joined ? Kind::joined : Kind::left, avatar, std::move(message)});
+  send_messages();
+}
+
+void SubscriberStream::post_seats(SharedBytes message) {
+  // Each seats message holds everyone's seat: the newest says it all.
+  std::erase_if(waiting_, [](const Waiting& w) { return w.kind == Kind::seats; });
+  waiting_.push_back({Kind::seats, 0, std::move(message)});
+  send_messages();
+}
+
+void SubscriberStream::post_attention(const codec::Attention& attention) {
+  // Attention is state: entries still waiting are merged, newest wins, and
+  // the merged message goes where the newest one would (after every
+  // presence that came before it).
+  std::erase_if(waiting_, [](const Waiting& w) { return w.kind == Kind::attention; });
+  for (const auto& entry : attention.entries) {
+    const auto same = std::find_if(waiting_attention_.begin(), waiting_attention_.end(),
+                                   [&](const codec::Attention::Entry& e) { return e.avatar == entry.avatar; });
+    if (same != waiting_attention_.end()) *same = entry;
+    else waiting_attention_.push_back(entry);
+  }
+  waiting_.push_back({Kind::attention, 0, nullptr});
+  send_messages();
+}
+
+void SubscriberStream::post_result(SharedBytes message) {
+  // A client that sends commands faster than its link carries the answers
+  // loses the oldest answers, not its budget.
+  std::size_t results = 0;
+  for (const Waiting& w : waiting_) results += w.kind == Kind::result;
+  if (results >= kMaxWaitingResults) {
+    waiting_.erase(std::find_if(waiting_.begin(), waiting_.end(), [](const Waiting& w) { return w.kind == Kind::result; }));
+  }
+  waiting_.push_back({Kind::result, 0, std::move(message)});
+  send_messages();
+}
+
+void SubscriberStream::post_chat(SharedBytes message) {
+  chat_bytes_ += message->size();
+  chat_.push_back(std::move(message));
+  const double max_bytes = effective_bps_ / 8.0 * kMaxChatWaitSeconds;
+  while (chat_.size() > kMaxWaitingChat || (chat_.size() > 1 && static_cast<double>(chat_bytes_) > max_bytes))
+    drop_oldest_chat();
+  send_messages();
+}
+
+bool SubscriberStream::congested() const {
+  return static_cast<double>(connection_->queued_bytes()) > std::max(512.0, effective_bps_ / 8.0 / 2);
+}
+
+bool SubscriberStream::may_send_message() const {
+  return credit_bytes_ > -effective_bps_ / 8.0 * kMessageOverdraftSeconds;
+}
+
+void SubscriberStream::send_messages() {
+  if (!congested() && send_waiting()) send_chat();
+}
+
+void SubscriberStream::drop_oldest_chat() {
+  chat_bytes_ -= chat_.front()->size();
+  chat_.pop_front();
+  ++dropped_chat_;
+  ++dropped_chat_total_;
+}
+
+bool SubscriberStream::send_waiting() {
+  while (!waiting_.empty() && may_send_message()) {
+    Waiting w = std::move(waiting_.front());
+    waiting_.pop_front();
+    if (w.kind == Kind::attention) {
+      // Entries of faces gone meanwhile mean nothing to the client.
+      codec::Attention attention;
+      for (const auto& entry : waiting_attention_)
+        if (encoders_.count(entry.avatar) && attention.entries.size() < codec::kMaxWelcomeAvatars)
+          attention.entries.push_back(entry);
+      waiting_attention_.clear();
+      if (attention.entries.empty()) continue;
+      w.bytes = encode_shared(attention);
+    }
+    send(std::move(w.bytes));
+  }
+  return waiting_.empty();
+}
+
+void SubscriberStream::send_chat() {
+  while (!chat_.empty() && may_send_message()) {
+    if (dropped_chat_ > 0) {
+      const std::string lines = dropped_chat_ == 1 ? "1 chat line" : std::to_string(dropped_chat_) + " chat lines";
+      send(encode_shared(codec::Chat{0, lines + " skipped here: the room chats faster than your link carries"}));
+      dropped_chat_ = 0;
+    }
+    chat_bytes_ -= chat_.front()->size();
+    send(std::move(chat_.front()));
+    chat_.pop_front();
+  }
+  // While lines wait, the faces leave them part of the budget.
+  if (chat_share_ != !chat_.empty()) {
+    chat_share_ = !chat_.empty();
+    retarget_encoders();
+  }
+}
+
 std::uint32_t SubscriberStream::bundle_ticks() const {
   const std::size_t streaming = std::max<std::size_t>(1, encoders_.size() - awaiting_preview_.size());
   const bool thin = effective_bps_ / static_cast<double>(streaming) < kBundleBelowBps;
@@ -106,13 +231,16 @@ std::uint32_t SubscriberStream::bundle_ticks() const {
 void SubscriberStream::retarget_encoders() {
   const std::size_t streaming = encoders_.size() - awaiting_preview_.size();
   if (streaming == 0) return;
-  const double share = !awaiting_preview_.empty() ? kParamShareWithPreviews
-                       : packages_.empty()        ? kParamShare
-                                                  : kParamShareWithPackages;
+  const double share = param_share();
   double weights = 0;
   for (const auto& [id, encoder] : encoders_)
     if (!awaiting_preview_.count(id)) weights += weight_of(id);
   for (auto& [id, encoder] : encoders_) encoder.set_target_bps(effective_bps_ * share * weight_of(id) / weights);
+}
+
+double SubscriberStream::param_share() const {
+  if (!awaiting_preview_.empty()) return kParamShareWithPreviews;
+  return packages_.empty() && !chat_share_ ? kParamShare : kParamShareWithPackages;
 }
 
 std::size_t SubscriberStream::send(SharedBytes message) {
@@ -136,17 +264,21 @@ void SubscriberStream::tick(std::uint32_t tick, std::uint64_t now_us, std::span<
   // Latest value wins: a connection still holding half a second of data
   // gets nothing new this tick. The encoders hold (no frame), so the next
   // frame starts from what the client really has.
-  const std::size_t queued = connection_->queued_bytes();
-  const bool congested = static_cast<double>(queued) > std::max(512.0, bytes_per_second / 2);
+  const bool congested = this->congested();
   if (congested) {
     ++skipped_ticks_;
     congested_this_second_ = true;
     metrics_.skipped_ticks.fetch_add(1, std::memory_order_relaxed);
   }
+  // The room's messages first. While presence, seats, attention or a
+  // result waits for the budget, no frame or chunk goes: a face's frames
+  // must not overtake the presence that introduces it.
+  const bool messages_sent = !congested && send_waiting();
+  if (messages_sent) send_chat();
   // On a thin budget the avatars' frames go out together on every
   // bundle_ticks-th tick: one room frame (and one message header) carries
   // them all, instead of one nearly empty room frame per tick.
-  const bool send_tick = !congested && tick % bundle_ticks() == 0;
+  const bool send_tick = messages_sent && tick % bundle_ticks() == 0;
 
   frames_.resize(std::max(frames_.size(), faces.size()));
   std::vector<codec::RoomEntry> entries;
@@ -157,7 +289,7 @@ void SubscriberStream::tick(std::uint32_t tick, std::uint64_t now_us, std::span<
     if (!send_tick) it->second.hold(*faces[i].face);
     else if (it->second.encode(*faces[i].face, frames_[i])) entries.push_back({faces[i].id, frames_[i]});
   }
-  if (congested) return;
+  if (!messages_sent) return;
   for (std::size_t start = 0; start < entries.size(); start += codec::kMaxRoomAvatars) {
     const std::size_t count = std::min(codec::kMaxRoomAvatars, entries.size() - start);
     send_room_frames(tick, now_us, std::span(entries).subspan(start, count));

@@ -12,6 +12,18 @@
 // leaves, previews first; an avatar's frames start once its preview is
 // there (before, the client could not draw them). Once a second the budget follows what actually
 // drained: down when ticks were skipped, back up toward the client's own.
+//
+// The room's other messages go through the same budget: they go at once
+// while the budget is overdrawn by less than half a second of it, else wait
+// here for the ticks to pay it back. Presence, seats,
+// attention and command results go first, and while one of them waits no
+// room frame or package chunk goes (so a face's frames never arrive before
+// the presence that introduces it); waiting ones are coalesced (a joined
+// and a left of the same avatar cancel, the newest seats replace older
+// ones, attention entries merge). Chat lines go next; while they wait the
+// faces' share of the budget shrinks as it does for packages, and past
+// kMaxWaitingChat lines (or a few seconds of budget) the oldest are dropped
+// and the client told how many, in a line from avatar 0 (the server).
 #include <cstdint>
 #include <deque>
 #include <map>
@@ -51,8 +63,23 @@ class SubscriberStream {
   void force_key_frames(std::span<const std::uint32_t> avatars);
   /// A new budget from the client (0: the server's default, resolved by the caller).
   void set_budget(std::uint32_t bps);
-  /// Charges a message the room sent outside the stream (chat, presence).
+  /// Charges a message the room sent outside the stream (the welcome and
+  /// the attention that follows it).
   void charge(std::size_t bytes);
+
+  // Room messages, sent within the budget (above).
+  void post_presence(codec::Presence::Change change, std::uint32_t avatar, SharedBytes message);
+  void post_seats(SharedBytes message);
+  void post_attention(const codec::Attention& attention);
+  void post_result(SharedBytes message);
+  /// A chat line (from an avatar, or the server's avatar 0).
+  void post_chat(SharedBytes message);
+  /// Room messages still waiting, and chat lines dropped so far.
+  std::size_t waiting_messages() const { return waiting_.size() + chat_.size(); }
+  std::uint64_t dropped_chat_lines() const { return dropped_chat_total_; }
+
+  static constexpr std::size_t kMaxWaitingChat = 16;
+  static constexpr std::size_t kMaxWaitingResults = 16;
 
   void tick(std::uint32_t tick, std::uint64_t now_us, std::span<const AvatarFace> faces);
 
@@ -66,6 +93,24 @@ class SubscriberStream {
     SharedBytes bytes;
     std::size_t offset = 0;
   };
+  enum class Kind { joined, left, seats, attention, result };
+  struct Waiting {
+    Kind kind;
+    std::uint32_t avatar = 0;  ///< joined, left: whose
+    SharedBytes bytes;         ///< null for the attention (encoded when it goes)
+  };
+  /// Half a second of budget or more waits for the socket.
+  bool congested() const;
+  bool may_send_message() const;
+  /// What waits and the budget allows, unless the socket is congested.
+  void send_messages();
+  /// Presence, seats, attention and results while the budget allows; true
+  /// once none waits.
+  bool send_waiting();
+  void send_chat();
+  void drop_oldest_chat();
+  /// Faces' share of the budget for what else waits (packages, chat).
+  double param_share() const;
   void send_room_frames(std::uint32_t tick, std::uint64_t now_us, std::span<const codec::RoomEntry> entries);
   void send_package_chunks();
   void once_a_second(std::uint64_t now_us);
@@ -86,6 +131,13 @@ class SubscriberStream {
   std::map<std::uint32_t, Fairness> fairness_;
   std::deque<PackageSend> packages_;
   std::set<std::uint32_t> awaiting_preview_;  ///< avatars whose preview is not complete yet
+  std::deque<Waiting> waiting_;
+  std::vector<codec::Attention::Entry> waiting_attention_;  ///< the waiting attention message's entries
+  std::deque<SharedBytes> chat_;
+  std::size_t chat_bytes_ = 0;
+  std::uint64_t dropped_chat_ = 0;  ///< since the last notice
+  std::uint64_t dropped_chat_total_ = 0;
+  bool chat_share_ = false;  ///< the faces' share is lowered for waiting chat
   double effective_bps_;
   double credit_bytes_ = 0;     ///< what the budget allows to send now
   std::uint64_t second_start_us_ = 0;

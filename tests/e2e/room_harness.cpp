@@ -25,8 +25,12 @@ std::filesystem::path fresh_directory(const std::string& name) {
 
 RoomServer::RoomServer(const std::string& extra_args) {
   data_ = fresh_directory("server-data");
-  process_ = std::make_unique<ServerProcess>(bin("facewire-server"), "--tcp 127.0.0.1:0 --data " + data_.string() +
-                                                                         " --no-demo-room --log-level warn " + extra_args);
+  // Every client here runs on 127.0.0.1: what one address may do is raised.
+  process_ = std::make_unique<ServerProcess>(
+      bin("facewire-server"), "--tcp 127.0.0.1:0 --data " + data_.string() +
+                                  " --no-demo-room --log-level warn --joins-per-minute 100000 --rooms-per-hour 100000"
+                                  " --chat-per-minute 100000 --seats-per-address 64 " +
+                                  extra_args);
   // The second line names the TCP port: "facewire-server tcp on tcp://ADDR:PORT".
   const std::string line = process_->port() > 0 ? process_->next_stdout_line(10000) : "";
   const auto colon = line.rfind(':');

@@ -28,7 +28,8 @@ using Transport = RoomTestClient::Transport;
 
 class RoomServerTest : public ::testing::TestWithParam<Transport> {
  protected:
-  static void SetUpTestSuite() { server_ = new RunningServer(); }
+  // Every test here joins from 127.0.0.1, into rooms of its own.
+  static void SetUpTestSuite() { server_ = new RunningServer(test::kManyClientsFromOneAddress); }
   static void TearDownTestSuite() { delete server_; }
   static inline RunningServer* server_ = nullptr;
 };
@@ -214,7 +215,7 @@ TEST(RoomServerTokens, ATokenForRoomADoesNotOpenRoomB) {
 }
 
 TEST(RoomServerLimits, ARoomHasASize) {
-  RunningServer server("--room-size 2 --no-demo-room");
+  RunningServer server("--room-size 2 --no-demo-room" + test::kManyClientsFromOneAddress);
   auto one = join(server, Transport::tcp, "small", "One");
   auto two = join(server, Transport::tcp, "small", "Two");
   auto three = join(server, Transport::tcp, "small", "Three");

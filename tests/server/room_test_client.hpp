@@ -25,18 +25,22 @@ class RoomTestClient : public RoomInbox {
  public:
   enum class Transport { websocket, tcp };
 
-  RoomTestClient(Transport transport, int port) : transport_(transport), socket_(ioc_), ws_(ioc_) {
+  /// `from`: the local address to connect from (127.0.0.2 and up stand in
+  /// for other clients' addresses); empty: the kernel's choice, 127.0.0.1.
+  RoomTestClient(Transport transport, int port, const std::string& from = "")
+      : transport_(transport), socket_(ioc_), ws_(ioc_) {
     namespace net = boost::asio;
     const net::ip::tcp::endpoint endpoint(net::ip::make_address("127.0.0.1"), static_cast<unsigned short>(port));
     boost::system::error_code ec;
-    if (transport_ == Transport::websocket) {
-      boost::beast::get_lowest_layer(ws_).connect(endpoint, ec);
-      if (!ec) {
-        ws_.binary(true);
-        ws_.handshake("127.0.0.1", "/ws", ec);
-      }
-    } else {
-      socket_.connect(endpoint, ec);
+    auto& socket = transport_ == Transport::tcp ? socket_ : boost::beast::get_lowest_layer(ws_).socket();
+    if (!from.empty()) {
+      socket.open(net::ip::tcp::v4(), ec);
+      if (!ec) socket.bind({net::ip::make_address(from), 0}, ec);
+    }
+    if (!ec) socket.connect(endpoint, ec);
+    if (!ec && transport_ == Transport::websocket) {
+      ws_.binary(true);
+      ws_.handshake("127.0.0.1", "/ws", ec);
     }
     connected_ = !ec;
   }

@@ -18,6 +18,14 @@ namespace fw::test {
 using namespace std::chrono_literals;
 using Transport = RoomTestClient::Transport;
 
+/// Flags that raise what one address may do (joins, chat, new rooms, seats
+/// in a room), for tests that run many clients from 127.0.0.1 to test
+/// something else; the limits' own tests (address_rate_limits_test.cpp)
+/// keep the defaults.
+inline const std::string kManyClientsFromOneAddress =
+    " --joins-per-minute 100000 --chat-per-minute 100000 --room-chat-per-minute 100000 --rooms-per-hour 100000"
+    " --seats-per-address 64 ";
+
 /// A server with a TCP port and its own data directory.
 class RunningServer {
  public:

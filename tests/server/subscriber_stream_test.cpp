@@ -5,6 +5,7 @@
 // value wins when the peer stops reading.
 #include "subscriber_stream.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -289,6 +290,113 @@ TEST(SubscriberStream, TheBudgetFallsToWhatDrainsAndClimbsBackWhenTheLinkRecover
   h.drain();
   for (int i = 0; i < kTickHz * 20; ++i) h.tick_moving({1});
   EXPECT_NEAR(h.stream().target_bps(), kBudget * 0.97, 1) << "back to the client's own budget";
+}
+
+// --- the room's messages, within the budget ----------------------------------
+
+SharedBytes presence(codec::Presence::Change change, std::uint32_t id) {
+  codec::AvatarInfo info;
+  info.id = id;
+  info.name = "Flood " + std::to_string(id);
+  info.person = true;
+  return encode_shared(codec::Presence{change, info});
+}
+
+/// A flood as one address could make it before the per-address limits: a
+/// face joins, says five long lines and leaves, every tick.
+void flood_tick(StreamHarness& h, std::uint32_t id) {
+  using Change = codec::Presence::Change;
+  h.stream().post_presence(Change::joined, id, presence(Change::joined, id));
+  h.stream().add_avatar(id, nullptr, nullptr);
+  for (int line = 0; line < 5; ++line) h.stream().post_chat(encode_shared(codec::Chat{id, std::string(200, 'x')}));
+  h.stream().remove_avatar(id);
+  h.stream().post_presence(Change::left, id, presence(Change::left, id));
+  h.tick_moving({1});
+}
+
+TEST(SubscriberStream, ChatAndPresenceUnderAFloodStayWithinTheBudget) {
+  constexpr std::uint32_t kBudget = 9600;
+  StreamHarness h(kBudget);
+  h.stream().add_avatar(1, nullptr, nullptr);
+  for (int i = 0; i < kTickHz * 5; ++i) flood_tick(h, 100 + static_cast<std::uint32_t>(i));
+  // Five seconds of budget, and the half second a burst of messages may
+  // overdraw it by.
+  const double allowed = kBudget / 8.0 * 5.5;
+  EXPECT_LE(static_cast<double>(h.session().bytes_written()), allowed)
+      << "750 chat lines (150 KB) were posted in 5 s";
+  EXPECT_TRUE(h.peer().errors.empty()) << h.peer().errors.front();
+  EXPECT_GT(h.peer().frames_per_avatar[1], 30u) << "the face still moves";
+  ASSERT_FALSE(h.peer().chat.empty());
+  EXPECT_LT(h.peer().chat.size(), 100u);
+  const bool told = std::any_of(h.peer().chat.begin(), h.peer().chat.end(), [](const codec::Chat& c) {
+    return c.from == 0 && c.text.find("chat lines skipped") != std::string::npos;
+  });
+  EXPECT_TRUE(told) << "the client hears that lines were dropped";
+  EXPECT_GT(h.stream().dropped_chat_lines(), 600u);
+  EXPECT_EQ(h.metrics().skipped_ticks.load(), 0u) << "what waits, waits in the stream, not in the socket";
+}
+
+TEST(SubscriberStream, AFaceThatComesAndGoesBeforeItIsMentionedIsNeverMentioned) {
+  using Change = codec::Presence::Change;
+  StreamHarness h(9600);
+  h.stream().charge(2000);  // the budget is overdrawn: messages wait
+  h.stream().post_presence(Change::joined, 5, presence(Change::joined, 5));
+  h.stream().post_presence(Change::left, 5, presence(Change::left, 5));
+  h.stream().post_presence(Change::joined, 6, presence(Change::joined, 6));
+  for (int i = 0; i < kTickHz * 3; ++i) h.tick({});
+  h.stream().post_presence(Change::left, 6, presence(Change::left, 6));  // 6 was mentioned: its leaving is too
+  for (int i = 0; i < kTickHz; ++i) h.tick({});
+  ASSERT_EQ(h.peer().presence.size(), 2u);
+  EXPECT_EQ(h.peer().presence[0].avatar.id, 6u);
+  EXPECT_EQ(h.peer().presence[0].change, Change::joined);
+  EXPECT_EQ(h.peer().presence[1].change, Change::left);
+}
+
+TEST(SubscriberStream, AFacesFramesNeverOvertakeThePresenceThatIntroducesIt) {
+  using Change = codec::Presence::Change;
+  StreamHarness h(2400);
+  h.stream().charge(2000);  // a large welcome: the budget is overdrawn for a while
+  h.stream().post_presence(Change::joined, 7, presence(Change::joined, 7));
+  h.stream().add_avatar(7, nullptr, nullptr);
+  bool overtaken = false;
+  for (int i = 0; i < kTickHz * 10 && h.peer().frames_per_avatar[7] == 0; ++i) {
+    h.tick_moving({7});
+    overtaken = overtaken || (h.peer().frames_per_avatar[7] > 0 && h.peer().presence.empty());
+  }
+  EXPECT_FALSE(overtaken);
+  EXPECT_EQ(h.peer().presence.size(), 1u);
+  EXPECT_GT(h.peer().frames_per_avatar[7], 0u);
+}
+
+TEST(SubscriberStream, AMessageGoesAtOnceWhileTheBudgetAllows) {
+  using Change = codec::Presence::Change;
+  StreamHarness h(64000);
+  h.stream().post_presence(Change::joined, 5, presence(Change::joined, 5));
+  h.stream().post_chat(encode_shared(codec::Chat{5, "hello"}));
+  h.stream().post_presence(Change::left, 5, presence(Change::left, 5));
+  h.drain();  // no tick
+  ASSERT_EQ(h.peer().presence.size(), 2u);
+  ASSERT_EQ(h.peer().chat.size(), 1u);
+}
+
+TEST(SubscriberStream, WaitingSeatsAndAttentionAreCoalesced) {
+  StreamHarness h(2400);
+  h.stream().add_avatar(1, nullptr, nullptr);
+  h.stream().add_avatar(2, nullptr, nullptr);
+  h.stream().charge(1000);
+  for (std::uint32_t i = 0; i < 20; ++i) {
+    codec::Seats seats;
+    seats.seats.push_back({1, codec::SeatInfo{static_cast<float>(i), 0, 0, 0}});
+    h.stream().post_seats(encode_shared(seats));
+    codec::Attention attention;
+    attention.entries.push_back({i % 2 == 0 ? 1u : 2u, codec::AttentionTarget::avatar, i % 2 == 0 ? 2u : 1u});
+    h.stream().post_attention(attention);
+  }
+  for (int i = 0; i < kTickHz * 6; ++i) h.tick({});  // the budget pays the charge back in about 3.5 s
+  ASSERT_EQ(h.peer().seats.size(), 1u);
+  EXPECT_FLOAT_EQ(h.peer().seats[0].seats[0].seat.x_mm, 19);
+  ASSERT_EQ(h.peer().attention.size(), 1u);
+  EXPECT_EQ(h.peer().attention[0].entries.size(), 2u);
 }
 
 }  // namespace

@@ -44,11 +44,16 @@ export function runProgram(name, args) {
   });
 }
 
+/// What one address may do, raised: every page and client of a test runs on 127.0.0.1.
+const ONE_ADDRESS_LIMITS = ['--joins-per-minute', '100000', '--rooms-per-hour', '100000', '--chat-per-minute', '100000',
+  '--seats-per-address', '64'];
+
 /// Starts `facewire-server serve` on 127.0.0.1:0 with `args`; resolves with
 /// { url, port, dataDir, log(), stop() } once it prints its address.
 export async function startServer(args = []) {
   const dataDir = mkdtempSync(join(tmpdir(), 'facewire-web-test-'));
-  const child = spawn(program('facewire-server'), ['serve', '--http', '127.0.0.1:0', '--data', dataDir, ...args],
+  const child = spawn(program('facewire-server'),
+    ['serve', '--http', '127.0.0.1:0', '--data', dataDir, ...ONE_ADDRESS_LIMITS, ...args],
     { stdio: ['ignore', 'pipe', 'pipe'] });
   let stderr = '';
   child.stderr.on('data', (chunk) => { stderr = (stderr + chunk).slice(-20000); });
