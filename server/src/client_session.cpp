@@ -7,11 +7,13 @@
 #include <boost/asio/post.hpp>
 #include <spdlog/spdlog.h>
 
+#include "display_name.hpp"
 #include "join_token.hpp"
 #include "monotonic_clock.hpp"
 #include "peer_address.hpp"
 #include "room.hpp"
 #include "room_registry.hpp"
+#include "server_keys.hpp"
 #include "server_limits.hpp"
 
 namespace fw::server {
@@ -29,7 +31,7 @@ std::string wait_text(double seconds) { return std::to_string(static_cast<long>(
 
 ClientSession::ClientSession(ServerContext& context, net::any_io_executor executor, std::string peer)
     : context_(context), executor_(std::move(executor)), peer_(std::move(peer)), clock_(executor_),
-      message_tokens_(limits::kMessageBurst), byte_tokens_(limits::kUpstreamByteBurst), chat_tokens_(limits::kChatBurst) {}
+      resume_key_(random_key()), message_tokens_(limits::kMessageBurst), byte_tokens_(limits::kUpstreamByteBurst), chat_tokens_(limits::kChatBurst) {}
 
 ClientSession::~ClientSession() {
   if (counted_) context_.metrics.connections.fetch_sub(1);
@@ -145,6 +147,7 @@ void ClientSession::on_transport_closed() {
     room_.reset();
   }
   clock_.cancel();
+  if (!held_token_.empty()) context_.tokens.release(held_token_, this);
   context_.rooms->remove_session(this);
 }
 
@@ -214,12 +217,17 @@ void ClientSession::handle_hello(std::span<const std::uint8_t> message) {
   if (error != MessageError::ok)
     return protocol_error(CloseCode::protocol_error,
                           "the first message must be a hello: " + std::string(codec::describe(error)));
-  if (const auto refusal = refusal_of(hello)) return refuse(refusal->first, refusal->second);
+  std::string name;
+  if (const std::string why = normalize_display_name(hello.name, name); !why.empty())
+    return refuse(CloseCode::bad_request, why, Abuse::bad_name);
+  hello.name = std::move(name);
+  if (const auto refusal = refusal_of(hello))
+    return refuse(refusal->first, refusal->second,
+                  refusal->first == CloseCode::unauthorized ? std::optional(Abuse::unauthorized) : std::nullopt);
   // Held by the address, so that leaving and joining again does not refill it.
-  if (const auto wait = context_.addresses->take(AddressRate::join, address_key(peer_))) {
-    context_.abuse.note(Abuse::join_rate, peer_, "too many joins");
-    return refuse(CloseCode::rate_limited, "too many joins from your address; try again in " + wait_text(*wait));
-  }
+  if (const auto wait = context_.addresses->take(AddressRate::join, address_key(peer_)))
+    return refuse(CloseCode::rate_limited, "too many joins from your address; try again in " + wait_text(*wait),
+                  Abuse::join_rate);
   const AvatarLookup avatar = avatar_for(hello);
   switch (avatar.status) {
     case AvatarStatus::found: break;
@@ -230,16 +238,37 @@ void ClientSession::handle_hello(std::span<const std::uint8_t> message) {
     case AvatarStatus::being_prepared: return refuse(CloseCode::avatar_being_prepared, avatar.message);
     default: return refuse(CloseCode::bad_request, avatar.message);
   }
+  if (!hello.avatar.empty() && !avatar_key_matches(context_.server_key, hello.avatar, hello.avatar_key))
+    return refuse(CloseCode::unauthorized,
+                  hello.avatar_key.empty()
+                      ? "a face is worn with the key its upload answered (avatar_key); upload your photo to get yours"
+                      : "that is not the key of this face: only who uploaded it may wear it",
+                  Abuse::face_not_yours);
+  if (!claim_token(hello)) return;
   RoomOpening opening = context_.rooms->open_for(hello.room, address_key(peer_));
-  if (!opening.room) {
-    if (opening.abuse) context_.abuse.note(*opening.abuse, peer_, opening.refusal);
-    return refuse(opening.code, opening.refusal);
-  }
+  if (!opening.room) return refuse(opening.code, opening.refusal, opening.abuse);
   room_ = std::move(opening.room);
   state_ = State::joining;
   JoinRequest request{hello.name, *avatar.avatar, stream_settings_for(hello), shared_from_this()};
+  request.resume = resume_key_;
   request.address = address_key(peer_);
   room_->join(std::move(request));
+}
+
+bool ClientSession::claim_token(const codec::Hello& hello) {
+  if (context_.config.auth_secret.empty()) return true;
+  const TokenClaim claim = context_.tokens.claim(hello.token, shared_from_this(), hello.resume, resume_key_);
+  if (!claim.granted) {
+    refuse(CloseCode::unauthorized,
+           "this invitation is in use by someone connected now; each person needs their own (ask the host)",
+           Abuse::token_in_use);
+    return false;
+  }
+  held_token_ = hello.token;
+  // The same person, back after a drop the server has not noticed yet:
+  // the old connection gives way. Told why, it does not try again.
+  if (claim.replaced) claim.replaced->close(CloseCode::unauthorized, "replaced by your newer connection");
+  return true;
 }
 
 std::optional<std::pair<CloseCode, std::string>> ClientSession::refusal_of(const codec::Hello& hello) const {
@@ -273,9 +302,12 @@ StreamSettings ClientSession::stream_settings_for(const codec::Hello& hello) con
   return stream;
 }
 
-void ClientSession::refuse(CloseCode code, const std::string& why) {
+void ClientSession::refuse(CloseCode code, const std::string& why, std::optional<Abuse> kind) {
   context_.metrics.rejected_joins.fetch_add(1);
-  spdlog::info("{}: hello refused: {}", peer_, why);
+  if (kind)
+    context_.abuse.note(*kind, peer_, "hello refused: " + why);
+  else
+    spdlog::info("{}: hello refused: {}", peer_, why);
   do_close(code, why);
 }
 

@@ -17,6 +17,7 @@
 #include <boost/asio/steady_timer.hpp>
 
 #include "fw/codec/messages.hpp"
+#include "abuse_log.hpp"
 #include "room_connection.hpp"
 #include "server_context.hpp"
 #include "subscriber_stream.hpp"
@@ -75,7 +76,11 @@ class ClientSession : public RoomConnection, public std::enable_shared_from_this
   /// The uploaded package `hello` names, or a procedural face; nullopt if the package is unknown.
   AvatarLookup avatar_for(const codec::Hello& hello) const;
   StreamSettings stream_settings_for(const codec::Hello& hello) const;
-  void refuse(codec::CloseCode code, const std::string& why);
+  /// Closes the connection for its hello; `kind` counts and logs it as abuse.
+  void refuse(codec::CloseCode code, const std::string& why, std::optional<Abuse> kind = std::nullopt);
+  /// With --auth-secret: takes the hello's token for this connection, or
+  /// refuses the hello (false) when another live connection holds it.
+  bool claim_token(const codec::Hello& hello);
   void handle_joined_message(std::span<const std::uint8_t> message);
   void handle_resync(std::span<const std::uint8_t> message);
   void handle_chat(std::span<const std::uint8_t> message);
@@ -93,6 +98,8 @@ class ClientSession : public RoomConnection, public std::enable_shared_from_this
   State state_ = State::greeting;
   std::shared_ptr<Room> room_;
   std::uint32_t avatar_ = 0;
+  std::string resume_key_;  ///< in the welcome: a reconnection that shows it takes over held_token_
+  std::string held_token_;  ///< the join token this connection holds (TokenHolders)
   bool seated_ = false;  ///< the room seated avatar_
   std::vector<std::vector<std::uint8_t>> early_messages_;  ///< sent between hello and welcome
   std::deque<SharedBytes> queue_;

@@ -5,6 +5,7 @@
 #include <boost/beast/websocket.hpp>
 #include <spdlog/spdlog.h>
 
+#include "api_access.hpp"
 #include "http_responses.hpp"
 #include "log_text.hpp"
 #include "photo_preparation.hpp"
@@ -120,7 +121,17 @@ bool HttpSession::answer_read_error(beast::error_code ec) {
 void HttpSession::on_header(beast::error_code ec, std::size_t) {
   if (answer_read_error(ec)) return;
   const auto& header = parser_->get();
-  upload_ = header.method() == http::verb::post && header.target() == "/api/avatars";
+  const std::string_view target(header.target().data(), header.target().size());
+  upload_ = header.method() == http::verb::post && target.substr(0, target.find('?')) == "/api/avatars";
+  if (upload_) {
+    // With --auth-secret, only who holds an invitation may upload (the
+    // browser sends the invite link's token).
+    Response refusal;
+    if (!api_access(context_, header, refusal)) {
+      context_.abuse.note(Abuse::unauthorized, peer_address_, "an upload without a valid token");
+      return send(std::move(refusal));
+    }
+  }
   const std::size_t limit = upload_ ? context_.config.max_upload_bytes : limits::kMaxBodyBytes;
   if (parser_->content_length() && *parser_->content_length() > limit)
     return (void)answer_read_error(http::error::body_limit);

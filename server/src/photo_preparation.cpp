@@ -12,6 +12,7 @@
 #include "peer_address.hpp"
 #include "photo_worker.hpp"
 #include "rest_api.hpp"
+#include "server_keys.hpp"
 #include "server_limits.hpp"
 
 namespace fw::server {
@@ -199,7 +200,10 @@ Response PhotoPreparation::handle(const Request& request) {
   context_.metrics.uploads.fetch_add(1);
   spdlog::info("stored avatar {} ({} bytes, preview {} bytes{})", stored->asset, stored->full->size(),
                stored->preview->size(), upload.photo.empty() ? "" : ", with its photo");
+  // The key is what lets its holder wear the face (PROTOCOL.md 8.1): it
+  // goes to the uploader alone, never to the room.
   const nlohmann::json answer = {{"asset", stored->asset},
+                                 {"key", avatar_key(context_.server_key, stored->asset)},
                                  {"package", "/api/packages/" + stored->asset},
                                  {"bytes", stored->full->size()},
                                  {"preview_bytes", stored->preview->size()},

@@ -258,6 +258,7 @@ void Room::introduce_to_others(const Member& newcomer) {
 std::unique_ptr<SubscriberStream> Room::welcome(const Member& newcomer, const JoinRequest& request) {
   codec::Welcome welcome;
   welcome.you = newcomer.info.id;
+  welcome.resume = request.resume;
   welcome.room = name_;
   welcome.tick_hz = static_cast<std::uint8_t>(context_.config.tick_hz);
   welcome.max_bps = request.stream.budget_bps;

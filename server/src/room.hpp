@@ -33,6 +33,7 @@ struct JoinRequest {
   StoredAvatar avatar;
   StreamSettings stream;
   std::shared_ptr<RoomConnection> connection;  ///< null for the room's own autonomous avatars
+  std::string resume;  ///< the connection's resume key, for its welcome
   /// The person's address (address_key()), for the seats one address may
   /// hold; empty for autonomous avatars.
   std::string address;

@@ -73,6 +73,9 @@ void add_limit_flags(CLI::App& cmd, ServerConfig& config) {
       ->capture_default_str();
   cmd.add_option("--auth-secret", config.auth_secret, "require join tokens signed with this secret")
       ->envname("FACEWIRE_AUTH_SECRET");
+  cmd.add_option("--metrics-secret", config.metrics_secret,
+                 "/metrics answers only 'Authorization: Bearer SECRET' (with --auth-secret and none: closed)")
+      ->envname("FACEWIRE_METRICS_SECRET");
 }
 
 /// A rate flag in events a minute (or an hour), kept as a token bucket's

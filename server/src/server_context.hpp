@@ -13,6 +13,7 @@
 #include "avatar_store.hpp"
 #include "metrics.hpp"
 #include "physics_governor.hpp"
+#include "token_holders.hpp"
 #include "server_config.hpp"
 
 namespace fw::server {
@@ -27,6 +28,8 @@ struct ServerContext {
   AvatarStore* store = nullptr;
   AddressLimits* addresses = nullptr;  ///< per-address connections, rates and upload bytes (config.abuse)
   AbuseLog abuse;                      ///< refusals by kind, for the log and /metrics
+  TokenHolders tokens;                 ///< which connection holds each join token
+  std::string server_key;              ///< signs avatar keys (DATA/server.key)
   RoomRegistry* rooms = nullptr;
   /// Procedural faces for clients that join without a package (and the lobby).
   std::vector<StoredAvatar> demo_avatars;

@@ -6,6 +6,7 @@
 #include "display_name.hpp"
 #include "invite_link.hpp"
 #include "join_token.hpp"
+#include "room_registry.hpp"
 
 namespace fw::server {
 namespace {
@@ -21,6 +22,10 @@ struct TokenArgs {
 int mint(const TokenArgs& args) {
   if (args.secret.empty()) {
     std::cerr << "facewire-server token: no secret; pass --auth-secret or set FACEWIRE_AUTH_SECRET to the server's\n";
+    return 2;
+  }
+  if (!is_valid_room_name(args.room)) {
+    std::cerr << "facewire-server token: --room: room names are 1 to 64 characters of A-Z a-z 0-9 _ - .\n";
     return 2;
   }
   // The name as the server will compare it: normalised, and refused when it

@@ -192,6 +192,7 @@ TEST(ServerCli, ABadValueIsAUsageErrorThatNamesTheFlag) {
            {"--http", "--http"},
            {"token --room r --name Ann --ttl -5", "--ttl"},
            {"token --room r", "--name"},
+           {"token --room 'a b' --name Ann --auth-secret s", "--room"},
            {"token --room r --name \u202Eevil --auth-secret s", "--name"},
            {"prep photo.jpg -o out.fwa --quality 500", "--quality"},
            {"simulate -o out.fws --avatars 0", "--avatars"},
