@@ -20,6 +20,8 @@ struct AbuseLimits {
   BucketRate chat{2.0, 10};
   /// Chat lines into one room, from everyone in it.
   BucketRate room_chat{5.0, 20};
+  /// Joins into one room, from every address together.
+  BucketRate room_joins{2.0, 30};
   /// Photo and package uploads from one address.
   BucketRate uploads{6.0 / 60.0, 6};
   /// Rooms one address may create.

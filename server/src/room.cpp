@@ -51,7 +51,8 @@ AvatarCommand to_simulation(const codec::Command& c) {
 Room::Room(ServerContext& context, std::string name, bool persistent, std::uint64_t seed)
     : context_(context), name_(std::move(name)), persistent_(persistent), strand_(net::make_strand(*context.workers)),
       timer_(strand_), simulation_(simulation_options(context.config, seed)),
-      chat_rate_(context.config.abuse.room_chat, TokenBucket::Clock::now()) {
+      chat_rate_(context.config.abuse.room_chat, TokenBucket::Clock::now()),
+      join_rate_(context.config.abuse.room_joins, TokenBucket::Clock::now()) {
   context_.metrics.rooms.fetch_add(1);
 }
 
@@ -227,6 +228,15 @@ std::optional<std::pair<codec::CloseCode, std::string>> Room::refusal_of(const J
                                                 " people from your address, the most one address may hold; "
                                                 "try another room"}};
     }
+  }
+  // Joins into one room, from every address together: each join is news
+  // to everyone in the room (a presence, a package), so churn from many
+  // addresses must not bury the people there.
+  if (request.connection && !join_rate_.take(TokenBucket::Clock::now())) {
+    const double wait = join_rate_.seconds_until(TokenBucket::Clock::now());
+    context_.abuse.note(Abuse::join_rate, request.address, "room '" + name_ + "' takes joins over its rate");
+    return {{codec::CloseCode::rate_limited,
+             "room '" + name_ + "' takes no more joins this moment; try again in " + whole_seconds(wait)}};
   }
   if (!simulation_.has_free_id())
     return {{codec::CloseCode::server_full,

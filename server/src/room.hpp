@@ -121,6 +121,7 @@ class Room : public std::enable_shared_from_this<Room> {
   std::size_t kinematic_faces_ = 0;  ///< this room's share of Metrics::kinematic_faces
   bool closed_ = false;
   TokenBucket chat_rate_;  ///< chat lines into this room, from everyone (AbuseLimits::room_chat)
+  TokenBucket join_rate_;  ///< joins into this room, from everyone (AbuseLimits::room_joins)
   std::uint32_t ticks_since_check_ = 0;  ///< for close_if_unpeopled once a second
   std::atomic<int> pending_joins_{0};  ///< joins posted and not yet done
   std::atomic<std::size_t> avatar_count_{0};

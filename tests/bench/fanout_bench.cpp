@@ -291,7 +291,7 @@ void run(const FanoutArgs& args) {
                             std::to_string(args.per_room) + " --max-rooms " + std::to_string(args.rooms) + " --threads " +
                             std::to_string(args.server_threads) + " --workers " + std::to_string(args.server_workers);
   // Every client runs on 127.0.0.1: what one address may do is raised to what the run needs.
-  server_args += " --joins-per-minute 1000000 --rooms-per-hour 1000000 --seats-per-address " +
+  server_args += " --joins-per-minute 1000000 --room-joins-per-minute 1000000 --rooms-per-hour 1000000 --seats-per-address " +
                  std::to_string(args.per_room) + " --max-connections-per-address " + std::to_string(clients + 64);
   if (args.physics == "awake") server_args += " --physics-always-awake";
   if (args.physics == "off") server_args += " --no-physics";

@@ -28,7 +28,7 @@ RoomServer::RoomServer(const std::string& extra_args) {
   // Every client here runs on 127.0.0.1: what one address may do is raised.
   process_ = std::make_unique<ServerProcess>(
       bin("facewire-server"), "--tcp 127.0.0.1:0 --data " + data_.string() +
-                                  " --no-demo-room --log-level warn --joins-per-minute 100000 --rooms-per-hour 100000"
+                                  " --no-demo-room --log-level warn --joins-per-minute 100000 --room-joins-per-minute 100000 --rooms-per-hour 100000"
                                   " --chat-per-minute 100000 --seats-per-address 64 " +
                                   extra_args);
   // The second line names the TCP port: "facewire-server tcp on tcp://ADDR:PORT".

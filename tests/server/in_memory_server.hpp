@@ -127,7 +127,7 @@ class InMemoryServer {
     // Every in-memory peer comes from one address ("in-memory"): what one
     // address may do is raised, so that a test can seat many; the tests of
     // those limits set them back.
-    config.abuse.joins = config.abuse.chat = config.abuse.room_creations = {1e6, 1e6};
+    config.abuse.joins = config.abuse.chat = config.abuse.room_creations = config.abuse.room_joins = {1e6, 1e6};
     config.abuse.seats_per_address = 64;
     return config;
   }

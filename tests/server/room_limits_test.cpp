@@ -235,6 +235,26 @@ TEST(RoomLimits, JoinsOverTheAddresssRateAreRefusedAcrossReconnects) {
   EXPECT_EQ(server.context().abuse.count(Abuse::join_rate), 1u);
 }
 
+TEST(RoomLimits, JoinsIntoOneRoomFromManyAddressesHaveARate) {
+  // Each address within its own rate, the room's together over it: the
+  // room refuses; another room is not affected.
+  ServerConfig config = InMemoryServer::test_config();
+  config.abuse.room_joins = {1.0 / 60, 3};
+  InMemoryServer server(config);
+  std::vector<std::unique_ptr<InMemoryPeer>> present;  // they stay: an empty room would close and start afresh
+  for (int i = 0; i < 3; ++i) {
+    present.push_back(join_from(server, "10.0.1." + std::to_string(i), "busy", "P" + std::to_string(i)));
+    EXPECT_TRUE(present.back()->welcome) << i;
+  }
+  auto fourth = join_from(server, "10.0.1.9", "busy", "Late");
+  ASSERT_TRUE(fourth->closing);
+  EXPECT_EQ(fourth->closing->code, CloseCode::rate_limited);
+  EXPECT_NE(fourth->closing->reason.find("takes no more joins this moment; try again in"), std::string::npos)
+      << fourth->closing->reason;
+  EXPECT_TRUE(join_from(server, "10.0.1.9", "quiet", "Late")->welcome);
+  EXPECT_EQ(server.context().abuse.count(Abuse::join_rate), 1u);
+}
+
 bool told(const InMemoryPeer& peer, const std::string& words) {
   for (const auto& line : peer.chat)
     if (line.from == 0 && line.text.find(words) != std::string::npos) return true;

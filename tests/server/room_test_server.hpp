@@ -23,7 +23,7 @@ using Transport = RoomTestClient::Transport;
 /// something else; the limits' own tests (address_rate_limits_test.cpp)
 /// keep the defaults.
 inline const std::string kManyClientsFromOneAddress =
-    " --joins-per-minute 100000 --chat-per-minute 100000 --room-chat-per-minute 100000 --rooms-per-hour 100000"
+    " --joins-per-minute 100000 --chat-per-minute 100000 --room-chat-per-minute 100000 --room-joins-per-minute 100000 --rooms-per-hour 100000"
     " --seats-per-address 64 ";
 
 /// A server with a TCP port and its own data directory.
