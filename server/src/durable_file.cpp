@@ -1,6 +1,7 @@
 #include "durable_file.hpp"
 
 #include <cerrno>
+#include <chrono>
 #include <cstring>
 #include <system_error>
 
@@ -80,8 +81,13 @@ bool is_temporary_file_name(const std::string& name) {
 std::size_t remove_temporary_files(const std::filesystem::path& directory) {
   std::size_t removed = 0;
   std::error_code ec;
+  // Only files no write has touched for a while: another process sharing
+  // the directory (a second server, a tool) may be writing one right now.
+  const auto stale_before = std::filesystem::file_time_type::clock::now() - std::chrono::minutes(10);
   for (const auto& entry : std::filesystem::directory_iterator(directory, ec)) {
     if (!entry.is_regular_file(ec) || !is_temporary_file_name(entry.path().filename().string())) continue;
+    const auto written = entry.last_write_time(ec);
+    if (ec || written > stale_before) continue;
     if (std::filesystem::remove(entry.path(), ec)) ++removed;
   }
   return removed;

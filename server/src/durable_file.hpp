@@ -22,8 +22,9 @@ bool write_file_durably(const std::filesystem::path& path, std::span<const std::
 /// write_file_durably makes, or that model::write_file_atomically made.
 bool is_temporary_file_name(const std::string& name);
 
-/// Removes the temporary files a crash left behind in `directory`; how many.
-/// Only at start, while nothing writes there.
+/// Removes the temporary files a crash left behind in `directory`, those
+/// untouched for ten minutes (another process may be writing a newer one);
+/// how many.
 std::size_t remove_temporary_files(const std::filesystem::path& directory);
 
 }  // namespace fw::server

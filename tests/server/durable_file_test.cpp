@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <filesystem>
 #include <string>
 #include <thread>
@@ -93,6 +94,12 @@ TEST_F(DurableFile, TheStoreRemovesWhatACrashLeftMidWrite) {
   test::write_file_bytes(avatars / ("." + asset + ".fwa.tmp-Ab12Cd"), partial);
   test::write_file_bytes(avatars / (asset + ".photo.partial-4242"), partial);  // an older build's
   test::write_file_bytes(avatars / (asset + ".photo"), partial);               // a stored file stays
+  // Left by a crash an hour ago: a temporary file written a moment ago may
+  // be another process's write under way, and stays.
+  const auto an_hour_ago = std::filesystem::file_time_type::clock::now() - std::chrono::hours(1);
+  std::filesystem::last_write_time(avatars / ("." + asset + ".fwa.tmp-Ab12Cd"), an_hour_ago);
+  std::filesystem::last_write_time(avatars / (asset + ".photo.partial-4242"), an_hour_ago);
+  test::write_file_bytes(avatars / ("." + asset + ".preview.fwa.tmp-Zz99Yy"), partial);
   Metrics metrics;
   std::string error;
   AvatarStore store(directory_, metrics, error);
@@ -100,7 +107,8 @@ TEST_F(DurableFile, TheStoreRemovesWhatACrashLeftMidWrite) {
   std::vector<std::string> left;
   for (const auto& entry : std::filesystem::directory_iterator(avatars))
     left.push_back(entry.path().filename().string());
-  EXPECT_EQ(left, std::vector<std::string>{asset + ".photo"});
+  std::sort(left.begin(), left.end());
+  EXPECT_EQ(left, (std::vector<std::string>{"." + asset + ".preview.fwa.tmp-Zz99Yy", asset + ".photo"}));
 }
 
 TEST(TemporaryFileName, IsOnlyTheNamesWritersGive) {

@@ -27,10 +27,14 @@ using test::RunningServer;
 using Transport = RoomTestClient::Transport;
 using codec::CloseCode;
 
+/// An upload; a photo's answer waits for its preparation, which the first
+/// time loads the landmark model: seconds on a loaded machine.
 test::HttpReply post(int port, const std::string& type, const std::string& body, const std::string& headers = "") {
-  return test::http_exchange(port, "POST /api/avatars HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\n" + headers +
-                                       "Content-Type: " + type + "\r\nContent-Length: " +
-                                       std::to_string(body.size()) + "\r\n\r\n" + body);
+  return test::http_exchange(port,
+                             "POST /api/avatars HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\n" + headers +
+                                 "Content-Type: " + type + "\r\nContent-Length: " + std::to_string(body.size()) +
+                                 "\r\n\r\n" + body,
+                             60);
 }
 
 /// A hello over TCP, answered by a welcome or a closing message.

@@ -1,6 +1,8 @@
 // The start page's WebGL2 preview, in a real (headless) Chromium against a
 // real server: proves the shared GLSL ES 3.00 shaders and the asset load in
 // a browser as they do in the native renderer.
+#include <unistd.h>
+
 #include <filesystem>
 
 #include <gtest/gtest.h>
@@ -14,12 +16,18 @@ namespace {
 
 class FacePreviewTest : public ::testing::Test {
  protected:
+  void TearDown() override { std::filesystem::remove_all(data_); }
   void SetUp() override {
     if (!std::filesystem::exists(test::kChromium)) GTEST_FAIL() << "chromium is missing: run deploy/install-deps.sh";
     ASSERT_GT(server_.port(), 0);
     url_ = "http://127.0.0.1:" + std::to_string(server_.port()) + "/";
   }
-  test::ServerProcess server_{test::bin("facewire-server")};
+  // Its own data directory: tests running at once never share one.
+  const std::string data_ = (std::filesystem::temp_directory_path() /
+                             ("fw-preview-" + std::to_string(::getpid()) + "-" + std::to_string(counter_++)))
+                                .string();
+  test::ServerProcess server_{test::bin("facewire-server"), "--no-demo-room --data " + data_};
+  static inline int counter_ = 0;
   std::string url_;
 };
 

@@ -191,9 +191,17 @@ test('a face told to look at the viewer shows its irises centred; at a neighbour
   const watcher = state.you;
   const webId = state.names.Web;
   const nativeId = state.names.Native;
+  // Each eye's median over five looks 200 ms apart: one look may catch a
+  // blink or a saccade under way.
   const eyes = async () => {
-    const [r0, r1, l0, l1] = await landmarks(page, webId, [36, 39, 42, 45]);
-    return [await irisOffset(page, [r0, r1]), await irisOffset(page, [l0, l1])];
+    const looks = [];
+    for (let i = 0; i < 5; ++i) {
+      if (i > 0) await page.waitForTimeout(200);
+      const [r0, r1, l0, l1] = await landmarks(page, webId, [36, 39, 42, 45]);
+      looks.push([await irisOffset(page, [r0, r1]), await irisOffset(page, [l0, l1])]);
+    }
+    const median = (values) => values.sort((a, b) => a - b)[Math.floor(values.length / 2)];
+    return [median(looks.map((l) => l[0])), median(looks.map((l) => l[1]))];
   };
   const look = (target) => pages.web.evaluate((t) => window.facewireRoom.client.lookAt(t, 20000), target);
   const settle = () => page.waitForTimeout(1500);  // the head (0.3 s) and the view's re-aim (0.35 s) settle
