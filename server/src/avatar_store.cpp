@@ -89,7 +89,7 @@ void AvatarStore::set_repreparer(AvatarRepreparer repreparer) {
 }
 
 std::optional<StoredAvatar> AvatarStore::put(std::span<const std::uint8_t> package, std::span<const std::uint8_t> photo,
-                                             std::string& error) {
+                                             std::string& error, Durability durability) {
   model::AvatarPackage parsed;
   if (!model::parse_avatar_package(package, parsed, error)) return std::nullopt;
   const std::string asset = content_id(package);
@@ -104,18 +104,19 @@ std::optional<StoredAvatar> AvatarStore::put(std::span<const std::uint8_t> packa
   // The photo goes first: a crash before the package leaves only a photo
   // that no id refers to yet.
   if (known.status == AvatarStatus::unknown && !photo.empty() &&
-      !write_file_durably(file(asset, ".photo"), photo, error))
+      !write_file_durably(file(asset, ".photo"), photo, error, durability))
     return std::nullopt;
-  return write_and_remember(asset, package, parsed, error);
+  return write_and_remember(asset, package, parsed, error, durability);
 }
 
 std::optional<StoredAvatar> AvatarStore::write_and_remember(const std::string& asset,
                                                             std::span<const std::uint8_t> package,
-                                                            const model::AvatarPackage& parsed, std::string& error) {
+                                                            const model::AvatarPackage& parsed, std::string& error,
+                                                            Durability durability) {
   std::vector<std::uint8_t> preview;
   if (!make_preview_package(parsed, preview, error) ||
-      !write_file_durably(file(asset, ".fwa"), package, error) ||
-      !write_file_durably(file(asset, ".preview.fwa"), preview, error))
+      !write_file_durably(file(asset, ".fwa"), package, error, durability) ||
+      !write_file_durably(file(asset, ".preview.fwa"), preview, error, durability))
     return std::nullopt;
   StoredAvatar stored{asset, content_id(package), share(std::vector<std::uint8_t>(package.begin(), package.end())),
                       share(std::move(preview))};

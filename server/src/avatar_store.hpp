@@ -24,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "durable_file.hpp"
 #include "metrics.hpp"
 
 namespace fw::model {
@@ -73,10 +74,13 @@ class AvatarStore {
   /// `photo` (the one the package was prepared from; may be empty) first.
   /// An avatar already stored under the package's id is returned as it is.
   /// nullopt and `error` (what is wrong with the package) if it is invalid.
+  /// `durability`: uploads wait for the disk; the demo faces, made again
+  /// at every start, need not (a dozen flushes slow a start on a busy disk).
   std::optional<StoredAvatar> put(std::span<const std::uint8_t> package, std::span<const std::uint8_t> photo,
-                                  std::string& error);
-  std::optional<StoredAvatar> put(std::span<const std::uint8_t> package, std::string& error) {
-    return put(package, {}, error);
+                                  std::string& error, Durability durability = Durability::synced);
+  std::optional<StoredAvatar> put(std::span<const std::uint8_t> package, std::string& error,
+                                  Durability durability = Durability::synced) {
+    return put(package, {}, error, durability);
   }
 
   /// The avatar with id `asset`. A stored package of another format or
@@ -101,7 +105,8 @@ class AvatarStore {
   AvatarLookup load(const std::string& asset);
   AvatarLookup out_of_date(const std::string& asset, const std::string& why);
   std::optional<StoredAvatar> write_and_remember(const std::string& asset, std::span<const std::uint8_t> package,
-                                                 const model::AvatarPackage& parsed, std::string& error);
+                                                 const model::AvatarPackage& parsed, std::string& error,
+                                                 Durability durability = Durability::synced);
   void refuse(const std::string& asset, const AvatarLookup& refusal);
 
   std::filesystem::path directory_;

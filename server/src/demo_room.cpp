@@ -15,7 +15,7 @@ bool make_demo_avatars(ServerContext& context, std::string& error) {
   }
   for (std::uint32_t i = 0; i < context.config.demo_faces; ++i) {
     const auto package = make_demo_package(i);
-    auto stored = context.store->put(package, error);
+    auto stored = context.store->put(package, error, Durability::unsynced);  // made again at every start
     if (!stored) {
       error = "the demo face " + std::to_string(i) + " is not a valid package: " + error;
       return false;

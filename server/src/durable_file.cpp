@@ -39,7 +39,9 @@ bool sync_directory(const std::filesystem::path& directory) {
 
 }  // namespace
 
-bool write_file_durably(const std::filesystem::path& path, std::span<const std::uint8_t> bytes, std::string& error) {
+bool write_file_durably(const std::filesystem::path& path, std::span<const std::uint8_t> bytes, std::string& error,
+                        Durability durability) {
+  const bool sync = durability == Durability::synced;
   const std::filesystem::path directory = path.parent_path();
   const std::string name = "." + path.filename().string() + std::string(kTemporaryMark) + "XXXXXX";
   std::string temporary = (directory / name).string();
@@ -56,7 +58,7 @@ bool write_file_durably(const std::filesystem::path& path, std::span<const std::
   };
   // mkstemp makes the file readable by the server's user alone, which
   // suits photos of people; it stays so.
-  const bool written = write_all(fd, bytes) && ::fsync(fd) == 0;
+  const bool written = write_all(fd, bytes) && (!sync || ::fsync(fd) == 0);
   if (!written) {
     ::close(fd);
     return fail("cannot write");
@@ -65,7 +67,7 @@ bool write_file_durably(const std::filesystem::path& path, std::span<const std::
   if (::rename(temporary.c_str(), path.c_str()) != 0) return fail("cannot rename into");
   // The new file is in place; only a power cut before this flush could undo
   // the rename (leaving the old file, whole), so a failure is not an error.
-  sync_directory(directory);
+  if (sync) sync_directory(directory);
   return true;
 }
 

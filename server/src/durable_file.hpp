@@ -14,9 +14,14 @@
 
 namespace fw::server {
 
+/// Whether a write waits for the disk: `unsynced` still renames into place
+/// whole, but a power cut may lose it; for files made again at every start.
+enum class Durability { synced, unsynced };
+
 /// Writes `bytes` to `path` as above; false and `error` (what failed, for
 /// the log) when it cannot, leaving `path` as it was and no temporary file.
-bool write_file_durably(const std::filesystem::path& path, std::span<const std::uint8_t> bytes, std::string& error);
+bool write_file_durably(const std::filesystem::path& path, std::span<const std::uint8_t> bytes, std::string& error,
+                        Durability durability = Durability::synced);
 
 /// Whether `name` (a file name, no directory) is one of the temporary files
 /// write_file_durably makes, or that model::write_file_atomically made.

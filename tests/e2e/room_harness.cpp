@@ -32,7 +32,7 @@ RoomServer::RoomServer(const std::string& extra_args) {
                                   " --chat-per-minute 100000 --seats-per-address 64 " +
                                   extra_args);
   // The second line names the TCP port: "facewire-server tcp on tcp://ADDR:PORT".
-  const std::string line = process_->port() > 0 ? process_->next_stdout_line(10000) : "";
+  const std::string line = process_->port() > 0 ? process_->next_stdout_line(30000) : "";
   const auto colon = line.rfind(':');
   if (line.find("tcp://") != std::string::npos && colon != std::string::npos) tcp_port_ = std::atoi(line.c_str() + colon + 1);
 }

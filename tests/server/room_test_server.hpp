@@ -34,7 +34,7 @@ class RunningServer {
                                                          std::to_string(counter_++))),
         process_(bin("facewire-server"),
                  "--tcp 127.0.0.1:0 --data " + data_.string() + " " + extra_args) {
-    const std::string line = process_.next_stdout_line(10000);
+    const std::string line = process_.next_stdout_line(30000);
     const auto colon = line.rfind(':');
     if (colon != std::string::npos) tcp_port_ = std::atoi(line.c_str() + colon + 1);
   }

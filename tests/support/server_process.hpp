@@ -34,7 +34,9 @@ class ServerProcess {
     }
     ::close(out[1]);
     stdout_fd_ = out[0];
-    const std::string line = read_line(10000);
+    // Generous: a loaded machine (CI runs tests side by side) may take
+    // seconds to make the demo faces and write them to disk.
+    const std::string line = read_line(30000);
     const auto colon = line.rfind(':');
     if (colon != std::string::npos) port_ = std::atoi(line.c_str() + colon + 1);
   }

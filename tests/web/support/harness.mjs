@@ -62,7 +62,7 @@ export async function startServer(args = []) {
   process.on('exit', kill);
 
   const firstLine = await new Promise((resolve, reject) => {
-    const timer = setTimeout(() => reject(new Error(`facewire-server did not start within 15 s:\n${stderr}`)), 15000);
+    const timer = setTimeout(() => reject(new Error(`facewire-server did not start within 30 s:\n${stderr}`)), 30000);
     child.once('exit', (code) => reject(new Error(`facewire-server exited with ${code}:\n${stderr}`)));
     createInterface({ input: child.stdout }).once('line', (line) => { clearTimeout(timer); resolve(line); });
   });
