@@ -26,9 +26,9 @@ bool invisible_or_control(UChar32 c) {
     default:
       break;
   }
-  // Blank-looking characters of other categories: fillers and the
-  // invisible operators.
-  return c == 0x115F || c == 0x1160 || c == 0x3164 || c == 0xFFA0 || c == 0x034F || u_hasBinaryProperty(c, UCHAR_DEFAULT_IGNORABLE_CODE_POINT);
+  // Blank-looking characters of other categories (the Hangul fillers, the
+  // combining grapheme joiner) are default-ignorable: shown as nothing.
+  return u_hasBinaryProperty(c, UCHAR_DEFAULT_IGNORABLE_CODE_POINT);
 }
 
 std::string hex(UChar32 c) {
@@ -40,7 +40,8 @@ std::string hex(UChar32 c) {
 }  // namespace
 
 std::string normalize_display_name(std::string_view name, std::string& normalized) {
-  const icu::UnicodeString text = icu::UnicodeString::fromUTF8(icu::StringPiece(name.data(), static_cast<int32_t>(name.size())));
+  const icu::UnicodeString text =
+      icu::UnicodeString::fromUTF8(icu::StringPiece(name.data(), static_cast<int32_t>(name.size())));
   UErrorCode status = U_ZERO_ERROR;
   const icu::Normalizer2* nfc = icu::Normalizer2::getNFCInstance(status);
   if (U_FAILURE(status)) return "names cannot be checked on this server (no Unicode data)";
@@ -50,7 +51,8 @@ std::string normalize_display_name(std::string_view name, std::string& normalize
   UChar32 previous = 0;
   for (int32_t i = 0; i < nfc_text.length(); i = nfc_text.moveIndex32(i, 1)) {
     const UChar32 c = nfc_text.char32At(i);
-    const UChar32 next = nfc_text.moveIndex32(i, 1) < nfc_text.length() ? nfc_text.char32At(nfc_text.moveIndex32(i, 1)) : 0;
+    const int32_t after = nfc_text.moveIndex32(i, 1);
+    const UChar32 next = after < nfc_text.length() ? nfc_text.char32At(after) : 0;
     const UChar32 before = previous;
     previous = c;
     // Emoji are written with two invisible characters: a variation
