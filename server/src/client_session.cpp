@@ -31,7 +31,7 @@ std::string wait_text(double seconds) { return std::to_string(static_cast<long>(
 
 ClientSession::ClientSession(ServerContext& context, net::any_io_executor executor, std::string peer)
     : context_(context), executor_(std::move(executor)), peer_(std::move(peer)), clock_(executor_),
-      resume_key_(random_key()), message_tokens_(limits::kMessageBurst), byte_tokens_(limits::kUpstreamByteBurst), chat_tokens_(limits::kChatBurst) {}
+      message_tokens_(limits::kMessageBurst), byte_tokens_(limits::kUpstreamByteBurst), chat_tokens_(limits::kChatBurst) {}
 
 ClientSession::~ClientSession() {
   if (counted_) context_.metrics.connections.fetch_sub(1);
@@ -249,9 +249,12 @@ void ClientSession::handle_hello(std::span<const std::uint8_t> message) {
   if (!opening.room) return refuse(opening.code, opening.refusal, opening.abuse);
   room_ = std::move(opening.room);
   state_ = State::joining;
-  JoinRequest request{hello.name, *avatar.avatar, stream_settings_for(hello), shared_from_this()};
-  request.resume = resume_key_;
-  request.address = address_key(peer_);
+  JoinRequest request{.name = hello.name,
+                      .avatar = *avatar.avatar,
+                      .stream = stream_settings_for(hello),
+                      .connection = shared_from_this(),
+                      .resume = resume_key_,
+                      .address = address_key(peer_)};
   room_->join(std::move(request));
 }
 
@@ -275,7 +278,6 @@ std::optional<std::pair<CloseCode, std::string>> ClientSession::refusal_of(const
   if (context_.draining.load()) return {{CloseCode::shutting_down, "the server is shutting down; try again soon"}};
   if (!is_valid_room_name(hello.room))
     return {{CloseCode::bad_request, "room names are 1 to 64 characters of A-Z a-z 0-9 _ - ."}};
-  if (hello.name.empty()) return {{CloseCode::bad_request, "a display name is needed (1 to 32 bytes)"}};
   if (context_.config.auth_secret.empty()) return std::nullopt;
   const auto now =
       std::chrono::duration_cast<std::chrono::seconds>(std::chrono::system_clock::now().time_since_epoch()).count();

@@ -19,6 +19,7 @@
 #include "fw/codec/messages.hpp"
 #include "abuse_log.hpp"
 #include "room_connection.hpp"
+#include "server_keys.hpp"
 #include "server_context.hpp"
 #include "subscriber_stream.hpp"
 
@@ -98,7 +99,7 @@ class ClientSession : public RoomConnection, public std::enable_shared_from_this
   State state_ = State::greeting;
   std::shared_ptr<Room> room_;
   std::uint32_t avatar_ = 0;
-  std::string resume_key_;  ///< in the welcome: a reconnection that shows it takes over held_token_
+  std::string resume_key_ = random_key();  ///< in the welcome: a reconnection that shows it takes over held_token_
   std::string held_token_;  ///< the join token this connection holds (TokenHolders)
   bool seated_ = false;  ///< the room seated avatar_
   std::vector<std::vector<std::uint8_t>> early_messages_;  ///< sent between hello and welcome

@@ -1,6 +1,5 @@
 #include "join_token.hpp"
 
-#include <array>
 
 #include <nlohmann/json.hpp>
 #include <openssl/crypto.h>

@@ -31,20 +31,20 @@ std::shared_ptr<Room> RoomRegistry::find_or_create(const std::string& name, bool
 
 RoomOpening RoomRegistry::open_for(const std::string& name, const std::string& address) {
   std::lock_guard lock(mutex_);
-  if (auto it = rooms_.find(name); it != rooms_.end()) return {it->second};
-  if (closed_) return {nullptr, codec::CloseCode::shutting_down, "the server is shutting down; try again soon"};
+  if (auto it = rooms_.find(name); it != rooms_.end()) return RoomOpening::opened(it->second);
+  if (closed_) return RoomOpening::refused(codec::CloseCode::shutting_down, "the server is shutting down; try again soon");
   if (rooms_.size() >= context_.config.max_rooms)
-    return {nullptr, codec::CloseCode::server_full, "the server holds its maximum number of rooms; try later"};
+    return RoomOpening::refused(codec::CloseCode::server_full, "the server holds its maximum number of rooms; try later");
   if (const auto wait = context_.addresses->take(AddressRate::room_creation, address)) {
-    return {nullptr, codec::CloseCode::rate_limited,
-            "too many new rooms from your address; join one that exists, or try again in " +
-                std::to_string(static_cast<long>(std::ceil(*wait))) + " s",
-            Abuse::room_creation};
+    return RoomOpening::refused(codec::CloseCode::rate_limited,
+                                "too many new rooms from your address; join one that exists, or try again in " +
+                                    std::to_string(static_cast<long>(std::ceil(*wait))) + " s",
+                                Abuse::room_creation);
   }
   auto room = std::make_shared<Room>(context_, name, false, next_seed_++);
   rooms_.emplace(name, room);
   room->start();
-  return {room};
+  return RoomOpening::opened(room);
 }
 
 void RoomRegistry::remove_if_empty(const std::shared_ptr<Room>& room) {

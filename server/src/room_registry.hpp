@@ -23,6 +23,19 @@ struct RoomOpening {
   codec::CloseCode code = codec::CloseCode::normal;
   std::string refusal;
   std::optional<Abuse> abuse;  ///< how the refusal is counted, if it is abuse
+
+  static RoomOpening opened(std::shared_ptr<Room> room) {
+    RoomOpening opening;
+    opening.room = std::move(room);
+    return opening;
+  }
+  static RoomOpening refused(codec::CloseCode code, std::string why, std::optional<Abuse> abuse = std::nullopt) {
+    RoomOpening opening;
+    opening.code = code;
+    opening.refusal = std::move(why);
+    opening.abuse = abuse;
+    return opening;
+  }
 };
 
 struct RoomSummary {

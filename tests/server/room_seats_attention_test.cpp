@@ -102,7 +102,9 @@ TEST(RoomAttention, EveryoneHearsEveryFacesTargetAndThenOnlyChanges) {
   for (std::size_t i = 0; i < ann->attention.size(); ++i)
     for (const auto& entry : ann->attention[i].entries) {
       const auto it = last.find(entry.avatar);
-      if (i > 0 && it != last.end()) EXPECT_FALSE(it->second == entry) << "message " << i << " repeats avatar " << entry.avatar;
+      if (i > 0 && it != last.end()) {
+        EXPECT_FALSE(it->second == entry) << "message " << i << " repeats avatar " << entry.avatar;
+      }
       last[entry.avatar] = entry;
     }
   EXPECT_TRUE(ann->errors.empty()) << ann->errors.front();
