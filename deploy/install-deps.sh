@@ -2,7 +2,16 @@
 # Installs every Debian 12 package facewire needs to build, run and test.
 # Idempotent: packages already present are skipped, and `apt-get update` runs
 # at most once, only when something is missing.
+#   --build-only  only what building needs, not what the test suites run
+#                 (deploy/Dockerfile's build stage)
 set -euo pipefail
+
+build_only=false
+case "${1:-}" in
+  "") ;;
+  --build-only) build_only=true ;;
+  *) echo "install-deps: unknown option '$1' (the one option is --build-only)" >&2; exit 2 ;;
+esac
 
 # Build toolchain and the C++ libraries the modules link.
 build_packages=(
@@ -30,13 +39,15 @@ test_packages=(
   ffmpeg                                      # recorded room videos
   redis-server                                # cluster tests against real Redis
   python3
+  python3-yaml                                # tests/deploy: the compose and Kubernetes files parse
 )
+if $build_only; then test_packages=(); fi
 
 missing=()
 # Node.js may come from another source than Debian (with its own npm): only
 # ask Debian for it when the commands are absent.
 command -v node >/dev/null || missing+=(nodejs)
-command -v npm >/dev/null || missing+=(npm)
+$build_only || command -v npm >/dev/null || missing+=(npm)
 for pkg in "${build_packages[@]}" "${test_packages[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed"; then
     missing+=("$pkg")
