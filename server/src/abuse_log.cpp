@@ -10,7 +10,8 @@ std::string_view abuse_name(Abuse kind) {
       "http_bad_request", "protocol_violation",       "message_rate",          "join_rate",
       "chat_rate",        "upload_rate",              "upload_bytes",          "photo_queue_full",
       "room_creation",    "room_seats",               "idle_person",           "not_reading",
-      "unauthorized",     "token_in_use",             "face_not_yours",        "bad_name"};
+      "unauthorized",     "token_in_use",             "face_not_yours",        "bad_name",
+      "bad_forwarded_header"};
   return kNames[static_cast<std::size_t>(kind)];
 }
 

@@ -33,8 +33,9 @@ enum class Abuse {
   token_in_use,              ///< a token another live session holds
   face_not_yours,            ///< a hello naming an asset without its secret
   bad_name,                  ///< a display name with control, bidi or zero-width characters
+  bad_forwarded_header,      ///< a trusted proxy's X-Forwarded-For or Forwarded that names no address
 };
-inline constexpr std::size_t kAbuseKinds = 20;
+inline constexpr std::size_t kAbuseKinds = 21;
 
 /// The kind's name in logs and in /metrics' label.
 std::string_view abuse_name(Abuse kind);

@@ -19,4 +19,15 @@ Admission ConnectionAdmission::admit(const std::string& address_key) {
   return admission;
 }
 
+Admission ConnectionAdmission::admit_from_trusted_proxy() {
+  Admission admission;
+  if (total_->fetch_add(1) >= max_total_) {
+    total_->fetch_sub(1);
+    admission.refusal = Abuse::connection_limit;
+    return admission;
+  }
+  admission.ticket.emplace(ConnectionSlot(), total_);
+  return admission;
+}
+
 }  // namespace fw::server

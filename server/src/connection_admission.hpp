@@ -5,7 +5,9 @@
 // and however far it got: still sending its first request, upgraded to a
 // WebSocket, greeting or in a room. The session that carries the connection
 // owns its ticket (HttpSession hands it to the WebSocketSession it upgrades
-// to); the counts drop when the ticket goes.
+// to); the counts drop when the ticket goes. A connection from a trusted
+// proxy (--trusted-proxy) counts against the client its request's header
+// names instead, from that header on.
 #include <atomic>
 #include <cstddef>
 #include <memory>
@@ -36,8 +38,23 @@ class ConnectionTicket {
   ConnectionTicket& operator=(const ConnectionTicket&) = delete;
   ~ConnectionTicket() { release_total(); }
 
-  /// The address key the connection counts against ("" for an empty ticket).
+  /// The address key the connection counts against ("" for an empty ticket,
+  /// and for a trusted proxy's connection between its requests).
   const std::string& address() const { return address_.key(); }
+
+  /// Counts the connection against `key` instead (the client a trusted
+  /// proxy forwards, known once a request's header is read); false, and
+  /// the ticket as it was, when that address already holds its share.
+  bool count_against(AddressLimits& limits, const std::string& key) {
+    if (key == address_.key()) return true;
+    if (!limits.open_connection(key)) return false;
+    address_ = ConnectionSlot(limits, key);
+    return true;
+  }
+  /// Counts the connection against no address any more (only in the total):
+  /// a trusted proxy's connection between two requests, which may be two
+  /// different clients'.
+  void release_address() { address_ = ConnectionSlot(); }
 
  private:
   void release_total() {
@@ -63,6 +80,10 @@ class ConnectionAdmission {
   /// `max_total` connections (Abuse::connection_limit) or the address its
   /// share (Abuse::address_connection_limit).
   Admission admit(const std::string& address_key);
+  /// A ticket for a connection from a trusted proxy: counted in the total
+  /// only, since the proxy carries many people's connections; whom it
+  /// carries is counted once a request's header says (count_against()).
+  Admission admit_from_trusted_proxy();
 
   std::size_t open() const { return total_->load(); }
   std::size_t max_total() const { return max_total_; }

@@ -6,11 +6,14 @@
 #include <spdlog/spdlog.h>
 
 #include "api_access.hpp"
+#include "connection_refusal.hpp"
 #include "http_responses.hpp"
 #include "log_text.hpp"
+#include "peer_address.hpp"
 #include "photo_preparation.hpp"
 #include "rest_api.hpp"
 #include "server_limits.hpp"
+#include "trusted_proxies.hpp"
 #include "websocket_session.hpp"
 
 namespace fw::server {
@@ -26,6 +29,18 @@ std::string loggable_target(const Request& request) {
   return printable({request.target().data(), request.target().size()}, 80);
 }
 
+/// Every line of the headers a proxy names the client in.
+ForwardingHeaders forwarding_headers(const http::fields& fields) {
+  ForwardingHeaders headers;
+  const auto add_lines = [&fields](const char* name, std::vector<std::string_view>& lines) {
+    const auto [first, last] = fields.equal_range(name);
+    for (auto field = first; field != last; ++field) lines.emplace_back(field->value().data(), field->value().size());
+  };
+  add_lines("X-Forwarded-For", headers.x_forwarded_for);
+  add_lines("Forwarded", headers.forwarded);
+  return headers;
+}
+
 }  // namespace
 
 HttpSession::HttpSession(ServerContext& context, PhotoPreparation& photos, net::ip::tcp::socket&& socket,
@@ -33,7 +48,9 @@ HttpSession::HttpSession(ServerContext& context, PhotoPreparation& photos, net::
     : context_(context), photos_(photos), stream_(std::move(socket)),
       buffer_(limits::kMaxHeaderBytes + limits::kMaxBodyBytes), ticket_(std::move(ticket)) {
   beast::error_code ec;
-  peer_address_ = stream_.socket().remote_endpoint(ec).address().to_string();
+  socket_peer_ = stream_.socket().remote_endpoint(ec).address();
+  via_proxy_ = context_.config.trusted_proxies.contains(socket_peer_);
+  peer_address_ = socket_peer_.to_string();
   context_.metrics.http_connections.fetch_add(1);
 }
 
@@ -51,6 +68,12 @@ void HttpSession::do_read() {
   // larger one (Beast checks Content-Length while parsing it), on_header
   // then holds other requests to theirs.
   parser_->body_limit(std::max<std::uint64_t>(limits::kMaxBodyBytes, context_.config.max_upload_bytes));
+  if (via_proxy_) {
+    // A proxy's connection between requests is nobody's: the next request
+    // may be another client's (a proxy reuses its connections to us).
+    ticket_.release_address();
+    peer_address_ = socket_peer_.to_string();
+  }
   if (first_request_ || buffer_.size() > 0) return read_header();
   // A keep-alive connection may idle a while before its next request; the
   // header's deadline starts with the request's first byte.
@@ -118,8 +141,29 @@ bool HttpSession::answer_read_error(beast::error_code ec) {
   return false;
 }
 
+bool HttpSession::take_forwarded_client() {
+  if (!via_proxy_) return true;
+  const ClientAddress client =
+      client_address(context_.config.trusted_proxies, socket_peer_, forwarding_headers(parser_->get()));
+  peer_address_ = client.address.to_string();
+  if (client.source == ClientAddress::Source::malformed)
+    context_.abuse.note(Abuse::bad_forwarded_header, peer_address_,
+                        "from a trusted proxy: " + client.problem + "; counted as the proxy's own request");
+  if (ticket_.count_against(*context_.addresses, address_key(client.address))) return true;
+  const std::size_t per_address = context_.addresses->limits().connections_per_address;
+  context_.abuse.note(Abuse::address_connection_limit, peer_address_,
+                      "request through a proxy refused: the address holds " + std::to_string(per_address) +
+                          " connections already");
+  Response refusal = error_response(http::status::too_many_requests, parser_->get().version(),
+                                    refusal_reason(Abuse::address_connection_limit, per_address));
+  refusal.set(http::field::retry_after, "10");
+  send(std::move(refusal));
+  return false;
+}
+
 void HttpSession::on_header(beast::error_code ec, std::size_t) {
   if (answer_read_error(ec)) return;
+  if (!take_forwarded_client()) return;
   const auto& header = parser_->get();
   const std::string_view target(header.target().data(), header.target().size());
   upload_ = header.method() == http::verb::post && target.substr(0, target.find('?')) == "/api/avatars";

@@ -3,7 +3,9 @@
 // (static content, the API, uploads) and keeps the connection alive while
 // the peer wants; hands the connection, and its ConnectionTicket, to a
 // WebSocketSession on an upgrade. A request's header must arrive within
-// limits::kHeaderTimeout, however slowly its bytes come.
+// limits::kHeaderTimeout, however slowly its bytes come. Behind a trusted
+// proxy (--trusted-proxy), each request's forwarding header names the
+// client that its limits, log lines and room joins see.
 #include <memory>
 #include <optional>
 
@@ -34,6 +36,10 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
   void on_header(boost::beast::error_code ec, std::size_t bytes);
   void on_read(boost::beast::error_code ec, std::size_t bytes);
   bool answer_read_error(boost::beast::error_code ec);
+  /// From a trusted proxy: takes the client the request's header names as
+  /// the peer, and counts the connection against it; false when that
+  /// address holds its share of connections (the refusal is on its way).
+  bool take_forwarded_client();
   /// Counts and logs (AbuseLog) a 4xx answer that says the peer erred.
   void note_bad_request(unsigned status, const std::string& what);
   /// The same for an answer to a whole request (404, 405...).
@@ -51,6 +57,11 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
   std::optional<boost::beast::http::request_parser<boost::beast::http::string_body>> parser_;
   std::shared_ptr<void> response_;  // kept alive until its write completes
   ConnectionTicket ticket_;
+  /// The TCP peer, and whether it is a trusted proxy.
+  boost::asio::ip::address socket_peer_;
+  bool via_proxy_ = false;
+  /// Whom limits and log lines count: the TCP peer, or the client a trusted
+  /// proxy forwards for the request under way.
   std::string peer_address_;
   /// What the connection waits for: the next request (a keep-alive idle),
   /// a header (under its deadline), or a body.

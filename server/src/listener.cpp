@@ -14,10 +14,10 @@ namespace net = boost::asio;
 namespace beast = boost::beast;
 
 Listener::Listener(ServerContext& context, net::io_context& ioc, const net::ip::tcp::endpoint& endpoint,
-                   SessionFactory factory, Refusal refusal, beast::error_code& ec)
+                   SessionFactory factory, Refusal refusal, beast::error_code& ec, const TrustedProxies* proxies)
     : context_(context), ioc_(ioc), acceptor_(net::make_strand(ioc)), pause_(acceptor_.get_executor()),
       factory_(std::move(factory)), refusal_(std::move(refusal)),
-      admission_(*context.addresses, limits::kMaxConnections) {
+      admission_(*context.addresses, limits::kMaxConnections), proxies_(proxies) {
   if (acceptor_.open(endpoint.protocol(), ec)) return;
   if (acceptor_.set_option(net::socket_base::reuse_address(true), ec)) return;
   if (acceptor_.bind(endpoint, ec)) return;
@@ -61,8 +61,11 @@ void Listener::admit(net::ip::tcp::socket socket) {
   beast::error_code ec;
   const auto remote = socket.remote_endpoint(ec);
   if (ec) return;  // already gone; the socket closes here
-  const std::string key = address_key(remote.address());
-  Admission admission = admission_.admit(key);
+  // A trusted proxy carries many people's connections: its own address is
+  // no one's share, and the session counts each request's client instead.
+  const bool proxied = proxies_ && proxies_->contains(remote.address());
+  Admission admission =
+      proxied ? admission_.admit_from_trusted_proxy() : admission_.admit(address_key(remote.address()));
   if (!admission.ticket) {
     refuse(socket, admission.refusal);
     const std::string what =

@@ -5,7 +5,9 @@
 // past either limit is sent a short refusal and closed at once. When the
 // process runs out of file descriptors, the listener refuses what waits
 // with a descriptor it keeps in reserve and pauses before accepting again,
-// rather than spin on accept().
+// rather than spin on accept(). On the HTTP port, a connection from a
+// trusted proxy (--trusted-proxy) is not held to the per-address share at
+// accept: the session counts the client its requests name instead.
 #include <chrono>
 #include <cstdint>
 #include <functional>
@@ -20,6 +22,7 @@
 #include "connection_admission.hpp"
 #include "descriptor_reserve.hpp"
 #include "server_context.hpp"
+#include "trusted_proxies.hpp"
 
 namespace fw::server {
 
@@ -33,8 +36,12 @@ class Listener : public std::enable_shared_from_this<Listener> {
   using Refusal = std::function<std::string(Abuse why, std::size_t per_address)>;
 
   /// Opens, binds and listens; `ec` says why not (port in use, no permission).
+  /// `proxies`: peers whose sessions read the client's address from their
+  /// requests (the HTTP port's), exempt from the per-address share at accept;
+  /// null where nothing forwards addresses (the TCP port).
   Listener(ServerContext& context, boost::asio::io_context& ioc, const boost::asio::ip::tcp::endpoint& endpoint,
-           SessionFactory factory, Refusal refusal, boost::beast::error_code& ec);
+           SessionFactory factory, Refusal refusal, boost::beast::error_code& ec,
+           const TrustedProxies* proxies = nullptr);
   void run();
   void stop();
   /// The bound address, with the real port when 0 was asked for.
@@ -63,6 +70,7 @@ class Listener : public std::enable_shared_from_this<Listener> {
   SessionFactory factory_;
   Refusal refusal_;
   ConnectionAdmission admission_;
+  const TrustedProxies* proxies_;
   DescriptorReserve reserve_;
   // At most one log line a second about descriptors (AbuseLog counts every refusal).
   std::chrono::steady_clock::time_point exhaustion_logged_{};

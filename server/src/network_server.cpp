@@ -36,16 +36,19 @@ int cannot_start(const std::string& why) {
 }
 
 /// A listener on `address` (the value of `flag`), accepting; null and `error` if it cannot listen.
+/// `proxies`: whose connections its sessions count by the client they forward (Listener).
 std::shared_ptr<Listener> listen(net::io_context& ioc, ServerContext& context, const std::string& flag,
                                  const std::string& address, Listener::SessionFactory factory,
-                                 Listener::Refusal refusal, std::string& error) {
+                                 Listener::Refusal refusal, std::string& error,
+                                 const TrustedProxies* proxies = nullptr) {
   const auto endpoint = parse_endpoint(address, error);
   if (!endpoint) {
     error = flag + " " + error;
     return nullptr;
   }
   boost::beast::error_code ec;
-  auto listener = std::make_shared<Listener>(context, ioc, *endpoint, std::move(factory), std::move(refusal), ec);
+  auto listener =
+      std::make_shared<Listener>(context, ioc, *endpoint, std::move(factory), std::move(refusal), ec, proxies);
   if (ec) {
     error = "cannot listen on " + address + ": " + ec.message() +
             " (is another server using the port? choose another with " + flag + " ADDR:PORT)";
@@ -76,7 +79,9 @@ bool open_listeners(net::io_context& ioc, ServerContext& context, PhotoPreparati
     std::string peer = socket.remote_endpoint(ec).address().to_string();
     std::make_shared<TcpSession>(context, std::move(socket), std::move(peer), std::move(ticket))->run();
   };
-  listeners.http = listen(ioc, context, "--http", context.config.http, http_session, http_refusal, error);
+  // Only HTTP requests name a forwarded client; the TCP port has no headers.
+  listeners.http = listen(ioc, context, "--http", context.config.http, http_session, http_refusal, error,
+                          &context.config.trusted_proxies);
   if (!listeners.http) return false;
   if (context.config.tcp.empty()) return true;
   listeners.tcp = listen(ioc, context, "--tcp", context.config.tcp, tcp_session, tcp_refusal, error);

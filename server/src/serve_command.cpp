@@ -3,6 +3,9 @@
 #include <cstdlib>
 #include <memory>
 #include <string>
+#include <vector>
+
+#include <spdlog/spdlog.h>
 
 #include "endpoint.hpp"
 #include "logging.hpp"
@@ -108,6 +111,28 @@ void add_address_limit_flags(CLI::App& cmd, ServerConfig& config) {
       ->capture_default_str();
 }
 
+/// --trusted-proxy: repeatable, and comma-separated in the environment and
+/// the config file; each range is checked while the command line is read.
+void add_proxy_flags(CLI::App& cmd, ServerConfig& config) {
+  const CLI::Validator range_check(
+      [](std::string& text) -> std::string {
+        std::string error;
+        return parse_address_range(text, error) ? std::string() : error;
+      },
+      "CIDR");
+  cmd.add_option_function<std::vector<std::string>>(
+         "--trusted-proxy",
+         [&config](const std::vector<std::string>& ranges) {
+           std::string error;
+           for (const auto& range : ranges) config.trusted_proxies.add(range, error);  // checked above
+         },
+         "a proxy in front of the server, ADDR/PREFIX (repeatable): connections from it count against the "
+         "address its X-Forwarded-For names (default: none)")
+      ->envname("FACEWIRE_TRUSTED_PROXY")
+      ->delimiter(',')
+      ->check(range_check);
+}
+
 void add_simulation_flags(CLI::App& cmd, ServerConfig& config) {
   cmd.add_flag("!--no-physics", config.physics, "drive faces by behavior only (no physics face)");
   cmd.add_flag("!--physics-always-awake", config.physics_sleeps, "faces at rest keep stepping (for benchmarks)");
@@ -133,6 +158,14 @@ void add_operation_flags(CLI::App& cmd, ServerConfig& config) {
   cmd.add_flag("--log-json", config.log_json, "log JSON lines")->envname("FACEWIRE_LOG_JSON");
 }
 
+/// Says whose forwarding headers count, so that an operator sees a proxy missing from the list.
+void log_trusted_proxies(const TrustedProxies& proxies) {
+  if (proxies.empty()) return;
+  std::string ranges;
+  for (const auto& range : proxies.ranges()) ranges += (ranges.empty() ? "" : ", ") + range.to_string();
+  spdlog::info("client addresses: X-Forwarded-For (or Forwarded) of connections from {}", ranges);
+}
+
 }  // namespace
 
 CLI::App* add_serve_command(CLI::App& app) {
@@ -148,10 +181,12 @@ CLI::App* add_serve_command(CLI::App& app) {
   add_room_flags(*cmd, *config);
   add_limit_flags(*cmd, *config);
   add_address_limit_flags(*cmd, *config);
+  add_proxy_flags(*cmd, *config);
   add_simulation_flags(*cmd, *config);
   add_operation_flags(*cmd, *config);
   cmd->callback([config] {
     configure_logging(config->log_level, config->log_json);
+    log_trusted_proxies(config->trusted_proxies);
     std::exit(run_network_server(*config));
   });
   return cmd;

@@ -8,6 +8,7 @@
 
 #include "abuse_limits.hpp"
 #include "server_limits.hpp"
+#include "trusted_proxies.hpp"
 
 namespace fw::server {
 
@@ -53,6 +54,9 @@ struct ServerConfig {
   std::size_t photo_threads = 2;
   SessionTimeouts timeouts;
   AbuseLimits abuse;             ///< per address and per room
+  /// Peers whose X-Forwarded-For (or Forwarded) names the client that the
+  /// per-address limits count (--trusted-proxy); empty: every peer is the client.
+  TrustedProxies trusted_proxies;
   /// Avatar ids a room hands out (1 .. avatar_id_space - 1: the codec's 21
   /// bits), and how long an id rests after its avatar left before it is
   /// handed out again. Not flags; tests shrink them.

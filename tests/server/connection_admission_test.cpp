@@ -1,6 +1,8 @@
 // Connection admission and refusals without sockets: the counts a ticket
 // holds, through a hand-over (an upgrade) and back, and the bytes a
 // refused connection is sent.
+#include <vector>
+
 #include <gtest/gtest.h>
 
 #include "connection_admission.hpp"
@@ -57,6 +59,35 @@ TEST(ConnectionAdmission, ATicketHandedOnKeepsCountingUntilTheLastOwnerLetsGo) {
   }
   EXPECT_EQ(addresses.connections("10.0.0.1"), 0u);
   EXPECT_EQ(admission.open(), 0u);
+}
+
+// A trusted proxy's connection counts in the total only; each request's
+// client is counted once its header names it, and between requests nobody.
+TEST(ConnectionAdmission, AProxysConnectionCountsAgainstTheClientItForwards) {
+  AddressLimits addresses(limits_of(2));
+  ConnectionAdmission admission(addresses, 100);
+  std::vector<ConnectionTicket> proxied;
+  for (int i = 0; i < 5; ++i) {
+    auto admitted = admission.admit_from_trusted_proxy();
+    ASSERT_TRUE(admitted.ticket) << "a proxy is not held to one address's share (2): " << i;
+    EXPECT_EQ(admitted.ticket->address(), "");
+    proxied.push_back(std::move(*admitted.ticket));
+  }
+  EXPECT_EQ(admission.open(), 5u);
+  EXPECT_TRUE(proxied[0].count_against(addresses, "203.0.113.1"));
+  EXPECT_TRUE(proxied[1].count_against(addresses, "203.0.113.1"));
+  EXPECT_FALSE(proxied[2].count_against(addresses, "203.0.113.1")) << "the client holds its share";
+  EXPECT_EQ(proxied[2].address(), "");
+  EXPECT_TRUE(proxied[2].count_against(addresses, "203.0.113.2")) << "another client has its own";
+  EXPECT_TRUE(proxied[0].count_against(addresses, "203.0.113.1")) << "the same client again: nothing more";
+  EXPECT_EQ(addresses.connections("203.0.113.1"), 2u);
+  proxied[0].release_address();  // the request answered; the connection idles
+  EXPECT_EQ(addresses.connections("203.0.113.1"), 1u);
+  EXPECT_TRUE(proxied[1].count_against(addresses, "203.0.113.3")) << "the next request is another client's";
+  EXPECT_EQ(addresses.connections("203.0.113.1"), 0u);
+  proxied.clear();
+  EXPECT_EQ(admission.open(), 0u);
+  EXPECT_EQ(addresses.connections("203.0.113.2") + addresses.connections("203.0.113.3"), 0u);
 }
 
 TEST(ConnectionRefusal, HttpSaysWhyAndWhenToComeBack) {

@@ -27,7 +27,9 @@ class RoomTestClient : public RoomInbox {
 
   /// `from`: the local address to connect from (127.0.0.2 and up stand in
   /// for other clients' addresses); empty: the kernel's choice, 127.0.0.1.
-  RoomTestClient(Transport transport, int port, const std::string& from = "")
+  /// `x_forwarded_for`: that header on the WebSocket upgrade (as a proxy
+  /// would send it); empty: none.
+  RoomTestClient(Transport transport, int port, const std::string& from = "", const std::string& x_forwarded_for = "")
       : transport_(transport), socket_(ioc_), ws_(ioc_) {
     namespace net = boost::asio;
     const net::ip::tcp::endpoint endpoint(net::ip::make_address("127.0.0.1"), static_cast<unsigned short>(port));
@@ -40,6 +42,11 @@ class RoomTestClient : public RoomInbox {
     if (!ec) socket.connect(endpoint, ec);
     if (!ec && transport_ == Transport::websocket) {
       ws_.binary(true);
+      if (!x_forwarded_for.empty())
+        ws_.set_option(boost::beast::websocket::stream_base::decorator(
+            [x_forwarded_for](boost::beast::websocket::request_type& request) {
+              request.set("X-Forwarded-For", x_forwarded_for);
+            }));
       ws_.handshake("127.0.0.1", "/ws", ec);
     }
     connected_ = !ec;
