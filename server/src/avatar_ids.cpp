@@ -40,4 +40,11 @@ void AvatarIds::give_back(Id id, std::uint64_t now_tick) {
   given_back_.emplace_back(now_tick, id);
 }
 
+bool AvatarIds::claim(Id id) {
+  if (id == 0 || id >= space_ || in_use_.count(id)) return false;
+  resting_.erase(id);  // its rest is over: it is the same avatar's again
+  in_use_.insert(id);
+  return true;
+}
+
 }  // namespace fw::server

@@ -30,6 +30,9 @@ class AvatarIds {
   Id take(std::uint64_t now_tick);
   /// `id`'s avatar left at `now_tick`: the id rests, then is free again.
   void give_back(Id id, std::uint64_t now_tick);
+  /// Takes `id` itself (a room restored on another server keeps its
+  /// avatars' ids); false if it is in use or outside the space.
+  bool claim(Id id);
   /// `id` was taken but never shown to anyone: free at once.
   void cancel(Id id) { in_use_.erase(id); }
 

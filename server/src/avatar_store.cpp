@@ -106,7 +106,30 @@ std::optional<StoredAvatar> AvatarStore::put(std::span<const std::uint8_t> packa
   if (known.status == AvatarStatus::unknown && !photo.empty() &&
       !write_file_durably(file(asset, ".photo"), photo, error, durability))
     return std::nullopt;
-  return write_and_remember(asset, package, parsed, error, durability);
+  auto stored = write_and_remember(asset, package, parsed, error, durability);
+  if (stored && replica_.share) replica_.share(asset, package, photo);
+  return stored;
+}
+
+std::vector<std::string> AvatarStore::stored_assets() const {
+  std::vector<std::string> assets;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(directory_, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.size() == 36 && name.ends_with(".fwa") && is_asset_id(name.substr(0, 32))) assets.push_back(name.substr(0, 32));
+  }
+  return assets;
+}
+
+bool AvatarStore::read_files(const std::string& asset, std::vector<std::uint8_t>& package,
+                             std::vector<std::uint8_t>& photo) const {
+  std::string error;
+  if (!is_asset_id(asset) || !model::read_file(file(asset, ".fwa"), model::kMaxPackageBytes, package, error))
+    return false;
+  std::error_code ec;
+  if (std::filesystem::exists(file(asset, ".photo"), ec))
+    model::read_file(file(asset, ".photo"), kMaxStoredPhotoBytes, photo, error);
+  return true;
 }
 
 std::optional<StoredAvatar> AvatarStore::write_and_remember(const std::string& asset,
@@ -139,7 +162,7 @@ AvatarLookup AvatarStore::lookup(const std::string& asset) {
 
 AvatarLookup AvatarStore::load(const std::string& asset) {
   std::error_code ec;
-  if (!std::filesystem::exists(file(asset, ".fwa"), ec)) return {};
+  if (!std::filesystem::exists(file(asset, ".fwa"), ec) && !fetch_from_replica(asset)) return {};
   std::vector<std::uint8_t> full, preview;
   std::string error;
   model::AvatarPackage parsed;
@@ -157,6 +180,19 @@ AvatarLookup AvatarStore::load(const std::string& asset) {
   StoredAvatar stored{asset, content_id(full), share(std::move(full)), share(std::move(preview))};
   std::lock_guard lock(mutex_);
   return {AvatarStatus::found, cache_.emplace(asset, stored).first->second, {}};
+}
+
+bool AvatarStore::fetch_from_replica(const std::string& asset) {
+  // Uploaded on another node of the cluster: kept here from now on.
+  std::vector<std::uint8_t> package, photo;
+  if (!replica_.fetch || !replica_.fetch(asset, package, photo)) return false;
+  std::string error;
+  if ((!photo.empty() && !write_file_durably(file(asset, ".photo"), photo, error, Durability::synced)) ||
+      !write_file_durably(file(asset, ".fwa"), package, error, Durability::synced)) {
+    spdlog::warn("avatar {} from the cluster could not be kept here: {}", asset, error);
+    return false;
+  }
+  return true;
 }
 
 AvatarLookup AvatarStore::out_of_date(const std::string& asset, const std::string& why) {
@@ -190,6 +226,8 @@ bool AvatarStore::replace(const std::string& asset, std::span<const std::uint8_t
   model::AvatarPackage parsed;
   if (model::parse_avatar_package(package, parsed, error) && write_and_remember(asset, package, parsed, error)) {
     spdlog::info("avatar {} prepared again from its photo ({} bytes)", asset, package.size());
+    std::vector<std::uint8_t> stored_package, photo;
+    if (replica_.share && read_files(asset, stored_package, photo)) replica_.share(asset, package, photo);
     metrics_.repreparations.fetch_add(1);
     return true;
   }

@@ -65,6 +65,17 @@ struct AvatarLookup {
 /// thread, and ends with AvatarStore::replace or AvatarStore::preparation_failed.
 using AvatarRepreparer = std::function<void(const std::string& asset, std::vector<std::uint8_t> photo)>;
 
+/// The cluster's copy of every avatar (cluster mode): `share` is handed
+/// each avatar this node stores (its package and photo) before the store
+/// answers, and `fetch` is asked for one this node does not have.
+struct AvatarReplica {
+  std::function<void(const std::string& asset, std::span<const std::uint8_t> package,
+                     std::span<const std::uint8_t> photo)>
+      share;
+  std::function<bool(const std::string& asset, std::vector<std::uint8_t>& package, std::vector<std::uint8_t>& photo)>
+      fetch;
+};
+
 class AvatarStore {
  public:
   /// Creates the directory if needed; `error` if it cannot.
@@ -93,6 +104,12 @@ class AvatarStore {
   /// Who prepares out-of-date avatars again; none (the default) means this
   /// server cannot, and they are refused as out of date.
   void set_repreparer(AvatarRepreparer repreparer);
+  /// The cluster's copy (set once, before the store is used by others).
+  void set_replica(AvatarReplica replica) { replica_ = std::move(replica); }
+  /// Every avatar id stored here, and one avatar's files: for a node that
+  /// shares its avatars again after Redis lost them.
+  std::vector<std::string> stored_assets() const;
+  bool read_files(const std::string& asset, std::vector<std::uint8_t>& package, std::vector<std::uint8_t>& photo) const;
   /// The avatar `asset`, prepared again: `package` replaces its package under
   /// the same id. false and `error` if the package is invalid or cannot be
   /// written (the avatar is then refused as out of date until a restart).
@@ -103,6 +120,8 @@ class AvatarStore {
  private:
   std::filesystem::path file(const std::string& asset, const char* suffix) const;
   AvatarLookup load(const std::string& asset);
+  /// Fetches `asset` from the cluster's copy into this store's directory.
+  bool fetch_from_replica(const std::string& asset);
   AvatarLookup out_of_date(const std::string& asset, const std::string& why);
   std::optional<StoredAvatar> write_and_remember(const std::string& asset, std::span<const std::uint8_t> package,
                                                  const model::AvatarPackage& parsed, std::string& error,
@@ -116,6 +135,7 @@ class AvatarStore {
   std::map<std::string, AvatarLookup> refused_;  ///< stored but refused: damaged, or out of date for good
   std::set<std::string> preparing_;               ///< handed to the repreparer, not back yet
   AvatarRepreparer repreparer_;
+  AvatarReplica replica_;
 };
 
 /// Whether `text` has the form of an asset id (so it is safe in a path).

@@ -254,7 +254,8 @@ void ClientSession::handle_hello(std::span<const std::uint8_t> message) {
                       .stream = stream_settings_for(hello),
                       .connection = shared_from_this(),
                       .resume = resume_key_,
-                      .address = address_key(peer_)};
+                      .address = address_key(peer_),
+                      .returning = hello.resume};
   room_->join(std::move(request));
 }
 

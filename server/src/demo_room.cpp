@@ -27,6 +27,12 @@ bool make_demo_avatars(ServerContext& context, std::string& error) {
 
 void open_demo_room(ServerContext& context, std::function<void()> seated) {
   auto lobby = context.rooms->find_or_create("lobby", /*persistent=*/true);
+  if (context.bus) return seated();  // its owner seats the residents
+  seat_lobby_residents(context, lobby);
+  lobby->then(std::move(seated));
+}
+
+void seat_lobby_residents(ServerContext& context, const std::shared_ptr<Room>& lobby) {
   const char* names[kLobbyAvatars] = {"Ada", "Bruno", "Chidi"};  // Ada joins first: she leads
   for (std::uint32_t i = 0; i < kLobbyAvatars; ++i) {
     JoinRequest request;
@@ -34,7 +40,6 @@ void open_demo_room(ServerContext& context, std::function<void()> seated) {
     request.avatar = context.demo_avatars[i];
     lobby->join(std::move(request));
   }
-  lobby->then(std::move(seated));
 }
 
 }  // namespace fw::server

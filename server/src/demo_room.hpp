@@ -4,11 +4,14 @@
 // (the first leads, two follow), so a newcomer sees something alive at once.
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 
 #include "server_context.hpp"
 
 namespace fw::server {
+
+class Room;
 
 inline constexpr std::uint32_t kLobbyAvatars = 3;
 
@@ -18,6 +21,10 @@ bool make_demo_avatars(ServerContext& context, std::string& error);
 
 /// Opens "lobby" (persistent) with its three avatars; `seated` runs once
 /// they sit in it.
+/// In a cluster the lobby opens as a bridge, and its three avatars are
+/// seated by the node that first owns it (seat_lobby_residents).
 void open_demo_room(ServerContext& context, std::function<void()> seated);
+/// Seats the lobby's three avatars in `lobby`.
+void seat_lobby_residents(ServerContext& context, const std::shared_ptr<Room>& lobby);
 
 }  // namespace fw::server

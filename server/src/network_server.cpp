@@ -1,5 +1,7 @@
 #include "network_server.hpp"
 
+#include <unistd.h>
+
 #include <iostream>
 #include <memory>
 #include <string>
@@ -10,6 +12,7 @@
 #include <spdlog/spdlog.h>
 
 #include "avatar_repreparation.hpp"
+#include "cluster_node.hpp"
 #include "connection_refusal.hpp"
 #include "descriptor_reserve.hpp"
 #include "drain_on_signal.hpp"
@@ -107,6 +110,14 @@ void log_ready(const ServerConfig& config) {
                faces, lod, config.data);
 }
 
+/// The node's name in a cluster: --node, else the host name and HTTP port.
+std::string node_name(const ServerConfig& config, unsigned short http_port) {
+  if (!config.node.empty()) return config.node;
+  char host[256] = {};
+  gethostname(host, sizeof host - 1);
+  return std::string(host) + ":" + std::to_string(http_port);
+}
+
 /// Runs `ioc` on `threads` threads, this one included, until it stops.
 void run_io_threads(net::io_context& ioc, int threads) {
   std::vector<std::thread> others;
@@ -131,6 +142,15 @@ int run_network_server(const ServerConfig& config) {
   AvatarRepreparation repreparation(core.context(), photo_worker);
   Listeners listeners;
   if (!open_listeners(ioc, core.context(), photos, listeners, error)) return cannot_start(error);
+  std::unique_ptr<ClusterNode> cluster;
+  if (!config.redis.empty()) {
+    // Before the loop runs (no request is served yet): the cluster's server
+    // key signs this node's avatar keys.
+    const RedisAddress address = *parse_redis_url(config.redis, error);  // checked with the flag
+    cluster = std::make_unique<ClusterNode>(core.context(), ioc.get_executor(), address,
+                                            node_name(config, listeners.http->local_endpoint().port()));
+    cluster->start();
+  }
   announce(listeners);
   core.open_demo_room();  // ready (/readyz) once listening and the lobby is seated
   log_ready(config);
@@ -138,6 +158,14 @@ int run_network_server(const ServerConfig& config) {
   DrainOnSignal drain(ioc, core, drain_time, [&listeners] { listeners.stop(); });
   run_io_threads(ioc, config.io_threads);
   core.stop();
+  if (cluster) {
+    // The loop ran out: a short one of its own tells Redis this node leaves.
+    ioc.restart();
+    std::thread farewell([&ioc] { ioc.run_for(std::chrono::seconds(3)); });
+    cluster->stop();
+    ioc.stop();
+    farewell.join();
+  }
   spdlog::info("stopped");
   return 0;
 }

@@ -80,9 +80,12 @@ std::optional<Response> respond_to_api(ServerContext& context, const Request& re
   const std::string_view path = target.substr(0, target.find('?'));
   const std::string_view query = target.find('?') == std::string_view::npos ? "" : target.substr(target.find('?') + 1);
   if (path == "/readyz") {
-    if (context.ready.load() && !context.draining.load()) return plain(http::status::ok, request, "ready\n");
+    // A cluster node without Redis serves its own rooms, but a balancer
+    // should send newcomers to nodes that can reach every room.
+    const bool clustered = context.cluster_up.load();
+    if (context.ready.load() && !context.draining.load() && clustered) return plain(http::status::ok, request, "ready\n");
     return plain(http::status::service_unavailable, request,
-                 context.draining.load() ? "draining\n" : "starting\n");
+                 context.draining.load() ? "draining\n" : !context.ready.load() ? "starting\n" : "no Redis\n");
   }
   if (path == "/metrics") {
     if (Response refusal; !operator_access(context, request, refusal)) {

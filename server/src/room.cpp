@@ -6,7 +6,9 @@
 #include <spdlog/spdlog.h>
 
 #include "monotonic_clock.hpp"
+#include "room_bus.hpp"
 #include "room_registry.hpp"
+#include "server_keys.hpp"
 
 namespace fw::server {
 
@@ -48,9 +50,9 @@ AvatarCommand to_simulation(const codec::Command& c) {
 
 }  // namespace
 
-Room::Room(ServerContext& context, std::string name, bool persistent, std::uint64_t seed)
+Room::Room(ServerContext& context, std::string name, bool persistent, std::uint64_t seed, RoomRole role)
     : context_(context), name_(std::move(name)), persistent_(persistent), strand_(net::make_strand(*context.workers)),
-      timer_(strand_), simulation_(simulation_options(context.config, seed)),
+      timer_(strand_), simulation_(simulation_options(context.config, seed)), role_(role),
       chat_rate_(context.config.abuse.room_chat, TokenBucket::Clock::now()),
       join_rate_(context.config.abuse.room_joins, TokenBucket::Clock::now()) {
   context_.metrics.rooms.fetch_add(1);
@@ -103,6 +105,10 @@ void Room::chat(std::uint32_t avatar, std::string text) {
 void Room::do_chat(std::uint32_t avatar, std::string text) {
   const auto it = members_.find(avatar);
   if (closed_ || it == members_.end()) return;
+  if (role_ == RoomRole::bridge) {
+    bridge::Up up{.kind = bridge::UpKind::chat, .node = context_.bus->node(), .avatar = avatar, .text = std::move(text)};
+    return context_.bus->send_up(name_, bridge::encode(up));
+  }
   Member& writer = it->second;
   if (!chat_rate_.take(TokenBucket::Clock::now())) {
     // The room's chat is at its rate (many writers, or one from many
@@ -111,9 +117,8 @@ void Room::do_chat(std::uint32_t avatar, std::string text) {
     const int per_minute = static_cast<int>(context_.config.abuse.room_chat.per_second * 60 + 0.5);
     const double wait = chat_rate_.seconds_until(TokenBucket::Clock::now());
     context_.abuse.note(Abuse::chat_rate, writer.address, "room '" + name_ + "' chats over its rate");
-    if (writer.stream)
-      notice(writer, "not sent: room '" + name_ + "' carries at most " + std::to_string(per_minute) +
-                         " chat lines a minute; try again in " + whole_seconds(wait));
+    notice(writer, "not sent: room '" + name_ + "' carries at most " + std::to_string(per_minute) +
+                       " chat lines a minute; try again in " + whole_seconds(wait));
     return;
   }
   simulation_.chat(avatar, text);
@@ -121,19 +126,34 @@ void Room::do_chat(std::uint32_t avatar, std::string text) {
   const auto line = encode_shared(codec::Chat{avatar, text});
   for (auto& [id, member] : members_)
     if (member.stream) member.stream->post_chat(line);
+  if (context_.bus) {
+    context_.bus->keep_chat(name_, *line);
+    if (bridged_members() != 0) send_down({.kind = bridge::DownKind::chat, .avatar = 0, .message = *line});
+  }
 }
 
 void Room::notice(Member& member, const std::string& text) {
-  member.stream->post_chat(encode_shared(codec::Chat{0, clip_utf8(text, codec::kMaxChatBytes)}));
+  const auto line = encode_shared(codec::Chat{0, clip_utf8(text, codec::kMaxChatBytes)});
+  if (member.stream) member.stream->post_chat(line);
+  else if (!member.node.empty()) send_down({.kind = bridge::DownKind::chat, .avatar = member.info.id, .message = *line});
 }
 
 void Room::command(std::uint32_t avatar, codec::Command command) {
   net::post(strand_, [self = shared_from_this(), avatar, command = std::move(command)] {
     auto it = self->members_.find(avatar);
-    if (self->closed_ || it == self->members_.end() || !it->second.stream) return;
+    if (self->closed_ || it == self->members_.end()) return;
+    Member& member = it->second;
+    if (self->role_ == RoomRole::bridge) {
+      bridge::Up up{.kind = bridge::UpKind::command, .node = self->context_.bus->node(), .avatar = avatar};
+      codec::write_message(command, up.command);
+      return self->context_.bus->send_up(self->name_, bridge::encode(up));
+    }
+    if (!member.stream && member.node.empty()) return;
     std::string error = self->simulation_.command(avatar, to_simulation(command));
-    it->second.stream->post_result(
-        encode_shared(codec::CommandResult{command.request_id, clip_utf8(std::move(error), codec::kMaxReasonBytes)}));
+    const auto result =
+        encode_shared(codec::CommandResult{command.request_id, clip_utf8(std::move(error), codec::kMaxReasonBytes)});
+    if (member.stream) member.stream->post_result(result);
+    else self->send_down({.kind = bridge::DownKind::result, .avatar = avatar, .message = *result});
   });
 }
 
@@ -156,12 +176,17 @@ void Room::set_rate(std::uint32_t avatar, std::uint32_t bps) {
 void Room::do_join(JoinRequest request) {
   pending_joins_.fetch_sub(1);
   if (closed_) return join_successor(std::move(request));
+  if (role_ == RoomRole::bridge) return bridge_join(std::move(request));
+  if (take_seat_back(request)) return;
   if (const auto refusal = refusal_of(request)) return refuse(request, refusal->first, refusal->second);
-  const bool person = request.connection != nullptr;
+  const bool person = request.connection != nullptr || !request.node.empty();
   const std::uint32_t id = simulation_.add_avatar(AvatarSetup{request.name, person});
   if (id == 0) return refuse(request, codec::CloseCode::room_full, "room '" + name_ + "' is full; try another room");
   Member member;
   member.address = request.address;
+  member.node = request.node;
+  member.order = next_order_++;
+  member.resume_hash = request.connection ? resume_hash(request.resume) : request.resume_hash;
   member.info = {id, request.name, request.avatar.asset,
                  static_cast<std::uint32_t>(request.avatar.preview ? request.avatar.preview->size() : 0),
                  static_cast<std::uint32_t>(request.avatar.full ? request.avatar.full->size() : 0), person,
@@ -175,8 +200,13 @@ void Room::do_join(JoinRequest request) {
   context_.metrics.avatars.fetch_add(1);
   introduce_to_others(member);
   if (moved) broadcast_seats(moved);
-  if (person) {
+  if (request.connection) {
     member.stream = welcome(member, request);
+    local_persons_.fetch_add(1);
+  }
+  if (context_.bus) {
+    keep(member);
+    send_down({.kind = bridge::DownKind::joined, .join_ref = request.join_ref, .member = record_of(member)});
   }
   members_.emplace(id, std::move(member));
   // The joiner hears everyone's attention; the others hear the joiner's.
@@ -186,7 +216,7 @@ void Room::do_join(JoinRequest request) {
     if (entry.avatar == id) joiner.entries.push_back(entry);
   attention_sent_[id] = joiner.entries.front();
   broadcast_attention(joiner, id);
-  if (person) {
+  if (request.connection) {
     Member& seated = members_.at(id);
     const auto bytes = encode_shared(everyone);
     seated.stream->charge(bytes->size());
@@ -208,7 +238,7 @@ void Room::join_successor(JoinRequest request) {
 
 std::size_t Room::seats_of(const std::string& address) const {
   std::size_t seats = 0;
-  for (const auto& [id, member] : members_) seats += member.stream && member.address == address;
+  for (const auto& [id, member] : members_) seats += member.person() && member.address == address;
   return seats;
 }
 
@@ -217,7 +247,7 @@ std::optional<std::pair<codec::CloseCode, std::string>> Room::refusal_of(const J
   if (members_.size() >= config.room_size)
     return {{codec::CloseCode::room_full, "room '" + name_ + "' is full (" + std::to_string(config.room_size) +
                                               " avatars); try another room"}};
-  if (request.connection && !request.address.empty()) {
+  if ((request.connection || !request.node.empty()) && !request.address.empty()) {
     // One address cannot fill a room (the lobby least of all): the others
     // keep seats.
     const std::size_t share = config.abuse.seats_per_address != 0 ? config.abuse.seats_per_address
@@ -232,7 +262,7 @@ std::optional<std::pair<codec::CloseCode, std::string>> Room::refusal_of(const J
   // Joins into one room, from every address together: each join is news
   // to everyone in the room (a presence, a package), so churn from many
   // addresses must not bury the people there.
-  if (request.connection && !join_rate_.take(TokenBucket::Clock::now())) {
+  if ((request.connection || !request.node.empty()) && !join_rate_.take(TokenBucket::Clock::now())) {
     const double wait = join_rate_.seconds_until(TokenBucket::Clock::now());
     context_.abuse.note(Abuse::join_rate, request.address, "room '" + name_ + "' takes joins over its rate");
     return {{codec::CloseCode::rate_limited,
@@ -248,11 +278,19 @@ void Room::refuse(const JoinRequest& request, codec::CloseCode code, const std::
   context_.metrics.rejected_joins.fetch_add(1);
   spdlog::info("room {}: {} refused: {}", name_, request.name, why);
   if (request.connection) request.connection->close(code, why);
+  else if (!request.node.empty())
+    send_down({.kind = bridge::DownKind::refused, .join_ref = request.join_ref, .code = code, .reason = why});
   close_if_unpeopled();  // a room made for this join alone goes again
 }
 
+bool Room::unpeopled() const {
+  return role_ == RoomRole::owner ? person_count_.load() == 0 : local_persons_.load() == 0;
+}
+
 void Room::close_if_unpeopled() {
-  if (persistent_ || person_count_.load() != 0 || pending_joins_.load() != 0) return;
+  if (persistent_ || !unpeopled() || pending_joins_.load() != 0) return;
+  if (role_ == RoomRole::bridge && (!held_joins_.empty() || !sent_joins_.empty())) return;
+  if (context_.bus) context_.bus->room_closed(name_);
   context_.rooms->remove_if_empty(shared_from_this());
 }
 
@@ -272,15 +310,18 @@ std::unique_ptr<SubscriberStream> Room::welcome(const Member& newcomer, const Jo
   welcome.room = name_;
   welcome.tick_hz = static_cast<std::uint8_t>(context_.config.tick_hz);
   welcome.max_bps = request.stream.budget_bps;
+  // (A person taking a seat back is a member already: listed once, last.)
   for (const auto& [other_id, other] : members_)
-    if (welcome.avatars.size() + 1 < codec::kMaxWelcomeAvatars) welcome.avatars.push_back(other.info);
+    if (other_id != newcomer.info.id && welcome.avatars.size() + 1 < codec::kMaxWelcomeAvatars)
+      welcome.avatars.push_back(other.info);
   welcome.avatars.push_back(newcomer.info);
   const auto welcome_bytes = encode_shared(welcome);
   request.connection->joined(newcomer.info.id, welcome_bytes);
   // The stream's header follows the welcome; then everyone's face.
   auto stream = std::make_unique<SubscriberStream>(request.stream, request.connection, context_.metrics);
   stream->charge(welcome_bytes->size());
-  for (const auto& [other_id, other] : members_) stream->add_avatar(other_id, other.avatar.preview, other.avatar.full);
+  for (const auto& [other_id, other] : members_)
+    if (other_id != newcomer.info.id) stream->add_avatar(other_id, other.avatar.preview, other.avatar.full);
   // A client that uploaded its package holds it: its own face costs its link nothing.
   if (request.stream.own_package) stream->add_avatar(newcomer.info.id, nullptr, nullptr);
   else stream->add_avatar(newcomer.info.id, newcomer.avatar.preview, newcomer.avatar.full);
@@ -290,7 +331,17 @@ std::unique_ptr<SubscriberStream> Room::welcome(const Member& newcomer, const Jo
 void Room::do_leave(std::uint32_t avatar) {
   auto it = members_.find(avatar);
   if (it == members_.end()) return;
-  const bool person = it->second.stream != nullptr;
+  if (role_ == RoomRole::bridge) {
+    // The owner says who left; until then the seat is the owner's.
+    if (it->second.stream) local_persons_.fetch_sub(1);
+    it->second.stream.reset();
+    it->second.local_gone = true;
+    bridge::Up up{.kind = bridge::UpKind::leave, .node = context_.bus->node(), .avatar = avatar};
+    context_.bus->send_up(name_, bridge::encode(up));
+    return close_if_unpeopled();
+  }
+  const bool person = it->second.person();
+  if (it->second.stream) local_persons_.fetch_sub(1);
   spdlog::info("room {}: {} left", name_, it->second.info.name);
   codec::AvatarInfo info;
   info.id = avatar;
@@ -306,6 +357,10 @@ void Room::do_leave(std::uint32_t avatar) {
     if (!member.stream) continue;
     member.stream->remove_avatar(avatar);
     member.stream->post_presence(codec::Presence::Change::left, avatar, left);
+  }
+  if (context_.bus) {
+    context_.bus->forget_member(name_, avatar);
+    send_down({.kind = bridge::DownKind::left, .avatar = avatar});
   }
   if (const SharedBytes moved = reseat()) broadcast_seats(moved);
   close_if_unpeopled();
@@ -349,11 +404,18 @@ void Room::send_attention_changes() {
 void Room::broadcast_seats(const SharedBytes& message) {
   for (auto& [id, member] : members_)
     if (member.stream) member.stream->post_seats(message);
+  if (role_ == RoomRole::owner && context_.bus && bridged_members() != 0)
+    send_down({.kind = bridge::DownKind::seats, .message = *message});
 }
 
 void Room::broadcast_attention(const codec::Attention& attention, std::uint32_t except) {
   for (auto& [id, member] : members_)
     if (id != except && member.stream) member.stream->post_attention(attention);
+  if (role_ == RoomRole::owner && context_.bus && bridged_members() != 0) {
+    bridge::Down down{.kind = bridge::DownKind::attention};
+    codec::write_message(attention, down.attention);
+    send_down(down);
+  }
 }
 
 std::chrono::microseconds Room::tick_period() const {
@@ -379,6 +441,13 @@ void Room::schedule_tick() {
 }
 
 void Room::on_tick() {
+  if (role_ == RoomRole::bridge) {
+    if (++ticks_since_check_ >= static_cast<std::uint32_t>(context_.config.tick_hz) / 4) {
+      ticks_since_check_ = 0;
+      bridge_housekeeping();
+    }
+    return;
+  }
   const auto start = std::chrono::steady_clock::now();
   // How late this tick starts tells the governor whether the pool keeps up;
   // its answer is how many of this room's faces run physics (level of detail).
@@ -397,9 +466,20 @@ void Room::on_tick() {
   const std::uint32_t tick = simulation_.tick_index();
   for (auto& [id, member] : members_)
     if (member.stream) member.stream->tick(tick, now_us, faces_);
+  if (context_.bus && bridged_members() != 0) {
+    // Once per tick whatever the number of bridged people: each node encodes for its own.
+    bridge::Down down{.kind = bridge::DownKind::tick, .tick = tick};
+    down.faces.reserve(faces_.size());
+    for (const AvatarFace& face : faces_) down.faces.push_back({face.id, *face.face});
+    send_down(down);
+  }
   send_attention_changes();
   if (++ticks_since_check_ >= static_cast<std::uint32_t>(context_.config.tick_hz)) {
     ticks_since_check_ = 0;
+    if (context_.bus) {
+      keep_state();
+      let_away_go();
+    }
     close_if_unpeopled();
   }
   context_.metrics.observe_tick(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());

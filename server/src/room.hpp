@@ -10,6 +10,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -19,6 +20,7 @@
 #include <boost/asio/thread_pool.hpp>
 
 #include "avatar_store.hpp"
+#include "bridge_message.hpp"
 #include "fw/codec/messages.hpp"
 #include "room_connection.hpp"
 #include "room_simulation.hpp"
@@ -37,17 +39,32 @@ struct JoinRequest {
   /// The person's address (address_key()), for the seats one address may
   /// hold; empty for autonomous avatars.
   std::string address;
+  /// The resume key the hello showed (PROTOCOL.md 5.1): in a cluster, a
+  /// person whose node died takes their seat back with it.
+  std::string returning;
+  // A join bridged from another node (cluster): that node and its reference.
+  std::string node;
+  std::string join_ref;
+  std::string resume_hash;  ///< of `resume`, when the connection is on another node
 };
+
+/// Who simulates a room: this node (the owner; always, in one process), or
+/// another node of the cluster whose news this one bridges to its clients.
+enum class RoomRole { owner, bridge };
 
 class Room : public std::enable_shared_from_this<Room> {
  public:
-  Room(ServerContext& context, std::string name, bool persistent, std::uint64_t seed);
+  Room(ServerContext& context, std::string name, bool persistent, std::uint64_t seed,
+       RoomRole role = RoomRole::owner);
   ~Room();
 
   const std::string& name() const { return name_; }
   bool persistent() const { return persistent_; }
   std::size_t avatar_count() const { return avatar_count_.load(); }
   std::size_t person_count() const { return person_count_.load(); }
+  /// Nobody keeps the room open here: owner, no person at all; bridge, no
+  /// person connected to this node.
+  bool unpeopled() const;
 
   /// Starts the tick timer.
   void start();
@@ -67,13 +84,63 @@ class Room : public std::enable_shared_from_this<Room> {
   void resync(std::uint32_t avatar, std::vector<std::uint32_t> avatars);
   void set_rate(std::uint32_t avatar, std::uint32_t bps);
 
+  // Cluster (room_bus.hpp, room_bridge.cpp, room_takeover.cpp).
+  RoomRole role() const { return role_.load(); }
+  /// Owner: a bridging node's request.
+  void on_up(bridge::Up message);
+  /// Bridge: the owner's news.
+  void on_down(bridge::Down message);
+  /// Becomes the owner of a room another node held: its members, their ids
+  /// and join order, and their moods come back; the people on nodes that
+  /// are not in `live_nodes` are kept away (PROTOCOL.md 10) until they come
+  /// back with their resume key, or the rejoin grace ends.
+  void take_over(std::vector<bridge::MemberRecord> members, std::optional<bridge::RoomState> state,
+                 std::set<std::string> live_nodes);
+  /// Owner: the people bridged from `node` are away (it stopped answering).
+  void node_gone(std::string node);
+  /// Owner: writes its whole record to Redis again (Redis came back).
+  void keep_all();
+  /// Bridge: asks the owner for its roster again (Redis came back).
+  void ask_roster();
+  /// Another node owns the room now (this one lost its lease while Redis
+  /// was away): the local people are asked to come back, and are bridged.
+  void step_down();
+
  private:
   struct Member {
     codec::AvatarInfo info;
     StoredAvatar avatar;
     std::unique_ptr<SubscriberStream> stream;  ///< null for autonomous avatars
     std::string address;                       ///< a person's address_key()
+    std::string node;         ///< owner: the node a bridged person is on ("" here)
+    std::string resume_hash;  ///< owner: of the person's resume key
+    std::uint64_t order = 0;  ///< owner: join order (the earliest present leads)
+    /// Owner: the person's node died; the seat waits for them until then.
+    std::optional<std::chrono::steady_clock::time_point> away_until;
+    bool local_gone = false;  ///< bridge: the local connection left; the owner's `left` is awaited
+    bool person() const { return stream || !node.empty() || away_until || local_gone; }
   };
+  // Bridging (room_bridge.cpp).
+  bridge::MemberRecord record_of(const Member& member) const;
+  void send_down(const bridge::Down& message);
+  void keep(const Member& member);
+  std::size_t bridged_members() const;
+  void answer_sync();
+  void bridge_join(JoinRequest request);
+  void on_roster(bridge::Down& message);
+  void on_joined(bridge::Down& message);
+  void on_left(std::uint32_t avatar);
+  void bridge_tick(bridge::Down& message);
+  void bridge_housekeeping();
+  /// The StoredAvatar of a member another node seated (a demo face, the
+  /// store, or the cluster's copy).
+  StoredAvatar avatar_of(const codec::AvatarInfo& info) const;
+  // Owner housekeeping in a cluster (room_takeover.cpp).
+  void keep_state();
+  void let_away_go();
+  /// A person coming back with the resume key of a seat kept away: true if
+  /// `request` took it.
+  bool take_seat_back(JoinRequest& request);
   void do_join(JoinRequest request);
   void join_successor(JoinRequest request);
   /// Why `request` cannot be seated (room full, its address holds its
@@ -120,12 +187,26 @@ class Room : public std::enable_shared_from_this<Room> {
   std::chrono::steady_clock::time_point next_tick_;
   std::size_t kinematic_faces_ = 0;  ///< this room's share of Metrics::kinematic_faces
   bool closed_ = false;
+  std::atomic<RoomRole> role_;
+  std::uint64_t next_order_ = 1;
+  // Bridge role.
+  bool roster_ = false;                          ///< the owner's roster arrived
+  std::vector<JoinRequest> held_joins_;          ///< waiting for the roster
+  struct SentJoin {
+    JoinRequest request;
+    std::chrono::steady_clock::time_point sent;
+  };
+  std::map<std::string, SentJoin> sent_joins_;   ///< by join_ref, waiting for the owner's answer
+  std::uint64_t next_join_ref_ = 1;
+  std::vector<codec::FaceParams> bridged_faces_;
+  std::chrono::steady_clock::time_point last_sync_{}, last_down_{};
   TokenBucket chat_rate_;  ///< chat lines into this room, from everyone (AbuseLimits::room_chat)
   TokenBucket join_rate_;  ///< joins into this room, from everyone (AbuseLimits::room_joins)
   std::uint32_t ticks_since_check_ = 0;  ///< for close_if_unpeopled once a second
   std::atomic<int> pending_joins_{0};  ///< joins posted and not yet done
   std::atomic<std::size_t> avatar_count_{0};
-  std::atomic<std::size_t> person_count_{0};
+  std::atomic<std::size_t> person_count_{0};  ///< everyone's, bridged and away too
+  std::atomic<std::size_t> local_persons_{0};  ///< people connected to this node
 };
 
 }  // namespace fw::server

@@ -4,6 +4,7 @@
 
 #include "client_session.hpp"
 #include "room.hpp"
+#include "room_bus.hpp"
 
 namespace fw::server {
 
@@ -19,18 +20,43 @@ bool is_valid_room_name(std::string_view name) {
 RoomRegistry::RoomRegistry(ServerContext& context) : context_(context) {}
 RoomRegistry::~RoomRegistry() = default;
 
-std::shared_ptr<Room> RoomRegistry::find_or_create(const std::string& name, bool persistent) {
-  std::lock_guard lock(mutex_);
-  if (auto it = rooms_.find(name); it != rooms_.end()) return it->second;
-  if (closed_ || rooms_.size() >= context_.config.max_rooms) return nullptr;
-  auto room = std::make_shared<Room>(context_, name, persistent, next_seed_++);
+std::shared_ptr<Room> RoomRegistry::find_or_create(const std::string& name, bool persistent, bool place) {
+  std::shared_ptr<Room> room;
+  {
+    std::lock_guard lock(mutex_);
+    if (auto it = rooms_.find(name); it != rooms_.end()) return it->second;
+    if (closed_ || rooms_.size() >= context_.config.max_rooms) return nullptr;
+    room = start_room(name, persistent);
+  }
+  if (context_.bus && place) context_.bus->room_opened(name);
+  return room;
+}
+
+std::shared_ptr<Room> RoomRegistry::start_room(const std::string& name, bool persistent) {
+  // In a cluster a room opens as a bridge; its owner (maybe this node) is
+  // found or chosen by the bus.
+  auto room = std::make_shared<Room>(context_, name, persistent, next_seed_++,
+                                     context_.bus ? RoomRole::bridge : RoomRole::owner);
   rooms_.emplace(name, room);
   room->start();
   return room;
 }
 
-RoomOpening RoomRegistry::open_for(const std::string& name, const std::string& address) {
+std::shared_ptr<Room> RoomRegistry::find(const std::string& name) const {
   std::lock_guard lock(mutex_);
+  const auto it = rooms_.find(name);
+  return it == rooms_.end() ? nullptr : it->second;
+}
+
+std::vector<std::shared_ptr<Room>> RoomRegistry::all() const {
+  std::lock_guard lock(mutex_);
+  std::vector<std::shared_ptr<Room>> rooms;
+  for (const auto& [name, room] : rooms_) rooms.push_back(room);
+  return rooms;
+}
+
+RoomOpening RoomRegistry::open_for(const std::string& name, const std::string& address) {
+  std::unique_lock lock(mutex_);
   if (auto it = rooms_.find(name); it != rooms_.end()) return RoomOpening::opened(it->second);
   if (closed_) return RoomOpening::refused(codec::CloseCode::shutting_down, "the server is shutting down; try again soon");
   if (rooms_.size() >= context_.config.max_rooms)
@@ -41,15 +67,15 @@ RoomOpening RoomRegistry::open_for(const std::string& name, const std::string& a
                                     std::to_string(static_cast<long>(std::ceil(*wait))) + " s",
                                 Abuse::room_creation);
   }
-  auto room = std::make_shared<Room>(context_, name, false, next_seed_++);
-  rooms_.emplace(name, room);
-  room->start();
+  auto room = start_room(name, false);
+  lock.unlock();
+  if (context_.bus) context_.bus->room_opened(name);
   return RoomOpening::opened(room);
 }
 
 void RoomRegistry::remove_if_empty(const std::shared_ptr<Room>& room) {
   std::lock_guard lock(mutex_);
-  if (room->person_count() != 0 || room->persistent()) return;
+  if (!room->unpeopled() || room->persistent()) return;
   auto it = rooms_.find(room->name());
   if (it == rooms_.end() || it->second != room) return;
   rooms_.erase(it);

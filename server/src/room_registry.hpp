@@ -50,13 +50,19 @@ class RoomRegistry {
   ~RoomRegistry();
 
   /// The room called `name`, created (and started) if needed; null when the
-  /// server already holds its maximum number of rooms, or has stopped.
-  std::shared_ptr<Room> find_or_create(const std::string& name, bool persistent = false);
+  /// server already holds its maximum number of rooms, or has stopped. In a
+  /// cluster a new room is a bridge, and the bus is told to `place` it
+  /// (unless the bus itself asks, taking the room over).
+  std::shared_ptr<Room> find_or_create(const std::string& name, bool persistent = false, bool place = true);
   /// The room called `name` for a person from `address` (address_key()):
   /// created if needed, when that address may still create rooms
   /// (AbuseLimits::room_creations) and the server holds fewer than its
   /// maximum.
   RoomOpening open_for(const std::string& name, const std::string& address);
+  /// The room called `name` if this node holds it (owned or bridged).
+  std::shared_ptr<Room> find(const std::string& name) const;
+  /// Every room this node holds.
+  std::vector<std::shared_ptr<Room>> all() const;
   /// Closes and forgets `room` if nobody is in it any more.
   void remove_if_empty(const std::shared_ptr<Room>& room);
   std::vector<RoomSummary> list() const;
@@ -70,6 +76,9 @@ class RoomRegistry {
   void close_all_rooms();
 
  private:
+  /// Makes and starts a room; the caller holds mutex_.
+  std::shared_ptr<Room> start_room(const std::string& name, bool persistent);
+
   ServerContext& context_;
   mutable std::mutex mutex_;
   std::map<std::string, std::shared_ptr<Room>> rooms_;

@@ -173,6 +173,31 @@ AvatarId RoomSimulation::add_avatar(const AvatarSetup& setup) {
   return id;
 }
 
+bool RoomSimulation::restore_avatar(AvatarId id, const AvatarSetup& setup) {
+  State& s = *state_;
+  if (!s.ids.claim(id)) return false;
+  if (!s.room.add(id, setup.name)) {
+    s.ids.cancel(id);
+    return false;
+  }
+  s.avatars[id] = {setup, {}, {}};
+  s.collect_events();
+  return true;
+}
+
+std::vector<float> RoomSimulation::mood(AvatarId avatar) const {
+  if (!state_->room.contains(avatar)) return {};
+  const behavior::EmotionPoint point = state_->room.mood(avatar);
+  return {point.begin(), point.end()};
+}
+
+void RoomSimulation::set_mood(AvatarId avatar, const std::vector<float>& mood) {
+  behavior::EmotionPoint point{};
+  if (mood.size() != point.size() || !state_->room.contains(avatar)) return;
+  std::copy(mood.begin(), mood.end(), point.begin());
+  state_->room.set_mood(avatar, behavior::clamp_to_cube(point));
+}
+
 bool RoomSimulation::has_free_id() const {
   State& s = *state_;
   return s.ids.in_use() + s.ids.resting(s.room.tick_index()) + 1 < s.ids.space();

@@ -84,6 +84,13 @@ class RoomSimulation {
   /// Seats a new avatar (the first one leads, as in the paper's experiment);
   /// 0 when the room is full or every id is in use or resting.
   AvatarId add_avatar(const AvatarSetup& setup);
+  /// Seats an avatar under `id` (a room restored from another server);
+  /// false if the id is taken or the room is full.
+  bool restore_avatar(AvatarId id, const AvatarSetup& setup);
+  /// An avatar's mood (one value per primary emotion), and that mood given
+  /// back after a restore.
+  std::vector<float> mood(AvatarId avatar) const;
+  void set_mood(AvatarId avatar, const std::vector<float>& mood);
   /// Whether add_avatar would find an id now (false: all are in use or rest).
   bool has_free_id() const;
   void remove_avatar(AvatarId avatar);

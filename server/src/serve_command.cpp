@@ -1,5 +1,7 @@
 #include "serve_command.hpp"
 
+#include <cctype>
+
 #include <cstdlib>
 #include <memory>
 #include <string>
@@ -10,6 +12,7 @@
 #include "endpoint.hpp"
 #include "logging.hpp"
 #include "network_server.hpp"
+#include "redis_url.hpp"
 #include "server_config.hpp"
 
 namespace fw::server {
@@ -79,6 +82,30 @@ void add_limit_flags(CLI::App& cmd, ServerConfig& config) {
   cmd.add_option("--metrics-secret", config.metrics_secret,
                  "/metrics answers only 'Authorization: Bearer SECRET' (with --auth-secret and none: closed)")
       ->envname("FACEWIRE_METRICS_SECRET");
+}
+
+void add_cluster_flags(CLI::App& cmd, ServerConfig& config) {
+  cmd.add_option("--redis", config.redis,
+                 "join a cluster on this Redis: redis://HOST[:PORT][/DB] (server/CLUSTER.md); none: one process")
+      ->envname("FACEWIRE_REDIS")
+      ->check([](const std::string& url) {
+        std::string error;
+        return parse_redis_url(url, error) ? std::string() : error;
+      });
+  cmd.add_option("--node", config.node, "this node's name in the cluster (default: the host name and HTTP port)")
+      ->envname("FACEWIRE_NODE")
+      ->check([](const std::string& name) {
+        if (name.empty() || name.size() > 64) return std::string("a node name is 1 to 64 characters");
+        for (const char c : name)
+          if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_' && c != '.' && c != ':')
+            return std::string("a node name is letters, digits and - _ . : only");
+        return std::string();
+      });
+  cmd.add_option_function<double>(
+         "--rejoin-grace",
+         [&config](double seconds) { config.rejoin_grace = std::chrono::milliseconds(static_cast<long>(seconds * 1000)); },
+         "seconds a room's new owner keeps the seat of a person whose node died (default 30)")
+      ->check(CLI::Range(1.0, 3600.0));
 }
 
 /// A rate flag in events a minute (or an hour), kept as a token bucket's
@@ -182,6 +209,7 @@ CLI::App* add_serve_command(CLI::App& app) {
   add_limit_flags(*cmd, *config);
   add_address_limit_flags(*cmd, *config);
   add_proxy_flags(*cmd, *config);
+  add_cluster_flags(*cmd, *config);
   add_simulation_flags(*cmd, *config);
   add_operation_flags(*cmd, *config);
   cmd->callback([config] {

@@ -54,6 +54,12 @@ struct ServerConfig {
   std::size_t photo_threads = 2;
   SessionTimeouts timeouts;
   AbuseLimits abuse;             ///< per address and per room
+  // Cluster (server/CLUSTER.md).
+  std::string redis;             ///< redis://HOST:PORT[/DB]; empty: one process, no cluster
+  std::string node;              ///< this node's name in the cluster; empty: the host name and port
+  /// How long a room's new owner keeps the seat of a person whose node died,
+  /// for them to take back with their resume key.
+  std::chrono::milliseconds rejoin_grace{30'000};
   /// Peers whose X-Forwarded-For (or Forwarded) names the client that the
   /// per-address limits count (--trusted-proxy); empty: every peer is the client.
   TrustedProxies trusted_proxies;

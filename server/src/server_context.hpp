@@ -19,6 +19,7 @@
 namespace fw::server {
 
 class RoomRegistry;
+class RoomBus;
 
 struct ServerContext {
   ServerConfig config;
@@ -31,10 +32,13 @@ struct ServerContext {
   TokenHolders tokens;                 ///< which connection holds each join token
   std::string server_key;              ///< signs avatar keys (DATA/server.key)
   RoomRegistry* rooms = nullptr;
+  /// The cluster this node is part of (--redis); null in one process.
+  RoomBus* bus = nullptr;
   /// Procedural faces for clients that join without a package (and the lobby).
   std::vector<StoredAvatar> demo_avatars;
   std::atomic<bool> ready{false};     ///< /readyz: listening and the demo room seated
-  std::atomic<bool> draining{false};  ///< SIGTERM: no new joins, sessions told to leave
+  std::atomic<bool> draining{false};
+  std::atomic<bool> cluster_up{true};  ///< /readyz: a cluster node reaches Redis (always, in one process)  ///< SIGTERM: no new joins, sessions told to leave
 };
 
 }  // namespace fw::server

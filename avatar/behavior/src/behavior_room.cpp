@@ -324,6 +324,15 @@ const codec::FaceParams& BehaviorRoom::face(FaceId id) const { return impl_->get
 const FaceSnapshot& BehaviorRoom::snapshot(FaceId id) const { return impl_->get(id).snapshot; }
 Routine BehaviorRoom::routine(FaceId id) const { return impl_->get(id).mind.routine(); }
 std::optional<FaceId> BehaviorRoom::attending(FaceId id) const { return impl_->get(id).mind.attending(); }
+EmotionPoint BehaviorRoom::mood(FaceId face) const { return impl_->get(face).emotion.mood(); }
+
+void BehaviorRoom::set_mood(FaceId face, const EmotionPoint& mood) {
+  if (Impl::Face* f = impl_->find(face)) {
+    f->emotion.reset();
+    f->emotion.nudge(mood);  // from rest, the nudge is the mood (both stay in the cube)
+  }
+}
+
 bool BehaviorRoom::leader(FaceId id) const { return impl_->get(id).mind.leader(); }
 Seat BehaviorRoom::seat(FaceId id) const { return impl_->get(id).snapshot.seat; }
 YawPitch BehaviorRoom::gaze(FaceId id) const { return impl_->get(id).eyes.gaze(); }

@@ -58,6 +58,10 @@ class BehaviorRoom {
   std::string express(FaceId face, std::string_view emotion, float intensity, double seconds);
   /// A FACS expression sentence (face scripts), played over autonomy.
   std::string facs(FaceId face, std::string_view sentence);
+  /// The face's mood (the emotion it holds between expressions), and that
+  /// mood given back: a room restored on another server keeps its moods.
+  EmotionPoint mood(FaceId face) const;
+  void set_mood(FaceId face, const EmotionPoint& mood);
   /// A chat line: the others look at the writer, the text nudges the writer.
   void chat(FaceId face, std::string_view text);
 

@@ -1,0 +1,112 @@
+#pragma once
+// This node's part in a cluster on Redis (--redis; server/CLUSTER.md).
+//
+// Rooms are owned by one node, which simulates them; ownership is a lease
+// in Redis that the owner renews twice a second. A node that holds clients
+// of a room it does not own bridges them over pub/sub (room_bridge.cpp).
+// Every half second each node reports that it lives and its load, renews
+// its leases (and gives up a room another node took meanwhile), tells its
+// rooms which nodes died, and takes over any room whose owner's lease ran
+// out, restoring it from the owner's record (room_takeover.cpp). New rooms
+// go to the least-loaded live node.
+//
+// Without Redis a node keeps serving the rooms it owns and opens new ones
+// on its own, reports not ready (/readyz), and rejoins the cluster when
+// Redis is back: it reclaims its leases (or hands its rooms to whoever took
+// them), writes its records again and shares its avatars again.
+//
+// Everything runs on one strand of the node's I/O loop; the RoomBus calls
+// rooms make from their own strands are posted to it.
+#include <chrono>
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <boost/asio/any_io_executor.hpp>
+#include <boost/asio/steady_timer.hpp>
+#include <boost/asio/strand.hpp>
+
+#include "redis_blocking.hpp"
+#include "redis_connection.hpp"
+#include "room_bus.hpp"
+#include "server_context.hpp"
+
+namespace fw::server {
+
+class ClusterNode : public RoomBus {
+ public:
+  /// `executor`: the node's I/O loop. Takes the cluster's server key (or
+  /// gives it this node's) before it returns, when Redis answers in time.
+  ClusterNode(ServerContext& context, boost::asio::any_io_executor executor, RedisAddress address, std::string node);
+  ~ClusterNode() override;
+
+  /// Connects and starts the heartbeat; context.bus points here from now on.
+  void start();
+  /// Gives up this node's rooms (their leases go, so others take them over
+  /// at once) and leaves the cluster. Blocking; call once rooms stopped.
+  void stop();
+
+  // RoomBus
+  const std::string& node() const override { return node_; }
+  void room_opened(const std::string& room) override;
+  void send_down(const std::string& room, bridge::Bytes message) override;
+  void send_up(const std::string& room, bridge::Bytes message) override;
+  void keep_member(const std::string& room, const bridge::MemberRecord& member) override;
+  void forget_member(const std::string& room, std::uint32_t avatar) override;
+  void keep_state(const std::string& room, bridge::Bytes state) override;
+  void keep_chat(const std::string& room, bridge::Bytes chat_message) override;
+  void room_closed(const std::string& room) override;
+
+  /// Connected to Redis (both connections).
+  bool connected() const { return up_.load(); }
+
+ private:
+  void connect();
+  void on_connected();
+  void lost(const std::string& why);
+  void heartbeat();
+  void schedule_heartbeat();
+  void report_alive();
+  void renew_leases();
+  void watch_nodes();
+  void adopt_orphans();
+  /// Finds or places the owner of `room` (a bridge room opened here).
+  void place(const std::string& room);
+  /// Tries to take `room` (SET NX): restores it here, or bridges it when
+  /// another node was first.
+  void acquire(const std::string& room);
+  void restore(const std::string& room, const RedisReply& members, const RedisReply& state);
+  /// Owns `room` without Redis (it is away): records are written when it returns.
+  void own_locally(const std::string& room);
+  void own_unplaced();
+  void bridge(const std::string& room);
+  void on_message(std::string_view channel, std::string_view payload);
+  std::string least_loaded() const;
+  void publish(const std::string& channel, bridge::Bytes message);
+  void reshare_avatars();
+  void adopt_server_key();
+
+  ServerContext& context_;
+  boost::asio::strand<boost::asio::any_io_executor> strand_;
+  RedisAddress address_;
+  std::string node_;
+  std::shared_ptr<RedisConnection> commands_, subscriber_;
+  std::atomic<bool> up_{false};
+  bool connecting_ = false;
+  bool stopped_ = false;
+  boost::asio::steady_timer timer_;
+  std::uint64_t beats_ = 0;
+  std::set<std::string> owned_;    ///< rooms this node owns
+  std::set<std::string> bridged_;  ///< rooms this node bridges to their owner
+  std::set<std::string> acquiring_;
+  using Clock = std::chrono::steady_clock;
+  std::set<std::string> unplaced_;  ///< opened while Redis was away, waiting for it
+  Clock::time_point waiting_since_ = Clock::now();  ///< Redis away since (or the start)
+  std::map<std::string, double> loads_;  ///< live nodes and their load, as last seen
+  std::set<std::string> live_;           ///< nodes alive at the last look
+  RedisBlocking avatars_;                ///< avatar copies (redis_blocking.hpp)
+};
+
+}  // namespace fw::server

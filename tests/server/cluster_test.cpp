@@ -1,0 +1,312 @@
+// A cluster on loopback: a real redis-server the test starts itself and
+// real facewire-server nodes on it (server/CLUSTER.md). Clients spread over
+// the nodes meet in one room; the room's owner is killed (SIGKILL) and
+// another node takes it over; Redis restarts; a subscriber that stops
+// reading on one node leaves the room's pace on another alone.
+#include <chrono>
+#include <csignal>
+#include <memory>
+#include <set>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "http_get.hpp"
+#include "redis_blocking.hpp"
+#include "redis_process.hpp"
+#include "room_test_server.hpp"
+
+namespace fw::test {
+namespace {
+
+using namespace std::chrono_literals;
+using Transport = RoomTestClient::Transport;
+using Clock = std::chrono::steady_clock;
+
+class Cluster {
+ public:
+  Cluster() { EXPECT_TRUE(redis_.ok()) << redis_.error(); }
+  RedisProcess& redis() { return redis_; }
+
+  RunningServer& add_node(const std::string& name) {
+    nodes_.push_back(std::make_unique<RunningServer>("--redis " + redis_.url() + " --node " + name +
+                                                     " --rejoin-grace 60" + kManyClientsFromOneAddress));
+    names_.push_back(name);
+    return *nodes_.back();
+  }
+  RunningServer& node(std::size_t i) { return *nodes_.at(i); }
+  std::size_t index_of(const std::string& name) const {
+    for (std::size_t i = 0; i < names_.size(); ++i)
+      if (names_[i] == name) return i;
+    return names_.size();
+  }
+
+  /// The node that owns `room` now, by Redis; empty if none.
+  std::string owner_of(const std::string& room) {
+    server::RedisBlocking redis(redis_address(), 2000ms);
+    const auto reply = redis.command({"GET", "fw:room:" + room + ":owner"});
+    return reply && reply->type == server::RedisReply::Type::string ? reply->text : "";
+  }
+  server::RedisAddress redis_address() const { return {"127.0.0.1", static_cast<std::uint16_t>(redis_.port())}; }
+
+ private:
+  RedisProcess redis_;
+  std::vector<std::unique_ptr<RunningServer>> nodes_;
+  std::vector<std::string> names_;
+};
+
+bool ready(int http_port) { return http_get(http_port, "/readyz").status == 200; }
+
+template <class Predicate>
+bool eventually(Predicate done, std::chrono::milliseconds timeout) {
+  const auto deadline = Clock::now() + timeout;
+  while (Clock::now() < deadline) {
+    if (done()) return true;
+    std::this_thread::sleep_for(50ms);
+  }
+  return done();
+}
+
+/// The avatars a client knows are in its room: the welcome's, then presence.
+std::set<std::uint32_t> known_avatars(const RoomTestClient& client) {
+  std::set<std::uint32_t> ids;
+  if (!client.welcome) return ids;
+  for (const auto& info : client.welcome->avatars) ids.insert(info.id);
+  for (const auto& p : client.presence) {
+    if (p.change == codec::Presence::Change::joined) ids.insert(p.avatar.id);
+    else ids.erase(p.avatar.id);
+  }
+  return ids;
+}
+
+std::unique_ptr<RoomTestClient> join_node(RunningServer& node, const std::string& room, const std::string& name,
+                                          const std::string& resume = "") {
+  auto client = std::make_unique<RoomTestClient>(Transport::websocket, node.http_port());
+  EXPECT_TRUE(client->connected());
+  codec::Hello hello;
+  hello.room = room;
+  hello.name = name;
+  hello.resume = resume;
+  hello.timestamps = true;  // the tick of each frame, for the pace
+  client->send_message(hello);
+  EXPECT_TRUE(client->pump_until([&] { return client->welcome.has_value() || client->closed(); }, 15s))
+      << name << " had no welcome";
+  EXPECT_TRUE(client->welcome.has_value()) << name << ": "
+                                           << (client->closing ? client->closing->reason : std::string("no closing"));
+  return client;
+}
+
+/// Pumps every client for `duration`.
+void pump_all(const std::vector<RoomTestClient*>& clients, std::chrono::milliseconds duration) {
+  const auto end = Clock::now() + duration;
+  while (Clock::now() < end)
+    for (RoomTestClient* c : clients) c->pump_for(20ms);
+}
+
+/// Whether each client decodes frames of every one of `ids` (its own too).
+bool everyone_sees(const std::vector<RoomTestClient*>& clients, const std::set<std::uint32_t>& ids) {
+  for (RoomTestClient* c : clients)
+    for (const std::uint32_t id : ids)
+      if (c->frames_per_avatar[id] == 0) return false;
+  return true;
+}
+
+TEST(Cluster, ThreeNodesOneRoomEveryoneSeesEveryone) {
+  Cluster cluster;
+  for (const char* name : {"a", "b", "c"}) cluster.add_node(name);
+  for (std::size_t i = 0; i < 3; ++i)
+    ASSERT_TRUE(eventually([&] { return ready(cluster.node(i).http_port()); }, 20s)) << "node " << i << " not ready";
+  std::vector<std::unique_ptr<RoomTestClient>> clients;
+  std::vector<RoomTestClient*> all;
+  for (std::size_t i = 0; i < 3; ++i) {
+    clients.push_back(join_node(cluster.node(i), "meet", "P" + std::to_string(i)));
+    all.push_back(clients.back().get());
+  }
+  std::set<std::uint32_t> ids;
+  for (auto* c : all) ids.insert(c->welcome->you);
+  ASSERT_EQ(ids.size(), 3u) << "each person has an id of their own";
+  const auto start = Clock::now();
+  while (Clock::now() - start < 30s && !everyone_sees(all, ids)) pump_all(all, 200ms);
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    EXPECT_EQ(known_avatars(*all[i]), ids) << "client on node " << i << " knows the room's three people";
+    for (const std::uint32_t id : ids)
+      EXPECT_GT(all[i]->frames_per_avatar[id], 0u) << "client on node " << i << " decodes no frame of avatar " << id;
+    EXPECT_TRUE(all[i]->errors.empty()) << all[i]->errors.front();
+  }
+  // Chat goes everywhere, whichever node it was written on.
+  codec::Chat line;
+  line.text = "hello from b";
+  clients[1]->send_message(line);
+  EXPECT_TRUE(eventually(
+      [&] {
+        pump_all(all, 50ms);
+        for (auto* c : all) {
+          bool heard = false;
+          for (const auto& chat : c->chat) heard = heard || chat.text == "hello from b";
+          if (!heard) return false;
+        }
+        return true;
+      },
+      10s));
+  const std::string owner = cluster.owner_of("meet");
+  EXPECT_FALSE(owner.empty()) << "the room has an owner in Redis";
+}
+
+TEST(Cluster, KillingTheOwnerTheRoomGoesOnWithinFiveSeconds) {
+  Cluster cluster;
+  for (const char* name : {"a", "b", "c"}) cluster.add_node(name);
+  for (std::size_t i = 0; i < 3; ++i)
+    ASSERT_TRUE(eventually([&] { return ready(cluster.node(i).http_port()); }, 20s));
+  std::vector<std::unique_ptr<RoomTestClient>> clients;
+  for (std::size_t i = 0; i < 3; ++i) clients.push_back(join_node(cluster.node(i), "meet", "P" + std::to_string(i)));
+  std::vector<RoomTestClient*> all;
+  std::set<std::uint32_t> ids;
+  for (auto& c : clients) {
+    all.push_back(c.get());
+    ids.insert(c->welcome->you);
+  }
+  const auto warm = Clock::now();
+  while (Clock::now() - warm < 30s && !everyone_sees(all, ids)) pump_all(all, 200ms);
+  ASSERT_TRUE(everyone_sees(all, ids)) << "the room did not come together before the kill";
+
+  const std::string owner = cluster.owner_of("meet");
+  const std::size_t dead = cluster.index_of(owner);
+  ASSERT_LT(dead, 3u) << "owner '" << owner << "' is not one of the nodes";
+  const std::uint32_t dead_id = clients[dead]->welcome->you;
+  const std::string dead_resume = clients[dead]->welcome->resume;
+  std::vector<RoomTestClient*> survivors;
+  for (std::size_t i = 0; i < 3; ++i)
+    if (i != dead) survivors.push_back(all[i]);
+  pump_all(survivors, 200ms);
+  std::vector<std::uint64_t> frames_before;
+  for (auto* c : survivors) frames_before.push_back(c->room_frames);
+  std::vector<std::size_t> left_before;
+  for (auto* c : survivors) left_before.push_back(c->presence.size());
+
+  ::kill(cluster.node(dead).process().pid(), SIGKILL);
+  const auto killed = Clock::now();
+  // The room goes on: both survivors decode new frames again...
+  pump_all(survivors, 1500ms);  // frames in flight at the kill are not the room going on
+  for (std::size_t i = 0; i < survivors.size(); ++i) frames_before[i] = survivors[i]->room_frames;
+  bool going_on = false;
+  while (Clock::now() - killed < 8s && !going_on) {
+    pump_all(survivors, 50ms);
+    going_on = true;
+    for (std::size_t i = 0; i < survivors.size(); ++i)
+      going_on = going_on && survivors[i]->room_frames >= frames_before[i] + 10;
+  }
+  const double seconds = std::chrono::duration<double>(Clock::now() - killed).count();
+  std::cout << "room going on again " << seconds << " s after its owner was killed (new owner "
+            << cluster.owner_of("meet") << ")" << std::endl;
+  EXPECT_TRUE(going_on) << "the survivors decode no new frames";
+  EXPECT_LT(seconds, 5.0) << "the room took over 5 s to go on";
+  // ...and nobody was lost: no one left, the dead node's person keeps their seat.
+  for (std::size_t i = 0; i < survivors.size(); ++i) {
+    EXPECT_EQ(known_avatars(*survivors[i]), ids) << "a survivor lost a member";
+    for (std::size_t p = left_before[i]; p < survivors[i]->presence.size(); ++p)
+      EXPECT_NE(survivors[i]->presence[p].change, codec::Presence::Change::left)
+          << "avatar " << survivors[i]->presence[p].avatar.id << " left";
+  }
+  EXPECT_NE(cluster.owner_of("meet"), owner);
+  // The person whose node died comes back to another node with their resume key: same seat.
+  RunningServer& other = cluster.node(dead == 0 ? 1 : 0);
+  auto back = join_node(other, "meet", "P" + std::to_string(dead), dead_resume);
+  ASSERT_TRUE(back->welcome.has_value());
+  EXPECT_EQ(back->welcome->you, dead_id) << "the seat kept for them is theirs again";
+  std::vector<RoomTestClient*> after = survivors;
+  after.push_back(back.get());
+  for (auto* c : after) c->frames_per_avatar.clear();
+  EXPECT_TRUE(eventually(
+      [&] {
+        pump_all(after, 100ms);
+        return everyone_sees(after, ids);
+      },
+      20s))
+      << "after the takeover everyone sees everyone again";
+}
+
+TEST(Cluster, RedisRestartsAndTheClusterRecovers) {
+  Cluster cluster;
+  cluster.add_node("a");
+  cluster.add_node("b");
+  for (std::size_t i = 0; i < 2; ++i) ASSERT_TRUE(eventually([&] { return ready(cluster.node(i).http_port()); }, 20s));
+  auto first = join_node(cluster.node(0), "meet", "First");
+  const std::string owner = cluster.owner_of("meet");
+  ASSERT_FALSE(owner.empty());
+  RunningServer& owner_node = cluster.node(cluster.index_of(owner));
+  RunningServer& other_node = cluster.node(1 - cluster.index_of(owner));
+
+  cluster.redis().stop();
+  EXPECT_TRUE(eventually([&] { return !ready(owner_node.http_port()) && !ready(other_node.http_port()); }, 10s))
+      << "nodes without Redis report not ready";
+  EXPECT_EQ(http_get(owner_node.http_port(), "/readyz").body, "no Redis\n");
+  // The owner keeps its room going for the people connected to it.
+  auto local = join_node(owner_node, "meet", "Local");
+  ASSERT_TRUE(local->welcome.has_value());
+  const std::uint64_t frames = local->room_frames;
+  local->pump_for(2s);
+  EXPECT_GT(local->room_frames, frames + 10) << "the owner stopped its room without Redis";
+
+  ASSERT_TRUE(cluster.redis().start()) << cluster.redis().error();
+  EXPECT_TRUE(eventually([&] { return ready(owner_node.http_port()) && ready(other_node.http_port()); }, 15s))
+      << "nodes are ready again once Redis is back";
+  EXPECT_TRUE(eventually([&] { return cluster.owner_of("meet") == owner; }, 10s))
+      << "the owner claims its room again in the new Redis";
+  // Bridged across nodes again: a newcomer on the other node sees the owner's people.
+  auto late = join_node(other_node, "meet", "Late");
+  ASSERT_TRUE(late->welcome.has_value());
+  std::set<std::uint32_t> people{first->welcome->you, local->welcome->you, late->welcome->you};
+  std::vector<RoomTestClient*> all{first.get(), local.get(), late.get()};
+  EXPECT_TRUE(eventually(
+      [&] {
+        pump_all(all, 100ms);
+        return everyone_sees(all, people);
+      },
+      30s))
+      << "the cluster did not recover";
+}
+
+TEST(Cluster, ASlowSubscriberOnOneNodeDoesNotSlowTheRoomOnAnother) {
+  Cluster cluster;
+  cluster.add_node("a");
+  cluster.add_node("b");
+  for (std::size_t i = 0; i < 2; ++i) ASSERT_TRUE(eventually([&] { return ready(cluster.node(i).http_port()); }, 20s));
+  auto watcher = join_node(cluster.node(0), "pace", "Watcher");
+  const std::string owner = cluster.owner_of("pace");
+  ASSERT_FALSE(owner.empty());
+  RunningServer& far = cluster.node(1 - cluster.index_of(owner));
+  auto steady = join_node(far, "pace", "Steady");
+  // A subscriber on the far node that reads nothing from now on, on a tiny buffer.
+  auto slow = std::make_unique<RoomTestClient>(Transport::websocket, far.http_port());
+  slow->shrink_receive_buffer(4096);
+  slow->hello("pace", "Slow", "", 1'000'000);
+  // Ticks the client's frames advance by per second of wall time, after
+  // what was already waiting in its socket is read.
+  auto tick_rate = [](RoomTestClient& c, std::chrono::milliseconds span) {
+    c.pump_for(500ms);
+    if (c.ticks.empty()) return 0.0;
+    const std::uint32_t first = c.ticks.back().second;
+    const auto start = Clock::now();
+    c.pump_for(span);
+    return (c.ticks.back().second - first) / std::chrono::duration<double>(Clock::now() - start).count();
+  };
+
+  watcher->pump_for(3s);
+  steady->pump_for(1s);
+  const double before = tick_rate(*watcher, 3000ms);
+  // The slow one's node has its own queue for it; the room ticks on for the others.
+  steady->pump_for(2s);
+  const double during = tick_rate(*watcher, 4000ms);
+  const double far_rate = tick_rate(*steady, 3000ms);
+  std::cout << "room ticks seen on the owner's node: " << before << "/s before, " << during
+            << "/s with a stuck subscriber on the other node; its neighbour there sees " << far_rate << "/s"
+            << std::endl;
+  EXPECT_GT(before, 20.0);
+  EXPECT_GT(during, 0.8 * before) << "the stuck subscriber slowed the room on the owner's node";
+  EXPECT_GT(far_rate, 0.8 * before) << "the stuck subscriber slowed its neighbour on its own node";
+}
+
+}  // namespace
+}  // namespace fw::test
