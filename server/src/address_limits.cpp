@@ -7,7 +7,7 @@ AddressLimits::AddressLimits(const AbuseLimits& limits) : limits_(limits) {}
 bool AddressLimits::open_connection(const std::string& key) {
   std::lock_guard lock(mutex_);
   Entry& entry = entries_[key];
-  if (entry.connections >= limits_.connections_per_address) return false;
+  if (entry.connections + remote_connections(key) >= limits_.connections_per_address) return false;
   ++entry.connections;
   return true;
 }
@@ -42,8 +42,48 @@ std::optional<double> AddressLimits::take(AddressRate rate, const std::string& k
   auto it = entries_.try_emplace(key).first;
   auto& bucket = it->second.buckets[static_cast<std::size_t>(rate)];
   if (!bucket) bucket.emplace(rate_of(rate), now);
-  if (bucket->take(now)) return std::nullopt;
+  if (bucket->take(now)) {
+    if (sharing_) spent_[{key, rate}] += 1;
+    return std::nullopt;
+  }
   return bucket->seconds_until(now);
+}
+
+std::vector<AddressLimits::Spent> AddressLimits::take_spending() {
+  std::lock_guard lock(mutex_);
+  std::vector<Spent> spent;
+  for (const auto& [what, tokens] : spent_) spent.push_back({what.first, what.second, tokens});
+  spent_.clear();
+  return spent;
+}
+
+void AddressLimits::charge(AddressRate rate, const std::string& key, double tokens, Clock::time_point now) {
+  std::lock_guard lock(mutex_);
+  auto it = entries_.try_emplace(key).first;
+  auto& bucket = it->second.buckets[static_cast<std::size_t>(rate)];
+  if (!bucket) bucket.emplace(rate_of(rate), now);
+  bucket->spend(now, tokens);
+}
+
+std::map<std::string, std::size_t> AddressLimits::connection_counts() const {
+  std::lock_guard lock(mutex_);
+  std::map<std::string, std::size_t> counts;
+  for (const auto& [key, entry] : entries_)
+    if (entry.connections != 0) counts[key] = entry.connections;
+  return counts;
+}
+
+void AddressLimits::set_remote_connections(const std::string& node, std::map<std::string, std::size_t> counts) {
+  std::lock_guard lock(mutex_);
+  if (counts.empty()) remote_.erase(node);
+  else remote_[node] = std::move(counts);
+}
+
+std::size_t AddressLimits::remote_connections(const std::string& key) const {
+  std::size_t total = 0;
+  for (const auto& [node, counts] : remote_)
+    if (const auto it = counts.find(key); it != counts.end()) total += it->second;
+  return total;
 }
 
 UploadShare AddressLimits::reserve_upload(const std::string& key, std::size_t bytes) {

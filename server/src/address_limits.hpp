@@ -12,6 +12,8 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "abuse_limits.hpp"
 #include "token_bucket.hpp"
@@ -52,6 +54,27 @@ class AddressLimits {
 
   const AbuseLimits& limits() const { return limits_; }
 
+  // Cluster: the limits hold across nodes (cluster_limits.hpp). Each node
+  // tells the others, twice a second, what each address spent here and
+  // how many connections it holds here; they take the one from their
+  // buckets and add the other to their counts.
+  struct Spent {
+    std::string key;
+    AddressRate rate;
+    double tokens = 0;
+  };
+  /// From now on every token taken here is noted for take_spending().
+  void share_spending() { sharing_ = true; }
+  /// What was taken here since the last call.
+  std::vector<Spent> take_spending();
+  /// Tokens an address spent on another node, taken here too.
+  void charge(AddressRate rate, const std::string& key, double tokens, Clock::time_point now = Clock::now());
+  /// Connections open here, by address.
+  std::map<std::string, std::size_t> connection_counts() const;
+  /// The connections `node` holds, by address; replaces what it said before
+  /// (an empty map: it holds none, or left the cluster).
+  void set_remote_connections(const std::string& node, std::map<std::string, std::size_t> counts);
+
  private:
   struct Entry {
     std::size_t connections = 0;
@@ -63,8 +86,13 @@ class AddressLimits {
   /// Forgets every idle entry; amortised over many takes.
   void sweep(Clock::time_point now);
 
+  std::size_t remote_connections(const std::string& key) const;
+
   AbuseLimits limits_;
   mutable std::mutex mutex_;
+  bool sharing_ = false;
+  std::map<std::pair<std::string, AddressRate>, double> spent_;
+  std::map<std::string, std::map<std::string, std::size_t>> remote_;  ///< node -> address -> connections
   std::map<std::string, Entry> entries_;
   std::size_t upload_bytes_ = 0;
   std::size_t takes_since_sweep_ = 0;

@@ -15,8 +15,7 @@ void put_text(ByteWriter& w, const std::string& text) {
 }
 std::string get_text(ByteReader& r) {
   const std::uint32_t size = r.varint();
-  if (r.failed() || size > r.remaining()) return {};
-  const auto bytes = r.bytes(size);
+  const auto bytes = r.bytes(r.failed() ? 0 : size);  // past the end: the reader fails
   return {reinterpret_cast<const char*>(bytes.data()), bytes.size()};
 }
 void put_bytes(ByteWriter& w, const Bytes& bytes) {
@@ -25,8 +24,7 @@ void put_bytes(ByteWriter& w, const Bytes& bytes) {
 }
 Bytes get_bytes(ByteReader& r) {
   const std::uint32_t size = r.varint();
-  if (r.failed() || size > r.remaining()) return {};
-  const auto bytes = r.bytes(size);
+  const auto bytes = r.bytes(r.failed() ? 0 : size);
   return {bytes.begin(), bytes.end()};
 }
 

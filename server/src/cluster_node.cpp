@@ -5,7 +5,9 @@
 #include <boost/asio/post.hpp>
 #include <spdlog/spdlog.h>
 
+#include "client_session.hpp"
 #include "cluster_keys.hpp"
+#include "cluster_limits.hpp"
 #include "demo_room.hpp"
 #include "room.hpp"
 #include "room_registry.hpp"
@@ -73,7 +75,10 @@ ClusterNode::ClusterNode(ServerContext& context, net::any_io_executor executor, 
           }});
 }
 
-ClusterNode::~ClusterNode() { context_.store->set_replica({}); }
+ClusterNode::~ClusterNode() {
+  context_.store->set_replica({});
+  context_.tokens.on_news({});
+}
 
 void ClusterNode::adopt_server_key() {
   // Avatar keys must open a face on every node: the first node's key is the cluster's.
@@ -89,6 +94,14 @@ void ClusterNode::adopt_server_key() {
 void ClusterNode::start() {
   context_.bus = this;
   context_.cluster_up = false;
+  context_.addresses->share_spending();
+  // A token taken or let go here is news for every node at once.
+  context_.tokens.on_news([this](const TokenNews& news) {
+    LimitsNews limits{.node = node_, .tokens = {news}};
+    net::post(strand_, [this, message = encode_limits(limits)] {
+      if (up_ && commands_) commands_->command({"PUBLISH", keys::kLimitsChannel, message});
+    });
+  });
   net::post(strand_, [this] {
     connect();
     schedule_heartbeat();
@@ -145,7 +158,7 @@ void ClusterNode::on_connected() {
   commands_->on_lost([this](const std::string& why) { lost(why); });
   subscriber_->on_lost([this](const std::string& why) { lost(why); });
   subscriber_->on_message([this](std::string_view channel, std::string_view payload) { on_message(channel, payload); });
-  std::vector<std::string> channels{keys::node_inbox(node_)};
+  std::vector<std::string> channels{keys::node_inbox(node_), keys::kLimitsChannel};
   for (const auto& room : owned_) channels.push_back(keys::room_up(room));
   for (const auto& room : bridged_) channels.push_back(keys::room_down(room));
   subscriber_->subscribe(channels);
@@ -196,9 +209,33 @@ void ClusterNode::heartbeat() {
     return connect();
   }
   report_alive();
+  share_limits();
   renew_leases();
   watch_nodes();
   adopt_orphans();
+}
+
+void ClusterNode::share_limits() {
+  LimitsNews news{.node = node_, .beat = true};
+  news.spent = context_.addresses->take_spending();
+  news.connections = context_.addresses->connection_counts();
+  news.tokens = context_.tokens.held_here();
+  commands_->command({"PUBLISH", keys::kLimitsChannel, encode_limits(news)});
+}
+
+void ClusterNode::apply_limits(std::string_view message) {
+  auto news = decode_limits(message);
+  if (!news || news->node == node_) return;
+  const auto now = std::chrono::steady_clock::now();
+  for (const auto& spent : news->spent) context_.addresses->charge(spent.rate, spent.key, spent.tokens, now);
+  if (news->beat) context_.addresses->set_remote_connections(news->node, std::move(news->connections));
+  // A hold lasts a few beats unless told again (a node that dies stops telling).
+  for (const auto& token : news->tokens) {
+    context_.tokens.remote_news(news->node, token, now + std::chrono::seconds(3));
+    if (token.taken_from != node_) continue;
+    if (auto holder = context_.tokens.give_way(token.token_hash))
+      holder->close(codec::CloseCode::unauthorized, "replaced by your newer connection");
+  }
 }
 
 void ClusterNode::report_alive() {
@@ -252,6 +289,7 @@ void ClusterNode::watch_nodes() {
       for (const auto& gone : live_)
         if (!live.count(gone)) {
           spdlog::warn("cluster: node {} stopped answering; its people in rooms owned here are away", gone);
+          context_.addresses->set_remote_connections(gone, {});
           for (const auto& name : owned_)
             if (auto room = context_.rooms->find(name)) room->node_gone(gone);
         }
@@ -380,6 +418,7 @@ void ClusterNode::bridge(const std::string& room) {
 void ClusterNode::on_message(std::string_view channel_view, std::string_view payload) {
   const std::string channel(channel_view);
   const auto* data = reinterpret_cast<const std::uint8_t*>(payload.data());
+  if (channel == keys::kLimitsChannel) return apply_limits(payload);
   if (channel == keys::node_inbox(node_)) {
     if (payload.rfind("own ", 0) == 0) {
       const std::string room(payload.substr(4));

@@ -83,6 +83,9 @@ class ClusterNode : public RoomBus {
   void own_unplaced();
   void bridge(const std::string& room);
   void on_message(std::string_view channel, std::string_view payload);
+  /// The per-address limits and tokens in use, to and from the others (cluster_limits.hpp).
+  void share_limits();
+  void apply_limits(std::string_view message);
   std::string least_loaded() const;
   void publish(const std::string& channel, bridge::Bytes message);
   void reshare_avatars();

@@ -79,9 +79,9 @@ bool avatar_key_matches(std::string_view server_key, std::string_view asset, std
 
 std::string random_key(std::size_t bytes) { return base64url(random_bytes(bytes)); }
 
-std::string resume_hash(std::string_view resume) {
-  if (resume.empty()) return {};
-  const std::string digest = hmac_sha256("facewire resume key", resume);
+std::string secret_hash(std::string_view secret) {
+  if (secret.empty()) return {};
+  const std::string digest = hmac_sha256("facewire secret", secret);
   return base64url(digest);
 }
 

@@ -20,10 +20,11 @@ std::string avatar_key(std::string_view server_key, std::string_view asset);
 /// Whether `key` is `asset`'s, compared in constant time.
 bool avatar_key_matches(std::string_view server_key, std::string_view asset, std::string_view key);
 
-/// What a cluster keeps of a resume key (its hash, in base64url): enough to
-/// recognise the key when a person shows it again, useless to anyone who
-/// reads Redis.
-std::string resume_hash(std::string_view resume);
+/// What a cluster keeps of a secret a person holds (a resume key, a join
+/// token): its hash, in base64url, enough to recognise the secret when it
+/// is shown again, useless to anyone who reads Redis. Empty for empty.
+std::string secret_hash(std::string_view secret);
+inline std::string resume_hash(std::string_view resume) { return secret_hash(resume); }
 
 /// `bytes` random bytes from the system's generator, in base64url.
 std::string random_key(std::size_t bytes = 16);

@@ -25,6 +25,12 @@ class TokenBucket {
     tokens_ -= cost;
     return true;
   }
+  /// Takes `cost` tokens spent elsewhere (another node of a cluster), as
+  /// many as there are.
+  void spend(Clock::time_point now, double cost) {
+    refill(now);
+    tokens_ = std::max(0.0, tokens_ - cost);
+  }
   /// Seconds until `cost` tokens are there (0: now).
   double seconds_until(Clock::time_point now, double cost = 1) {
     refill(now);

@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "http_get.hpp"
+#include "join_token.hpp"
 #include "redis_blocking.hpp"
 #include "redis_process.hpp"
 #include "room_test_server.hpp"
@@ -30,9 +31,10 @@ class Cluster {
   Cluster() { EXPECT_TRUE(redis_.ok()) << redis_.error(); }
   RedisProcess& redis() { return redis_; }
 
-  RunningServer& add_node(const std::string& name) {
-    nodes_.push_back(std::make_unique<RunningServer>("--redis " + redis_.url() + " --node " + name +
-                                                     " --rejoin-grace 60" + kManyClientsFromOneAddress));
+  /// `flags`: the limits this node runs with (by default, many clients from 127.0.0.1).
+  RunningServer& add_node(const std::string& name, const std::string& flags = kManyClientsFromOneAddress) {
+    nodes_.push_back(
+        std::make_unique<RunningServer>("--redis " + redis_.url() + " --node " + name + " --rejoin-grace 60 " + flags));
     names_.push_back(name);
     return *nodes_.back();
   }
@@ -306,6 +308,61 @@ TEST(Cluster, ASlowSubscriberOnOneNodeDoesNotSlowTheRoomOnAnother) {
   EXPECT_GT(before, 20.0);
   EXPECT_GT(during, 0.8 * before) << "the stuck subscriber slowed the room on the owner's node";
   EXPECT_GT(far_rate, 0.8 * before) << "the stuck subscriber slowed its neighbour on its own node";
+}
+
+TEST(Cluster, AnAddresssConnectionsAreCountedAcrossNodes) {
+  Cluster cluster;
+  const std::string cap = kManyClientsFromOneAddress + " --max-connections-per-address 4";
+  cluster.add_node("a", cap);
+  cluster.add_node("b", cap);
+  for (std::size_t i = 0; i < 2; ++i) ASSERT_TRUE(eventually([&] { return ready(cluster.node(i).http_port()); }, 20s));
+  std::vector<std::unique_ptr<RoomTestClient>> held;
+  for (int i = 0; i < 3; ++i) held.push_back(join_node(cluster.node(0), "cap", "A" + std::to_string(i)));
+  std::this_thread::sleep_for(1500ms);  // a beat or two: b hears what a holds
+  auto fourth = join_node(cluster.node(1), "cap", "B0");
+  EXPECT_TRUE(fourth->welcome.has_value()) << "the fourth connection from the address is within its share";
+  std::this_thread::sleep_for(1500ms);
+  auto fifth = std::make_unique<RoomTestClient>(Transport::websocket, cluster.node(1).http_port());
+  const bool refused = !fifth->connected() || fifth->pump_until([&] { return fifth->closed(); }, 3s);
+  EXPECT_TRUE(refused) << "a fifth connection from one address, on another node, was let in";
+  // The share frees when connections close on the other node.
+  held.clear();
+  std::this_thread::sleep_for(2s);
+  auto later = join_node(cluster.node(1), "cap", "B1");
+  EXPECT_TRUE(later->welcome.has_value());
+}
+
+TEST(Cluster, AJoinTokenAdmitsOnePersonAcrossNodes) {
+  Cluster cluster;
+  const std::string secret = " --auth-secret s3cret" + kManyClientsFromOneAddress;
+  cluster.add_node("a", secret);
+  cluster.add_node("b", secret);
+  for (std::size_t i = 0; i < 2; ++i) ASSERT_TRUE(eventually([&] { return ready(cluster.node(i).http_port()); }, 20s));
+  const auto now = std::chrono::duration_cast<std::chrono::seconds>(std::chrono::system_clock::now().time_since_epoch()).count();
+  const std::string token = server::mint_join_token({"meet", "Ann", now + 600}, "s3cret");
+  auto hello_with = [&](RunningServer& node, const std::string& resume) {
+    auto client = std::make_unique<RoomTestClient>(Transport::websocket, node.http_port());
+    codec::Hello hello;
+    hello.room = "meet";
+    hello.name = "Ann";
+    hello.token = token;
+    hello.resume = resume;
+    client->send_message(hello);
+    client->pump_until([&] { return client->welcome.has_value() || client->closed(); }, 10s);
+    return client;
+  };
+  auto first = hello_with(cluster.node(0), "");
+  ASSERT_TRUE(first->welcome.has_value());
+  std::this_thread::sleep_for(1s);
+  auto second = hello_with(cluster.node(1), "");
+  EXPECT_FALSE(second->welcome.has_value()) << "one token admitted two people on two nodes";
+  ASSERT_TRUE(second->closing.has_value());
+  EXPECT_NE(second->closing->reason.find("in use"), std::string::npos) << second->closing->reason;
+  // The same person, back on another node with their resume key, takes it over; the old link is told.
+  auto back = hello_with(cluster.node(1), first->welcome->resume);
+  EXPECT_TRUE(back->welcome.has_value()) << (back->closing ? back->closing->reason : "no answer");
+  EXPECT_TRUE(first->pump_until([&] { return first->closing.has_value(); }, 5s));
+  if (first->closing) EXPECT_NE(first->closing->reason.find("replaced"), std::string::npos) << first->closing->reason;
 }
 
 }  // namespace
