@@ -76,7 +76,7 @@ bool parse_frame_size(const std::string& text, int& width, int& height) {
 }
 
 bool plan_join(const JoinArgs& args, JoinPlan& plan, std::string& error) {
-  return parse_server_url(args.url, plan.url, error) && check_session_fields(args, error) &&
+  return parse_server_list(args.url, plan.servers, error) && check_session_fields(args, error) &&
          plan_rendering(args, plan.render, error);
 }
 

@@ -7,12 +7,13 @@
 
 #include "fw/render/face_renderer.hpp"
 #include "room_session.hpp"
-#include "server_url.hpp"
+#include "server_list.hpp"
 
 namespace fw::client {
 
 struct JoinArgs {
-  std::string url, room, name, photo, avatar, api, token;
+  std::string url;  ///< one server URL, or several separated by commas (server_list.hpp)
+  std::string room, name, photo, avatar, api, token;
   bool window = false;
   std::string out_dir, y4m;
   int frames = 0;
@@ -30,12 +31,12 @@ struct JoinArgs {
 
 /// What the checked arguments come to.
 struct JoinPlan {
-  ServerUrl url;
+  std::vector<ServerUrl> servers;  ///< in the order given: the first that answers is used
   render::RendererOptions render;  ///< frame size and anti-aliasing
 };
 
-/// Checks what CLI11 does not (the URL, room and display name, chat lines,
-/// token, frame size). @return false and `error`, which says what to change.
+/// Checks what CLI11 does not (the server URLs, room and display name,
+/// chat lines, token, frame size). @return false and `error`, which says what to change.
 bool plan_join(const JoinArgs& args, JoinPlan& plan, std::string& error);
 
 /// "WIDTHxHEIGHT" as two whole numbers around an x; false if it is not.
@@ -45,7 +46,8 @@ bool parse_frame_size(const std::string& text, int& width, int& height);
 /// so `auto` leaves them off below 32 kbit/s.
 bool wants_timestamps(const JoinArgs& args);
 
-/// The session's options for these arguments (without on_event).
+/// The session's options for these arguments (without on_event, and the
+/// servers, which join_command fills in).
 /// @param asset        the uploaded avatar's asset id, or ""
 /// @param key          the key the upload answered, or ""
 /// @param own_package  the uploaded package, when it was one

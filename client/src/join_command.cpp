@@ -14,6 +14,7 @@
 #include "self_view.hpp"
 #include "session_thread.hpp"
 #include "command_failure.hpp"
+#include "failover_policy.hpp"
 
 namespace fw::client {
 namespace {
@@ -37,15 +38,43 @@ std::unique_ptr<RoomView> start_view(const FrameOutputs& outputs, const render::
   return view;
 }
 
+// How the session reaches each server of the list, and uploads the face
+// again to one that does not know it (it went to the first that answered).
+SessionNetwork session_network(const JoinArgs& args, const JoinPlan& plan, const JoinNetwork& network,
+                               const UploadedAvatar& uploaded) {
+  SessionNetwork session;
+  session.open_transport = [open = network.open_transport, servers = plan.servers](boost::asio::io_context& io,
+                                                                                   std::size_t server) {
+    return open(io, servers.at(server));
+  };
+  std::vector<UploadTarget> targets;
+  std::string error;
+  if (!uploaded.body || !network.upload_avatar_async || !upload_targets(args, plan.servers, targets, error))
+    return session;
+  const int timeout_s = upload_timeout_s(uploaded.body->size(), args.max_kbps);
+  session.upload_avatar = [upload = network.upload_avatar_async, targets, type = uploaded.content_type,
+                           body = uploaded.body, timeout_s](boost::asio::io_context& io, std::size_t server,
+                                                            ReuploadDone done) {
+    upload(io, targets.at(server), type, body, timeout_s,
+           [done = std::move(done)](bool ok, const UploadAnswer& answer, const std::string& why) {
+             done(ReuploadResult{.ok = ok,
+                                 .credentials = {answer.asset, answer.key},
+                                 .try_elsewhere = !ok && another_server_may_take_it(answer.http_status),
+                                 .error = why});
+           });
+  };
+  return session;
+}
+
 // The session runs on its own thread while the render loop runs here; the
 // session is stopped before the summary is made.
 JoinOutcome play_room(const JoinArgs& args, const JoinPlan& plan, const JoinNetwork& network,
                       const UploadedAvatar& uploaded, RoomState& state, RoomView* view, FrameOutputs& outputs) {
   SessionOptions options = session_options(args, uploaded.asset, uploaded.key, uploaded.own_package);
   options.on_event = [](const std::string& text) { std::cerr << text << "\n"; };
-  SessionThread session(std::move(options), state, [&network, url = plan.url](boost::asio::io_context& io) {
-    return network.open_transport(io, url);
-  });
+  for (const ServerUrl& server : plan.servers) options.servers.push_back(server.text);
+  options.first_server = uploaded.server;
+  SessionThread session(std::move(options), state, session_network(args, plan, network, uploaded));
   JoinOutcome outcome = JoinLoop(args, state, view, outputs, std::cerr).run(g_interrupted);
   session.stop();
   return outcome;
@@ -74,8 +103,9 @@ void run(const JoinArgs& args, const JoinNetwork& network) {
   JoinPlan plan;
   if (!plan_join(args, plan, error)) fail_command("join", 2, error);
   OwnAvatar own;
-  UploadTarget target;
-  if (brings_own_avatar(args) && (!upload_target(args, plan.url, target, error) || !prepare_own_avatar(args, own, error)))
+  std::vector<UploadTarget> targets;
+  if (brings_own_avatar(args) &&
+      (!upload_targets(args, plan.servers, targets, error) || !prepare_own_avatar(args, own, error)))
     fail_command("join", 2, error);
   FrameOutputs outputs;
   if (!open_frame_outputs(args, plan.render.width, plan.render.height, outputs, error)) fail_command("join", 2, error);
@@ -86,7 +116,7 @@ void run(const JoinArgs& args, const JoinNetwork& network) {
     if (!show_self_view(*view, outputs, args.name, error)) fail_command("join", 1, error);
   }
   UploadedAvatar uploaded;
-  if (!upload_prepared_avatar(args, plan.url, network.upload_avatar, std::move(own), uploaded, error))
+  if (!upload_prepared_avatar(args, plan.servers, network.upload_avatar, std::move(own), uploaded, error))
     fail_command("join", 2, error);
   watch_signals();
   RoomState state;
@@ -99,13 +129,18 @@ void run(const JoinArgs& args, const JoinNetwork& network) {
 void add_join_command(CLI::App& app, JoinNetwork network) {
   auto args = std::make_shared<JoinArgs>();
   CLI::App* cmd = app.add_subcommand("join", "Join a room as an avatar and show its faces");
-  cmd->add_option("url", args->url, "server: ws://HOST:PORT/ (WebSocket) or tcp://HOST:PORT (native port)")->required();
+  cmd->add_option("url", args->url,
+                  "server: ws://HOST:PORT/ (WebSocket) or tcp://HOST:PORT (native port); several, comma-separated "
+                  "(ws://a:8080/,ws://b:8080/): the first that answers, the next when its link fails")
+      ->required();
   cmd->add_option("--room", args->room, "room name (A-Z a-z 0-9 _ - ., created on first join)")->required();
   cmd->add_option("--name", args->name, "your display name")->required();
   cmd->add_option("--photo", args->photo, "a photo of your face (JPEG, PNG or WebP): downsized to ~30 KB and uploaded");
   cmd->add_option("--avatar", args->avatar,
                   "a prepared avatar package (.fwa) to upload; with --photo, the photo it was prepared from goes along");
-  cmd->add_option("--api", args->api, "the server's HTTP port for uploads, http://HOST:PORT (default: the ws:// URL's)");
+  cmd->add_option("--api", args->api,
+                  "the server's HTTP port for uploads, http://HOST:PORT (default: the ws:// URL's); with several "
+                  "servers one for all, or one per server, comma-separated");
   cmd->add_option("--token", args->token, "a join token from the room's host (facewire-server token)");
   cmd->add_flag("--window", args->window, "show the room in a window (needs a display)");
   cmd->add_option("--out", args->out_dir, "write the room's frames as PNG files into this directory");

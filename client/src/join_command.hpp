@@ -18,7 +18,9 @@ namespace fw::client {
 struct JoinNetwork {
   /// A transport to `url` on `io` for each connection attempt.
   std::function<std::shared_ptr<MessageTransport>(boost::asio::io_context& io, const ServerUrl& url)> open_transport;
-  AvatarUploader upload_avatar;
+  AvatarUploader upload_avatar;  ///< before the session, to the first server that answers
+  /// During the session, to another server of the list that does not know the face.
+  AsyncAvatarUploader upload_avatar_async;
 };
 
 /// Adds the `join` subcommand to `app`; its callback runs the session and

@@ -59,8 +59,10 @@ bool JoinLoop::follow_room(Clock::time_point now) {
 
 bool JoinLoop::joined_in_time(Clock::time_point now) {
   if (outcome_.ever_joined || now - start_ < std::chrono::duration<double>(args_.join_timeout_s)) return true;
-  outcome_.error = "could not join room " + args_.room + " at " + args_.url + " within " +
-                   std::to_string(static_cast<int>(args_.join_timeout_s)) + " s; is the server running there?";
+  const bool several = args_.url.find(',') != std::string::npos;
+  outcome_.error = "could not join room " + args_.room + (several ? " at any of " : " at ") + args_.url + " within " +
+                   std::to_string(static_cast<int>(args_.join_timeout_s)) + " s; is " +
+                   (several ? "a server" : "the server") + " running there?";
   outcome_.status = 1;
   return false;
 }

@@ -14,7 +14,8 @@ int main(int argc, char** argv) {
   CLI::App app{"facewire thin client: render avatars, join rooms"};
   app.require_subcommand(1);
   fw::client::add_render_command(app);
-  fw::client::add_join_command(app, {fw::client::make_socket_transport, fw::client::upload_avatar});
+  fw::client::add_join_command(
+      app, {fw::client::make_socket_transport, fw::client::upload_avatar, fw::client::async_upload_avatar});
 
   try {
     app.parse(argc, argv);

@@ -45,4 +45,8 @@ class MessageTransport : public std::enable_shared_from_this<MessageTransport> {
 /// session reconnects through it after a drop).
 using TransportFactory = std::function<std::shared_ptr<MessageTransport>()>;
 
+/// The same for a list of servers: a transport to the server of this index
+/// (the session moves through the list when a link fails).
+using ServerTransportFactory = std::function<std::shared_ptr<MessageTransport>(std::size_t server)>;
+
 }  // namespace fw::client

@@ -1,9 +1,11 @@
 #include "own_avatar.hpp"
 
 #include "fw/model/avatar_package.hpp"
+#include "failover_policy.hpp"
 #include "fw/model/file_io.hpp"
 #include "package_with_photo.hpp"
 #include "photo_downsizer.hpp"
+#include "server_list.hpp"
 
 namespace fw::client {
 namespace {
@@ -74,6 +76,24 @@ bool upload_target(const JoinArgs& args, const ServerUrl& url, UploadTarget& tar
   return true;
 }
 
+bool upload_targets(const JoinArgs& args, const std::vector<ServerUrl>& servers, std::vector<UploadTarget>& targets,
+                    std::string& error) {
+  const std::vector<std::string> apis = args.api.empty() ? std::vector<std::string>{} : split_at_commas(args.api);
+  if (apis.size() > 1 && apis.size() != servers.size()) {
+    error = "--api names " + std::to_string(apis.size()) + " HTTP addresses for " + std::to_string(servers.size()) +
+            " servers: give one for them all, or one per server in the same order";
+    return false;
+  }
+  std::vector<UploadTarget> found(servers.size());
+  for (std::size_t i = 0; i < servers.size(); ++i) {
+    JoinArgs one = args;
+    one.api = apis.empty() ? "" : apis[apis.size() == 1 ? 0 : i];
+    if (!upload_target(one, servers[i], found[i], error)) return false;
+  }
+  targets = std::move(found);
+  return true;
+}
+
 bool prepare_own_avatar(const JoinArgs& args, OwnAvatar& avatar, std::string& error) {
   if (!args.photo.empty() && !args.avatar.empty()) return read_package_and_photo(args, avatar, error);
   return args.photo.empty() ? read_package(args.avatar, avatar, error) : read_photo(args.photo, avatar, error);
@@ -94,18 +114,40 @@ bool upload_own_avatar(const JoinArgs& args, const ServerUrl& url, const AvatarU
 
 bool upload_prepared_avatar(const JoinArgs& args, const ServerUrl& url, const AvatarUploader& uploader,
                             OwnAvatar avatar, UploadedAvatar& uploaded, std::string& error) {
+  return upload_prepared_avatar(args, std::vector<ServerUrl>{url}, uploader, std::move(avatar), uploaded, error);
+}
+
+bool upload_prepared_avatar(const JoinArgs& args, const std::vector<ServerUrl>& servers,
+                            const AvatarUploader& uploader, OwnAvatar avatar, UploadedAvatar& uploaded,
+                            std::string& error) {
   if (!brings_own_avatar(args)) return true;
-  UploadTarget target;
-  if (!upload_target(args, url, target, error)) return false;
+  std::vector<UploadTarget> targets;
+  if (!upload_targets(args, servers, targets, error)) return false;
   const int timeout_s = upload_timeout_s(avatar.bytes.size(), args.max_kbps);
-  UploadAnswer answer;
-  if (!uploader(target, avatar.content_type, avatar.bytes, timeout_s, answer, error)) return false;
-  uploaded.asset = std::move(answer.asset);
-  uploaded.key = std::move(answer.key);
-  uploaded.bytes = avatar.bytes.size();
-  if (!avatar.package.empty())
-    uploaded.own_package = std::make_shared<const std::vector<std::uint8_t>>(std::move(avatar.package));
-  return true;
+  std::string failures;  // of the servers that did not take it, for when none did
+  for (std::size_t i = 0; i < targets.size(); ++i) {
+    UploadAnswer answer;
+    std::string why;
+    if (!uploader(targets[i], avatar.content_type, avatar.bytes, timeout_s, answer, why)) {
+      if (servers.size() == 1 || !another_server_may_take_it(answer.http_status)) {
+        error = std::move(why);
+        return false;
+      }
+      failures += (failures.empty() ? "" : "; ") + servers[i].text + ": " + why;
+      continue;
+    }
+    uploaded.asset = std::move(answer.asset);
+    uploaded.key = std::move(answer.key);
+    uploaded.bytes = avatar.bytes.size();
+    uploaded.server = i;
+    uploaded.content_type = avatar.content_type;
+    uploaded.body = std::make_shared<const std::vector<std::uint8_t>>(std::move(avatar.bytes));
+    if (!avatar.package.empty())
+      uploaded.own_package = std::make_shared<const std::vector<std::uint8_t>>(std::move(avatar.package));
+    return true;
+  }
+  error = "no server took the upload of your face: " + failures;
+  return false;
 }
 
 }  // namespace fw::client

@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include <boost/asio/io_context.hpp>
+
 #include "join_arguments.hpp"
 #include "server_url.hpp"
 
@@ -28,6 +30,7 @@ struct UploadTarget {
 struct UploadAnswer {
   std::string asset;  ///< the asset id, for hello
   std::string key;    ///< the secret that lets this client wear the face, for hello
+  int http_status = 0;  ///< the answer's status, also when it refused; 0 when none came
 };
 
 /// Posts `body` to the target's /api/avatars within `timeout_s`; true and
@@ -35,6 +38,12 @@ struct UploadAnswer {
 using AvatarUploader = std::function<bool(const UploadTarget& target, const std::string& content_type,
                                           std::span<const std::uint8_t> body, int timeout_s, UploadAnswer& answer,
                                           std::string& error)>;
+/// The same on `io` (the session's, while it runs): `done(ok, answer, error)`
+/// runs there when the upload is over.
+using AsyncAvatarUploader = std::function<void(
+    boost::asio::io_context& io, const UploadTarget& target, const std::string& content_type,
+    std::shared_ptr<const std::vector<std::uint8_t>> body, int timeout_s,
+    std::function<void(bool ok, const UploadAnswer& answer, const std::string& error)> done)>;
 
 /// What goes up: the downsized photo, the package as it was read, or both.
 struct OwnAvatar {
@@ -49,6 +58,10 @@ struct UploadedAvatar {
   std::string asset;         ///< for hello; empty: the server makes a face for the name
   std::string key;           ///< the asset's key, for hello
   std::size_t bytes = 0;     ///< uploaded
+  std::size_t server = 0;    ///< the index of the server that took it (of several: the first that answered)
+  /// What went up, for a server of the list that does not know the face.
+  std::string content_type;
+  std::shared_ptr<const std::vector<std::uint8_t>> body;
   /// The package, when one was uploaded: the client draws its own face from it.
   std::shared_ptr<const std::vector<std::uint8_t>> own_package;
 };
@@ -59,6 +72,10 @@ inline bool brings_own_avatar(const JoinArgs& args) { return !args.photo.empty()
 /// Where uploads go: --api, or the ws:// URL's own host and port (the
 /// WebSocket shares the HTTP port). A tcp:// URL needs --api.
 bool upload_target(const JoinArgs& args, const ServerUrl& url, UploadTarget& target, std::string& error);
+/// The same for each of several servers: --api names one HTTP address for
+/// them all, or one per server in the same order (comma-separated).
+bool upload_targets(const JoinArgs& args, const std::vector<ServerUrl>& servers, std::vector<UploadTarget>& targets,
+                    std::string& error);
 
 /// Reads --photo (decoded, downsized, re-encoded as JPEG), --avatar (a
 /// package that must parse), or both (the package with the photo it was
@@ -79,5 +96,12 @@ bool upload_own_avatar(const JoinArgs& args, const ServerUrl& url, const AvatarU
 /// self view can show it while the upload runs).
 bool upload_prepared_avatar(const JoinArgs& args, const ServerUrl& url, const AvatarUploader& uploader,
                             OwnAvatar avatar, UploadedAvatar& uploaded, std::string& error);
+/// The same with several servers: each in turn until one takes it. A
+/// server that does not answer, or is busy or draining, passes it to the
+/// next; a refusal (no face in the photo, a bad token) is the same
+/// everywhere and ends the step. `uploaded.server` says which took it.
+bool upload_prepared_avatar(const JoinArgs& args, const std::vector<ServerUrl>& servers,
+                            const AvatarUploader& uploader, OwnAvatar avatar, UploadedAvatar& uploaded,
+                            std::string& error);
 
 }  // namespace fw::client

@@ -9,33 +9,27 @@ namespace fw::client {
 namespace asio = boost::asio;
 using Clock = std::chrono::steady_clock;
 
-namespace {
-
-// Closing codes after which trying again cannot help: the person must
-// change something (token, room, name, avatar, client version).
-bool refused_for_good(codec::CloseCode code) {
-  switch (code) {
-    case codec::CloseCode::protocol_error:
-    case codec::CloseCode::message_too_large:
-    case codec::CloseCode::unsupported_version:
-    case codec::CloseCode::unauthorized:
-    case codec::CloseCode::room_full:
-    case codec::CloseCode::bad_request:
-      return true;
-    default:
-      return false;
-  }
-}
-
-}  // namespace
-
 RoomSession::RoomSession(asio::io_context& io, SessionOptions options, RoomState& state, TransportFactory transports)
+    : RoomSession(io, std::move(options), state,
+                  [transports = std::move(transports)](std::size_t) { return transports(); }) {}
+
+RoomSession::RoomSession(asio::io_context& io, SessionOptions options, RoomState& state,
+                         ServerTransportFactory transports)
     : io_(io),
       options_(std::move(options)),
       state_(state),
       transports_(std::move(transports)),
+      rotation_(options_.servers.size(), options_.first_server),
+      credentials_(rotation_.count()),
+      uploaded_to_(rotation_.count(), false),
+      welcomed_credentials_{options_.avatar_asset, options_.avatar_key},
       reconnect_timer_(io),
-      housekeeping_timer_(io) {}
+      housekeeping_timer_(io) {
+  if (options_.avatar_asset.empty()) return;
+  // The face went up to the first server before the session began.
+  credentials_[rotation_.current()] = welcomed_credentials_;
+  uploaded_to_[rotation_.current()] = true;
+}
 
 RoomSession::~RoomSession() = default;
 
@@ -69,9 +63,17 @@ std::uint64_t RoomSession::now_us() const {
 // ---------------------------------------------------------------------------
 // A connection's life.
 
+std::string RoomSession::server_name(std::size_t server) const {
+  return server < options_.servers.size() ? options_.servers[server] : "the server";
+}
+
 void RoomSession::connect() {
   if (stopped_) return;
-  transport_ = transports_();
+  {
+    std::lock_guard lock(state_.mutex);
+    state_.server = server_name(rotation_.current());
+  }
+  transport_ = transports_(rotation_.current());
   const std::uint64_t serial = ++connection_serial_;
   transport_->connect(kConnectTimeoutS, [this, serial](boost::system::error_code ec) {
     if (serial != connection_serial_ || stopped_) return;
@@ -103,9 +105,10 @@ void RoomSession::say_hello() {
   codec::Hello hello;
   hello.room = options_.room;
   hello.name = options_.name;
-  hello.avatar = options_.avatar_asset;
+  const AvatarCredentials& face = credentials_here();
+  hello.avatar = face.asset;
   hello.token = options_.token;
-  hello.avatar_key = options_.avatar_key;
+  hello.avatar_key = face.key;
   // After a drop: the server may not have noticed it yet, and still hold
   // the token for the old connection; this key shows it is the same person.
   hello.resume = resume_key_;
@@ -129,23 +132,75 @@ void RoomSession::read() {
   });
 }
 
-void RoomSession::connection_lost(const std::string& why) {
-  if (stopped_) return;
+const AvatarCredentials& RoomSession::credentials_here() const {
+  const AvatarCredentials& own = credentials_[rotation_.current()];
+  return own.asset.empty() ? welcomed_credentials_ : own;
+}
+
+// The connection (or the attempt) is over; what comes of it is the caller's.
+void RoomSession::end_connection() {
   ++connection_serial_;
   if (transport_) transport_->close();
   writing_ = false;
   outbox_.clear();
-  {
-    std::lock_guard lock(state_.mutex);
-    state_.connection_lost();
-  }
+  std::lock_guard lock(state_.mutex);
+  state_.connection_lost();
+}
+
+void RoomSession::connection_lost(const std::string& why, NextStep next) {
+  if (stopped_) return;
+  end_connection();
   ++failed_attempts_;
   const auto wait = backoff(failed_attempts_);
-  event(why + "; reconnecting in " + std::to_string(wait.count()) + " ms");
+  if (next == NextStep::next_server && rotation_.count() > 1) {
+    const std::size_t to = rotation_.move_on();
+    event(why + "; moving to " + server_name(to) + " (server " + std::to_string(to + 1) + " of " +
+          std::to_string(rotation_.count()) + ") in " + std::to_string(wait.count()) + " ms");
+  } else {
+    event(why + "; reconnecting in " + std::to_string(wait.count()) + " ms");
+  }
   reconnect_timer_.expires_after(wait);
   reconnect_timer_.async_wait([this](boost::system::error_code ec) {
     if (!ec) connect();
   });
+}
+
+bool RoomSession::could_upload_here() const {
+  return options_.reupload && !uploaded_to_[rotation_.current()];
+}
+
+// This server refused the face as a server that never had it would: it
+// gets the upload once, and the hello again with what it answers.
+void RoomSession::upload_here(const std::string& why) {
+  end_connection();
+  const std::size_t server = rotation_.current();
+  uploaded_to_[server] = true;
+  event(server_name(server) + " refused the face (" + why + "); uploading it there");
+  const std::uint64_t serial = connection_serial_;
+  options_.reupload(server, [this, serial, server](ReuploadResult result) {
+    if (serial != connection_serial_ || stopped_) return;
+    uploaded_here(server, result);
+  });
+}
+
+void RoomSession::uploaded_here(std::size_t server, const ReuploadResult& result) {
+  if (result.ok) {
+    credentials_[server] = result.credentials;
+    event("uploaded the face to " + server_name(server));
+    return connect();
+  }
+  if (!result.try_elsewhere) return give_up("uploading the face to " + server_name(server) + ": " + result.error);
+  uploaded_to_[server] = false;  // it never got the face: when the list comes round to it, it is tried again
+  connection_lost("uploading the face to " + server_name(server) + ": " + result.error, NextStep::next_server);
+}
+
+// A refusal that trying again (here or elsewhere) cannot fix.
+void RoomSession::give_up(const std::string& why) {
+  {
+    std::lock_guard lock(state_.mutex);
+    state_.fatal_error = why;
+  }
+  stop();
 }
 
 // ---------------------------------------------------------------------------
@@ -213,6 +268,7 @@ codec::MessageError RoomSession::read_then(std::span<const std::uint8_t> bytes,
 
 void RoomSession::on_welcome(const codec::Welcome& welcome) {
   resume_key_ = welcome.resume;
+  welcomed_credentials_ = credentials_here();
   {
     std::lock_guard lock(state_.mutex);
     if (greeted_) state_.stats.reconnected();  // a welcome before this one: the link came back
@@ -220,7 +276,8 @@ void RoomSession::on_welcome(const codec::Welcome& welcome) {
   }
   failed_attempts_ = 0;
   event("joined room " + welcome.room + " as avatar " + std::to_string(welcome.you) + " with " +
-        std::to_string(welcome.avatars.size()) + " avatar(s) present");
+        std::to_string(welcome.avatars.size()) + " avatar(s) present" +
+        (rotation_.count() > 1 ? " on " + server_name(rotation_.current()) : ""));
   greet_once();
 }
 
@@ -289,14 +346,14 @@ void RoomSession::on_link_stats(const codec::LinkStats& link) {
 
 void RoomSession::on_closing(const codec::Closing& closing) {
   const std::string reason = closing.reason.empty() ? "no reason given" : closing.reason;
-  if (!refused_for_good(closing.code)) return connection_lost("the server closed the connection: " + reason);
-  {
-    std::lock_guard lock(state_.mutex);
-    state_.fatal_error = "the server refused this client: " + reason + " (closing code " +
-                         std::to_string(static_cast<int>(closing.code)) + ")";
+  switch (const NextStep next = after_closing(closing.code, could_upload_here())) {
+    case NextStep::upload_here: return upload_here(reason);
+    case NextStep::stop:
+      event("server: " + reason);
+      return give_up("the server refused this client: " + reason + " (closing code " +
+                     std::to_string(static_cast<int>(closing.code)) + ")");
+    default: return connection_lost("the server closed the connection: " + reason, next);
   }
-  event("server: " + reason);
-  stop();
 }
 
 void RoomSession::on_timed_room_frame(const codec::TimedRoomFrame& timed) { on_room_frame(timed.room_frame, &timed); }

@@ -3,8 +3,10 @@
 // says hello, decodes the stream into the RoomState, assembles packages,
 // answers the codec's need for key frames, measures the clock offset to the
 // server with pings, and reconnects with back-off when the connection
-// drops. Everything runs on one io_context thread. The connections come
-// from a TransportFactory: sockets in facewire-client
+// drops, moving on to the next server when it was given several
+// (failover_policy.hpp), and uploading the person's face again to a server
+// that does not know it. Everything runs on one io_context thread. The
+// connections come from a TransportFactory: sockets in facewire-client
 // (socket_transport.hpp), memory in the tests (in_memory_transport.hpp).
 #include <chrono>
 #include <cstdint>
@@ -18,12 +20,31 @@
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/steady_timer.hpp>
 
+#include "failover_policy.hpp"
 #include "message_transport.hpp"
 #include "package_assembler.hpp"
 #include "room_state.hpp"
 #include "server_clock.hpp"
 
 namespace fw::client {
+
+/// What a hello names to wear an uploaded face on one server.
+struct AvatarCredentials {
+  std::string asset;  ///< the asset id
+  std::string key;    ///< the key the upload answered
+};
+
+/// How an upload the session asked for went.
+struct ReuploadResult {
+  bool ok = false;
+  AvatarCredentials credentials;  ///< when ok
+  bool try_elsewhere = false;     ///< it failed, but another server may take it (no answer, 429, 5xx)
+  std::string error;              ///< what went wrong, for the person
+};
+using ReuploadDone = std::function<void(ReuploadResult)>;
+/// Uploads the person's face to the server of this index; `done` runs on
+/// the session's io_context.
+using AvatarReuploader = std::function<void(std::size_t server, ReuploadDone done)>;
 
 struct SessionOptions {
   std::string room;
@@ -41,6 +62,15 @@ struct SessionOptions {
   /// Called on the session's thread for what a person should see at once
   /// (chat lines, arrivals, departures, refused commands, reconnects).
   std::function<void(const std::string&)> on_event;
+  /// The servers' URLs as the person wrote them, for what they read (to
+  /// which server the session moved, and why); the transport factory is
+  /// given their index. Empty: one server.
+  std::vector<std::string> servers;
+  std::size_t first_server = 0;  ///< where the first connection goes: where the face was uploaded
+  /// Uploads the face again, to a server that does not know it (another
+  /// node that does not share the first one's avatars). Empty when the
+  /// person brings no face of their own.
+  AvatarReuploader reupload;
 };
 
 class RoomSession {
@@ -48,6 +78,10 @@ class RoomSession {
   /// `transports` makes the connection of every attempt (the first, and
   /// each reconnection); `state` must outlive the session.
   RoomSession(boost::asio::io_context& io, SessionOptions options, RoomState& state, TransportFactory transports);
+  /// The same with several servers (options.servers): `transports` is
+  /// given the index of the server to connect to.
+  RoomSession(boost::asio::io_context& io, SessionOptions options, RoomState& state,
+              ServerTransportFactory transports);
   ~RoomSession();
   RoomSession(const RoomSession&) = delete;
   RoomSession& operator=(const RoomSession&) = delete;
@@ -78,7 +112,14 @@ class RoomSession {
   void start_over();
   void say_hello();
   void read();
-  void connection_lost(const std::string& why);
+  void connection_lost(const std::string& why, NextStep next = after_drop());
+  void end_connection();
+  void upload_here(const std::string& why);
+  void uploaded_here(std::size_t server, const ReuploadResult& result);
+  void give_up(const std::string& why);
+  bool could_upload_here() const;
+  const AvatarCredentials& credentials_here() const;
+  std::string server_name(std::size_t server) const;
 
   // What comes down.
   void on_message(std::span<const std::uint8_t> message);
@@ -117,7 +158,15 @@ class RoomSession {
   boost::asio::io_context& io_;
   SessionOptions options_;
   RoomState& state_;
-  TransportFactory transports_;
+  ServerTransportFactory transports_;
+  ServerRotation rotation_;
+  /// Per server: the face's asset id and key there, once known (the first
+  /// server's from the upload before the session; another's from an upload
+  /// to it). A server without its own gets the last welcomed ones (the
+  /// nodes of one cluster share avatars and the server key).
+  std::vector<AvatarCredentials> credentials_;
+  std::vector<bool> uploaded_to_;  ///< per server: the face went up there (one upload each)
+  AvatarCredentials welcomed_credentials_;  ///< those of the last welcome
   std::shared_ptr<MessageTransport> transport_;
   boost::asio::steady_timer reconnect_timer_, housekeeping_timer_;
   PackageAssembler packages_;

@@ -48,6 +48,7 @@ class RoomState {
   bool joined = false;       ///< a welcome arrived on the current connection
   std::uint32_t you = 0;
   std::string room;
+  std::string server;        ///< the URL of the server the session connects to (or last did)
   int tick_hz = 30;
   std::map<std::uint32_t, RoomAvatar> avatars;
   codec::RoomDecoder decoder;

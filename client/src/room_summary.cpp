@@ -5,6 +5,7 @@ namespace fw::client {
 nlohmann::json room_summary(const RoomState& state, std::chrono::steady_clock::time_point now) {
   nlohmann::json summary = state.stats.summary(now);
   summary["room"] = state.room;
+  summary["server"] = state.server;
   summary["you"] = state.you;
   summary["avatars_in_room"] = state.avatars.size();
   std::size_t packages = 0;

@@ -65,6 +65,7 @@ bool parse_server_url(const std::string& text, ServerUrl& url, std::string& erro
   }
   parsed.host = host;
   parsed.port = port;
+  parsed.text = text;
   url = parsed;
   return true;
 }

@@ -12,6 +12,7 @@ struct ServerUrl {
   std::string host;
   std::string port;
   std::string path = "/";  ///< WebSocket only: the upgrade request's target
+  std::string text;        ///< as it was written, for what the person reads
 };
 
 /// @return false and `error` (what is wrong and what a URL looks like)

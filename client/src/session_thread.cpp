@@ -7,10 +7,28 @@
 namespace fw::client {
 
 SessionThread::SessionThread(SessionOptions options, RoomState& state, OpenTransport open_transport)
-    : open_transport_(std::move(open_transport)),
-      session_(io_, std::move(options), state, [this] { return open_transport_(io_); }) {
+    : SessionThread(std::move(options), state,
+                    SessionNetwork{[open = std::move(open_transport)](boost::asio::io_context& io, std::size_t) {
+                                     return open(io);
+                                   },
+                                   {}}) {}
+
+SessionThread::SessionThread(SessionOptions options, RoomState& state, SessionNetwork network)
+    : network_(std::move(network)),
+      session_(io_, with_uploads(std::move(options), network_, io_), state,
+               [this](std::size_t server) { return network_.open_transport(io_, server); }) {
   session_.start();
   thread_ = std::thread([this] { io_.run(); });
+}
+
+// The session's uploads run on the thread's io_context, beside its connection.
+SessionOptions SessionThread::with_uploads(SessionOptions options, const SessionNetwork& network,
+                                           boost::asio::io_context& io) {
+  if (network.upload_avatar)
+    options.reupload = [&network, &io](std::size_t server, ReuploadDone done) {
+      network.upload_avatar(io, server, std::move(done));
+    };
+  return options;
 }
 
 SessionThread::~SessionThread() { stop(); }

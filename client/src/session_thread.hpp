@@ -15,12 +15,24 @@
 
 namespace fw::client {
 
+/// How the session reaches its servers, given the thread's io_context.
+struct SessionNetwork {
+  /// A transport to the server of this index (of SessionOptions::servers).
+  std::function<std::shared_ptr<MessageTransport>(boost::asio::io_context& io, std::size_t server)> open_transport;
+  /// Uploads the person's face to the server of this index, calling `done`
+  /// on `io`; empty when the person brings none.
+  std::function<void(boost::asio::io_context& io, std::size_t server, ReuploadDone done)> upload_avatar;
+};
+
 class SessionThread {
  public:
   /// Opens a transport on the thread's io_context (each connection attempt).
   using OpenTransport = std::function<std::shared_ptr<MessageTransport>(boost::asio::io_context& io)>;
 
+  /// One server.
   SessionThread(SessionOptions options, RoomState& state, OpenTransport open_transport);
+  /// The servers of options.servers.
+  SessionThread(SessionOptions options, RoomState& state, SessionNetwork network);
   ~SessionThread();
   SessionThread(const SessionThread&) = delete;
   SessionThread& operator=(const SessionThread&) = delete;
@@ -30,8 +42,11 @@ class SessionThread {
   void stop();
 
  private:
+  static SessionOptions with_uploads(SessionOptions options, const SessionNetwork& network,
+                                     boost::asio::io_context& io);
+
   boost::asio::io_context io_;
-  OpenTransport open_transport_;
+  SessionNetwork network_;
   RoomSession session_;
   std::thread thread_;
 };

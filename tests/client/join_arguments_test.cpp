@@ -27,11 +27,25 @@ TEST(JoinArguments, APlanHasTheServerAndTheFrameSize) {
   JoinPlan plan;
   std::string error;
   ASSERT_TRUE(plan_join(args, plan, error)) << error;
-  EXPECT_EQ(plan.url.host, "127.0.0.1");
-  EXPECT_EQ(plan.url.port, "8080");
+  ASSERT_EQ(plan.servers.size(), 1u);
+  EXPECT_EQ(plan.servers[0].host, "127.0.0.1");
+  EXPECT_EQ(plan.servers[0].port, "8080");
   EXPECT_EQ(plan.render.width, 320);
   EXPECT_EQ(plan.render.height, 180);
   EXPECT_EQ(plan.render.samples, 4);
+}
+
+TEST(JoinArguments, SeveralServersAreTakenInTheirOrder) {
+  JoinArgs args = valid_args();
+  args.url = "ws://127.0.0.1:1/,tcp://127.0.0.1:8081";
+  JoinPlan plan;
+  std::string error;
+  ASSERT_TRUE(plan_join(args, plan, error)) << error;
+  ASSERT_EQ(plan.servers.size(), 2u);
+  EXPECT_EQ(plan.servers[0].port, "1");
+  EXPECT_EQ(plan.servers[1].scheme, ServerUrl::Scheme::tcp);
+  args.url = "ws://127.0.0.1:1/,ws://127.0.0.1:0/";
+  EXPECT_EQ(plan_error(args).rfind("server 2 of 2: ", 0), 0u);
 }
 
 TEST(JoinArguments, SaysWhichFlagIsWrong) {

@@ -1,5 +1,6 @@
 #include "own_avatar.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -172,6 +173,78 @@ TEST_F(OwnAvatarTest, UploadsGoToTheApiPortOrTheWebSocketsOwn) {
   ASSERT_TRUE(parse_server_url("tcp://127.0.0.1:8081", tcp, error_));
   EXPECT_FALSE(upload_target(args_, tcp, target, error_));
   EXPECT_NE(error_.find("--api http://HOST:PORT"), std::string::npos) << error_;
+}
+
+TEST_F(OwnAvatarTest, EachServerOfAListHasItsUploadAddress) {
+  std::vector<ServerUrl> servers(2);
+  ASSERT_TRUE(parse_server_url("ws://10.0.0.1:8080/", servers[0], error_));
+  ASSERT_TRUE(parse_server_url("tcp://10.0.0.2:8081", servers[1], error_));
+  std::vector<UploadTarget> targets;
+  EXPECT_FALSE(upload_targets(args_, servers, targets, error_)) << "a tcp:// server needs --api";
+  EXPECT_NE(error_.find("--api http://HOST:PORT"), std::string::npos) << error_;
+  args_.api = "http://10.0.0.9:9000";
+  ASSERT_TRUE(upload_targets(args_, servers, targets, error_)) << error_;
+  ASSERT_EQ(targets.size(), 2u);
+  EXPECT_EQ(targets[0].host, "10.0.0.9") << "one --api for every server";
+  EXPECT_EQ(targets[1].host, "10.0.0.9");
+  args_.api = "http://10.0.0.1:8080, http://10.0.0.2:8080";
+  ASSERT_TRUE(upload_targets(args_, servers, targets, error_)) << error_;
+  EXPECT_EQ(targets[0].host, "10.0.0.1") << "or one each, in the same order";
+  EXPECT_EQ(targets[1].host, "10.0.0.2");
+  args_.api = "http://a:1,http://b:2,http://c:3";
+  EXPECT_FALSE(upload_targets(args_, servers, targets, error_));
+  EXPECT_EQ(error_, "--api names 3 HTTP addresses for 2 servers: give one for them all, or one per server in the same order");
+}
+
+TEST_F(OwnAvatarTest, AServerThatDoesNotAnswerPassesTheUploadToTheNext) {
+  std::vector<ServerUrl> servers(3);
+  for (int i = 0; i < 3; ++i)
+    ASSERT_TRUE(parse_server_url("ws://10.0.0." + std::to_string(i + 1) + ":8080/", servers[static_cast<std::size_t>(i)], error_));
+  args_.avatar = write("me.fwa", sample_package());
+  std::vector<std::string> asked;
+  int refuse_with = 0;  // the second server's answer: 0 none, else an HTTP status
+  AvatarUploader uploader = [&](const UploadTarget& target, const std::string&, std::span<const std::uint8_t>, int,
+                                UploadAnswer& answer, std::string& error) {
+    asked.push_back(target.host);
+    if (target.host == "10.0.0.3" || (target.host == "10.0.0.2" && refuse_with == 0)) {
+      error = "Connection refused";
+      return false;
+    }
+    if (target.host == "10.0.0.2") {
+      answer.http_status = refuse_with;
+      error = "refused (" + std::to_string(refuse_with) + ")";
+      return false;
+    }
+    answer = {"asset-a", "key-a", 201};
+    return true;
+  };
+  // The first is down, the second takes it.
+  std::rotate(servers.begin(), servers.begin() + 1, servers.end());  // 10.0.0.2, 10.0.0.3, 10.0.0.1
+  OwnAvatar own;
+  ASSERT_TRUE(prepare_own_avatar(args_, own, error_)) << error_;
+  UploadedAvatar uploaded;
+  ASSERT_TRUE(upload_prepared_avatar(args_, servers, uploader, own, uploaded, error_)) << error_;
+  EXPECT_EQ(asked, (std::vector<std::string>{"10.0.0.2", "10.0.0.3", "10.0.0.1"}));
+  EXPECT_EQ(uploaded.server, 2u);
+  EXPECT_EQ(uploaded.asset, "asset-a");
+  ASSERT_TRUE(uploaded.body) << "kept for a server that does not know the face";
+  EXPECT_EQ(uploaded.content_type, "application/x-facewire-avatar");
+  // A busy server passes it on too; a refusal that is the same anywhere does not.
+  asked.clear();
+  refuse_with = 503;
+  ASSERT_TRUE(upload_prepared_avatar(args_, servers, uploader, own, uploaded, error_)) << error_;
+  EXPECT_EQ(asked.size(), 3u);
+  asked.clear();
+  refuse_with = 422;
+  EXPECT_FALSE(upload_prepared_avatar(args_, servers, uploader, own, uploaded, error_));
+  EXPECT_EQ(asked, std::vector<std::string>{"10.0.0.2"});
+  EXPECT_EQ(error_, "refused (422)");
+  // None answers: every server's reason.
+  servers.pop_back();
+  refuse_with = 0;
+  EXPECT_FALSE(upload_prepared_avatar(args_, servers, uploader, own, uploaded, error_));
+  EXPECT_EQ(error_, "no server took the upload of your face: ws://10.0.0.2:8080/: Connection refused; "
+                    "ws://10.0.0.3:8080/: Connection refused");
 }
 
 TEST(OwnAvatar, ASlowLinkGetsTimeForTheBytes) {

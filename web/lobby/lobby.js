@@ -11,11 +11,15 @@ import { displayNameProblem, roomNameProblem } from './names.js';
 import { fitPhotoForUpload } from './photo_size.js';
 import { fetchRooms, renderRooms } from './room_list.js';
 import { uploadPhoto } from './upload.js';
+import { parseServers } from '../room/server_list.js';
 
 const ROOM_REFRESH_MS = 4000;
 const $ = (id) => document.getElementById(id);
 
 const invite = readInvite(location.search);
+// A list of servers in the lobby's address goes on to the room page; a bad
+// one is said here, before anyone waits for a room that cannot start.
+const serversProblem = parseServers(invite.servers || null, location).error;
 const identity = loadIdentity();
 const state = { asset: identity.asset, key: identity.key, uploading: false };
 
@@ -192,6 +196,7 @@ async function refreshRooms() {
 }
 refreshRooms();
 setInterval(refreshRooms, ROOM_REFRESH_MS);
+showError($('room-error'), serversProblem);
 
 $('join').addEventListener('click', () => {
   const name = nameField.value.trim();
@@ -199,10 +204,11 @@ $('join').addEventListener('click', () => {
   const nameProblem = displayNameProblem(name);
   const roomProblem = roomNameProblem(room);
   showError($('name-error'), nameProblem);
-  showError($('room-error'), roomProblem);
+  showError($('room-error'), roomProblem || serversProblem);
   if (nameProblem) return nameField.focus();
   if (roomProblem) return roomField.focus();
+  if (serversProblem) return undefined;
   if (state.uploading) return showError($('upload-error'), 'Wait until your photo is prepared, then join.');
   saveIdentity({ name, asset: state.asset, key: state.key });
-  location.href = roomPageUrl({ room, name, asset: state.asset, key: state.key, token: invite.token });
+  location.href = roomPageUrl({ room, name, asset: state.asset, key: state.key, token: invite.token, servers: invite.servers });
 });

@@ -1,7 +1,8 @@
 // One person's connection to a room (server/PROTOCOL.md): hello, then the
 // welcome, the codec stream, presence, seats, attention, chat and packages
 // kept as the room's state; commands, chat and the stream budget going up;
-// pings to stay alive; and a new connection after a drop. No DOM and no
+// pings to stay alive; and a new connection after a drop, to the next
+// server of the list when it was given several (reconnect_policy.js). No DOM and no
 // WebGL here: the page (room_page.js) reads the state and draws it, and the
 // socket is whatever `openSocket(url)` returns (a browser WebSocket, or a
 // test's stand-in with the same few members).
@@ -19,7 +20,8 @@ const MAX_CHAT_LINES = 200;
 
 export class RoomClient {
   /**
-   * @param options.url          ws://host:port/ (or several, comma-separated: the next after a failure)
+   * @param options.servers      ws:// or wss:// URLs (server_list.js): the first, then the next after a failure
+   * @param options.url          or one URL, or several comma-separated
    * @param options.room, options.name, options.asset, options.avatarKey, options.token   the hello's fields
    * @param options.maxBps       downstream budget, 0: the server's default
    * @param options.ownPackage   the page holds its own avatar's package (the server sends it none)
@@ -30,8 +32,10 @@ export class RoomClient {
   constructor(options) {
     this.resume = '';
     this.options = { maxBps: 0, ownPackage: false, asset: '', avatarKey: '', token: '', now: () => performance.now(), ...options };
-    this.urls = String(this.options.url).split(',').map((u) => u.trim()).filter(Boolean);
-    this.urlIndex = 0;
+    this.servers = this.options.servers ?? String(this.options.url).split(',').map((u) => u.trim()).filter(Boolean);
+    this.serverIndex = 0;
+    /** Where the client moved and why, newest last (for the page and whoever inspects it). */
+    this.moves = [];
     this.policy = new ReconnectPolicy();
     this.meter = new LinkMeter();
     this.status = 'connecting';  // connecting, joined, reconnecting, closed
@@ -100,12 +104,13 @@ export class RoomClient {
     return decoder.face(ticks);
   }
   nameOf(avatar) { return this.avatars.get(avatar)?.info.name ?? `avatar ${avatar}`; }
+  /** The server the client is connected to, or tries next. */
+  get server() { return this.servers[this.serverIndex]; }
 
   // --- The connection ------------------------------------------------------
 
   connect() {
-    const url = this.urls[this.urlIndex % this.urls.length];
-    const socket = this.options.openSocket(url);
+    const socket = this.options.openSocket(this.server);
     this.socket = socket;
     this.closing = null;
     socket.binaryType = 'arraybuffer';
@@ -149,8 +154,12 @@ export class RoomClient {
       this.notify('closed');
       return;
     }
-    // Another server of the list, if there are several.
-    if (!this.closing) this.urlIndex += 1;
+    if (next.moveOn && this.servers.length > 1) {
+      this.serverIndex = (this.serverIndex + 1) % this.servers.length;
+      const why = this.closing?.reason || (this.status === 'joined' ? 'the connection dropped' : 'no connection');
+      this.moves.push({ to: this.server, why });
+      console.info(`${why}; moving to ${this.server} (server ${this.serverIndex + 1} of ${this.servers.length}) in ${next.delayMs} ms`);
+    }
     this.status = 'reconnecting';
     this.notify('reconnecting');
     this.retryTimer = setTimeout(() => this.connect(), next.delayMs);

@@ -1,5 +1,7 @@
 // The room page: joins the room named in its address (room.html?room=R&
-// name=N&asset=A&key=K&token=T, as the lobby sends a person here), draws it from
+// name=N&asset=A&key=K&token=T, as the lobby sends a person here; with
+// &servers=wss://a/ws,wss://b/ws on the servers of that list, the next when
+// one fails, else on the page's own), draws it from
 // the person's own place (room_view.js), and wires the controls: chat, the
 // expression and blush buttons, FACS sentences, looking at or snubbing a
 // face, the stream budget, and the meter.
@@ -8,6 +10,7 @@ import { AttentionTarget } from '../protocol/session_types.js';
 import { FaceRenderer } from './face_renderer.js';
 import { RoomClient } from './room_client.js';
 import { RoomView } from './room_view.js';
+import { parseServers } from './server_list.js';
 
 const EXPRESSIONS = ['joy', 'sadness', 'anger', 'fear', 'surprise', 'disgust', 'cunning', 'teasing', 'blush'];
 const BUDGET_KEY = 'facewire.budget';
@@ -35,16 +38,13 @@ async function fetchOwnPackage(asset) {
   return new Uint8Array(await response.arrayBuffer());
 }
 
-function socketUrl() {
-  const scheme = location.protocol === 'https:' ? 'wss:' : 'ws:';
-  return query.get('servers') || `${scheme}//${location.host}/ws`;
-}
-
 async function main() {
   if (!identity.room || !identity.name) {
     location.replace('./');
     return;
   }
+  const { servers, error: serversProblem } = parseServers(query.get('servers'), location);
+  if (serversProblem) return fail(`the room cannot start: ${serversProblem}`);
   $('room-name').textContent = identity.room;
   document.title = `facewire: ${identity.room}`;
   const canvas = $('room-canvas');
@@ -61,7 +61,7 @@ async function main() {
   const own = await ownPackage;
 
   const client = new RoomClient({
-    url: socketUrl(), room: identity.room, name: identity.name, asset: identity.asset, avatarKey: identity.key, token: identity.token,
+    servers, room: identity.room, name: identity.name, asset: identity.asset, avatarKey: identity.key, token: identity.token,
     maxBps: budgetBps(budget.value), ownPackage: Boolean(own), openSocket: (url) => new WebSocket(url),
     onChange: (what) => changed(what),
   });
@@ -112,7 +112,10 @@ function showStatus(client) {
   const status = $('status');
   status.classList.toggle('error', client.status === 'closed' && Boolean(client.error));
   if (client.status === 'joined') status.textContent = `in the room as ${client.nameOf(client.you)}`;
-  else if (client.status === 'reconnecting') status.textContent = `connection lost${client.error ? ` (${client.error})` : ''}; reconnecting…`;
+  else if (client.status === 'reconnecting') {
+    const where = client.servers.length > 1 ? ` to ${client.server}` : '';
+    status.textContent = `connection lost${client.error ? ` (${client.error})` : ''}; reconnecting${where}…`;
+  }
   else if (client.status === 'closed') status.textContent = client.error || 'left the room';
 }
 

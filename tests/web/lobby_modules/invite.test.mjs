@@ -6,8 +6,15 @@ import { readInvite, roomPageUrl } from '../../../web/lobby/invite.js';
 
 test('an invite link\'s room, name and token are read; absent ones are empty', () => {
   assert.deepEqual(readInvite('?room=team.a&name=Ann%20Lee&token=fw1.abc.def'),
-    { room: 'team.a', name: 'Ann Lee', token: 'fw1.abc.def' });
-  assert.deepEqual(readInvite(''), { room: '', name: '', token: '' });
+    { room: 'team.a', name: 'Ann Lee', token: 'fw1.abc.def', servers: '' });
+  assert.deepEqual(readInvite(''), { room: '', name: '', token: '', servers: '' });
+});
+
+test('a list of servers in the lobby\'s address goes on to the room page', () => {
+  const invite = readInvite('?room=r&servers=wss://a.chat.example/ws,wss://b.chat.example/ws');
+  assert.equal(invite.servers, 'wss://a.chat.example/ws,wss://b.chat.example/ws');
+  const url = roomPageUrl({ room: 'r', name: 'n', asset: '', token: '', servers: invite.servers });
+  assert.equal(new URLSearchParams(url.slice(url.indexOf('?'))).get('servers'), invite.servers);
 });
 
 test('the room page gets the room, the name, the asset, its key and the token', () => {

@@ -127,6 +127,45 @@ test('a drop reconnects to the next server; a final refusal stops with its reaso
   assert.equal(sockets.length, 2, 'no new connection after a final refusal');
 });
 
+test('a server that shuts down passes the client to the next, and the list goes round', async (t) => {
+  const { c, sockets } = client({ url: undefined, servers: ['ws://a/ws', 'ws://b/ws'] });
+  t.after(() => c.stop());
+  assert.equal(sockets[0].url, 'ws://a/ws');
+  sockets[0].deliver(MessageType.welcome, welcome);
+  sockets[0].deliver(MessageType.closing, { code: CloseCode.shuttingDown, reason: 'the server is shutting down; try again soon' });
+  sockets[0].drop();
+  assert.equal(c.server, 'ws://b/ws');
+  assert.deepEqual(c.moves.at(-1), { to: 'ws://b/ws', why: 'the server is shutting down; try again soon' });
+  await new Promise((resolve) => setTimeout(resolve, 700));
+  assert.equal(sockets[1].url, 'ws://b/ws');
+  sockets[1].onopen();
+  const hello = readMessage(sockets[1].sent[0], MessageType.hello).message;
+  assert.equal(hello.name, 'Ann', 'the same person on the next server');
+  sockets[1].drop();  // never welcomed there: back to the first
+  assert.deepEqual(c.moves.at(-1), { to: 'ws://a/ws', why: 'no connection' });
+  await new Promise((resolve) => setTimeout(resolve, 1200));  // the second back-off is 1 s
+  assert.equal(sockets[2].url, 'ws://a/ws');
+});
+
+test('the resume key of the last welcome goes with the hello to the next server', async (t) => {
+  const { c, sockets } = client();
+  t.after(() => c.stop());
+  sockets[0].deliver(MessageType.welcome, { ...welcome, resume: 'resume-7' });
+  sockets[0].drop();
+  await new Promise((resolve) => setTimeout(resolve, 700));
+  sockets[1].onopen();
+  assert.equal(readMessage(sockets[1].sent[0], MessageType.hello).message.resume, 'resume-7');
+});
+
+test('a face being prepared is asked for again on the server that prepares it', async (t) => {
+  const { c, sockets } = client();
+  t.after(() => c.stop());
+  sockets[0].deliver(MessageType.closing, { code: CloseCode.avatarBeingPrepared, reason: 'being prepared' });
+  sockets[0].drop();
+  assert.equal(c.server, 'ws://a/');
+  assert.equal(c.moves.length, 0);
+});
+
 test('a malformed message closes the connection with a reason', (t) => {
   const { c, sockets } = client();
   t.after(() => c.stop());

@@ -73,9 +73,16 @@ export async function startServer(args = []) {
     port: Number(match[2]),
     dataDir,
     log: () => stderr,
+    /** kill -9, as a server that dies; stop() still removes its data. */
+    async kill() {
+      if (child.exitCode !== null || child.signalCode !== null) return;
+      const exited = new Promise((resolve) => child.once('exit', resolve));
+      kill();
+      await exited;
+    },
     async stop() {
       process.off('exit', kill);
-      if (child.exitCode === null) {
+      if (child.exitCode === null && child.signalCode === null) {
         const exited = new Promise((resolve) => child.once('exit', resolve));
         child.kill('SIGTERM');
         const late = setTimeout(kill, 5000);
