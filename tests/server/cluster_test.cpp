@@ -13,8 +13,12 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
+#include "file_bytes.hpp"
 #include "http_get.hpp"
 #include "join_token.hpp"
+#include "test_paths.hpp"
 #include "redis_blocking.hpp"
 #include "redis_process.hpp"
 #include "room_test_server.hpp"
@@ -363,6 +367,45 @@ TEST(Cluster, AJoinTokenAdmitsOnePersonAcrossNodes) {
   EXPECT_TRUE(back->welcome.has_value()) << (back->closing ? back->closing->reason : "no answer");
   EXPECT_TRUE(first->pump_until([&] { return first->closing.has_value(); }, 5s));
   if (first->closing) EXPECT_NE(first->closing->reason.find("replaced"), std::string::npos) << first->closing->reason;
+}
+
+TEST(Cluster, AFaceUploadedToANodeThatDiesIsWornOnAnother) {
+  Cluster cluster;
+  cluster.add_node("a");
+  cluster.add_node("b");
+  for (std::size_t i = 0; i < 2; ++i) ASSERT_TRUE(eventually([&] { return ready(cluster.node(i).http_port()); }, 20s));
+  const auto photo = file_bytes(source_path("tests/data/grace_hopper.jpg"));
+  const std::string body(photo.begin(), photo.end());
+  // A photo's answer waits for its preparation (the landmark model loads first: seconds).
+  const auto answer = http_exchange(cluster.node(0).http_port(),
+                                    "POST /api/avatars HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\n"
+                                    "Content-Type: image/jpeg\r\nContent-Length: " +
+                                        std::to_string(body.size()) + "\r\n\r\n" + body,
+                                    90);
+  ASSERT_EQ(answer.status, 201) << answer.body;
+  const auto uploaded = nlohmann::json::parse(answer.body, nullptr, false);
+  const std::string asset = uploaded.value("asset", ""), key = uploaded.value("key", "");
+  ASSERT_FALSE(asset.empty());
+  const auto on_a = http_get(cluster.node(0).http_port(), "/api/packages/" + asset);
+  ASSERT_EQ(on_a.status, 200);
+
+  ::kill(cluster.node(0).process().pid(), SIGKILL);
+  const auto on_b = http_get(cluster.node(1).http_port(), "/api/packages/" + asset);
+  EXPECT_EQ(on_b.status, 200) << "the upload was lost with its node";
+  EXPECT_TRUE(on_b.body == on_a.body) << "node b serves other bytes";
+  // Its key, from node a, opens the face on node b: the cluster signs with one key.
+  auto wearer = std::make_unique<RoomTestClient>(Transport::websocket, cluster.node(1).http_port());
+  codec::Hello hello;
+  hello.room = "meet";
+  hello.name = "Grace";
+  hello.avatar = asset;
+  hello.avatar_key = key;
+  wearer->send_message(hello);
+  wearer->pump_until([&] { return wearer->welcome.has_value() || wearer->closed(); }, 15s);
+  ASSERT_TRUE(wearer->welcome.has_value()) << (wearer->closing ? wearer->closing->reason : "no answer");
+  bool wears = false;
+  for (const auto& info : wearer->welcome->avatars) wears = wears || (info.id == wearer->welcome->you && info.asset == asset);
+  EXPECT_TRUE(wears);
 }
 
 }  // namespace
