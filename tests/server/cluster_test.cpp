@@ -314,6 +314,20 @@ TEST(Cluster, ASlowSubscriberOnOneNodeDoesNotSlowTheRoomOnAnother) {
   EXPECT_GT(far_rate, 0.8 * before) << "the stuck subscriber slowed its neighbour on its own node";
 }
 
+TEST(Cluster, ANewRoomGoesToTheLeastLoadedNode) {
+  Cluster cluster;
+  cluster.add_node("a");
+  cluster.add_node("b");
+  for (std::size_t i = 0; i < 2; ++i) ASSERT_TRUE(eventually([&] { return ready(cluster.node(i).http_port()); }, 20s));
+  // Node a carries people; b carries none (the lobby's three faces weigh a tenth each).
+  std::vector<std::unique_ptr<RoomTestClient>> busy;
+  for (int i = 0; i < 4; ++i) busy.push_back(join_node(cluster.node(0), "busy" + std::to_string(i), "P" + std::to_string(i)));
+  std::this_thread::sleep_for(1500ms);  // loads reported at the next beats
+  auto opener = join_node(cluster.node(0), "fresh", "Opener");
+  ASSERT_TRUE(opener->welcome.has_value());
+  EXPECT_EQ(cluster.owner_of("fresh"), "b") << "a new room opened on the busy node stayed there";
+}
+
 TEST(Cluster, AnAddresssConnectionsAreCountedAcrossNodes) {
   Cluster cluster;
   const std::string cap = kManyClientsFromOneAddress + " --max-connections-per-address 4";
