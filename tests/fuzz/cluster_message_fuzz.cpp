@@ -1,0 +1,55 @@
+// Fuzzes the readers of what cluster nodes say to each other over Redis
+// (server/src/bridge_message.hpp, cluster_limits.hpp): a room's news down,
+// a bridging node's requests up, a member record, a room's moods, and the
+// limits news. The first input byte picks the reader. Whatever the bytes:
+// no crash and no read outside them, and what reads writes back to bytes
+// that read again to the same bytes written (one meaning per message).
+#include <cstdint>
+#include <cstdlib>
+#include <string>
+#include <string_view>
+
+#include "bridge_message.hpp"
+#include "cluster_limits.hpp"
+
+namespace {
+
+using namespace fw::server;
+
+template <class Decode>
+void round_trip(const bridge::Bytes& written, Decode decode) {
+  const auto again = decode(written.data(), written.size());
+  if (!again || bridge::encode(*again) != written) std::abort();
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  if (size == 0) return 0;
+  const std::uint8_t* body = data + 1;
+  const std::size_t length = size - 1;
+  switch (data[0] % 5) {
+    case 0:
+      if (auto m = bridge::decode_down(body, length)) round_trip(bridge::encode(*m), bridge::decode_down);
+      break;
+    case 1:
+      if (auto m = bridge::decode_up(body, length)) round_trip(bridge::encode(*m), bridge::decode_up);
+      break;
+    case 2:
+      if (auto m = bridge::decode_member(body, length)) round_trip(bridge::encode(*m), bridge::decode_member);
+      break;
+    case 3:
+      if (auto m = bridge::decode_state(body, length)) round_trip(bridge::encode(*m), bridge::decode_state);
+      break;
+    case 4: {
+      const std::string_view text(reinterpret_cast<const char*>(body), length);
+      if (auto news = decode_limits(text)) {
+        const std::string written = encode_limits(*news);
+        const auto again = decode_limits(written);
+        if (!again || encode_limits(*again) != written) std::abort();
+      }
+      break;
+    }
+  }
+  return 0;
+}
