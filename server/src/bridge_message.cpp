@@ -97,6 +97,77 @@ Bytes start(std::uint8_t kind) { return {kVersion, kind}; }
 
 }  // namespace
 
+Down down_roster() {
+  Down m;
+  m.kind = DownKind::roster;
+  return m;
+}
+Down down_joined(std::string join_ref, MemberRecord member, bool returning) {
+  Down m;
+  m.kind = DownKind::joined;
+  m.join_ref = std::move(join_ref);
+  m.member = std::move(member);
+  m.returning = returning;
+  return m;
+}
+Down down_refused(std::string join_ref, codec::CloseCode code, std::string reason) {
+  Down m;
+  m.kind = DownKind::refused;
+  m.join_ref = std::move(join_ref);
+  m.code = code;
+  m.reason = std::move(reason);
+  return m;
+}
+Down down_left(std::uint32_t avatar) {
+  Down m;
+  m.kind = DownKind::left;
+  m.avatar = avatar;
+  return m;
+}
+Down down_message(DownKind kind, std::uint32_t avatar, Bytes message) {
+  Down m;
+  m.kind = kind;
+  m.avatar = avatar;
+  m.message = std::move(message);
+  return m;
+}
+Down down_attention(Bytes attention) {
+  Down m;
+  m.kind = DownKind::attention;
+  m.attention = std::move(attention);
+  return m;
+}
+Down down_tick(std::uint32_t tick) {
+  Down m;
+  m.kind = DownKind::tick;
+  m.tick = tick;
+  return m;
+}
+Up up_sync(std::string node) {
+  Up m;
+  m.kind = UpKind::sync;
+  m.node = std::move(node);
+  return m;
+}
+Up up_leave(std::string node, std::uint32_t avatar) {
+  Up m = up_sync(std::move(node));
+  m.kind = UpKind::leave;
+  m.avatar = avatar;
+  return m;
+}
+Up up_chat(std::string node, std::uint32_t avatar, std::string text) {
+  Up m = up_leave(std::move(node), avatar);
+  m.kind = UpKind::chat;
+  m.text = std::move(text);
+  return m;
+}
+Up up_command(std::string node, std::uint32_t avatar, Bytes command) {
+  Up m = up_leave(std::move(node), avatar);
+  m.kind = UpKind::command;
+  m.command = std::move(command);
+  return m;
+}
+
 Bytes encode(const MemberRecord& record) {
   Bytes out{kVersion};
   ByteWriter w(out);

@@ -84,6 +84,20 @@ struct Up {
   Bytes command;           ///< command: an encoded Command
 };
 
+// Messages made whole, the fields their kind does not use left empty.
+Down down_roster();
+Down down_joined(std::string join_ref, MemberRecord member, bool returning = false);
+Down down_refused(std::string join_ref, codec::CloseCode code, std::string reason);
+Down down_left(std::uint32_t avatar);
+/// seats, chat, result: a client message, for `avatar` (0: everyone).
+Down down_message(DownKind kind, std::uint32_t avatar, Bytes message);
+Down down_attention(Bytes attention);
+Down down_tick(std::uint32_t tick);
+Up up_sync(std::string node);
+Up up_leave(std::string node, std::uint32_t avatar);
+Up up_chat(std::string node, std::uint32_t avatar, std::string text);
+Up up_command(std::string node, std::uint32_t avatar, Bytes command);
+
 Bytes encode(const Down& message);
 Bytes encode(const Up& message);
 Bytes encode(const MemberRecord& record);

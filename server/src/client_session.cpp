@@ -255,7 +255,10 @@ void ClientSession::handle_hello(std::span<const std::uint8_t> message) {
                       .connection = shared_from_this(),
                       .resume = resume_key_,
                       .address = address_key(peer_),
-                      .returning = hello.resume};
+                      .returning = hello.resume,
+                      .node = {},  // here: not bridged from another node
+                      .join_ref = {},
+                      .resume_hash = {}};
   room_->join(std::move(request));
 }
 

@@ -54,41 +54,12 @@ ClusterNode::ClusterNode(ServerContext& context, net::any_io_executor executor, 
     : context_(context), strand_(net::make_strand(executor)), address_(address), node_(std::move(node)),
       timer_(strand_), avatars_(address, std::chrono::milliseconds(2000)) {
   adopt_server_key();
-  context_.store->set_replica(AvatarReplica{
-      .share =
-          [this](const std::string& asset, std::span<const std::uint8_t> package, std::span<const std::uint8_t> photo) {
-            const auto reply = avatars_.command({"HSET", keys::avatar(asset), "package",
-                                                 std::string(package.begin(), package.end()), "photo",
-                                                 std::string(photo.begin(), photo.end())});
-            if (reply && !reply->is_error()) avatars_.command({"SADD", keys::kAvatars, asset});
-            else spdlog::warn("avatar {} is kept on this node only until Redis is back", asset);
-          },
-      .fetch =
-          [this](const std::string& asset, std::vector<std::uint8_t>& package, std::vector<std::uint8_t>& photo) {
-            const auto reply = avatars_.command({"HMGET", keys::avatar(asset), "package", "photo"});
-            if (!reply || reply->elements.size() != 2 || reply->elements[0].type != RedisReply::Type::string)
-              return false;
-            package.assign(reply->elements[0].text.begin(), reply->elements[0].text.end());
-            photo.assign(reply->elements[1].text.begin(), reply->elements[1].text.end());
-            spdlog::info("avatar {} fetched from the cluster", asset);
-            return true;
-          }});
+  keep_avatars_in_redis();
 }
 
 ClusterNode::~ClusterNode() {
   context_.store->set_replica({});
   context_.tokens.on_news({});
-}
-
-void ClusterNode::adopt_server_key() {
-  // Avatar keys must open a face on every node: the first node's key is the cluster's.
-  if (!avatars_.command({"SET", keys::kServerKey, context_.server_key, "NX"})) {
-    spdlog::warn("Redis at {} does not answer: this node signs avatar keys with its own key until it does",
-                 to_string(address_));
-    return;
-  }
-  const auto key = avatars_.command({"GET", keys::kServerKey});
-  if (key && key->type == RedisReply::Type::string && !key->text.empty()) context_.server_key = key->text;
 }
 
 void ClusterNode::start() {
@@ -97,7 +68,9 @@ void ClusterNode::start() {
   context_.addresses->share_spending();
   // A token taken or let go here is news for every node at once.
   context_.tokens.on_news([this](const TokenNews& news) {
-    LimitsNews limits{.node = node_, .tokens = {news}};
+    LimitsNews limits;
+    limits.node = node_;
+    limits.tokens = {news};
     net::post(strand_, [this, message = encode_limits(limits)] {
       if (up_ && commands_) commands_->command({"PUBLISH", keys::kLimitsChannel, message});
     });
@@ -213,29 +186,6 @@ void ClusterNode::heartbeat() {
   renew_leases();
   watch_nodes();
   adopt_orphans();
-}
-
-void ClusterNode::share_limits() {
-  LimitsNews news{.node = node_, .beat = true};
-  news.spent = context_.addresses->take_spending();
-  news.connections = context_.addresses->connection_counts();
-  news.tokens = context_.tokens.held_here();
-  commands_->command({"PUBLISH", keys::kLimitsChannel, encode_limits(news)});
-}
-
-void ClusterNode::apply_limits(std::string_view message) {
-  auto news = decode_limits(message);
-  if (!news || news->node == node_) return;
-  const auto now = std::chrono::steady_clock::now();
-  for (const auto& spent : news->spent) context_.addresses->charge(spent.rate, spent.key, spent.tokens, now);
-  if (news->beat) context_.addresses->set_remote_connections(news->node, std::move(news->connections));
-  // A hold lasts a few beats unless told again (a node that dies stops telling).
-  for (const auto& token : news->tokens) {
-    context_.tokens.remote_news(news->node, token, now + std::chrono::seconds(3));
-    if (token.taken_from != node_) continue;
-    if (auto holder = context_.tokens.give_way(token.token_hash))
-      holder->close(codec::CloseCode::unauthorized, "replaced by your newer connection");
-  }
 }
 
 void ClusterNode::report_alive() {
@@ -495,24 +445,6 @@ void ClusterNode::room_closed(const std::string& room) {
     commands_->command({"DEL", keys::room_members(room), keys::room_state(room), keys::room_chat(room)});
     commands_->command({"SREM", keys::kRooms, room});
     commands_->command({"EVAL", kReleaseLease, "1", keys::room_owner(room), node_});
-  });
-}
-
-void ClusterNode::reshare_avatars() {
-  // On a worker: the blocking connection may wait for Redis.
-  net::post(*context_.workers, [this] {
-    std::size_t shared = 0;
-    for (const std::string& asset : context_.store->stored_assets()) {
-      const auto known = avatars_.command({"SISMEMBER", keys::kAvatars, asset});
-      if (!known || known->integer == 1) continue;
-      std::vector<std::uint8_t> package, photo;
-      if (!context_.store->read_files(asset, package, photo)) continue;
-      avatars_.command({"HSET", keys::avatar(asset), "package", std::string(package.begin(), package.end()), "photo",
-                        std::string(photo.begin(), photo.end())});
-      avatars_.command({"SADD", keys::kAvatars, asset});
-      ++shared;
-    }
-    if (shared) spdlog::info("cluster: shared {} avatar(s) Redis did not have", shared);
   });
 }
 

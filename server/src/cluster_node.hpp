@@ -83,11 +83,14 @@ class ClusterNode : public RoomBus {
   void own_unplaced();
   void bridge(const std::string& room);
   void on_message(std::string_view channel, std::string_view payload);
-  /// The per-address limits and tokens in use, to and from the others (cluster_limits.hpp).
+  /// The per-address limits and tokens in use, to and from the others
+  /// (cluster_limits.hpp; cluster_node_limits.cpp).
   void share_limits();
   void apply_limits(std::string_view message);
   std::string least_loaded() const;
   void publish(const std::string& channel, bridge::Bytes message);
+  // cluster_node_avatars.cpp
+  void keep_avatars_in_redis();
   void reshare_avatars();
   void adopt_server_key();
 

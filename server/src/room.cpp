@@ -106,8 +106,7 @@ void Room::do_chat(std::uint32_t avatar, std::string text) {
   const auto it = members_.find(avatar);
   if (closed_ || it == members_.end()) return;
   if (role_ == RoomRole::bridge) {
-    bridge::Up up{.kind = bridge::UpKind::chat, .node = context_.bus->node(), .avatar = avatar, .text = std::move(text)};
-    return context_.bus->send_up(name_, bridge::encode(up));
+    return context_.bus->send_up(name_, bridge::encode(bridge::up_chat(context_.bus->node(), avatar, std::move(text))));
   }
   Member& writer = it->second;
   if (!chat_rate_.take(TokenBucket::Clock::now())) {
@@ -128,14 +127,14 @@ void Room::do_chat(std::uint32_t avatar, std::string text) {
     if (member.stream) member.stream->post_chat(line);
   if (context_.bus) {
     context_.bus->keep_chat(name_, *line);
-    if (bridged_members() != 0) send_down({.kind = bridge::DownKind::chat, .avatar = 0, .message = *line});
+    if (bridged_members() != 0) send_down(bridge::down_message(bridge::DownKind::chat, 0, *line));
   }
 }
 
 void Room::notice(Member& member, const std::string& text) {
   const auto line = encode_shared(codec::Chat{0, clip_utf8(text, codec::kMaxChatBytes)});
   if (member.stream) member.stream->post_chat(line);
-  else if (!member.node.empty()) send_down({.kind = bridge::DownKind::chat, .avatar = member.info.id, .message = *line});
+  else if (!member.node.empty()) send_down(bridge::down_message(bridge::DownKind::chat, member.info.id, *line));
 }
 
 void Room::command(std::uint32_t avatar, codec::Command command) {
@@ -144,16 +143,17 @@ void Room::command(std::uint32_t avatar, codec::Command command) {
     if (self->closed_ || it == self->members_.end()) return;
     Member& member = it->second;
     if (self->role_ == RoomRole::bridge) {
-      bridge::Up up{.kind = bridge::UpKind::command, .node = self->context_.bus->node(), .avatar = avatar};
-      codec::write_message(command, up.command);
-      return self->context_.bus->send_up(self->name_, bridge::encode(up));
+      bridge::Bytes bytes;
+      codec::write_message(command, bytes);
+      return self->context_.bus->send_up(self->name_,
+                                         bridge::encode(bridge::up_command(self->context_.bus->node(), avatar, bytes)));
     }
     if (!member.stream && member.node.empty()) return;
     std::string error = self->simulation_.command(avatar, to_simulation(command));
     const auto result =
         encode_shared(codec::CommandResult{command.request_id, clip_utf8(std::move(error), codec::kMaxReasonBytes)});
     if (member.stream) member.stream->post_result(result);
-    else self->send_down({.kind = bridge::DownKind::result, .avatar = avatar, .message = *result});
+    else self->send_down(bridge::down_message(bridge::DownKind::result, avatar, *result));
   });
 }
 
@@ -206,7 +206,7 @@ void Room::do_join(JoinRequest request) {
   }
   if (context_.bus) {
     keep(member);
-    send_down({.kind = bridge::DownKind::joined, .join_ref = request.join_ref, .member = record_of(member)});
+    send_down(bridge::down_joined(request.join_ref, record_of(member)));
   }
   members_.emplace(id, std::move(member));
   // The joiner hears everyone's attention; the others hear the joiner's.
@@ -279,7 +279,7 @@ void Room::refuse(const JoinRequest& request, codec::CloseCode code, const std::
   spdlog::info("room {}: {} refused: {}", name_, request.name, why);
   if (request.connection) request.connection->close(code, why);
   else if (!request.node.empty())
-    send_down({.kind = bridge::DownKind::refused, .join_ref = request.join_ref, .code = code, .reason = why});
+    send_down(bridge::down_refused(request.join_ref, code, why));
   close_if_unpeopled();  // a room made for this join alone goes again
 }
 
@@ -336,8 +336,7 @@ void Room::do_leave(std::uint32_t avatar) {
     if (it->second.stream) local_persons_.fetch_sub(1);
     it->second.stream.reset();
     it->second.local_gone = true;
-    bridge::Up up{.kind = bridge::UpKind::leave, .node = context_.bus->node(), .avatar = avatar};
-    context_.bus->send_up(name_, bridge::encode(up));
+    context_.bus->send_up(name_, bridge::encode(bridge::up_leave(context_.bus->node(), avatar)));
     return close_if_unpeopled();
   }
   const bool person = it->second.person();
@@ -360,7 +359,7 @@ void Room::do_leave(std::uint32_t avatar) {
   }
   if (context_.bus) {
     context_.bus->forget_member(name_, avatar);
-    send_down({.kind = bridge::DownKind::left, .avatar = avatar});
+    send_down(bridge::down_left(avatar));
   }
   if (const SharedBytes moved = reseat()) broadcast_seats(moved);
   close_if_unpeopled();
@@ -405,16 +404,16 @@ void Room::broadcast_seats(const SharedBytes& message) {
   for (auto& [id, member] : members_)
     if (member.stream) member.stream->post_seats(message);
   if (role_ == RoomRole::owner && context_.bus && bridged_members() != 0)
-    send_down({.kind = bridge::DownKind::seats, .message = *message});
+    send_down(bridge::down_message(bridge::DownKind::seats, 0, *message));
 }
 
 void Room::broadcast_attention(const codec::Attention& attention, std::uint32_t except) {
   for (auto& [id, member] : members_)
     if (id != except && member.stream) member.stream->post_attention(attention);
   if (role_ == RoomRole::owner && context_.bus && bridged_members() != 0) {
-    bridge::Down down{.kind = bridge::DownKind::attention};
-    codec::write_message(attention, down.attention);
-    send_down(down);
+    bridge::Bytes bytes;
+    codec::write_message(attention, bytes);
+    send_down(bridge::down_attention(std::move(bytes)));
   }
 }
 
@@ -468,7 +467,7 @@ void Room::on_tick() {
     if (member.stream) member.stream->tick(tick, now_us, faces_);
   if (context_.bus && bridged_members() != 0) {
     // Once per tick whatever the number of bridged people: each node encodes for its own.
-    bridge::Down down{.kind = bridge::DownKind::tick, .tick = tick};
+    bridge::Down down = bridge::down_tick(tick);
     down.faces.reserve(faces_.size());
     for (const AvatarFace& face : faces_) down.faces.push_back({face.id, *face.face});
     send_down(down);

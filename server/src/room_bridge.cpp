@@ -50,7 +50,7 @@ std::size_t Room::bridged_members() const {
 }
 
 void Room::answer_sync() {
-  bridge::Down roster{.kind = bridge::DownKind::roster};
+  bridge::Down roster = bridge::down_roster();
   for (const auto& [id, member] : members_) roster.members.push_back(record_of(member));
   codec::write_message(attention_now(), roster.attention);
   send_down(roster);
@@ -76,18 +76,18 @@ void Room::on_up(bridge::Up message) {
     switch (message.kind) {
       case bridge::UpKind::sync: return self->answer_sync();
       case bridge::UpKind::join: {
-        JoinRequest request{.name = message.name,
-                            .address = message.address,
-                            .returning = message.returning,
-                            .node = message.node,
-                            .join_ref = message.join_ref,
-                            .resume_hash = message.resume_hash};
+        JoinRequest request;
+        request.name = message.name;
+        request.address = message.address;
+        request.returning = message.returning;
+        request.node = message.node;
+        request.join_ref = message.join_ref;
+        request.resume_hash = message.resume_hash;
         if (auto stored = self->context_.store->get(message.asset)) request.avatar = *stored;
         else
-          return self->send_down({.kind = bridge::DownKind::refused,
-                                  .join_ref = message.join_ref,
-                                  .code = codec::CloseCode::avatar_being_prepared,
-                                  .reason = "your face is still on its way to this room's server; try again"});
+          return self->send_down(bridge::down_refused(
+              message.join_ref, codec::CloseCode::avatar_being_prepared,
+              "your face is still on its way to this room's server; try again"));
         self->pending_joins_.fetch_add(1);
         return self->do_join(std::move(request));
       }
@@ -167,14 +167,14 @@ void Room::bridge_join(JoinRequest request) {
     return bridge_housekeeping();
   }
   const std::string ref = context_.bus->node() + "/" + std::to_string(next_join_ref_++);
-  bridge::Up up{.kind = bridge::UpKind::join,
-                .node = context_.bus->node(),
-                .join_ref = ref,
-                .name = request.name,
-                .asset = request.avatar.asset,
-                .address = request.address,
-                .resume_hash = resume_hash(request.resume),
-                .returning = request.returning};
+  bridge::Up up = bridge::up_sync(context_.bus->node());
+  up.kind = bridge::UpKind::join;
+  up.join_ref = ref;
+  up.name = request.name;
+  up.asset = request.avatar.asset;
+  up.address = request.address;
+  up.resume_hash = resume_hash(request.resume);
+  up.returning = request.returning;
   context_.bus->send_up(name_, bridge::encode(up));
   sent_joins_.emplace(ref, SentJoin{std::move(request), std::chrono::steady_clock::now()});
 }
@@ -317,7 +317,7 @@ void Room::bridge_housekeeping() {
   const auto now = std::chrono::steady_clock::now();
   if (!roster_ && now - last_sync_ >= kSyncRetry) {
     last_sync_ = now;
-    context_.bus->send_up(name_, bridge::encode(bridge::Up{.kind = bridge::UpKind::sync, .node = context_.bus->node()}));
+    context_.bus->send_up(name_, bridge::encode(bridge::up_sync(context_.bus->node())));
   }
   for (auto it = sent_joins_.begin(); it != sent_joins_.end();) {
     if (now - it->second.sent < kJoinAnswerTimeout) {

@@ -33,7 +33,7 @@ void Room::ask_roster() {
     if (self->closed_ || self->role_ != RoomRole::bridge) return;
     self->last_sync_ = {};
     self->context_.bus->send_up(
-        self->name_, bridge::encode(bridge::Up{.kind = bridge::UpKind::sync, .node = self->context_.bus->node()}));
+        self->name_, bridge::encode(bridge::up_sync(self->context_.bus->node())));
   });
 }
 
@@ -81,8 +81,7 @@ bool Room::take_seat_back(JoinRequest& request) {
     member.stream->connection()->deliver(bytes);
   }
   keep(member);
-  send_down({.kind = bridge::DownKind::joined, .join_ref = request.join_ref, .member = record_of(member),
-             .returning = true});
+  send_down(bridge::down_joined(request.join_ref, record_of(member), /*returning=*/true));
   return true;
 }
 
