@@ -4,45 +4,42 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <memory>
-#include <mutex>
 #include <sstream>
 #include <thread>
 #include <vector>
 
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/ip/tcp.hpp>
-#include <boost/asio/steady_timer.hpp>
-#include <boost/asio/strand.hpp>
-#include <boost/beast/core.hpp>
-#include <boost/beast/websocket.hpp>
+#include <boost/asio/post.hpp>
 #include <nlohmann/json.hpp>
 
-#include "fw/codec/codec.hpp"
-#include "fw/codec/messages.hpp"
-#include "http_get.hpp"
-#include "server_process.hpp"
 #include "bench_failure.hpp"
+#include "fanout_client.hpp"
+#include "fanout_servers.hpp"
+#include "http_get.hpp"
 
 namespace fw::bench {
 namespace {
 
 namespace asio = boost::asio;
-namespace beast = boost::beast;
-namespace websocket = beast::websocket;
 using tcp = asio::ip::tcp;
 using Clock = std::chrono::steady_clock;
+using fanout::BenchClient;
+using fanout::FanoutServers;
 
 struct FanoutArgs {
   int rooms = 10;
   int per_room = 10;
   double seconds = 10;
   double warmup_seconds = 3;
+  double room_interval = 0;  // seconds between one room's joins and the next room's
   bool json = false;
   std::string physics = "sleeping";  // sleeping, awake, off
   std::string physics_lod = "on";    // on: the server sheds physics under load (its default); off: never
@@ -50,200 +47,23 @@ struct FanoutArgs {
   int server_threads = 2;
   int server_workers = 2;
   std::string server;  // path of facewire-server; default: beside this program
+  std::string nodes = "1";  // node counts, run in turn: "1", "2", "1,2", "1,2,1,2"
 };
 
-std::uint64_t now_us() {
-  return static_cast<std::uint64_t>(
-      std::chrono::duration_cast<std::chrono::microseconds>(Clock::now().time_since_epoch()).count());
-}
+constexpr int kMaxNodes = 8;
 
-// What every client adds to while the window is open.
-struct Totals {
-  std::atomic<bool> measuring{false};
-  std::atomic<std::uint64_t> avatar_frames{0}, room_frames{0}, bytes{0}, decode_errors{0};
-  std::atomic<int> joined{0}, closed{0};
-};
-
-// One WebSocket subscriber: hello (timestamps on, packages off), then it
-// decodes every room frame as a thin client would, and records the delay
-// from the server's tick to the decode (the same host's monotonic clock).
-class BenchClient : public std::enable_shared_from_this<BenchClient> {
- public:
-  BenchClient(asio::io_context& io, Totals& totals, std::string room, std::string name)
-      : ws_(asio::make_strand(io)), ping_timer_(ws_.get_executor()), totals_(totals), room_(std::move(room)),
-        name_(std::move(name)) {}
-
-  void start(const tcp::endpoint& server) {
-    beast::get_lowest_layer(ws_).expires_after(std::chrono::seconds(30));
-    beast::get_lowest_layer(ws_).async_connect(server, [self = shared_from_this()](beast::error_code ec) {
-      if (ec) return self->close();
-      beast::get_lowest_layer(self->ws_).expires_never();
-      self->ws_.set_option(websocket::stream_base::timeout::suggested(beast::role_type::client));
-      self->ws_.read_message_max(codec::kMaxDownstreamMessageBytes);
-      self->ws_.binary(true);
-      self->ws_.async_handshake("127.0.0.1", "/", [self](beast::error_code handshake_ec) {
-        if (handshake_ec) return self->close();
-        codec::Hello hello;
-        hello.room = self->room_;
-        hello.name = self->name_;
-        hello.timestamps = true;
-        hello.no_packages = true;
-        self->send(hello);
-        self->read();
-        self->ping();
-      });
-    });
+// "1,2" -> {1, 2}; an empty vector if any item is not a count from 1 to kMaxNodes.
+std::vector<int> parse_node_counts(const std::string& text) {
+  std::vector<int> counts;
+  std::istringstream items(text);
+  for (std::string item; std::getline(items, item, ',');) {
+    if (item.empty() || item.size() > 2 || item.find_first_not_of("0123456789") != std::string::npos) return {};
+    const int count = std::stoi(item);
+    if (count < 1 || count > kMaxNodes) return {};
+    counts.push_back(count);
   }
-
-  // Samples taken while measuring; read after the io_context stopped.
-  const std::vector<float>& latencies_ms() const { return latencies_ms_; }
-  // The room's tick rate seen by this client in the window.
-  double tick_hz() const {
-    if (last_tick_time_us_ <= first_tick_time_us_) return 0;
-    return static_cast<double>(last_tick_ - first_tick_) * 1e6 / static_cast<double>(last_tick_time_us_ - first_tick_time_us_);
-  }
-  bool open() const { return !closed_; }
-
- private:
-  template <class Message>
-  void send(const Message& message) {
-    auto bytes = std::make_shared<std::vector<std::uint8_t>>();
-    codec::write_message(message, *bytes);
-    send_bytes(bytes);
-  }
-  void send_bytes(std::shared_ptr<std::vector<std::uint8_t>> bytes) {
-    // Upstream messages are rare (hello, a ping every 15 s, resyncs): one at
-    // a time is enough; a message offered while one is in flight waits.
-    outbox_.push_back(std::move(bytes));
-    if (outbox_.size() == 1) write_next();
-  }
-  void write_next() {
-    if (outbox_.empty() || closed_) return;
-    ws_.async_write(asio::buffer(*outbox_.front()), [self = shared_from_this()](beast::error_code ec, std::size_t) {
-      if (ec) return self->close();
-      self->outbox_.erase(self->outbox_.begin());
-      self->write_next();
-    });
-  }
-
-  void ping() {
-    ping_timer_.expires_after(std::chrono::seconds(15));
-    ping_timer_.async_wait([self = shared_from_this()](beast::error_code ec) {
-      if (ec || self->closed_) return;
-      self->send(codec::Ping{++self->pings_, now_us()});
-      self->ping();
-    });
-  }
-
-  void read() {
-    buffer_.clear();
-    ws_.async_read(buffer_, [self = shared_from_this()](beast::error_code ec, std::size_t n) {
-      if (ec) return self->close();
-      const auto data = self->buffer_.cdata();
-      self->on_message({static_cast<const std::uint8_t*>(data.data()), data.size()}, n);
-      self->read();
-    });
-  }
-
-  void on_message(std::span<const std::uint8_t> message, std::size_t n) {
-    const bool measuring = totals_.measuring.load(std::memory_order_relaxed);
-    if (measuring) totals_.bytes += n;
-    switch (codec::classify(message)) {
-      case codec::MessageKind::stream_header: {
-        codec::StreamOptions options;
-        if (codec::read_stream_header(message, options) == codec::DecodeError::ok) decoder_ = codec::RoomDecoder(options);
-        return;
-      }
-      case codec::MessageKind::session:
-        break;
-      default:
-        return;
-    }
-    switch (codec::session_type(message)) {
-      case codec::MessageType::welcome:
-        ++totals_.joined;
-        return;
-      case codec::MessageType::closing:
-        return close();
-      case codec::MessageType::timed_room_frame: {
-        codec::TimedRoomFrame timed;
-        if (codec::read_message(message, timed) != codec::MessageError::ok) return;
-        const auto result = decoder_.decode(timed.room_frame);
-        const std::uint64_t decoded_us = now_us();
-        if (!measuring) return;
-        ++totals_.room_frames;
-        for (const auto& [id, error] : result.avatars) {
-          if (error == codec::DecodeError::ok) ++totals_.avatar_frames;
-          else ++totals_.decode_errors;
-        }
-        if (latencies_ms_.size() < kMaxSamples && decoded_us >= timed.server_time_us)
-          latencies_ms_.push_back(static_cast<float>(decoded_us - timed.server_time_us) / 1000.0f);
-        if (first_tick_time_us_ == 0) {
-          first_tick_ = timed.tick;
-          first_tick_time_us_ = timed.server_time_us;
-        }
-        last_tick_ = timed.tick;
-        last_tick_time_us_ = timed.server_time_us;
-        const auto needed = decoder_.needing_key_frames();
-        if (!needed.empty() && !resync_sent_) {
-          resync_sent_ = true;  // once: the server answers with key frames
-          auto bytes = std::make_shared<std::vector<std::uint8_t>>();
-          codec::write_resync_request(needed, *bytes);
-          send_bytes(bytes);
-        }
-        return;
-      }
-      default:
-        return;
-    }
-  }
-
-  void close() {
-    if (closed_) return;
-    closed_ = true;
-    ++totals_.closed;
-    ping_timer_.cancel();
-    beast::error_code ignored;
-    beast::get_lowest_layer(ws_).socket().close(ignored);
-  }
-
-  static constexpr std::size_t kMaxSamples = 4000;
-  websocket::stream<beast::tcp_stream> ws_;
-  asio::steady_timer ping_timer_;
-  Totals& totals_;
-  std::string room_, name_;
-  beast::flat_buffer buffer_;
-  std::vector<std::shared_ptr<std::vector<std::uint8_t>>> outbox_;
-  codec::RoomDecoder decoder_;
-  std::vector<float> latencies_ms_;
-  std::uint32_t pings_ = 0;
-  std::uint32_t first_tick_ = 0, last_tick_ = 0;
-  std::uint64_t first_tick_time_us_ = 0, last_tick_time_us_ = 0;
-  bool closed_ = false, resync_sent_ = false;
-};
-
-// CPU seconds (user + system) of a process, from /proc/PID/stat.
-double cpu_seconds(pid_t pid) {
-  std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
-  std::string stat((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const auto close = stat.rfind(')');  // the command name may hold spaces
-  if (close == std::string::npos) return 0;
-  std::istringstream fields(stat.substr(close + 2));
-  std::string field;
-  double utime = 0, stime = 0;
-  for (int i = 3; i <= 15 && fields >> field; ++i) {
-    if (i == 14) utime = std::stod(field);
-    if (i == 15) stime = std::stod(field);
-  }
-  return (utime + stime) / static_cast<double>(::sysconf(_SC_CLK_TCK));
-}
-
-// A line of /proc/PID/status in megabytes (VmRSS, VmHWM).
-double status_mb(pid_t pid, const std::string& key) {
-  std::ifstream in("/proc/" + std::to_string(pid) + "/status");
-  for (std::string line; std::getline(in, line);)
-    if (line.rfind(key + ":", 0) == 0) return std::stod(line.substr(key.size() + 1)) / 1024.0;
-  return 0;
+  if (!text.empty() && text.back() == ',') return {};
+  return counts;
 }
 
 // A sample's value from a Prometheus text exposition (`name value` lines).
@@ -263,6 +83,14 @@ double percentile(std::vector<float> values, double p) {
 
 double round2(double v) { return std::round(v * 100.0) / 100.0; }
 
+// The machine's load when a run starts: the bench shares its cores.
+double load_average_1m() {
+  std::ifstream in("/proc/loadavg");
+  double load = -1;
+  in >> load;
+  return load;
+}
+
 // Room and connection counts need file descriptors: one per client here and
 // one per client in the server (which inherits this limit).
 void raise_descriptor_limit(int needed) {
@@ -279,61 +107,135 @@ void raise_descriptor_limit(int needed) {
          "; raise it (ulimit -n) or use fewer clients");
 }
 
-void run(const FanoutArgs& args) {
+// Tick-to-decode from the owner's tick: a room's frame of one tick is
+// stamped by its owner for the owner's clients and later, when the faces
+// arrive, by each node that bridges it. The earliest stamp of a tick among
+// the room's clients is the owner's when some of them are on the owner
+// (with --per-room at least --nodes every room spans the nodes, so they
+// are); on one node every stamp is.
+std::vector<float> latencies_from_owner_ms(const std::vector<std::shared_ptr<BenchClient>>& clients) {
+  std::map<std::pair<std::string, std::uint32_t>, std::uint64_t> earliest;  // (room, tick) -> stamp
+  for (const auto& client : clients)
+    for (const auto& sample : client->samples()) {
+      auto [it, inserted] = earliest.try_emplace({client->room(), sample.tick}, sample.stamped_us);
+      if (!inserted) it->second = std::min(it->second, sample.stamped_us);
+    }
+  std::vector<float> latencies;
+  for (const auto& client : clients)
+    for (const auto& sample : client->samples()) {
+      const std::uint64_t stamped = earliest.at({client->room(), sample.tick});
+      if (sample.decoded_us >= stamped) latencies.push_back(static_cast<float>(sample.decoded_us - stamped) / 1000.0f);
+    }
+  return latencies;
+}
+
+// One run against `node_count` nodes: the JSON object of its figures.
+nlohmann::json run_once(const FanoutArgs& args, int node_count) {
   const int clients = args.rooms * args.per_room;
-  raise_descriptor_limit(2 * clients + 256);
+  raise_descriptor_limit(2 * clients + 256 + 64 * node_count);
   const std::string server_binary =
       args.server.empty() ? (std::filesystem::read_symlink("/proc/self/exe").parent_path() / "facewire-server").string()
                           : args.server;
   if (!std::filesystem::exists(server_binary)) fail_bench("fanout", server_binary + " not found; build facewire-server or pass --server");
-  const auto data = std::filesystem::temp_directory_path() / ("facewire-bench-fanout-" + std::to_string(::getpid()));
-  std::string server_args = "--no-demo-room --log-level warn --data " + data.string() + " --room-size " +
-                            std::to_string(args.per_room) + " --max-rooms " + std::to_string(args.rooms) + " --threads " +
-                            std::to_string(args.server_threads) + " --workers " + std::to_string(args.server_workers);
+  std::string server_args = "--no-demo-room --log-level warn --room-size " + std::to_string(args.per_room) + " --max-rooms " +
+                            std::to_string(args.rooms) + " --threads " + std::to_string(args.server_threads) + " --workers " +
+                            std::to_string(args.server_workers);
   // Every client runs on 127.0.0.1: what one address may do is raised to what the run needs.
   server_args += " --joins-per-minute 1000000 --room-joins-per-minute 1000000 --rooms-per-hour 1000000 --seats-per-address " +
                  std::to_string(args.per_room) + " --max-connections-per-address " + std::to_string(clients + 64);
   if (args.physics == "awake") server_args += " --physics-always-awake";
   if (args.physics == "off") server_args += " --no-physics";
   if (args.physics_lod == "off") server_args += " --no-physics-lod";
-  test::ServerProcess server(server_binary, server_args);
-  if (server.port() == 0) fail_bench("fanout", "facewire-server did not start (" + server_binary + " " + server_args + ")");
-  const pid_t server_pid = server.pid();
+  auto servers = std::make_unique<FanoutServers>(server_binary, server_args, node_count);
+  if (!servers->error().empty()) {
+    const std::string why = servers->error();
+    servers.reset();  // its processes and data directories go before the exit
+    fail_bench("fanout", why);
+  }
+  const int nodes = servers->nodes();
 
   asio::io_context io;
-  Totals totals;
+  fanout::Totals totals;
   std::vector<std::shared_ptr<BenchClient>> all;
-  const tcp::endpoint endpoint(asio::ip::make_address("127.0.0.1"), static_cast<unsigned short>(server.port()));
+  std::vector<tcp::endpoint> endpoint_of;  // per client: its node
+  std::vector<int> clients_on(static_cast<std::size_t>(nodes), 0);
   for (int r = 0; r < args.rooms; ++r)
-    for (int i = 0; i < args.per_room; ++i)
+    for (int i = 0; i < args.per_room; ++i) {
+      // Round robin within each room, started one node further for each
+      // room, so that every room spans the nodes and their first joins differ.
+      const int node = (r + i) % nodes;
+      ++clients_on[static_cast<std::size_t>(node)];
+      endpoint_of.emplace_back(asio::ip::make_address("127.0.0.1"), static_cast<unsigned short>(servers->http_port(node)));
       all.push_back(std::make_shared<BenchClient>(io, totals, "bench-" + std::to_string(r), "c" + std::to_string(i)));
+    }
   auto work = asio::make_work_guard(io);
   std::vector<std::thread> threads;
   for (int t = 0; t < std::max(1, args.client_threads); ++t) threads.emplace_back([&io] { io.run(); });
 
   // Join in batches so the server's handshake time-out is never the limit.
   const auto join_start = Clock::now();
+  // With --room-interval, rooms open one after another, as a cluster sees
+  // them in use: each node's load (which places new rooms) is reported
+  // twice a second, so rooms opened together all go to one node.
   for (std::size_t i = 0; i < all.size(); ++i) {
-    asio::post(io, [client = all[i], endpoint] { client->start(endpoint); });
+    if (args.room_interval > 0 && i > 0 && i % static_cast<std::size_t>(args.per_room) == 0)
+      std::this_thread::sleep_for(std::chrono::duration<double>(args.room_interval));
+    asio::post(io, [client = all[i], endpoint = endpoint_of[i]] { client->start(endpoint); });
     if (i % 25 == 24) std::this_thread::sleep_for(std::chrono::milliseconds(50));
   }
-  while (totals.joined + totals.closed < clients && Clock::now() - join_start < std::chrono::seconds(120))
+  const auto join_deadline = std::chrono::seconds(120) + std::chrono::duration<double>(args.room_interval * args.rooms);
+  while (totals.joined + totals.closed < clients && Clock::now() - join_start < join_deadline)
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   const double join_seconds = std::chrono::duration<double>(Clock::now() - join_start).count();
   std::this_thread::sleep_for(std::chrono::duration<double>(args.warmup_seconds));
 
-  const double cpu_before = cpu_seconds(server_pid), bench_cpu_before = cpu_seconds(::getpid());
+  const double load_1m = load_average_1m();
+  std::vector<double> node_cpu(static_cast<std::size_t>(nodes));
+  for (int n = 0; n < nodes; ++n) node_cpu[static_cast<std::size_t>(n)] = fanout::process_cpu_seconds(servers->node_pid(n));
+  const double redis_cpu_before = servers->redis_cpu_seconds();
+  const double bench_cpu_before = fanout::process_cpu_seconds(::getpid());
   const auto window_start = Clock::now();
   totals.measuring = true;
   std::this_thread::sleep_for(std::chrono::duration<double>(args.seconds));
   totals.measuring = false;
   const double window = std::chrono::duration<double>(Clock::now() - window_start).count();
-  const double server_cpu = cpu_seconds(server_pid) - cpu_before, bench_cpu = cpu_seconds(::getpid()) - bench_cpu_before;
-  const double rss_mb = status_mb(server_pid, "VmRSS"), rss_peak_mb = status_mb(server_pid, "VmHWM");
-  // How much physics the server kept at the end of the window.
-  const std::string metrics = test::http_get(server.port(), "/metrics").body;
-  const double physics_share = metric_value(metrics, "facewire_physics_share", 1.0);
-  const double kinematic_faces = metric_value(metrics, "facewire_kinematic_faces", 0.0);
+  double server_cpu = 0;
+  for (int n = 0; n < nodes; ++n) {
+    auto& cpu = node_cpu[static_cast<std::size_t>(n)];
+    cpu = fanout::process_cpu_seconds(servers->node_pid(n)) - cpu;
+    server_cpu += cpu;
+  }
+  const double redis_cpu = servers->redis_cpu_seconds() - redis_cpu_before;
+  const double bench_cpu = fanout::process_cpu_seconds(::getpid()) - bench_cpu_before;
+
+  // Per node: memory, how much physics it kept at the end of the window,
+  // the rooms it owns (by Redis) and the clients it serves.
+  double rss_mb = 0, rss_peak_mb = 0, physics_share = 1.0, kinematic_faces = 0;
+  std::vector<int> rooms_owned(static_cast<std::size_t>(nodes), 0);
+  for (int r = 0; r < args.rooms && servers->clustered(); ++r) {
+    const std::string owner = servers->owner_of("bench-" + std::to_string(r));
+    for (int n = 0; n < nodes; ++n)
+      if (owner == servers->node_name(n)) ++rooms_owned[static_cast<std::size_t>(n)];
+  }
+  nlohmann::json per_node = nlohmann::json::array();
+  for (int n = 0; n < nodes; ++n) {
+    const auto index = static_cast<std::size_t>(n);
+    const pid_t pid = servers->node_pid(n);
+    const double rss = fanout::process_status_mb(pid, "VmRSS"), rss_peak = fanout::process_status_mb(pid, "VmHWM");
+    const std::string metrics = test::http_get(servers->http_port(n), "/metrics").body;
+    const double share = metric_value(metrics, "facewire_physics_share", 1.0);
+    const double kinematic = metric_value(metrics, "facewire_kinematic_faces", 0.0);
+    rss_mb += rss;
+    rss_peak_mb += rss_peak;
+    physics_share = std::min(physics_share, share);
+    kinematic_faces += kinematic;
+    per_node.push_back({{"node", servers->node_name(n)},
+                        {"clients", clients_on[index]},
+                        {"rooms_owned", servers->clustered() ? rooms_owned[index] : args.rooms},
+                        {"server_cpu_pct", round2(100.0 * node_cpu[index] / window)},
+                        {"server_rss_mb", round2(rss)},
+                        {"physics_share_end", round2(share)}});
+  }
 
   work.reset();
   io.stop();
@@ -343,18 +245,26 @@ void run(const FanoutArgs& args) {
   std::vector<double> tick_rates;
   int held = 0;
   for (const auto& client : all) {
-    latencies.insert(latencies.end(), client->latencies_ms().begin(), client->latencies_ms().end());
+    for (const auto& sample : client->samples())
+      latencies.push_back(static_cast<float>(sample.decoded_us - sample.stamped_us) / 1000.0f);
     if (client->open()) ++held;
     if (client->open()) tick_rates.push_back(client->tick_hz());
   }
+  const std::vector<float> from_owner = latencies_from_owner_ms(all);
   std::sort(tick_rates.begin(), tick_rates.end());
   const double tick_min = tick_rates.empty() ? 0 : tick_rates.front();
   double tick_mean = 0;
   for (double rate : tick_rates) tick_mean += rate / static_cast<double>(tick_rates.size());
   const double p50 = percentile(latencies, 50), p99 = percentile(latencies, 99);
   auto latency = [](double v) { return v < 0 ? nlohmann::json(nullptr) : nlohmann::json(round2(v)); };
+  // What a delivered avatar-frame costs the machine: the nodes' and Redis'
+  // CPU together, so that one node and a cluster compare on one scale.
+  const auto frames = static_cast<double>(totals.avatar_frames);
+  const nlohmann::json cpu_per_frame =
+      frames > 0 ? nlohmann::json(round2(1e6 * (server_cpu + redis_cpu) / frames)) : nlohmann::json(nullptr);
 
-  const nlohmann::json out = {
+  return {
+      {"nodes", nodes},
       {"rooms", args.rooms},
       {"per_room", args.per_room},
       {"seconds", round2(window)},
@@ -366,23 +276,61 @@ void run(const FanoutArgs& args) {
       {"clients_joined", totals.joined.load()},
       {"clients_held", held},
       {"join_seconds", round2(join_seconds)},
-      {"avatar_frames_per_s", round2(static_cast<double>(totals.avatar_frames) / window)},
-      {"avatar_frames_per_s_per_client", round2(static_cast<double>(totals.avatar_frames) / window / std::max(1, held))},
+      {"room_interval", args.room_interval},
+      {"avatar_frames_per_s", round2(frames / window)},
+      {"avatar_frames_per_s_per_client", round2(frames / window / std::max(1, held))},
       {"room_frames_per_s_per_client", round2(static_cast<double>(totals.room_frames) / window / std::max(1, held))},
       {"room_tick_hz_mean", round2(tick_mean)},
       {"room_tick_hz_min", round2(tick_min)},
       {"latency_ms_p50", latency(p50)},
       {"latency_ms_p99", latency(p99)},
+      {"latency_from_owner_ms_p50", latency(percentile(from_owner, 50))},
+      {"latency_from_owner_ms_p99", latency(percentile(from_owner, 99))},
       {"latency_samples", latencies.size()},
       {"kbps_down_per_client", round2(static_cast<double>(totals.bytes) * 8.0 / 1000.0 / window / std::max(1, held))},
       {"decode_errors", totals.decode_errors.load()},
       {"server_cpu_pct", round2(100.0 * server_cpu / window)},
+      {"redis_cpu_pct", round2(100.0 * redis_cpu / window)},
+      {"cpu_us_per_avatar_frame", cpu_per_frame},
       {"server_rss_mb", round2(rss_mb)},
       {"server_rss_peak_mb", round2(rss_peak_mb)},
       {"bench_cpu_pct", round2(100.0 * bench_cpu / window)},
+      {"per_node", per_node},
+      {"load_1m", round2(load_1m)},
       {"cores", std::thread::hardware_concurrency()},
   };
-  std::filesystem::remove_all(data);
+}
+
+// The mean of `key` over the runs with `nodes` nodes; 0 if none has it.
+double mean_over_runs(const nlohmann::json& runs, int nodes, const char* key) {
+  double sum = 0;
+  int count = 0;
+  for (const auto& run : runs)
+    if (run.at("nodes") == nodes && run.at(key).is_number()) {
+      sum += run.at(key).get<double>();
+      ++count;
+    }
+  return count ? sum / count : 0;
+}
+
+void run(const FanoutArgs& args) {
+  const std::vector<int> counts = parse_node_counts(args.nodes);
+  nlohmann::json out;
+  if (counts.size() == 1) {
+    out = run_once(args, counts.front());
+  } else {
+    // Side by side: each count in the order given (repeats allowed, to
+    // alternate on a busy machine), and how the CPU per delivered
+    // avatar-frame of the most nodes compares with that of the fewest.
+    nlohmann::json runs = nlohmann::json::array();
+    for (const int nodes : counts) runs.push_back(run_once(args, nodes));
+    const auto [fewest, most] = std::minmax_element(counts.begin(), counts.end());
+    const double base = mean_over_runs(runs, *fewest, "cpu_us_per_avatar_frame");
+    const double scaled = mean_over_runs(runs, *most, "cpu_us_per_avatar_frame");
+    out = {{"runs", runs},
+           {"cpu_per_frame_ratio",
+            *fewest != *most && base > 0 ? nlohmann::json(std::round(scaled / base * 1000.0) / 1000.0) : nlohmann::json(nullptr)}};
+  }
   if (args.json) {
     std::cout << out.dump() << std::endl;
   } else {
@@ -401,6 +349,10 @@ void add_fanout_bench(CLI::App& app) {
   cmd->add_option("--warmup", args->warmup_seconds, "seconds between the last join and the window")
       ->check(CLI::Range(0.0, 600.0))
       ->capture_default_str();
+  cmd->add_option("--room-interval", args->room_interval,
+                  "seconds between the joins of one room and the next (0: all rooms at once)")
+      ->check(CLI::Range(0.0, 60.0))
+      ->capture_default_str();
   cmd->add_option("--physics", args->physics, "sleeping (faces at rest stop stepping), awake (always step), off")
       ->check(CLI::IsMember({"sleeping", "awake", "off"}))
       ->capture_default_str();
@@ -412,6 +364,16 @@ void add_fanout_bench(CLI::App& app) {
   cmd->add_option("--server-threads", args->server_threads, "the server's --threads")->check(CLI::Range(1, 64))->capture_default_str();
   cmd->add_option("--server-workers", args->server_workers, "the server's --workers")->check(CLI::Range(1, 64))->capture_default_str();
   cmd->add_option("--server", args->server, "facewire-server to run (default: the one beside this program)");
+  cmd->add_option("--nodes", args->nodes,
+                  "nodes: 1 is one process without Redis; N >= 2 starts a redis-server and N cluster nodes with the "
+                  "clients of every room spread over them; a list (1,2) runs each in turn and prints them side by side")
+      ->check([](const std::string& text) {
+        return parse_node_counts(text).empty()
+                   ? "'" + text + "' is not a node count from 1 to " + std::to_string(kMaxNodes) +
+                         " or a comma-separated list of them (e.g. 1,2)"
+                   : std::string();
+      })
+      ->capture_default_str();
   cmd->add_flag("--json", args->json, "print one JSON object");
   cmd->callback([args] { run(*args); });
 }
