@@ -28,6 +28,9 @@ constexpr auto kLeaseMs = 3000;
 // Without Redis a room someone joins waits this long for it, then is owned
 // here (a node just started is usually connected by then).
 constexpr auto kOwnWithoutRedisAfter = std::chrono::seconds(3);
+// What a room placed on a node adds to its load until the node reports
+// again (about the load of a few people).
+constexpr double kRoomPlacementLoad = 2.0;
 // The owner keeps this many chat lines of a room in Redis.
 constexpr int kChatTail = 50;
 // Faces waiting for Redis past this many bytes are dropped (the next tick
@@ -295,6 +298,9 @@ void ClusterNode::place(const std::string& room) {
     if (!owner) return own_locally(room);
     if (owner->type == RedisReply::Type::string) return owner->text == node_ ? acquire(room) : bridge(room);
     const std::string target = least_loaded();
+    // Counted at once, so that rooms opened together before the next load
+    // report spread out instead of all going to the same node.
+    loads_[target] += kRoomPlacementLoad;
     if (target == node_) return acquire(room);
     spdlog::info("cluster: room {} placed on node {}, the least loaded", room, target);
     bridge(room);

@@ -55,7 +55,12 @@ class Cluster {
     const auto reply = redis.command({"GET", "fw:room:" + room + ":owner"});
     return reply && reply->type == server::RedisReply::Type::string ? reply->text : "";
   }
-  server::RedisAddress redis_address() const { return {"127.0.0.1", static_cast<std::uint16_t>(redis_.port())}; }
+  server::RedisAddress redis_address() const {
+    server::RedisAddress address;
+    address.host = "127.0.0.1";
+    address.port = static_cast<std::uint16_t>(redis_.port());
+    return address;
+  }
 
  private:
   RedisProcess redis_;
@@ -328,6 +333,20 @@ TEST(Cluster, ANewRoomGoesToTheLeastLoadedNode) {
   EXPECT_EQ(cluster.owner_of("fresh"), "b") << "a new room opened on the busy node stayed there";
 }
 
+TEST(Cluster, RoomsOpenedTogetherSpreadOverTheNodes) {
+  Cluster cluster;
+  cluster.add_node("a");
+  cluster.add_node("b");
+  for (std::size_t i = 0; i < 2; ++i) ASSERT_TRUE(eventually([&] { return ready(cluster.node(i).http_port()); }, 20s));
+  std::this_thread::sleep_for(1200ms);  // both nodes have seen each other's load
+  // Faster than the nodes report their loads: a placement counts at once.
+  auto first = join_node(cluster.node(0), "one", "P1");
+  auto second = join_node(cluster.node(0), "two", "P2");
+  const std::string one = cluster.owner_of("one"), two = cluster.owner_of("two");
+  EXPECT_FALSE(one.empty());
+  EXPECT_NE(one, two) << "two rooms opened together went to the same node";
+}
+
 TEST(Cluster, AnAddresssConnectionsAreCountedAcrossNodes) {
   Cluster cluster;
   const std::string cap = kManyClientsFromOneAddress + " --max-connections-per-address 4";
@@ -380,7 +399,9 @@ TEST(Cluster, AJoinTokenAdmitsOnePersonAcrossNodes) {
   auto back = hello_with(cluster.node(1), first->welcome->resume);
   EXPECT_TRUE(back->welcome.has_value()) << (back->closing ? back->closing->reason : "no answer");
   EXPECT_TRUE(first->pump_until([&] { return first->closing.has_value(); }, 5s));
-  if (first->closing) EXPECT_NE(first->closing->reason.find("replaced"), std::string::npos) << first->closing->reason;
+  if (first->closing) {
+    EXPECT_NE(first->closing->reason.find("replaced"), std::string::npos) << first->closing->reason;
+  }
 }
 
 TEST(Cluster, AFaceUploadedToANodeThatDiesIsWornOnAnother) {
