@@ -138,8 +138,7 @@ void ClusterNode::on_connected() {
   for (const auto& room : owned_) channels.push_back(keys::room_up(room));
   for (const auto& room : bridged_) channels.push_back(keys::room_down(room));
   subscriber_->subscribe(channels);
-  up_ = true;
-  context_.cluster_up = true;
+  up_ = true;  // ready (/readyz) once it knows the other nodes (watch_nodes)
   spdlog::info("cluster: node {} connected to Redis at {} ({} rooms owned, {} bridged)", node_, to_string(address_),
                owned_.size(), bridged_.size());
   report_alive();
@@ -247,6 +246,8 @@ void ClusterNode::watch_nodes() {
             if (auto room = context_.rooms->find(name)) room->node_gone(gone);
         }
       live_ = std::move(live);
+      // Knowing the others and their loads, it can place rooms: ready.
+      if (up_) context_.cluster_up = true;
     });
   });
 }
