@@ -28,6 +28,9 @@ constexpr auto kLeaseMs = 3000;
 // Without Redis a room someone joins waits this long for it, then is owned
 // here (a node just started is usually connected by then).
 constexpr auto kOwnWithoutRedisAfter = std::chrono::seconds(3);
+// After (re)connecting, nodes are not taken for dead before they could
+// have reported (a beat or two past their liveness key's life).
+constexpr auto kSettleAfterConnect = std::chrono::milliseconds(kAliveMs + 1000);
 // What a room placed on a node adds to its load until the node reports
 // again (about the load of a few people).
 constexpr double kRoomPlacementLoad = 2.0;
@@ -138,6 +141,7 @@ void ClusterNode::on_connected() {
   for (const auto& room : owned_) channels.push_back(keys::room_up(room));
   for (const auto& room : bridged_) channels.push_back(keys::room_down(room));
   subscriber_->subscribe(channels);
+  connected_since_ = Clock::now();
   up_ = true;  // ready (/readyz) once it knows the other nodes (watch_nodes)
   spdlog::info("cluster: node {} connected to Redis at {} ({} rooms owned, {} bridged)", node_, to_string(address_),
                owned_.size(), bridged_.size());
@@ -238,6 +242,14 @@ void ClusterNode::watch_nodes() {
         loads_[names[i]] = std::atof(alive->elements[i].text.c_str());
       }
       live.insert(node_);
+      // Just (re)connected, Redis may have restarted empty: the others have
+      // not reported yet, and are not taken for dead until they could have.
+      if (Clock::now() - connected_since_ < kSettleAfterConnect)
+        for (const auto& known : live_) live.insert(known);
+      for (const auto& back : live)
+        if (!live_.count(back))
+          for (const auto& name : owned_)
+            if (auto room = context_.rooms->find(name)) room->node_back(back);
       for (const auto& gone : live_)
         if (!live.count(gone)) {
           spdlog::warn("cluster: node {} stopped answering; its people in rooms owned here are away", gone);

@@ -110,6 +110,7 @@ class ClusterNode : public RoomBus {
   using Clock = std::chrono::steady_clock;
   std::set<std::string> unplaced_;  ///< opened while Redis was away, waiting for it
   Clock::time_point waiting_since_ = Clock::now();  ///< Redis away since (or the start)
+  Clock::time_point connected_since_ = Clock::now();
   std::map<std::string, double> loads_;  ///< live nodes and their load, as last seen
   std::set<std::string> live_;           ///< nodes alive at the last look
   RedisBlocking avatars_;                ///< avatar copies (redis_blocking.hpp)

@@ -403,14 +403,16 @@ void Room::send_attention_changes() {
 void Room::broadcast_seats(const SharedBytes& message) {
   for (auto& [id, member] : members_)
     if (member.stream) member.stream->post_seats(message);
-  if (role_ == RoomRole::owner && context_.bus && bridged_members() != 0)
+  // Every bridge keeps the room's seats and attention, people or not: it
+  // welcomes its next joiner from them. (Only faces wait for bridged people.)
+  if (role_ == RoomRole::owner && context_.bus)
     send_down(bridge::down_message(bridge::DownKind::seats, 0, *message));
 }
 
 void Room::broadcast_attention(const codec::Attention& attention, std::uint32_t except) {
   for (auto& [id, member] : members_)
     if (id != except && member.stream) member.stream->post_attention(attention);
-  if (role_ == RoomRole::owner && context_.bus && bridged_members() != 0) {
+  if (role_ == RoomRole::owner && context_.bus) {
     bridge::Bytes bytes;
     codec::write_message(attention, bytes);
     send_down(bridge::down_attention(std::move(bytes)));

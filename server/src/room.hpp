@@ -96,8 +96,10 @@ class Room : public std::enable_shared_from_this<Room> {
   /// back with their resume key, or the rejoin grace ends.
   void take_over(std::vector<bridge::MemberRecord> members, std::optional<bridge::RoomState> state,
                  std::set<std::string> live_nodes);
-  /// Owner: the people bridged from `node` are away (it stopped answering).
+  /// Owner: the people bridged from `node` are away (it stopped answering),
+  /// or back (it answers again: it was only out of touch).
   void node_gone(std::string node);
+  void node_back(std::string node);
   /// Owner: writes its whole record to Redis again (Redis came back).
   void keep_all();
   /// Bridge: asks the owner for its roster again (Redis came back).

@@ -60,6 +60,14 @@ void Room::node_gone(std::string node) {
   });
 }
 
+void Room::node_back(std::string node) {
+  net::post(strand_, [self = shared_from_this(), node = std::move(node)] {
+    if (self->closed_ || self->role_ != RoomRole::owner) return;
+    for (auto& [id, member] : self->members_)
+      if (member.node == node && member.away_until) member.away_until.reset();
+  });
+}
+
 bool Room::take_seat_back(JoinRequest& request) {
   if (request.returning.empty()) return false;
   const std::string hash = resume_hash(request.returning);
