@@ -69,7 +69,10 @@ TEST(RoomServerLimits, AClientThatNeverReadsCostsBoundedMemoryAndNobodyElsesFram
   const long rss_after = server.rss_kb();
   std::cout << "room ticks per second seen by a reader: " << baseline_rate << " before, " << stall_rate
             << " while a client does not read; server RSS " << rss_before << " -> " << rss_after << " kB\n";
-  EXPECT_GT(stall_rate, 27.0) << "the room keeps its 30 Hz";
+  // The room keeps the pace it had before the sink came: 30 Hz on a quiet
+  // machine; on a loaded one (other tests at once), the pace it had then.
+  EXPECT_GT(stall_rate, std::min(27.0, 0.9 * baseline_rate)) << "the room keeps its pace";
+  EXPECT_GT(stall_rate, 15.0) << "the room fell far behind its 30 Hz";
   ASSERT_TRUE(reader->link);
   EXPECT_EQ(reader->link->skipped_ticks, 0u) << "the reader misses nothing";
   EXPECT_FALSE(reader->closed());
