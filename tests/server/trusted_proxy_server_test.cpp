@@ -54,18 +54,7 @@ test::HttpReply exchange_from(const std::string& source, int port, const std::st
     ::close(fd);
     return reply;
   }
-  ::send(fd, raw.data(), raw.size(), MSG_NOSIGNAL);
-  std::string received;
-  char buffer[8192];
-  ssize_t n;
-  while ((n = ::recv(fd, buffer, sizeof buffer, 0)) > 0) received.append(buffer, static_cast<std::size_t>(n));
-  ::close(fd);
-  const auto end = received.find("\r\n\r\n");
-  if (received.rfind("HTTP/1.1 ", 0) != 0 || end == std::string::npos) return reply;
-  reply.status = std::atoi(received.c_str() + 9);
-  reply.headers = received.substr(0, end);
-  reply.body = received.substr(end + 4);
-  return reply;
+  return test::http_exchange_on(fd, raw);
 }
 
 std::string forwarded_line(const std::string& x_forwarded_for) {

@@ -19,10 +19,17 @@ struct HttpReply {
 
 /// Sends `raw` to 127.0.0.1:`port` and reads until the server closes or
 /// `timeout_s` seconds pass.
+inline HttpReply http_exchange_on(int fd, const std::string& raw);
 inline HttpReply http_exchange(int port, const std::string& raw, int timeout_s = 5) {
-  HttpReply reply;
   const int fd = connect_loopback(port, timeout_s);
-  if (fd < 0) return reply;
+  if (fd < 0) return {};
+  return http_exchange_on(fd, raw);
+}
+
+/// Sends `raw` on the connected socket `fd`, reads the answer until the
+/// server closes, and closes `fd`.
+inline HttpReply http_exchange_on(int fd, const std::string& raw) {
+  HttpReply reply;
   ::send(fd, raw.data(), raw.size(), MSG_NOSIGNAL);
   std::string received;
   char buffer[8192];
