@@ -8,7 +8,6 @@
 #include <spdlog/spdlog.h>
 
 #include "display_name.hpp"
-#include "visible_text.hpp"
 #include "join_token.hpp"
 #include "monotonic_clock.hpp"
 #include "peer_address.hpp"
@@ -393,11 +392,7 @@ void ClientSession::handle_resync(std::span<const std::uint8_t> message) {
 void ClientSession::handle_chat(std::span<const std::uint8_t> message) {
   codec::Chat chat;
   if (const auto e = codec::read_message(message, chat); e != MessageError::ok) return malformed(e, "chat");
-  // What acts unseen is left out (visible_text.hpp): every reader sees the
-  // line as it shows.
-  std::string text;
-  clean_chat_text(chat.text, text, codec::kMaxChatBytes);
-  if (text.empty()) return;
+  if (chat.text.empty()) return;
   if (!take_token(chat_tokens_, 1))
     return protocol_error(CloseCode::rate_limited, "too many chat lines; at most 2 a second", Abuse::chat_rate);
   // Over its address's rate (all its connections together; the room's rate
@@ -412,7 +407,7 @@ void ClientSession::handle_chat(std::span<const std::uint8_t> message) {
     queued_bytes_.fetch_add(notice->size(), std::memory_order_relaxed);  // as deliver() does
     return do_deliver(std::move(notice));
   }
-  room_->chat(avatar_, std::move(text));
+  room_->chat(avatar_, std::move(chat.text));
 }
 
 void ClientSession::handle_command(std::span<const std::uint8_t> message) {

@@ -9,6 +9,7 @@
 #include "room_bus.hpp"
 #include "room_registry.hpp"
 #include "server_keys.hpp"
+#include "visible_text.hpp"
 
 namespace fw::server {
 
@@ -109,6 +110,13 @@ void Room::do_chat(std::uint32_t avatar, std::string text) {
     return context_.bus->send_up(name_, bridge::encode(bridge::up_chat(context_.bus->node(), avatar, std::move(text))));
   }
   Member& writer = it->second;
+  // The owner cleans every line, its own people's and those bridged from
+  // other nodes alike: what acts unseen is left out (visible_text.hpp), so
+  // that every reader sees the line as it shows.
+  std::string shown;
+  clean_chat_text(text, shown, codec::kMaxChatBytes);
+  if (shown.empty()) return;
+  text = std::move(shown);
   if (!chat_rate_.take(TokenBucket::Clock::now())) {
     // The room's chat is at its rate (many writers, or one from many
     // addresses): the line is dropped and its writer told so, in place.
