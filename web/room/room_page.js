@@ -78,7 +78,7 @@ async function main() {
     mutes.save(localStorage, identity.room);
     $('mute-note').textContent = muteNote(client, name, muted);
     showPeople(client, mutes, toggleMute);
-    showChat(client, mutes);
+    showChat(client, mutes, true);
     return muted;
   };
   client.start();
@@ -142,18 +142,27 @@ function showMeter(client) {
   }
 }
 
-/** The chat log and the caption, without the lines of muted names (counted instead). */
-function showChat(client, mutes) {
+function chatItem(line) {
+  const item = document.createElement('li');
+  const from = document.createElement('span');
+  from.className = 'from';
+  from.textContent = line.name;
+  item.append(from, document.createTextNode(line.text));
+  return item;
+}
+
+/**
+ * The chat log and the caption, without the lines of muted names (counted
+ * instead). A new line is appended (the log is read aloud as it grows);
+ * `rebuild` after a mute or unmute lays the whole log out again.
+ */
+function showChat(client, mutes, rebuild = false) {
   const log = $('chat-log');
   const { shown, hidden } = mutes.filterLines(client.chatLines, client.you);
-  log.replaceChildren(...shown.map((line) => {
-    const item = document.createElement('li');
-    const from = document.createElement('span');
-    from.className = 'from';
-    from.textContent = line.name;
-    item.append(from, document.createTextNode(line.text));
-    return item;
-  }));
+  const newest = client.chatLines.at(-1);
+  if (rebuild) log.replaceChildren(...shown.map(chatItem));
+  else if (newest && shown.at(-1) === newest) log.append(chatItem(newest));
+  while (log.children.length > 200) log.firstChild.remove();
   log.scrollTop = log.scrollHeight;
   const last = shown.at(-1);
   $('caption').textContent = last ? `${last.name}: ${last.text}` : '';
@@ -166,7 +175,7 @@ function muteNote(client, name, muted) {
   const wearing = MuteList.wearing(avatars, name, client.you);
   if (!muted) return `${name} is no longer muted.`;
   const who = wearing > 1 ? `All ${wearing} people named ${name} are` : `${name} is`;
-  return `${who} muted for you: their lines are hidden and their faces still. Nobody else is affected, and they are not told.`;
+  return `${who} muted for you: their lines are hidden and their faces held still. Nobody else is affected, and they are not told.`;
 }
 
 function showPeople(client, mutes, toggleMute) {

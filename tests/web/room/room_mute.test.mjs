@@ -121,7 +121,7 @@ test('Ann mutes Bob: his line is hidden and counted, his face holds still and ne
   step('Bob\'s face looked at');
 
   await ann.click(`#people li[data-avatar="${bobId}"] button.mute`);
-  assert.match(await ann.locator('#mute-note').textContent(), /^Bob is muted for you: their lines are hidden and their faces still/);
+  assert.match(await ann.locator('#mute-note').textContent(), /^Bob is muted for you: their lines are hidden and their faces held still/);
   await ann.locator(`#people li.muted[data-avatar="${bobId}"] button.unmute`).waitFor();
   await ann.locator(`#overlay .tile.muted[data-avatar="${bobId}"]`).waitFor();
   assert.deepEqual(await ann.evaluate(() => JSON.parse(localStorage.getItem('facewire.muted.quiet'))), ['Bob']);
