@@ -1,5 +1,6 @@
 #include "join_arguments.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <stdexcept>
 
@@ -35,6 +36,9 @@ bool check_session_fields(const JoinArgs& args, std::string& error) {
             " characters of A-Z a-z 0-9 _ - . , not '" + args.room + "'";
   else if (!display_name_ok(args.name))
     error = "--name must be 1.." + std::to_string(codec::kMaxDisplayNameBytes) + " bytes without control characters";
+  else if (std::any_of(args.mute.begin(), args.mute.end(), [](const std::string& n) { return !display_name_ok(n); }))
+    error = "--mute takes a display name as others see it: 1.." + std::to_string(codec::kMaxDisplayNameBytes) +
+            " bytes without control characters";
   else if (!chat_lines_ok(args.say))
     error = "--say: a chat line holds 1.." + std::to_string(codec::kMaxChatBytes) + " bytes";
   else if (args.token.size() > codec::kMaxTokenBytes)

@@ -20,6 +20,7 @@ struct JoinArgs {
   double seconds = 0;
   double max_kbps = 0;
   std::vector<std::string> say;
+  std::vector<std::string> mute;  ///< display names muted for this person alone (--mute, repeatable)
   std::string emote;
   bool json = false, quiet = false;
   std::string size = "640x360";

@@ -120,6 +120,7 @@ void run(const JoinArgs& args, const JoinNetwork& network) {
     fail_command("join", 2, error);
   watch_signals();
   RoomState state;
+  state.mutes = MuteList(args.mute);
   const JoinOutcome outcome = play_room(args, plan, network, uploaded, state, view.get(), outputs);
   finish(args, state, outcome, uploaded, outputs, view != nullptr);
 }
@@ -150,6 +151,9 @@ void add_join_command(CLI::App& app, JoinNetwork network) {
   cmd->add_option("--max-kbps", args->max_kbps, "downstream budget in kbit/s (the server's default if unset)")
       ->check(CLI::Range(0.001, 100000.0));
   cmd->add_option("--say", args->say, "a chat line to send once joined (repeatable)");
+  cmd->add_option("--mute", args->mute,
+                  "a display name to mute for yourself alone: their chat lines are not printed and their face is "
+                  "drawn still and neutral; everyone of that name (repeatable; they are not told)");
   cmd->add_option("--emote", args->emote, "express an emotion once joined: joy, sadness, anger, fear, surprise, disgust")
       ->check(CLI::IsMember({"joy", "sadness", "anger", "fear", "surprise", "disgust", "neutral"}));
   cmd->add_flag("--json", args->json, "print one JSON summary at the end (on stdout, or stderr when the video is there)");

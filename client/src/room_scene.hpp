@@ -25,6 +25,7 @@ struct SceneMember {
   codec::SeatInfo seat;                       ///< the server's seat (PROTOCOL.md 5.13)
   std::optional<codec::FaceParams> face;      ///< none before its first frame
   codec::Attention::Entry attention;          ///< whom it attends (5.14); the room until told
+  bool still = false;                         ///< muted by the viewer: its face at rest, re-aimed at nobody
 };
 
 struct RoomScene {

@@ -269,15 +269,18 @@ codec::MessageError RoomSession::read_then(std::span<const std::uint8_t> bytes,
 void RoomSession::on_welcome(const codec::Welcome& welcome) {
   resume_key_ = welcome.resume;
   welcomed_credentials_ = credentials_here();
+  std::vector<std::string> mute_notices;  // said once, on entering the room
   {
     std::lock_guard lock(state_.mutex);
     if (greeted_) state_.stats.reconnected();  // a welcome before this one: the link came back
     state_.welcomed(welcome, options_.own_package, Clock::now());
+    if (!greeted_) mute_notices = state_.mutes.notices(welcome.avatars, welcome.you);
   }
   failed_attempts_ = 0;
   event("joined room " + welcome.room + " as avatar " + std::to_string(welcome.you) + " with " +
         std::to_string(welcome.avatars.size()) + " avatar(s) present" +
         (rotation_.count() > 1 ? " on " + server_name(rotation_.current()) : ""));
+  for (const std::string& notice : mute_notices) event(notice);
   greet_once();
 }
 
@@ -301,7 +304,7 @@ void RoomSession::on_presence(const codec::Presence& presence) {
   std::lock_guard lock(state_.mutex);
   if (presence.change == codec::Presence::Change::joined) {
     state_.avatar_joined(presence.avatar);
-    event(presence.avatar.name + " joined");
+    event(presence.avatar.name + " joined" + (state_.muted(presence.avatar.id) ? " (muted for you)" : ""));
     return;
   }
   packages_.forget(presence.avatar.id);
@@ -310,8 +313,9 @@ void RoomSession::on_presence(const codec::Presence& presence) {
 
 void RoomSession::on_chat(const codec::Chat& chat) {
   std::lock_guard lock(state_.mutex);
+  const bool muted = state_.muted(chat.from);
   const std::string name = state_.chat_line(chat);
-  event(name + ": " + chat.text);
+  if (!muted) event(name + ": " + chat.text);
 }
 
 void RoomSession::on_seats(const codec::Seats& seats) {

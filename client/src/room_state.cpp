@@ -26,6 +26,12 @@ RoomScene RoomState::scene(std::chrono::steady_clock::time_point now, const std:
   for (const auto& [id, avatar] : avatars) {
     SceneMember member{id, avatar.info.name, avatar.info.seat, std::nullopt, {id, codec::AttentionTarget::room, 0}};
     if (const auto it = decoded.find(id); it != decoded.end()) member.face = it->second;
+    // Muted: drawn at rest whatever the stream says, once it has a face at all.
+    if (mutes.mutes(id, avatar.info.name, you)) {
+      member.still = true;
+      member.name += " (muted)";
+      if (member.face) member.face = MuteList::still_face();
+    }
     if (const auto it = attention.find(id); it != attention.end()) member.attention = it->second;
     if (id == scene.you && !avatar.info.name.empty()) scene.your_name = avatar.info.name;
     scene.members.push_back(std::move(member));
@@ -94,7 +100,10 @@ void RoomState::attention_changed(const codec::Attention& message) {
 
 std::string RoomState::chat_line(const codec::Chat& chat) {
   std::string name = name_of(chat.from);
-  record({"chat", name, chat.text});
+  if (muted(chat.from))
+    mutes.line_hidden(name);
+  else
+    record({"chat", name, chat.text});
   return name;
 }
 

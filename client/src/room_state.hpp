@@ -19,6 +19,7 @@
 #include "fw/codec/codec.hpp"
 #include "fw/codec/messages.hpp"
 #include "link_stats.hpp"
+#include "mute_list.hpp"
 #include "package_assembler.hpp"
 #include "room_scene.hpp"
 
@@ -60,6 +61,8 @@ class RoomState {
   /// Set when the client must stop: the server refused it for good (bad
   /// token, room full, ...), with what to do.
   std::optional<std::string> fatal_error;
+  /// Whom the person muted for themselves (--mute): set before the session starts.
+  MuteList mutes;
 
   static constexpr std::size_t kMaxEvents = 200;
   using Clock = std::chrono::steady_clock;
@@ -73,6 +76,8 @@ class RoomState {
     const auto it = avatars.find(avatar);
     return it == avatars.end() ? "avatar " + std::to_string(avatar) : it->second.info.name;
   }
+  /// Whether the person muted this avatar (by its name; never their own).
+  bool muted(std::uint32_t avatar) const { return mutes.mutes(avatar, name_of(avatar), you); }
 
   // Changes, made by the session with `mutex` held.
 
@@ -96,7 +101,8 @@ class RoomState {
   void seats_changed(const codec::Seats& seats);
   /// Faces whose attention changed.
   void attention_changed(const codec::Attention& message);
-  /// A chat line (recorded as an event). Returns the writer's name.
+  /// A chat line (recorded as an event, or only counted when its writer is
+  /// muted). Returns the writer's name.
   std::string chat_line(const codec::Chat& chat);
   /// A whole package: the avatar's face from now on. False when it is
   /// ignored: the avatar is not in the room, or a late preview would
@@ -112,7 +118,8 @@ class RoomState {
   std::vector<AvatarFace> faces(std::chrono::steady_clock::time_point now) const;
 
   /// What the room view draws now: everyone with their seat, attention and
-  /// face (as faces() has it), the last chat line as the caption.
+  /// face (as faces() has it; a muted one still and neutral, its name
+  /// marked), the last chat line shown as the caption.
   /// `your_name` names the self view before the welcome.
   RoomScene scene(std::chrono::steady_clock::time_point now, const std::string& your_name) const;
 };

@@ -15,6 +15,14 @@ nlohmann::json room_summary(const RoomState& state, std::chrono::steady_clock::t
   for (const RoomEventRecord& event : state.events)
     events.push_back({{"kind", event.kind}, {"name", event.name}, {"text", event.text}});
   summary["events"] = events;
+  if (!state.mutes.empty()) {
+    // Whom the person muted, and how many of their lines were not shown.
+    std::size_t muted_here = 0;
+    for (const auto& [id, avatar] : state.avatars) muted_here += state.muted(id) ? 1 : 0;
+    summary["muted"] = {{"names", state.mutes.names()},
+                        {"avatars_in_room", muted_here},
+                        {"lines_hidden", state.mutes.hidden_lines()}};
+  }
   if (state.server_link)
     summary["server_link"] = {{"target_bps", state.server_link->target_bps},
                               {"drain_bps", state.server_link->drain_bps},

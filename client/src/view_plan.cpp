@@ -85,6 +85,10 @@ ViewPlan plan_view(const RoomScene& scene, int width, int height, std::map<std::
   std::map<std::uint32_t, GazeBlend> kept;
   for (std::size_t i = 0; i < order.size(); ++i) {
     const SceneMember& m = *find_member(scene, order[i]);
+    if (m.still) {  // muted: straight ahead from its place in this view, toward nobody
+      plan.others.push_back({m.id, m.name, view_places[m.id], *m.face});
+      continue;
+    }
     const Aimed aimed = aim_face(scene, m, view_places[m.id], view_places, plan.layout);
     GazeBlend& blend = kept[m.id] = blends[m.id];
     const GazeCorrection correction = blend.update(aimed.key, aimed.correction, scene.now);

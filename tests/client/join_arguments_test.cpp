@@ -62,6 +62,9 @@ TEST(JoinArguments, SaysWhichFlagIsWrong) {
   args.say = {"fine", ""};
   EXPECT_EQ(plan_error(args).rfind("--say: a chat line holds 1..500 bytes", 0), 0u);
   args = valid_args();
+  args.mute = {"Bob", std::string(33, 'b')};
+  EXPECT_EQ(plan_error(args).rfind("--mute takes a display name as others see it: 1..32 bytes", 0), 0u);
+  args = valid_args();
   args.token = std::string(513, 't');
   EXPECT_EQ(plan_error(args).rfind("--token", 0), 0u);
   args = valid_args();

@@ -3,12 +3,14 @@
 // &servers=wss://a/ws,wss://b/ws on the servers of that list, the next when
 // one fails, else on the page's own), draws it from
 // the person's own place (room_view.js), and wires the controls: chat, the
-// expression and blush buttons, FACS sentences, looking at or snubbing a
-// face, the stream budget, and the meter.
+// expression and blush buttons, FACS sentences, looking at, snubbing or
+// muting a face (for the viewer alone: mute_list.js), the stream budget,
+// and the meter.
 import { loadEngineFromServer } from '../engine/engine.js';
 import { AttentionTarget } from '../protocol/session_types.js';
 import { FaceRenderer } from './face_renderer.js';
 import { RoomClient } from './room_client.js';
+import { MuteList } from './mute_list.js';
 import { RoomView } from './room_view.js';
 import { parseServers } from './server_list.js';
 
@@ -65,16 +67,27 @@ async function main() {
     maxBps: budgetBps(budget.value), ownPackage: Boolean(own), openSocket: (url) => new WebSocket(url),
     onChange: (what) => changed(what),
   });
-  const view = new RoomView({ gl, engine, renderer, client });
+  // Whom this person muted in this room, kept across reconnects and visits.
+  const mutes = MuteList.load(localStorage, identity.room);
+  const view = new RoomView({ gl, engine, renderer, client, mutes });
   if (own) await view.setOwnPackage(own).catch((error) => console.warn(`own package: ${error.message}`));
-  window.facewireRoom = { client, view };  // for whoever inspects the page (and its tests)
+  window.facewireRoom = { client, view, mutes };  // for whoever inspects the page (and its tests)
+  // Muting changes what this page shows, nothing else: no message goes out.
+  const toggleMute = (name) => {
+    const muted = mutes.toggle(name);
+    mutes.save(localStorage, identity.room);
+    $('mute-note').textContent = muteNote(client, name, muted);
+    showPeople(client, mutes, toggleMute);
+    showChat(client, mutes, true);
+    return muted;
+  };
   client.start();
 
   budget.addEventListener('change', () => {
     localStorage.setItem(BUDGET_KEY, budget.value);
     client.setRate(budgetBps(budget.value));
   });
-  wireControls(client);
+  wireControls(client, mutes, toggleMute);
 
   let lastDraw = -Infinity;
   const frame = (now) => {
@@ -98,10 +111,10 @@ async function main() {
   setInterval(() => showMeter(client), 500);
 
   function changed(what) {
-    if (what === 'chat') showChat(client);
+    if (what === 'chat') showChat(client, mutes);
     if (what === 'result') showResults(client);
     if (['welcome', 'presence', 'attention', 'closed', 'reconnecting', 'closing'].includes(what)) showStatus(client);
-    if (['welcome', 'presence'].includes(what)) showPeople(client);
+    if (['welcome', 'presence'].includes(what)) showPeople(client, mutes, toggleMute);
   }
 }
 
@@ -129,36 +142,61 @@ function showMeter(client) {
   }
 }
 
-function showChat(client) {
-  const log = $('chat-log');
-  const line = client.chatLines.at(-1);
+function chatItem(line) {
   const item = document.createElement('li');
   const from = document.createElement('span');
   from.className = 'from';
   from.textContent = line.name;
   item.append(from, document.createTextNode(line.text));
-  log.append(item);
-  while (log.children.length > 200) log.firstChild.remove();
-  log.scrollTop = log.scrollHeight;
-  $('caption').textContent = `${line.name}: ${line.text}`;
+  return item;
 }
 
-function showPeople(client) {
+/**
+ * The chat log and the caption, without the lines of muted names (counted
+ * instead). A new line is appended (the log is read aloud as it grows);
+ * `rebuild` after a mute or unmute lays the whole log out again.
+ */
+function showChat(client, mutes, rebuild = false) {
+  const log = $('chat-log');
+  const { shown, hidden } = mutes.filterLines(client.chatLines, client.you);
+  const newest = client.chatLines.at(-1);
+  if (rebuild) log.replaceChildren(...shown.map(chatItem));
+  else if (newest && shown.at(-1) === newest) log.append(chatItem(newest));
+  while (log.children.length > 200) log.firstChild.remove();
+  log.scrollTop = log.scrollHeight;
+  const last = shown.at(-1);
+  $('caption').textContent = last ? `${last.name}: ${last.text}` : '';
+  $('chat-hidden').textContent = [...hidden].map(([name, n]) => `${n} ${n === 1 ? 'line' : 'lines'} hidden from ${name}`).join(' · ');
+}
+
+/** What muting or unmuting `name` did, in words. */
+function muteNote(client, name, muted) {
+  const avatars = [...client.avatars.values()].map((a) => a.info);
+  const wearing = MuteList.wearing(avatars, name, client.you);
+  if (!muted) return `${name} is no longer muted.`;
+  const who = wearing > 1 ? `All ${wearing} people named ${name} are` : `${name} is`;
+  return `${who} muted for you: their lines are hidden and their faces held still. Nobody else is affected, and they are not told.`;
+}
+
+function showPeople(client, mutes, toggleMute) {
   const list = $('people');
   list.replaceChildren();
   for (const [id, { info }] of client.avatars) {
     const item = document.createElement('li');
     item.dataset.avatar = String(id);
+    const muted = mutes.mutes(id, info.name, client.you);
+    item.classList.toggle('muted', muted);
     const who = document.createElement('span');
     who.className = 'who';
-    who.textContent = `${info.name}${id === client.you ? ' (you)' : ''}${info.person ? '' : ' · resident'}`;
+    who.textContent = `${info.name}${id === client.you ? ' (you)' : ''}${info.person ? '' : ' · resident'}${muted ? ' · muted' : ''}`;
     const fps = document.createElement('span');
     fps.className = 'fps';
     item.append(who, fps);
     if (id !== client.you) {
-      for (const [label, act] of [['look', () => client.lookAt(id)], ['snub', () => client.snub(id)]]) {
+      const mute = muted ? 'unmute' : 'mute';
+      for (const [label, act] of [['look', () => client.lookAt(id)], ['snub', () => client.snub(id)], [mute, () => toggleMute(info.name)]]) {
         const button = document.createElement('button');
-        button.className = 'button';
+        button.className = `button ${label}`;
         button.type = 'button';
         button.textContent = label;
         button.setAttribute('aria-label', `${label} ${info.name}`);
@@ -184,7 +222,7 @@ function showResults(client) {
   }
 }
 
-function wireControls(client) {
+function wireControls(client, mutes, toggleMute) {
   const buttons = $('expressions');
   for (const name of EXPRESSIONS) {
     const button = document.createElement('button');
@@ -221,11 +259,16 @@ function wireControls(client) {
   let menuFor = 0;
   $('look-at').addEventListener('click', () => { client.lookAt(menuFor); menu.hidden = true; });
   $('snub').addEventListener('click', () => { client.snub(menuFor); menu.hidden = true; });
+  $('mute').addEventListener('click', () => {
+    if (client.avatars.has(menuFor)) toggleMute(client.nameOf(menuFor));
+    menu.hidden = true;
+  });
   $('overlay').addEventListener('click', (event) => {
     const tile = event.target.closest('.tile:not(.self)');
     if (!tile) return;
     menuFor = Number(tile.dataset.avatar);
     $('face-menu-name').textContent = tile.querySelector('.name').textContent;
+    $('mute').textContent = mutes.mutes(menuFor, client.nameOf(menuFor), client.you) ? 'Unmute' : 'Mute';
     menu.style.left = `${tile.offsetLeft + 8}px`;
     menu.style.top = `${tile.offsetTop + 8}px`;
     menu.hidden = false;
@@ -254,8 +297,9 @@ function placeOverlays(client, view) {
     const tile = overlay.children[i];
     tile.dataset.avatar = String(t.id);
     tile.classList.toggle('self', t.self);
+    tile.classList.toggle('muted', Boolean(t.muted));
     const attention = client.attention.get(t.id);
-    tile.classList.toggle('attends-you', !t.self && attention?.target === AttentionTarget.avatar && attention.targetAvatar === client.you);
+    tile.classList.toggle('attends-you', !t.self && !t.muted && attention?.target === AttentionTarget.avatar && attention.targetAvatar === client.you);
     Object.assign(tile.style, { left: `${t.rect.x}px`, top: `${t.rect.y}px`, width: `${t.rect.w}px`, height: `${t.rect.h}px` });
     if (tile.querySelector('.name').textContent !== t.name) tile.querySelector('.name').textContent = t.name;
     tile.querySelector('.waiting').textContent = t.drawn ? '' : 'arriving…';

@@ -3,10 +3,13 @@
 // (view_geometry.js), its eyes and head re-aimed at where its attention
 // target sits in this view (gaze_reaim.js); the viewer's own face in a small
 // tile, at once, from the page's own package. Names and the last chat line
-// are HTML laid over the canvas (room_page.js places them from `tiles`).
+// are HTML laid over the canvas (room_page.js places them from `tiles`). A
+// face the viewer muted (mute_list.js) is drawn at rest: neutral, still and
+// looking straight ahead, whatever the stream says it does.
 import { mat4 } from '../mat4.js';
 import { TURN_SHARE, aimAt, reaim, reaimAtViewer } from './gaze_reaim.js';
 import { decodeImage } from './face_renderer.js';
+import { NEUTRAL_FACE as NEUTRAL } from './mute_list.js';
 import { MM_PER_UNIT, VIEW_DISTANCE_MM, eyeMidMm, screenOrder, seatToRoom, serverSeat, viewSeats } from './view_geometry.js';
 import { tileLayout } from './tile_layout.js';
 
@@ -17,18 +20,14 @@ const TILE_SPAN_UNITS = 4.2;
 const TILE_WIDTH_UNITS = 3.1;
 const BACKGROUND = [0.16, 0.17, 0.2];
 
-const NEUTRAL = {
-  head_yaw_rad: 0, head_pitch_rad: 0, head_roll_rad: 0, head_translation_mm: [0, 0, 0],
-  eye_left: { yaw_rad: 0, pitch_rad: 0 }, eye_right: { yaw_rad: 0, pitch_rad: 0 },
-  lid_left: 0, lid_right: 0, blush: [0, 0, 0, 0, 0], pallor: 0, au: [],
-};
-
 /** A face's place: translate(origin) * rotate_y(facing), model units. */
 const placeOf = (seat) => mat4.multiply(mat4.translation(seat.origin.map((v) => v / MM_PER_UNIT)), mat4.rotationY(seat.facingYawRad));
 
 export class RoomView {
-  constructor({ gl, engine, renderer, client }) {
+  /** @param mutes the viewer's MuteList (mute_list.js), or none */
+  constructor({ gl, engine, renderer, client, mutes = null }) {
     this.gl = gl;
+    this.mutes = mutes;
     this.engine = engine;
     this.renderer = renderer;
     this.client = client;
@@ -48,6 +47,8 @@ export class RoomView {
     this.selfDrawnMs = null;
     /** What each tile showed last: avatar id (or 'self') -> { area, viewProjection, model, landmarks }. */
     this.shown = new Map();
+    /** The FaceParams each tile was drawn with last (avatar id -> params), for whoever inspects the page. */
+    this.drawnParams = new Map();
   }
 
   /** The viewer's own face, from the package the page holds (before any server message). */
@@ -144,11 +145,13 @@ export class RoomView {
       const face = this.faces.get(info.id);
       const decoded = client.face(info.id, nowMs);
       const drawn = Boolean(face && decoded);
+      const muted = Boolean(this.mutes?.mutes(info.id, info.name, client.you));
       if (drawn) {
         const seat = seats[i];
         const entry = client.attention.get(info.id);
-        const aim = this.targets(info.id, entry, serverSeats, viewPlaces);
-        let params = decoded;
+        // Muted: at rest, aimed at nobody (not even re-aimed at the viewer).
+        const aim = muted ? null : this.targets(info.id, entry, serverSeats, viewPlaces);
+        let params = this.mutes ? this.mutes.faceOf(info.id, info.name, client.you, decoded) : decoded;
         if (aim) {
           const weight = this.easing(info.id, aim.key, nowMs);
           const view = aimAt(seat, this.eyeMid, aim.view);
@@ -162,9 +165,10 @@ export class RoomView {
         } else {
           this.retarget.delete(info.id);
         }
+        this.drawnParams.set(info.id, params);
         this.drawTile(info.id, rect, layout.nameBand, height, pixelRatio, face, params, placeOf(seat), this.tileCamera(seat, rect, layout.nameBand));
       }
-      return { id: info.id, name: info.name, person: info.person, rect, drawn };
+      return { id: info.id, name: info.name, person: info.person, rect, drawn, muted };
     });
 
     // The viewer's own face, as a mirror: the package the page holds at
@@ -179,6 +183,7 @@ export class RoomView {
       this.selfTile = rect;
       this.selfDrawnMs ??= nowMs;
     }
+    for (const id of this.drawnParams.keys()) if (!client.avatars.has(id)) this.drawnParams.delete(id);
     this.frames += 1;
   }
 
