@@ -118,6 +118,12 @@ void run(const JoinArgs& args, const JoinNetwork& network) {
   UploadedAvatar uploaded;
   if (!upload_prepared_avatar(args, plan.servers, network.upload_avatar, std::move(own), uploaded, error))
     fail_command("join", 2, error);
+  // The key is the only way back to the photo the server keeps: said once,
+  // here, with the HTTP address the upload went to (also for a tcp:// join).
+  if (!uploaded.asset.empty() && !args.quiet && uploaded.server < targets.size())
+    std::cerr << "facewire-client join: your avatar is " << uploaded.asset << "; to delete it and your photo from the "
+              << "server: facewire-client delete-avatar ws://" << targets[uploaded.server].host << ":"
+              << targets[uploaded.server].port << "/ --asset " << uploaded.asset << " --key " << uploaded.key << "\n";
   watch_signals();
   RoomState state;
   state.mutes = MuteList(args.mute);

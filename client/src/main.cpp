@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "avatar_upload.hpp"
+#include "delete_avatar_command.hpp"
 #include "join_command.hpp"
 #include "render_command.hpp"
 #include "socket_transport.hpp"
@@ -14,6 +15,7 @@ int main(int argc, char** argv) {
   CLI::App app{"facewire thin client: render avatars, join rooms"};
   app.require_subcommand(1);
   fw::client::add_render_command(app);
+  fw::client::add_delete_avatar_command(app);
   fw::client::add_join_command(
       app, {fw::client::make_socket_transport, fw::client::upload_avatar, fw::client::async_upload_avatar});
 

@@ -31,7 +31,7 @@ enum class Abuse {
   not_reading,               ///< a connection whose send queue overflowed
   unauthorized,              ///< a missing, bad or expired token, or a wrong operator secret
   token_in_use,              ///< a token another live session holds
-  face_not_yours,            ///< a hello naming an asset without its secret
+  face_not_yours,            ///< a hello naming an asset, or a deletion of one, without its secret
   bad_name,                  ///< a display name with control, bidi or zero-width characters
   bad_forwarded_header,      ///< a trusted proxy's X-Forwarded-For or Forwarded that names no address
   bad_hello,                 ///< a hello refused for what it asks: room name, unknown avatar, a key without a face

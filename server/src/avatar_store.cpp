@@ -8,6 +8,7 @@
 #include "fw/model/file_io.hpp"
 #include "preview_package.hpp"
 #include "room_connection.hpp"  // share
+#include "server_keys.hpp"
 
 namespace fw::server {
 namespace {
@@ -41,6 +42,12 @@ AvatarLookup cannot_remake_it() {
 AvatarLookup damaged() {
   return {AvatarStatus::damaged, std::nullopt, "your stored avatar is damaged; upload your photo again"};
 }
+AvatarLookup deleted() {
+  return {AvatarStatus::deleted, std::nullopt,
+          "this avatar was deleted by whoever uploaded it; upload your own photo to make one"};
+}
+
+constexpr const char* kAvatarFiles[] = {".fwa", ".preview.fwa", ".photo"};
 
 // The preview beside a package, made again when it is missing or does not
 // parse (a crash between writing the package and its preview). Writing it
@@ -89,7 +96,25 @@ void AvatarStore::set_repreparer(AvatarRepreparer repreparer) {
 }
 
 std::optional<StoredAvatar> AvatarStore::put(std::span<const std::uint8_t> package, std::span<const std::uint8_t> photo,
-                                             std::string& error, Durability durability) {
+                                             std::string& error) {
+  model::AvatarPackage parsed;
+  if (!model::parse_avatar_package(package, parsed, error)) return std::nullopt;
+  const std::string asset = new_asset_id();
+  if (asset.empty()) {
+    error = "the server found no random numbers for a new avatar id; try again";
+    return std::nullopt;
+  }
+  // The photo goes first: a crash before the package leaves only a photo
+  // that no id refers to yet.
+  if (!photo.empty() && !write_file_durably(file(asset, ".photo"), photo, error, Durability::synced))
+    return std::nullopt;
+  auto stored = write_and_remember(asset, package, parsed, error, Durability::synced);
+  if (stored && replica_.share) replica_.share(asset, package, photo);
+  return stored;
+}
+
+std::optional<StoredAvatar> AvatarStore::put_own_face(std::span<const std::uint8_t> package, std::string& error,
+                                                      Durability durability) {
   model::AvatarPackage parsed;
   if (!model::parse_avatar_package(package, parsed, error)) return std::nullopt;
   const std::string asset = content_id(package);
@@ -99,16 +124,42 @@ std::optional<StoredAvatar> AvatarStore::put(std::span<const std::uint8_t> packa
     error = known.message;
     return std::nullopt;
   }
-  // Bytes with this id's hash are the package it was first stored with, so
-  // they may repair a damaged or out-of-date one; its photo, if any, stays.
-  // The photo goes first: a crash before the package leaves only a photo
-  // that no id refers to yet.
-  if (known.status == AvatarStatus::unknown && !photo.empty() &&
-      !write_file_durably(file(asset, ".photo"), photo, error, durability))
-    return std::nullopt;
+  // Bytes with this id's hash are the face it was first stored with, so
+  // they may repair a damaged or out-of-date one.
   auto stored = write_and_remember(asset, package, parsed, error, durability);
-  if (stored && replica_.share) replica_.share(asset, package, photo);
+  if (stored && replica_.share) replica_.share(asset, package, {});
   return stored;
+}
+
+bool AvatarStore::remove(const std::string& asset) {
+  if (!is_asset_id(asset)) return false;
+  const bool removed = remove_here(asset);
+  // Also when only the cluster had it: the copy goes, and every node is told.
+  if (replica_.remove) replica_.remove(asset);
+  if (removed) spdlog::info("avatar {} deleted by its uploader", asset);
+  return removed;
+}
+
+void AvatarStore::forget(const std::string& asset) {
+  if (is_asset_id(asset) && remove_here(asset)) spdlog::info("avatar {} deleted on another node: dropped here", asset);
+}
+
+bool AvatarStore::remove_here(const std::string& asset) {
+  {
+    std::lock_guard lock(mutex_);
+    // Remembered first: a lookup or a preparation that ends from now on
+    // finds it deleted rather than bringing it back.
+    deleted_.insert(asset);
+    cache_.erase(asset);
+    refused_.erase(asset);
+    preparing_.erase(asset);
+  }
+  bool removed = false;
+  for (const char* suffix : kAvatarFiles) {
+    std::error_code ec;
+    removed = std::filesystem::remove(file(asset, suffix), ec) || removed;
+  }
+  return removed;
 }
 
 std::vector<std::string> AvatarStore::stored_assets() const {
@@ -143,7 +194,17 @@ std::optional<StoredAvatar> AvatarStore::write_and_remember(const std::string& a
     return std::nullopt;
   StoredAvatar stored{asset, content_id(package), share(std::vector<std::uint8_t>(package.begin(), package.end())),
                       share(std::move(preview))};
-  std::lock_guard lock(mutex_);
+  std::unique_lock lock(mutex_);
+  if (deleted_.contains(asset)) {
+    // Deleted while this preparation ran: what it just wrote goes too.
+    lock.unlock();
+    for (const char* suffix : kAvatarFiles) {
+      std::error_code ec;
+      std::filesystem::remove(file(asset, suffix), ec);
+    }
+    error = "the avatar was deleted meanwhile";
+    return std::nullopt;
+  }
   refused_.erase(asset);
   preparing_.erase(asset);
   return cache_.insert_or_assign(asset, stored).first->second;
@@ -151,13 +212,51 @@ std::optional<StoredAvatar> AvatarStore::write_and_remember(const std::string& a
 
 AvatarLookup AvatarStore::lookup(const std::string& asset) {
   if (!is_asset_id(asset)) return {};
+  AvatarLookup found;
   {
     std::lock_guard lock(mutex_);
-    if (auto it = cache_.find(asset); it != cache_.end()) return {AvatarStatus::found, it->second, {}};
-    if (preparing_.contains(asset)) return being_prepared();
-    if (auto it = refused_.find(asset); it != refused_.end()) return it->second;
+    if (deleted_.contains(asset)) return deleted();
+    if (auto it = cache_.find(asset); it != cache_.end()) found = {AvatarStatus::found, it->second, {}};
+    else if (preparing_.contains(asset)) return being_prepared();
+    else if (auto refused = refused_.find(asset); refused != refused_.end()) return refused->second;
   }
-  return load(asset);
+  if (found.status != AvatarStatus::found) found = load(asset);
+  if (found.status == AvatarStatus::found) note_use(asset);
+  return found;
+}
+
+void AvatarStore::note_use(const std::string& asset) {
+  const auto now = std::chrono::steady_clock::now();
+  {
+    std::lock_guard lock(mutex_);
+    auto [it, first] = last_noted_.try_emplace(asset, now);
+    if (!first && now - it->second < std::chrono::hours(1)) return;
+    it->second = now;
+  }
+  std::error_code ec;
+  std::filesystem::last_write_time(file(asset, ".fwa"), std::filesystem::file_time_type::clock::now(), ec);
+  if (replica_.touch) replica_.touch(asset);
+}
+
+std::vector<std::string> AvatarStore::remove_unused_since(std::filesystem::file_time_type cutoff,
+                                                          const std::set<std::string>& keep) {
+  std::vector<std::string> removed;
+  for (const std::string& asset : stored_assets()) {
+    if (keep.contains(asset)) continue;
+    std::error_code ec;
+    const auto last_use = std::filesystem::last_write_time(file(asset, ".fwa"), ec);
+    if (ec || last_use >= cutoff) continue;
+    remove_here(asset);
+    {
+      // Not deleted by its uploader: an upload of the same id cannot come,
+      // but the cluster's copy may still bring it back here while it lives.
+      std::lock_guard lock(mutex_);
+      deleted_.erase(asset);
+      last_noted_.erase(asset);
+    }
+    removed.push_back(asset);
+  }
+  return removed;
 }
 
 AvatarLookup AvatarStore::load(const std::string& asset) {
@@ -223,6 +322,13 @@ AvatarLookup AvatarStore::out_of_date(const std::string& asset, const std::strin
 }
 
 bool AvatarStore::replace(const std::string& asset, std::span<const std::uint8_t> package, std::string& error) {
+  {
+    std::lock_guard lock(mutex_);
+    if (deleted_.contains(asset)) {
+      error = "the avatar was deleted meanwhile";
+      return false;  // nothing to count: it is gone, as its uploader asked
+    }
+  }
   model::AvatarPackage parsed;
   if (model::parse_avatar_package(package, parsed, error) && write_and_remember(asset, package, parsed, error)) {
     spdlog::info("avatar {} prepared again from its photo ({} bytes)", asset, package.size());

@@ -7,6 +7,7 @@
 #include <boost/asio/post.hpp>
 #include <spdlog/spdlog.h>
 
+#include "demo_room.hpp"
 #include "display_name.hpp"
 #include "join_token.hpp"
 #include "monotonic_clock.hpp"
@@ -301,8 +302,7 @@ std::optional<std::pair<CloseCode, std::string>> ClientSession::refusal_of(const
 AvatarLookup ClientSession::avatar_for(const codec::Hello& hello) const {
   if (!hello.avatar.empty()) return context_.store->lookup(hello.avatar);
   // No package: a procedural face, chosen by the name so it stays the same.
-  const auto& faces = context_.demo_avatars;
-  return {AvatarStatus::found, faces[std::hash<std::string>{}(hello.name) % faces.size()], {}};
+  return {AvatarStatus::found, procedural_face_for(context_, hello.name), {}};
 }
 
 StreamSettings ClientSession::stream_settings_for(const codec::Hello& hello) const {

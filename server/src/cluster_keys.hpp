@@ -16,6 +16,12 @@ inline const std::string kRooms = kPrefix + "rooms";
 inline const std::string kServerKey = kPrefix + "server-key";
 /// The set of avatar ids kept in Redis.
 inline const std::string kAvatars = kPrefix + "avatars";
+/// The set of avatar ids their uploaders deleted: a node that was away
+/// when it was told drops its copy when it comes back, instead of sharing
+/// it again.
+inline const std::string kDeletedAvatars = kPrefix + "avatars:deleted";
+/// Channel: an avatar id its uploader deleted on one node; the others drop theirs.
+inline const std::string kAvatarDeletions = kPrefix + "avatar-deletions";
 /// Channel: what each node spent of the per-address limits.
 inline const std::string kLimitsChannel = kPrefix + "limits";
 

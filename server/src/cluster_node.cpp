@@ -137,7 +137,7 @@ void ClusterNode::on_connected() {
   commands_->on_lost([this](const std::string& why) { lost(why); });
   subscriber_->on_lost([this](const std::string& why) { lost(why); });
   subscriber_->on_message([this](std::string_view channel, std::string_view payload) { on_message(channel, payload); });
-  std::vector<std::string> channels{keys::node_inbox(node_), keys::kLimitsChannel};
+  std::vector<std::string> channels{keys::node_inbox(node_), keys::kLimitsChannel, keys::kAvatarDeletions};
   for (const auto& room : owned_) channels.push_back(keys::room_up(room));
   for (const auto& room : bridged_) channels.push_back(keys::room_down(room));
   subscriber_->subscribe(channels);
@@ -388,6 +388,7 @@ void ClusterNode::on_message(std::string_view channel_view, std::string_view pay
   const std::string channel(channel_view);
   const auto* data = reinterpret_cast<const std::uint8_t*>(payload.data());
   if (channel == keys::kLimitsChannel) return apply_limits(payload);
+  if (channel == keys::kAvatarDeletions) return forget_deleted_avatar(payload);
   if (channel == keys::node_inbox(node_)) {
     if (payload.rfind("own ", 0) == 0) {
       const std::string room(payload.substr(4));

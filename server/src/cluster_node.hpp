@@ -93,6 +93,8 @@ class ClusterNode : public RoomBus {
   void keep_avatars_in_redis();
   void reshare_avatars();
   void adopt_server_key();
+  /// Another node deleted the avatar `payload` names: this node drops its copy.
+  void forget_deleted_avatar(std::string_view payload);
 
   ServerContext& context_;
   boost::asio::strand<boost::asio::any_io_executor> strand_;

@@ -3,6 +3,7 @@
 #include <boost/asio/post.hpp>
 #include <spdlog/spdlog.h>
 
+#include "avatar_deletion.hpp"
 #include "cluster_keys.hpp"
 #include "cluster_node.hpp"
 
@@ -10,6 +11,17 @@ namespace fw::server {
 
 namespace net = boost::asio;
 namespace keys = cluster_keys;
+
+namespace {
+
+/// Redis forgets its copy of an avatar unused for --avatar-retention-days
+/// on every node: each use here starts its expiry again (at most hourly).
+std::vector<std::string> expiry_of(const ServerConfig& config, const std::string& asset) {
+  if (config.avatar_retention_days == 0) return {"PERSIST", keys::avatar(asset)};
+  return {"EXPIRE", keys::avatar(asset), std::to_string(std::uint64_t{config.avatar_retention_days} * 86400)};
+}
+
+}  // namespace
 
 void ClusterNode::keep_avatars_in_redis() {
   // Blocking calls, from the threads that store and look up avatars (never
@@ -20,8 +32,12 @@ void ClusterNode::keep_avatars_in_redis() {
             const auto reply = avatars_.command({"HSET", keys::avatar(asset), "package",
                                                  std::string(package.begin(), package.end()), "photo",
                                                  std::string(photo.begin(), photo.end())});
-            if (reply && !reply->is_error()) avatars_.command({"SADD", keys::kAvatars, asset});
-            else spdlog::warn("avatar {} is kept on this node only until Redis is back", asset);
+            if (reply && !reply->is_error()) {
+              avatars_.command({"SADD", keys::kAvatars, asset});
+              avatars_.command(expiry_of(context_.config, asset));
+            } else {
+              spdlog::warn("avatar {} is kept on this node only until Redis is back", asset);
+            }
           },
       .fetch =
           [this](const std::string& asset, std::vector<std::uint8_t>& package, std::vector<std::uint8_t>& photo) {
@@ -32,6 +48,19 @@ void ClusterNode::keep_avatars_in_redis() {
             photo.assign(reply->elements[1].text.begin(), reply->elements[1].text.end());
             spdlog::info("avatar {} fetched from the cluster", asset);
             return true;
+          },
+      .touch = [this](const std::string& asset) { avatars_.command(expiry_of(context_.config, asset)); },
+      .remove =
+          [this](const std::string& asset) {
+            // The mark first: a node that misses the message finds it when it comes back.
+            const auto marked = avatars_.command({"SADD", keys::kDeletedAvatars, asset});
+            avatars_.command({"DEL", keys::avatar(asset)});
+            avatars_.command({"SREM", keys::kAvatars, asset});
+            avatars_.command({"PUBLISH", keys::kAvatarDeletions, asset});
+            if (!marked || marked->is_error())
+              spdlog::warn("avatar {} was deleted on this node only: Redis does not answer; other nodes keep their "
+                           "copies until it is deleted again",
+                           asset);
           }});
 }
 
@@ -46,11 +75,30 @@ void ClusterNode::adopt_server_key() {
   if (key && key->type == RedisReply::Type::string && !key->text.empty()) context_.server_key = key->text;
 }
 
+void ClusterNode::forget_deleted_avatar(std::string_view payload) {
+  const std::string asset(payload);
+  if (!is_asset_id(asset)) return;
+  // On a worker: files are removed, and rooms told, off the node's strand.
+  // The node that deleted it hears its own message too: by then it has
+  // nothing left to drop.
+  net::post(*context_.workers, [this, asset] {
+    context_.store->forget(asset);
+    replace_deleted_avatar_in_rooms(context_, asset);
+  });
+}
+
 void ClusterNode::reshare_avatars() {
   // On a worker: the blocking connection may wait for Redis.
   net::post(*context_.workers, [this] {
     std::size_t shared = 0;
     for (const std::string& asset : context_.store->stored_assets()) {
+      // Deleted on another node while this one could not hear it.
+      const auto deleted = avatars_.command({"SISMEMBER", keys::kDeletedAvatars, asset});
+      if (deleted && deleted->integer == 1) {
+        context_.store->forget(asset);
+        replace_deleted_avatar_in_rooms(context_, asset);
+        continue;
+      }
       const auto known = avatars_.command({"SISMEMBER", keys::kAvatars, asset});
       if (!known || known->integer == 1) continue;
       std::vector<std::uint8_t> package, photo;
@@ -58,6 +106,7 @@ void ClusterNode::reshare_avatars() {
       avatars_.command({"HSET", keys::avatar(asset), "package", std::string(package.begin(), package.end()), "photo",
                         std::string(photo.begin(), photo.end())});
       avatars_.command({"SADD", keys::kAvatars, asset});
+      avatars_.command(expiry_of(context_.config, asset));
       ++shared;
     }
     if (shared) spdlog::info("cluster: shared {} avatar(s) Redis did not have", shared);

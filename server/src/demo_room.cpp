@@ -15,7 +15,7 @@ bool make_demo_avatars(ServerContext& context, std::string& error) {
   }
   for (std::uint32_t i = 0; i < context.config.demo_faces; ++i) {
     const auto package = make_demo_package(i);
-    auto stored = context.store->put(package, error, Durability::unsynced);  // made again at every start
+    auto stored = context.store->put_own_face(package, error);  // made again at every start: found again
     if (!stored) {
       error = "the demo face " + std::to_string(i) + " is not a valid package: " + error;
       return false;
@@ -23,6 +23,11 @@ bool make_demo_avatars(ServerContext& context, std::string& error) {
     context.demo_avatars.push_back(std::move(*stored));
   }
   return true;
+}
+
+const StoredAvatar& procedural_face_for(const ServerContext& context, const std::string& name) {
+  const auto& faces = context.demo_avatars;
+  return faces[std::hash<std::string>{}(name) % faces.size()];
 }
 
 void open_demo_room(ServerContext& context, std::function<void()> seated) {

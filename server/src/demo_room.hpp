@@ -18,6 +18,10 @@ inline constexpr std::uint32_t kLobbyAvatars = 3;
 /// Fills context.demo_avatars with config.demo_faces faces (stored in the
 /// avatar store like uploads).
 bool make_demo_avatars(ServerContext& context, std::string& error);
+/// The procedural face of a person who wears no uploaded avatar, chosen by
+/// their name so that it stays the same; also the face shown in place of
+/// an avatar its uploader deleted. One of context.demo_avatars.
+const StoredAvatar& procedural_face_for(const ServerContext& context, const std::string& name);
 
 /// Opens "lobby" (persistent) with its three avatars; `seated` runs once
 /// they sit in it.

@@ -218,7 +218,8 @@ void HttpSession::on_read(beast::error_code ec, std::size_t) {
     return;
   }
   std::optional<Response> response;
-  if (request.method() == http::verb::get || request.method() == http::verb::head)
+  if (request.method() == http::verb::get || request.method() == http::verb::head ||
+      request.method() == http::verb::delete_)
     response = respond_to_api(context_, request);
   if (!response) response = respond_to(request);
   note_if_refused(*response, request);

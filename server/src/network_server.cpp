@@ -12,6 +12,7 @@
 #include <spdlog/spdlog.h>
 
 #include "avatar_repreparation.hpp"
+#include "avatar_retention.hpp"
 #include "cluster_node.hpp"
 #include "connection_refusal.hpp"
 #include "descriptor_reserve.hpp"
@@ -144,6 +145,7 @@ int run_network_server(const ServerConfig& config) {
   PhotoWorker photo_worker(config.landmark_model, config.photo_threads, config.abuse.photo_queue);
   PhotoPreparation photos(core.context(), photo_worker);
   AvatarRepreparation repreparation(core.context(), photo_worker);
+  AvatarSweeper sweeper(core.context());  // --avatar-retention-days
   Listeners listeners;
   if (!open_listeners(ioc, core.context(), photos, listeners, error)) return cannot_start(error);
   std::unique_ptr<ClusterNode> cluster;

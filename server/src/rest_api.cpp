@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "api_access.hpp"
+#include "avatar_deletion.hpp"
 #include "room_registry.hpp"
 
 namespace fw::server {
@@ -31,6 +32,7 @@ Response avatar_refusal(const Request& request, const AvatarLookup& lookup, cons
     }
     case AvatarStatus::out_of_date:
     case AvatarStatus::damaged: return plain(http::status::gone, request, lookup.message + " (POST /api/avatars)\n");
+    case AvatarStatus::deleted: return plain(http::status::not_found, request, lookup.message + "\n");
     default:
       return plain(http::status::not_found, request,
                    "no avatar package '" + asset.substr(0, 64) + "'; upload one with POST /api/avatars\n");
@@ -63,6 +65,31 @@ Response package_response(ServerContext& context, const Request& request, const 
   return response;
 }
 
+/// DELETE /api/avatars/ID with the avatar's key in X-Avatar-Key. Not behind
+/// a join token: the key alone proves the upload, and a person must be able
+/// to delete their photo after their invitation expired.
+Response deletion_response(ServerContext& context, const Request& request, const std::string& asset) {
+  const std::string_view key(request["X-Avatar-Key"].data(), request["X-Avatar-Key"].size());
+  const AvatarDeletion outcome = delete_avatar(context, asset, key);
+  const std::string message = deletion_message(outcome, asset);
+  switch (outcome) {
+    case AvatarDeletion::deleted: {
+      Response response{http::status::no_content, request.version()};
+      response.set(http::field::server, "facewire");
+      response.keep_alive(request.keep_alive());
+      response.prepare_payload();
+      return response;
+    }
+    case AvatarDeletion::unknown: return plain(http::status::not_found, request, message + "\n");
+    case AvatarDeletion::no_key:
+    case AvatarDeletion::wrong_key:
+      context.abuse.note(Abuse::face_not_yours, "api", "a deletion of avatar " + asset.substr(0, 64) +
+                                                           (outcome == AvatarDeletion::no_key ? " without a key" : " with another key"));
+      [[fallthrough]];
+    default: return plain(http::status::forbidden, request, message + "\n");
+  }
+}
+
 }  // namespace
 
 Response json_response(http::status status, unsigned version, bool keep_alive, std::string body) {
@@ -79,6 +106,11 @@ std::optional<Response> respond_to_api(ServerContext& context, const Request& re
   const std::string_view target(request.target().data(), request.target().size());
   const std::string_view path = target.substr(0, target.find('?'));
   const std::string_view query = target.find('?') == std::string_view::npos ? "" : target.substr(target.find('?') + 1);
+  if (request.method() == http::verb::delete_) {
+    constexpr std::string_view kAvatars = "/api/avatars/";
+    if (path.substr(0, kAvatars.size()) != kAvatars) return std::nullopt;
+    return deletion_response(context, request, std::string(path.substr(kAvatars.size())));
+  }
   if (path == "/readyz") {
     // A cluster node without Redis serves its own rooms, but a balancer
     // should send newcomers to nodes that can reach every room.

@@ -9,8 +9,8 @@
 
 namespace fw::server {
 
-/// The answer to a GET or HEAD the API serves, or nullopt when the target
-/// is not one of its routes.
+/// The answer to a GET, HEAD or DELETE the API serves, or nullopt when the
+/// target is not one of its routes.
 std::optional<Response> respond_to_api(ServerContext& context, const Request& request);
 
 /// A JSON response.

@@ -83,6 +83,10 @@ class Room : public std::enable_shared_from_this<Room> {
   void command(std::uint32_t avatar, codec::Command command);
   void resync(std::uint32_t avatar, std::vector<std::uint32_t> avatars);
   void set_rate(std::uint32_t avatar, std::uint32_t bps);
+  /// The avatar `asset` was deleted by its uploader: whoever wears it here
+  /// wears the procedural face of their name from now on, and everyone who
+  /// sees them is sent its package (room_deleted_avatar.cpp).
+  void replace_deleted_avatar(std::string asset);
 
   // Cluster (room_bus.hpp, room_bridge.cpp, room_takeover.cpp).
   RoomRole role() const { return role_.load(); }

@@ -77,6 +77,11 @@ void add_limit_flags(CLI::App& cmd, ServerConfig& config) {
   cmd.add_option("--max-upload-bytes", config.max_upload_bytes, "largest photo or package upload")
       ->check(CLI::Range(std::size_t{1024}, std::size_t{64} * 1024 * 1024))
       ->capture_default_str();
+  cmd.add_option("--avatar-retention-days", config.avatar_retention_days,
+                 "delete uploaded avatars and their photos after this many days without a use; 0: keep them until "
+                 "their uploader deletes them")
+      ->check(CLI::Range(0u, 36500u))
+      ->capture_default_str();
   cmd.add_option("--auth-secret", config.auth_secret, "require join tokens signed with this secret")
       ->envname("FACEWIRE_AUTH_SECRET");
   cmd.add_option("--metrics-secret", config.metrics_secret,

@@ -35,6 +35,9 @@ struct ServerConfig {
   std::uint32_t default_client_bps = 64000;
   std::uint32_t max_client_bps = 1'000'000;
   std::size_t max_upload_bytes = 4 * 1024 * 1024;
+  /// Avatars and their photos are deleted after this many days without a
+  /// use (avatar_retention.hpp); 0 keeps them until their uploader deletes them.
+  std::uint32_t avatar_retention_days = 30;
   std::string auth_secret;       ///< empty: no tokens needed
   std::string metrics_secret;    ///< empty: /metrics open, unless auth_secret is set (then closed)
   bool demo_room = true;         ///< the "lobby" with three autonomous avatars

@@ -67,6 +67,17 @@ std::string load_or_create_server_key(const std::filesystem::path& dir, std::str
   return key;
 }
 
+std::string new_asset_id() {
+  static constexpr char kHex[] = "0123456789abcdef";
+  std::string id;
+  for (const char byte : random_bytes(16)) {
+    const auto b = static_cast<unsigned char>(byte);
+    id += kHex[b >> 4];
+    id += kHex[b & 15];
+  }
+  return id;  // empty only if the system has no random bytes
+}
+
 std::string avatar_key(std::string_view server_key, std::string_view asset) {
   const std::string mac = hmac_sha256(server_key, std::string("avatar-key:") + std::string(asset));
   return base64url(std::string_view(mac).substr(0, 16));

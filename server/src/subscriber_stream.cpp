@@ -77,6 +77,26 @@ void SubscriberStream::add_avatar(std::uint32_t avatar, SharedBytes preview, Sha
   retarget_encoders();
 }
 
+void SubscriberStream::replace_package(std::uint32_t avatar, SharedBytes preview, SharedBytes full) {
+  if (!settings_.packages || !encoders_.contains(avatar) || !full || full->empty()) return;
+  // What was not started of the old face goes; a package half sent stays
+  // (the chunks already out need their end), and the new one follows it.
+  std::erase_if(packages_, [avatar](const PackageSend& p) { return p.avatar == avatar && p.offset == 0; });
+  const bool preview_on_its_way = std::any_of(packages_.begin(), packages_.end(), [avatar](const PackageSend& p) {
+    return p.avatar == avatar && p.quality == codec::PackageChunk::Quality::preview;
+  });
+  if (awaiting_preview_.contains(avatar) && !preview_on_its_way) {
+    // Its frames wait for a preview: the new face's, before every full package.
+    const auto first_full = std::find_if(packages_.begin(), packages_.end(), [](const PackageSend& p) {
+      return p.quality == codec::PackageChunk::Quality::full && p.offset == 0;
+    });
+    if (preview && !preview->empty()) packages_.insert(first_full, {avatar, codec::PackageChunk::Quality::preview, preview, 0});
+    else awaiting_preview_.erase(avatar);
+  }
+  packages_.push_back({avatar, codec::PackageChunk::Quality::full, std::move(full), 0});
+  retarget_encoders();
+}
+
 void SubscriberStream::remove_avatar(std::uint32_t avatar) {
   encoders_.erase(avatar);
   fairness_.erase(avatar);

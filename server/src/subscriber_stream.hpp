@@ -59,6 +59,10 @@ class SubscriberStream {
 
   void add_avatar(std::uint32_t avatar, SharedBytes preview, SharedBytes full);
   void remove_avatar(std::uint32_t avatar);
+  /// `avatar` wears another face from now on (its own was deleted): its
+  /// full package is sent again, which a client puts in place of the one it
+  /// holds (PROTOCOL.md 5.7).
+  void replace_package(std::uint32_t avatar, SharedBytes preview, SharedBytes full);
   /// The client lost track of these avatars (a resync request); empty: all.
   void force_key_frames(std::span<const std::uint32_t> avatars);
   /// A new budget from the client (0: the server's default, resolved by the caller).

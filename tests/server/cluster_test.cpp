@@ -5,6 +5,7 @@
 // reading on one node leaves the room's pace on another alone.
 #include <chrono>
 #include <csignal>
+#include <filesystem>
 #include <memory>
 #include <set>
 #include <string>
@@ -15,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "demo_faces.hpp"
 #include "file_bytes.hpp"
 #include "http_get.hpp"
 #include "join_token.hpp"
@@ -441,6 +443,75 @@ TEST(Cluster, AFaceUploadedToANodeThatDiesIsWornOnAnother) {
   bool wears = false;
   for (const auto& info : wearer->welcome->avatars) wears = wears || (info.id == wearer->welcome->you && info.asset == asset);
   EXPECT_TRUE(wears);
+}
+
+TEST(Cluster, AnAvatarDeletedOnOneNodeIsGoneFromEveryNodeAndItsWearerShownNeutral) {
+  Cluster cluster;
+  cluster.add_node("a");
+  cluster.add_node("b");
+  for (std::size_t i = 0; i < 2; ++i) ASSERT_TRUE(eventually([&] { return ready(cluster.node(i).http_port()); }, 20s));
+  RunningServer& a = cluster.node(0);
+  RunningServer& b = cluster.node(1);
+  const auto package = server::make_demo_package(13);  // a face of its own: checked, not prepared
+  const std::string body(package.begin(), package.end());
+  const auto answer = http_exchange(a.http_port(),
+                                    "POST /api/avatars HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\n"
+                                    "Content-Type: application/x-facewire-avatar\r\nContent-Length: " +
+                                        std::to_string(body.size()) + "\r\n\r\n" + body,
+                                    30);
+  ASSERT_EQ(answer.status, 201) << answer.body;
+  const auto uploaded = nlohmann::json::parse(answer.body, nullptr, false);
+  const std::string asset = uploaded.value("asset", ""), key = uploaded.value("key", "");
+  ASSERT_FALSE(asset.empty());
+
+  // Ann wears it on node b (which fetches it from Redis); Bo watches from node a.
+  auto ann = std::make_unique<RoomTestClient>(Transport::websocket, b.http_port(), "127.0.4.1");
+  codec::Hello hello;
+  hello.room = "meet";
+  hello.name = "Ann";
+  hello.avatar = asset;
+  hello.avatar_key = key;
+  ann->send_message(hello);
+  ASSERT_TRUE(ann->pump_until([&] { return ann->welcome.has_value() || ann->closed(); }, 15s));
+  ASSERT_TRUE(ann->welcome.has_value()) << (ann->closing ? ann->closing->reason : "no answer");
+  const std::uint32_t ann_id = ann->welcome->you;
+  ASSERT_TRUE(std::filesystem::exists(b.data() / "avatars" / (asset + ".fwa"))) << "node b keeps a copy";
+  auto bo = join(a, Transport::websocket, "meet", "Bo");
+  ASSERT_TRUE(bo->welcome.has_value()) << (bo->closing ? bo->closing->reason : "no answer");
+  const auto full = std::make_pair(ann_id, static_cast<int>(codec::PackageChunk::Quality::full));
+  ASSERT_TRUE(bo->pump_until([&] { return bo->packages[full].complete(); }, 15s));
+  EXPECT_EQ(bo->packages[full].bytes, package);
+
+  const auto deleted = http_exchange(a.http_port(), "DELETE /api/avatars/" + asset +
+                                                        " HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\n"
+                                                        "X-Avatar-Key: " + key + "\r\n\r\n");
+  ASSERT_EQ(deleted.status, 204) << deleted.body;
+
+  // Gone from Redis, and from node b's own store, which was told.
+  server::RedisBlocking redis(cluster.redis_address(), 2000ms);
+  const auto copy = redis.command({"EXISTS", "fw:avatar:" + asset});
+  ASSERT_TRUE(copy);
+  EXPECT_EQ(copy->integer, 0) << "Redis still holds the avatar";
+  const auto marked = redis.command({"SISMEMBER", "fw:avatars:deleted", asset});
+  ASSERT_TRUE(marked);
+  EXPECT_EQ(marked->integer, 1);
+  EXPECT_TRUE(eventually([&] { return !std::filesystem::exists(b.data() / "avatars" / (asset + ".fwa")); }, 5s))
+      << "node b kept its copy";
+  EXPECT_EQ(http_get(b.http_port(), "/api/packages/" + asset).status, 404);
+
+  // Bo sees Ann under the procedural face of her name.
+  auto plain_ann = join(b, Transport::websocket, "elsewhere", "Ann");
+  ASSERT_TRUE(plain_ann->welcome.has_value());
+  const auto procedural = http_get(b.http_port(), "/api/packages/" + plain_ann->welcome->avatars.back().asset);
+  ASSERT_EQ(procedural.status, 200);
+  EXPECT_TRUE(bo->pump_until(
+      [&] {
+        const auto& p = bo->packages[full];
+        return p.complete() && std::string(p.bytes.begin(), p.bytes.end()) == procedural.body;
+      },
+      10s))
+      << "Bo, on another node, still sees the deleted face";
+  EXPECT_TRUE(bo->errors.empty()) << bo->errors.front();
 }
 
 }  // namespace

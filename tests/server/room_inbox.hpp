@@ -128,6 +128,7 @@ struct RoomInbox {
     package_bytes += m.size();
     if (!check(codec::read_message(m, c), "package chunk")) return;
     auto& p = packages[{c.avatar, static_cast<int>(c.quality)}];
+    if (p.complete() && c.offset == 0) p = Package{};  // another face for the avatar (its own was deleted)
     if (p.bytes.empty()) p.bytes.resize(c.total_bytes);
     if (p.bytes.size() != c.total_bytes || c.offset != p.received) {
       errors.push_back("package chunk out of order");

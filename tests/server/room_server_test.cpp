@@ -293,10 +293,11 @@ TEST(RoomServerRest, UploadsAreCheckedAndServed) {
       << error;
   EXPECT_EQ(test::http_get(server.http_port(), "/api/packages/../../etc/passwd").status, 404);
 
-  // A package uploaded again gets the same id.
+  // A package uploaded again is an avatar of its own (PROTOCOL.md 8.1): a
+  // face someone downloaded is never theirs to wear under its own id.
   const auto again = post(server.http_port(), "application/x-facewire-avatar", full.body);
   ASSERT_EQ(again.status, 201) << again.body;
-  EXPECT_EQ(nlohmann::json::parse(again.body)["asset"], asset);
+  EXPECT_NE(nlohmann::json::parse(again.body)["asset"], asset);
 
   EXPECT_EQ(post(server.http_port(), "application/x-facewire-avatar", "").status, 400);
   const auto wrong_type = post(server.http_port(), "text/plain", "hello");

@@ -5,6 +5,7 @@
 import { startFacePreview } from '../face_preview.js';
 import { showAvatarPreview } from './avatar_preview.js';
 import { cameraAvailable, snapshot, startCamera } from './camera.js';
+import { deleteAvatar } from './delete_avatar.js';
 import { loadIdentity, saveIdentity } from './identity.js';
 import { readInvite, roomPageUrl } from './invite.js';
 import { displayNameProblem, roomNameProblem } from './names.js';
@@ -73,8 +74,37 @@ async function showStoredAvatar(asset, advice) {
   $('face').hidden = true;
   status.hidden = true;
   $('avatar-status').hidden = false;
+  $('deleted-note').hidden = true;
+  $('delete-box').hidden = false;
   showAdvice(advice);
 }
+
+// --- deleting the photo ------------------------------------------------------
+
+$('delete-avatar').addEventListener('click', async () => {
+  if (!state.asset) return;
+  const button = $('delete-avatar');
+  button.disabled = true;
+  showError($('delete-error'), '');
+  try {
+    await deleteAvatar(state.asset, state.key);
+    state.asset = '';
+    state.key = '';
+    saveIdentity({ name: nameField.value.trim(), asset: '', key: '' });
+    // Back to the generic face: without a photo one joins with a face made from one's name.
+    $('avatar-preview').hidden = true;
+    $('face').hidden = false;
+    status.hidden = false;
+    $('avatar-status').hidden = true;
+    $('delete-box').hidden = true;
+    showAdvice([]);
+    $('deleted-note').hidden = false;
+  } catch (error) {
+    showError($('delete-error'), error.message);
+  } finally {
+    button.disabled = false;
+  }
+});
 
 if (state.asset) {
   showStoredAvatar(state.asset, []).catch(() => {

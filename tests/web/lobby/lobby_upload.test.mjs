@@ -1,6 +1,6 @@
 // Photos uploaded from the lobby: progress, then the prepared avatar and
-// the preparation's advice; the server's own words when a photo cannot
-// serve. The server takes at most 200 000 bytes per upload here, so that a
+// the preparation's advice, and deleting it again; the server's own words
+// when a photo cannot serve. The server takes at most 200 000 bytes per upload here, so that a
 // test portrait is too large.
 import { after, before, test } from 'node:test';
 import assert from 'node:assert/strict';
@@ -55,6 +55,17 @@ test('a portrait uploads with progress, then its avatar and advice show, and a r
   assert.match(asset, /^[0-9a-f]{32}$/);
   await page.reload();
   await preview.waitFor({ state: 'visible' });
+
+  // "Delete my photo": gone from the server, forgotten here, the generic face back.
+  await page.getByRole('button', { name: 'Delete my photo' }).click();
+  await page.locator('#face').waitFor({ state: 'visible', timeout: 10000 });
+  assert.equal(await page.locator('#delete-error').isHidden(), true, await page.locator('#delete-error').textContent());
+  assert.equal(await preview.isHidden(), true);
+  assert.match(await page.locator('#deleted-note').textContent(), /deleted from the server/);
+  assert.equal(await page.locator('#deleted-note').isHidden(), false);
+  assert.equal(await page.evaluate(() => JSON.parse(localStorage.getItem('facewire.identity')).asset), '');
+  const status = await page.evaluate(async (id) => (await fetch(`api/packages/${id}`)).status, asset);
+  assert.equal(status, 404, 'the server still serves the deleted avatar');
   await page.context().close();
 });
 

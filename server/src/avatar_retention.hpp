@@ -1,0 +1,61 @@
+#pragma once
+// How long the store keeps avatars and their photos (--avatar-retention-days):
+// until they were not used for that long. A use is an upload, a hello that
+// wears the avatar, or a download of its package; the store keeps the last
+// one as its package file's modification time (AvatarStore::note_use), so
+// it survives restarts and needs no file of its own. The server's own faces
+// are never swept. In a cluster each node sweeps its own copies, and Redis
+// lets its copy expire after the same time without a use on any node.
+#include <chrono>
+#include <condition_variable>
+#include <filesystem>
+#include <mutex>
+#include <optional>
+#include <thread>
+
+#include "server_context.hpp"
+
+namespace fw::server {
+
+class AvatarRetention {
+ public:
+  using FileTime = std::filesystem::file_time_type;
+
+  /// `days` without a use; 0 keeps avatars until their uploader deletes them.
+  explicit AvatarRetention(std::uint32_t days) : period_(std::chrono::hours(24) * days) {}
+
+  bool forever() const { return period_.count() == 0; }
+  /// Avatars last used before this are swept at `now`; nullopt: none ever is.
+  std::optional<FileTime> cutoff(FileTime now) const {
+    if (forever()) return std::nullopt;
+    return now - period_;
+  }
+  std::chrono::seconds period() const { return period_; }
+
+ private:
+  std::chrono::seconds period_;
+};
+
+/// Sweeps the store at start and then every `interval` on a thread of its
+/// own (file deletions only; nothing waits for it), until destroyed.
+class AvatarSweeper {
+ public:
+  AvatarSweeper(ServerContext& context, std::chrono::seconds interval = std::chrono::hours(1));
+  ~AvatarSweeper();
+  AvatarSweeper(const AvatarSweeper&) = delete;
+  AvatarSweeper& operator=(const AvatarSweeper&) = delete;
+
+ private:
+  void run();
+  void sweep();
+
+  ServerContext& context_;
+  AvatarRetention retention_;
+  std::chrono::seconds interval_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  bool stopping_ = false;
+  std::thread thread_;
+};
+
+}  // namespace fw::server
