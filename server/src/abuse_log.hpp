@@ -34,8 +34,10 @@ enum class Abuse {
   face_not_yours,            ///< a hello naming an asset without its secret
   bad_name,                  ///< a display name with control, bidi or zero-width characters
   bad_forwarded_header,      ///< a trusted proxy's X-Forwarded-For or Forwarded that names no address
+  upload_too_slow,           ///< an upload's body slower than --min-upload-bytes-per-second, closed with 408
+  photo_too_large,           ///< a photo whose header declares more than --max-photo-pixels, refused undecoded
 };
-inline constexpr std::size_t kAbuseKinds = 21;
+inline constexpr std::size_t kAbuseKinds = 23;
 
 /// The kind's name in logs and in /metrics' label.
 std::string_view abuse_name(Abuse kind);
