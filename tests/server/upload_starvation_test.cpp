@@ -1,0 +1,193 @@
+// Attacks that once starved everyone else's uploads, each from many
+// addresses in several /24s (127.0.1.x .. 127.0.4.x), while a person at a
+// fresh address in another /24 (127.0.9.9) uploads a real photo: bodies
+// declared large and dribbled a byte a second (once: every other upload
+// 503 for 15 s), and small PNGs declaring 40 megapixels (once: a real
+// photo unanswered for over 90 s, the server at 700 MB). The real server
+// on loopback sockets, its default limits (server/PROTOCOL.md, "Limits");
+// timing with margins for a loaded machine.
+#include <poll.h>
+#include <sys/socket.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <future>
+#include <string>
+#include <thread>
+#include <utility>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+
+#include "test_paths.hpp"
+#include "upload_client.hpp"
+
+namespace fw::server {
+namespace {
+
+using namespace std::chrono_literals;
+using namespace fw::test;
+
+/// VmHWM (the peak) or VmRSS of the server process, kB.
+long memory_kb(RunningServer& server, const std::string& key) {
+  std::ifstream status("/proc/" + std::to_string(server.process().pid()) + "/status");
+  std::string word;
+  long value = 0;
+  while (status >> word)
+    if (word == key + ":" && status >> value) return value;
+  return -1;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// A whole upload from `source` and how long its answer took, seconds.
+std::pair<HttpReply, double> timed_upload(const std::string& source, int port, const std::string& type,
+                                                const std::string& body) {
+  const auto start = std::chrono::steady_clock::now();
+  HttpReply reply = upload_from(source, port, type, body);
+  return {reply, seconds_since(start)};
+}
+
+/// The landmark model loaded (a photo prepared from an address of its own),
+/// so that what a test times is the wait behind others, not the first load.
+void warm_up_preparation(RunningServer& server, const std::string& photo) {
+  const auto warm = upload_from("127.0.8.8", server.http_port(), "image/jpeg", photo);
+  ASSERT_EQ(warm.status, 201) << warm.body;
+}
+
+// Sixteen uploads from eight addresses in four /24s declare 4 MiB each (the
+// whole server's share, had it counted declared bytes) and send a byte a
+// second. A real photo from a fresh address in another /24 is answered 201
+// within 10 s while they dribble, and every dribbler is answered 408 once
+// its first window is over, and closed.
+TEST(UploadLimits, DribbledUploadsFromManyAddressesDoNotStopARealPhoto) {
+  RunningServer server("--no-demo-room");
+  ASSERT_GT(server.http_port(), 0);
+  const std::string photo = read_bytes(test::test_photo("grace_hopper.jpg"));
+  warm_up_preparation(server, photo);
+
+  constexpr int kDribblers = 16;
+  Sockets dribblers;
+  const auto started = std::chrono::steady_clock::now();
+  for (int i = 0; i < kDribblers; ++i) {
+    // Two uploads from each of 127.0.1.10, .11, 127.0.2.10, .11, ... 127.0.4.11.
+    const int address = i / 2;
+    const std::string source = "127.0." + std::to_string(1 + address / 2) + "." + std::to_string(10 + address % 2);
+    const int fd = connect_from(source, server.http_port());
+    ASSERT_GE(fd, 0) << source;
+    dribblers.fds.push_back(fd);
+    ASSERT_TRUE(send_all(fd, upload_header("image/jpeg", 4 * kMiB)));
+  }
+  std::atomic<bool> stop{false};
+  std::thread dribble([&] {
+    while (!stop) {
+      for (const int fd : dribblers.fds) ::send(fd, "\xff", 1, MSG_NOSIGNAL | MSG_DONTWAIT);
+      for (int i = 0; i < 10 && !stop; ++i) std::this_thread::sleep_for(100ms);
+    }
+  });
+  std::this_thread::sleep_for(1500ms);  // every dribbler admitted and dribbling
+  const auto [other, took] = timed_upload("127.0.9.9", server.http_port(), "image/jpeg", photo);
+  EXPECT_EQ(other.status, 201) << other.body;
+  EXPECT_LT(took, 10.0) << "the photo from another network waited behind the dribblers";
+  std::printf("[          ] a real photo from 127.0.9.9 while 16 bodies dribbled: %d in %.2f s\n", other.status, took);
+
+  // Each dribbler: 408 after its first window (5 s), then closed.
+  int timed_out = 0, closed = 0;
+  double latest = 0;
+  for (const int fd : dribblers.fds) {
+    std::string received;
+    bool eof = false;
+    while (seconds_since(started) < 25) {
+      pollfd p{fd, POLLIN, 0};
+      if (::poll(&p, 1, 200) <= 0) continue;
+      char buffer[4096];
+      const ssize_t n = ::recv(fd, buffer, sizeof buffer, 0);
+      if (n <= 0) {
+        eof = true;
+        break;
+      }
+      received.append(buffer, static_cast<std::size_t>(n));
+    }
+    latest = std::max(latest, seconds_since(started));
+    if (received.rfind("HTTP/1.1 408", 0) == 0) {
+      ++timed_out;
+      EXPECT_NE(received.find("too slowly"), std::string::npos) << received;
+    } else {
+      ADD_FAILURE() << "a dribbler got: " << received.substr(0, 200);
+    }
+    if (eof) ++closed;
+  }
+  stop = true;
+  dribble.join();
+  std::printf("[          ] dribblers answered 408: %d of %d, closed: %d, the last after %.1f s\n", timed_out,
+              kDribblers, closed, latest);
+  EXPECT_EQ(timed_out, kDribblers);
+  EXPECT_EQ(closed, kDribblers);
+  EXPECT_EQ(refusals(server, "upload_too_slow"), kDribblers);
+}
+
+/// A small PNG whose header declares `width` x `height` pixels: a flat
+/// picture, which compresses to almost nothing.
+std::string flat_png(int width, int height) {
+  std::vector<std::uint8_t> png;
+  cv::imencode(".png", cv::Mat(height, width, CV_8UC3, cv::Scalar(120, 130, 140)), png,
+               {cv::IMWRITE_PNG_COMPRESSION, 9});
+  return {png.begin(), png.end()};
+}
+
+// Eight small PNGs that declare 40 megapixels each, from eight addresses in
+// four /24s at once: each is refused (413) from its header, undecoded, so
+// the server's memory stays low, and a real photo from another /24 is
+// answered 201 within 10 s.
+TEST(UploadLimits, PhotoBombsAreRefusedFromTheirHeaderAndARealPhotoIsAnswered) {
+  RunningServer server("--no-demo-room");
+  ASSERT_GT(server.http_port(), 0);
+  const std::string photo = read_bytes(test::test_photo("grace_hopper.jpg"));
+  warm_up_preparation(server, photo);
+  const std::string bomb = flat_png(8000, 5000);
+  ASSERT_LT(bomb.size(), 4 * kMiB) << "small enough to upload";
+  const long peak_before = memory_kb(server, "VmHWM");
+
+  std::vector<std::future<std::pair<HttpReply, double>>> bombs;
+  for (int i = 0; i < 8; ++i) {
+    const std::string source = "127.0." + std::to_string(1 + i / 2) + "." + std::to_string(20 + i % 2);
+    bombs.push_back(std::async(std::launch::async, [&, source] {
+      return timed_upload(source, server.http_port(), "image/png", bomb);
+    }));
+  }
+  std::this_thread::sleep_for(300ms);
+  const auto [other, took] = timed_upload("127.0.9.9", server.http_port(), "image/jpeg", photo);
+  EXPECT_EQ(other.status, 201) << other.body;
+  EXPECT_LT(took, 10.0) << "the photo from another network waited behind the bombs";
+  int refused = 0;
+  for (auto& future : bombs) {
+    const auto [reply, bomb_took] = future.get();
+    if (reply.status == 413) {
+      ++refused;
+      EXPECT_NE(reply.body.find("8000x5000"), std::string::npos) << reply.body;
+      EXPECT_NE(reply.body.find("megapixels"), std::string::npos) << "the message names the limit: " << reply.body;
+      EXPECT_NE(reply.body.find("scale it down"), std::string::npos) << reply.body;
+    } else {
+      ADD_FAILURE() << "a bomb got " << reply.status << " after " << bomb_took << " s: " << reply.body;
+    }
+  }
+  const long grown_mb = (memory_kb(server, "VmHWM") - peak_before) / 1024;
+  std::printf("[          ] bombs refused: %d of 8; a real photo from 127.0.9.9: %d in %.2f s; peak memory grew "
+              "%ld MB (now %ld MB)\n",
+              refused, other.status, took, grown_mb, memory_kb(server, "VmRSS") / 1024);
+  EXPECT_EQ(refused, 8);
+  EXPECT_EQ(refusals(server, "photo_too_large"), 8);
+  // A 40-megapixel picture decodes to 120 MB (and a second thread loads its
+  // own landmark model, 100 MB): none of that happened.
+  EXPECT_LT(grown_mb, 60) << "the bombs were decoded";
+}
+
+}  // namespace
+}  // namespace fw::server
