@@ -181,9 +181,9 @@ TEST(UploadLimits, PhotoBombsAreRefusedFromTheirHeaderAndARealPhotoIsAnswered) {
     }
   }
   const long grown_mb = (memory_kb(server, "VmHWM") - peak_before) / 1024;
-  std::printf("[          ] bombs refused: %d of 8; a real photo from 127.0.9.9: %d in %.2f s; peak memory grew "
-              "%ld MB (now %ld MB)\n",
-              refused, other.status, took, grown_mb, memory_kb(server, "VmRSS") / 1024);
+  std::printf("[          ] bombs of %zu KB refused: %d of 8; a real photo from 127.0.9.9: %d in %.2f s; peak memory "
+              "grew %ld MB (now %ld MB)\n",
+              bomb.size() / 1024, refused, other.status, took, grown_mb, memory_kb(server, "VmRSS") / 1024);
   EXPECT_EQ(refused, 8);
   EXPECT_EQ(refusals(server, "photo_too_large"), 8);
   // A 40-megapixel picture decodes to 120 MB (and a second thread loads its
