@@ -74,6 +74,42 @@ TEST(UploadLimits, UploadsHeldOpenHoldNoMoreThanTheAddressesShare) {
   EXPECT_EQ(other.status, 201) << other.body;
 }
 
+// Uploads admitted together from one address are held to its share (8 MiB)
+// as their bytes arrive: three are admitted from their headers (each fits
+// beside what the others have sent so far), and the one whose bytes would
+// take the address past its share is refused 429 while its body comes,
+// with Retry-After, and closed. No pace (0): bodies stay open meanwhile.
+TEST(UploadLimits, BytesReceivedAreHeldToTheAddressesShareWhileBodiesCome) {
+  RunningServer server("--no-demo-room --min-upload-bytes-per-second 0");
+  ASSERT_GT(server.http_port(), 0);
+  Sockets held;
+  std::vector<int> fds;
+  for (int i = 0; i < 3; ++i) {
+    const int fd = connect_from("127.0.6.1", server.http_port());
+    ASSERT_GE(fd, 0);
+    held.fds.push_back(fd);
+    fds.push_back(fd);
+  }
+  ASSERT_TRUE(send_all(fds[0], upload_header("image/jpeg", 4 * kMiB) + std::string(3 * kMiB, '\xff')));
+  std::this_thread::sleep_for(300ms);  // 3 MiB received and counted
+  // 3 + 4 declared fit in 8: both admitted, neither has sent a byte yet.
+  ASSERT_TRUE(send_all(fds[1], upload_header("image/jpeg", 4 * kMiB)));
+  ASSERT_TRUE(send_all(fds[2], upload_header("image/jpeg", 4 * kMiB)));
+  EXPECT_FALSE(answer_within(fds[1], 300ms)) << "admitted from its header";
+  EXPECT_FALSE(answer_within(fds[2], 300ms)) << "admitted from its header";
+  ASSERT_TRUE(send_all(fds[1], std::string(3 * kMiB, '\xff')));
+  std::this_thread::sleep_for(300ms);  // 6 MiB held now
+  ASSERT_TRUE(send_all(fds[2], std::string(3 * kMiB, '\xff')));
+  const auto refused = answer_within(fds[2], 5s);
+  ASSERT_TRUE(refused) << "the body past the address's share is answered while it comes";
+  EXPECT_EQ(refused->status, 429) << refused->body;
+  EXPECT_GE(retry_after(*refused), 1) << refused->headers;
+  EXPECT_NE(refused->body.find("send one photo at a time"), std::string::npos) << refused->body;
+  EXPECT_FALSE(answer_within(fds[0], 100ms)) << "the others still come";
+  EXPECT_FALSE(answer_within(fds[1], 100ms)) << "the others still come";
+  EXPECT_EQ(refusals(server, "upload_bytes"), 1);
+}
+
 // Many addresses together hold no more than the server's share (64 MiB),
 // counted in bytes received: each upload sends 3 of the 4 MiB it declares,
 // and an upload is admitted while its 4 MiB would still fit beside what the
