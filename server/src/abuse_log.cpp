@@ -33,6 +33,8 @@ std::string_view abuse_name(Abuse kind) {
     case Abuse::room_full: return "room_full";
     case Abuse::shutting_down: return "shutting_down";
     case Abuse::idle_timeout: return "idle_timeout";
+    case Abuse::upload_too_slow: return "upload_too_slow";
+    case Abuse::photo_too_large: return "photo_too_large";
     case Abuse::count_: break;
   }
   return "unknown";

@@ -38,6 +38,8 @@ enum class Abuse {
   room_full,                 ///< a room's seats or avatar ids, or the server's rooms, all taken
   shutting_down,             ///< a join while the server drains
   idle_timeout,              ///< a room connection that sent nothing, not even pings, for too long
+  upload_too_slow,           ///< an upload's body slower than --min-upload-bytes-per-second, closed with 408
+  photo_too_large,           ///< a photo whose header declares more than --max-photo-pixels, refused undecoded
   count_,                    ///< not a kind: how many there are
 };
 inline constexpr std::size_t kAbuseKinds = static_cast<std::size_t>(Abuse::count_);

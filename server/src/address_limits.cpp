@@ -86,15 +86,25 @@ std::size_t AddressLimits::remote_connections(const std::string& key) const {
   return total;
 }
 
+UploadShare AddressLimits::share_for(std::size_t held, std::size_t bytes) const {
+  if (held > 0 && held + bytes > limits_.upload_bytes_per_address) return UploadShare::address_full;
+  if (upload_bytes_ > 0 && upload_bytes_ + bytes > limits_.upload_bytes_total) return UploadShare::server_full;
+  return UploadShare::granted;
+}
+
+UploadShare AddressLimits::upload_fits(const std::string& key, std::size_t bytes) const {
+  std::lock_guard lock(mutex_);
+  const auto it = entries_.find(key);
+  return share_for(it == entries_.end() ? 0 : it->second.upload_bytes, bytes);
+}
+
 UploadShare AddressLimits::reserve_upload(const std::string& key, std::size_t bytes) {
   std::lock_guard lock(mutex_);
   const auto it = entries_.try_emplace(key).first;
   Entry& entry = it->second;
-  if (entry.upload_bytes > 0 && entry.upload_bytes + bytes > limits_.upload_bytes_per_address)
-    return UploadShare::address_full;
-  if (upload_bytes_ > 0 && upload_bytes_ + bytes > limits_.upload_bytes_total) {
+  if (const UploadShare share = share_for(entry.upload_bytes, bytes); share != UploadShare::granted) {
     forget_if_idle(it, Clock::now());
-    return UploadShare::server_full;
+    return share;
   }
   entry.upload_bytes += bytes;
   upload_bytes_ += bytes;

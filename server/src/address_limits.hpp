@@ -48,7 +48,13 @@ class AddressLimits {
   /// and anyone may when the server has none: a share smaller than the
   /// largest upload then holds uploads to one at a time, never refuses one
   /// for good.
+  /// Counts bytes as they are received (an upload's body grows its
+  /// UploadReservation), never as declared: a body that has not come holds
+  /// nothing, so uploads dribbled a byte at a time cannot take the shares.
   UploadShare reserve_upload(const std::string& key, std::size_t bytes);
+  /// Whether `bytes` more would fit now, by the same rule, without
+  /// reserving them: an upload's declared length, judged from its header.
+  UploadShare upload_fits(const std::string& key, std::size_t bytes) const;
   void release_upload(const std::string& key, std::size_t bytes);
   std::size_t upload_bytes() const;
 
@@ -82,6 +88,8 @@ class AddressLimits {
     std::array<std::optional<TokenBucket>, kAddressRateCount> buckets;
   };
   BucketRate rate_of(AddressRate rate) const;
+  /// Whether `bytes` more fit beside the `held` of an address (mutex_ held).
+  UploadShare share_for(std::size_t held, std::size_t bytes) const;
   void forget_if_idle(std::map<std::string, Entry>::iterator it, Clock::time_point now);
   /// Forgets every idle entry; amortised over many takes.
   void sweep(Clock::time_point now);

@@ -1,5 +1,7 @@
 #include "http_session.hpp"
 
+#include <algorithm>
+
 #include <boost/asio/dispatch.hpp>
 #include <boost/asio/post.hpp>
 #include <boost/beast/websocket.hpp>
@@ -46,7 +48,8 @@ ForwardingHeaders forwarding_headers(const http::fields& fields) {
 HttpSession::HttpSession(ServerContext& context, PhotoPreparation& photos, net::ip::tcp::socket&& socket,
                          ConnectionTicket ticket)
     : context_(context), photos_(photos), stream_(std::move(socket)),
-      buffer_(limits::kMaxHeaderBytes + limits::kMaxBodyBytes), ticket_(std::move(ticket)) {
+      buffer_(limits::kMaxHeaderBytes + limits::kMaxBodyBytes), ticket_(std::move(ticket)),
+      pace_timer_(stream_.get_executor()) {
   beast::error_code ec;
   socket_peer_ = stream_.socket().remote_endpoint(ec).address();
   via_proxy_ = context_.config.trusted_proxies.contains(socket_peer_);
@@ -181,17 +184,97 @@ void HttpSession::on_header(beast::error_code ec, std::size_t) {
     return (void)answer_read_error(http::error::body_limit);
   parser_->body_limit(limit);  // for chunked bodies
   // An upload is admitted or refused before its body is read (a refused
-  // body is drained by the lingering close): its address's rate, the bytes
-  // it may hold in memory (declared, or the largest upload when chunked),
-  // and the photo queue.
+  // body is drained by the lingering close): its address's rate, whether
+  // the bytes it declares (or the largest upload when chunked) would fit
+  // in memory beside what is in flight, and the photo queue.
   if (upload_)
     if (auto refusal = photos_.admit(header.version(), parser_->content_length().value_or(limit), peer_address_,
                                      upload_bytes_))
       return send(std::move(*refusal));
   reading_ = Reading::body;
+  if (upload_) return start_upload_body();
   stream_.expires_after(limits::kRequestTimeout);
-  if (upload_) stream_.expires_after(limits::kUploadTimeout);
   http::async_read(stream_, buffer_, *parser_, beast::bind_front_handler(&HttpSession::on_read, shared_from_this()));
+}
+
+void HttpSession::start_upload_body() {
+  const std::size_t pace = context_.config.min_upload_bytes_per_second;
+  upload_pace_.emplace(pace, limits::kUploadPaceWindow, UploadPace::Clock::now());
+  pace_missed_ = false;
+  // The pace decides; the deadline is only a backstop, past what a body of
+  // the largest upload that keeps the pace takes. Without a pace, a body
+  // has the fixed time it always had.
+  if (pace == 0) {
+    stream_.expires_after(limits::kUploadTimeout);
+  } else {
+    const auto longest = std::chrono::seconds(context_.config.max_upload_bytes / pace + 1);
+    stream_.expires_after(2 * limits::kUploadPaceWindow + longest);
+  }
+  read_upload_bytes();
+}
+
+void HttpSession::read_upload_bytes() {
+  const auto deadline = upload_pace_->deadline();
+  if (deadline != UploadPace::Clock::time_point::max()) {
+    pace_timer_.expires_at(deadline);  // cancels the wait for the deadline before
+    pace_timer_.async_wait([self = shared_from_this()](beast::error_code ec) {
+      if (!ec) self->on_pace_deadline();
+    });
+  }
+  http::async_read_some(stream_, buffer_, *parser_,
+                        beast::bind_front_handler(&HttpSession::on_upload_bytes, shared_from_this()));
+}
+
+void HttpSession::on_pace_deadline() {
+  if (!upload_pace_ || !upload_pace_->too_slow(UploadPace::Clock::now())) return;  // bytes came meanwhile
+  // The read under way completes (operation_aborted) and answers.
+  pace_missed_ = true;
+  stream_.cancel();
+}
+
+void HttpSession::on_upload_bytes(beast::error_code ec, std::size_t) {
+  const auto now = UploadPace::Clock::now();
+  if (!ec) {
+    // Counted as received, not as declared: a body that is promised and
+    // dribbled holds what it sent, so that it cannot crowd others out.
+    const std::size_t received = parser_->get().body().size();
+    const UploadShare share = upload_bytes_.grow(received - std::min(received, upload_bytes_.bytes()));
+    if (share != UploadShare::granted) {
+      pace_timer_.cancel();
+      upload_bytes_.release();
+      return send(photos_.share_refusal(share, parser_->get().version(), received, peer_address_));
+    }
+    upload_pace_->record(now, received);
+    // Bytes that came as the pace timer fired still count: a body they
+    // complete, or bring back to its pace, goes on.
+    pace_missed_ = false;
+    if (parser_->is_done()) {
+      pace_timer_.cancel();
+      return on_read(ec, 0);
+    }
+    if (upload_pace_->too_slow(now)) return refuse_slow_upload();
+    return read_upload_bytes();
+  }
+  if (pace_missed_) return refuse_slow_upload();  // the read was cancelled for it
+  pace_timer_.cancel();
+  on_read(ec, 0);
+}
+
+void HttpSession::refuse_slow_upload() {
+  pace_timer_.cancel();
+  upload_bytes_.release();
+  const std::size_t pace = context_.config.min_upload_bytes_per_second;
+  const auto window = limits::kUploadPaceWindow.count();
+  context_.abuse.note(Abuse::upload_too_slow, peer_address_,
+                      "an upload's body came slower than " + std::to_string(pace) + " bytes a second over " +
+                          std::to_string(window) + " s, after " +
+                          std::to_string(parser_->get().body().size()) + " bytes");
+  send(error_response(http::status::request_timeout, parser_->get().version(),
+                      "the upload came too slowly: once it has started, the server needs at least " +
+                          std::to_string((pace + 1023) / 1024) + " KiB a second (over each " +
+                          std::to_string(window) + " s) and received " +
+                          std::to_string(parser_->get().body().size()) +
+                          " bytes in all; upload again from a better connection, or send a smaller photo"));
 }
 
 void HttpSession::on_read(beast::error_code ec, std::size_t) {

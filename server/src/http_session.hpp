@@ -9,11 +9,13 @@
 #include <memory>
 #include <optional>
 
+#include <boost/asio/steady_timer.hpp>
 #include <boost/beast/core.hpp>
 #include <boost/beast/http.hpp>
 
 #include "connection_admission.hpp"
 #include "server_context.hpp"
+#include "upload_pace.hpp"
 #include "upload_reservation.hpp"
 
 namespace fw::server {
@@ -35,6 +37,16 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
   void read_header();
   void on_header(boost::beast::error_code ec, std::size_t bytes);
   void on_read(boost::beast::error_code ec, std::size_t bytes);
+  /// An upload's body, read piece by piece: each piece counted against the
+  /// address's and the server's bytes in flight as it arrives, and the
+  /// body held to its pace (UploadPace, --min-upload-bytes-per-second).
+  void start_upload_body();
+  void read_upload_bytes();
+  void on_upload_bytes(boost::beast::error_code ec, std::size_t bytes);
+  /// The pace timer: the body missed its pace with nothing more arriving.
+  void on_pace_deadline();
+  /// 408 to a body that came slower than the pace; counted.
+  void refuse_slow_upload();
   bool answer_read_error(boost::beast::error_code ec);
   /// From a trusted proxy: takes the client the request's header names as
   /// the peer, and counts the connection against it; false when that
@@ -70,6 +82,11 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
   bool upload_ = false;
   /// The bytes of the upload being received or prepared (PhotoPreparation::admit).
   UploadReservation upload_bytes_;
+  /// The pace its body must keep, and the timer that fires when it misses
+  /// the pace without a byte arriving (a read waits meanwhile).
+  std::optional<UploadPace> upload_pace_;
+  boost::asio::steady_timer pace_timer_;
+  bool pace_missed_ = false;
   std::size_t lingered_bytes_ = 0;
 };
 

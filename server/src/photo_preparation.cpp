@@ -42,7 +42,7 @@ std::optional<Response> PhotoPreparation::admit(unsigned version, std::uint64_t 
                           "the server is shutting down; upload again in a moment");
   const std::string key = address_key(peer_address);
   // A full queue first: an upload refused for it costs no token of the rate.
-  if (worker_.full()) return queue_full(version, peer_address);
+  if (worker_.full_for(key)) return queue_full(version, peer_address);
   if (const auto wait = context_.addresses->take(AddressRate::upload, key)) {
     // Rounded up, so that an uploader who waits as told is not refused again.
     const int seconds = std::max(1, static_cast<int>(std::ceil(*wait)));
@@ -52,31 +52,48 @@ std::optional<Response> PhotoPreparation::admit(unsigned version, std::uint64_t 
                            "at most " + std::to_string(per_minute) + " uploads a minute from one address",
                            seconds);
   }
+  // The declared length decides from the header whether the body would
+  // fit; only what arrives is counted (HttpSession grows the reservation),
+  // so an upload that promises much and sends little holds little.
   const auto bytes = static_cast<std::size_t>(body_bytes);
-  // Bytes in flight are given back when uploads are answered, at the latest
-  // when their body's time runs out.
-  const int seconds = static_cast<int>(limits::kUploadTimeout.count());
-  switch (context_.addresses->reserve_upload(key, bytes)) {
-    case UploadShare::granted:
-      reservation = UploadReservation(*context_.addresses, key, bytes);
-      return std::nullopt;
-    case UploadShare::address_full:
-      context_.abuse.note(Abuse::upload_bytes, peer_address,
-                          "another " + std::to_string(bytes / 1024) +
-                              " KiB would take its uploads in flight past its share");
-      return try_again_later(http::status::too_many_requests, version,
-                             "your other uploads are still being received or prepared; send one photo at a time",
-                             seconds);
-    case UploadShare::server_full:
-      context_.abuse.note(Abuse::upload_bytes, peer_address, "the server's uploads in flight are at their limit");
-      return try_again_later(http::status::service_unavailable, version,
-                             "the server is receiving as many uploads as it can", seconds);
+  const UploadShare share = context_.addresses->upload_fits(key, bytes);
+  if (share == UploadShare::granted) {
+    reservation = UploadReservation(*context_.addresses, key);
+    return std::nullopt;
   }
-  return std::nullopt;
+  return share_refusal(share, version, bytes, peer_address);
+}
+
+Response PhotoPreparation::share_refusal(UploadShare share, unsigned version, std::size_t bytes,
+                                         const std::string& peer_address) {
+  // Bytes in flight are given back when uploads are answered, or when their
+  // body stops coming at the pace the server asks.
+  const int seconds = static_cast<int>(limits::kUploadTimeout.count());
+  if (share == UploadShare::address_full) {
+    context_.abuse.note(Abuse::upload_bytes, peer_address,
+                        "another " + std::to_string(bytes / 1024) +
+                            " KiB would take its uploads in flight past its share");
+    return try_again_later(http::status::too_many_requests, version,
+                           "your other uploads are still being received or prepared; send one photo at a time",
+                           seconds);
+  }
+  context_.abuse.note(Abuse::upload_bytes, peer_address, "the server's uploads in flight are at their limit");
+  return try_again_later(http::status::service_unavailable, version,
+                         "the server is receiving as many uploads as it can", seconds);
 }
 
 Response PhotoPreparation::queue_full(unsigned version, const std::string& peer_address) {
   const int seconds = worker_.expected_wait_seconds();
+  if (!worker_.full()) {
+    // Room in the queue, but not for this network block: its addresses
+    // together hold their share of the places.
+    context_.abuse.note(Abuse::photo_queue_full, peer_address,
+                        "photos waiting from its network " + address_group(peer_address) + " are at their share");
+    return try_again_later(http::status::service_unavailable, version,
+                           "the server has as many photos waiting from your network (" +
+                               address_group(peer_address) + ") as it takes from one",
+                           seconds);
+  }
   context_.abuse.note(Abuse::photo_queue_full, peer_address,
                       "photos waiting to be prepared are at the limit of " +
                           std::to_string(context_.addresses->limits().photo_queue));
@@ -88,10 +105,35 @@ void PhotoPreparation::upload(Request request, std::string peer_address, std::fu
   if (context_.draining.load())
     return done(error_response(http::status::service_unavailable, request.version(),
                                "the server is shutting down; upload again in a moment"));
+  // A photo whose header declares too many pixels is refused here, on the
+  // connection's thread, before it takes a place in the queue or a
+  // decoder's memory and time.
+  if (auto refusal = refuse_oversized_photo(request, peer_address)) return done(std::move(*refusal));
   // The queue may have filled while the body came: it decides now.
   const unsigned version = request.version();
   auto job = [this, request = std::move(request), done] { done(handle(request)); };
   if (!worker_.try_post(address_key(peer_address), std::move(job))) done(queue_full(version, peer_address));
+}
+
+std::optional<Response> PhotoPreparation::refuse_oversized_photo(const Request& request,
+                                                                 const std::string& peer_address) {
+  const auto& body = request.body();
+  std::span<const std::uint8_t> photo(reinterpret_cast<const std::uint8_t*>(body.data()), body.size());
+  const auto content_type = request[http::field::content_type];
+  const std::string_view type(content_type.data(), content_type.size());
+  if (type.substr(0, type.find(';')) == "multipart/form-data") {
+    // The photo part of a form; a malformed form is answered by handle().
+    std::map<std::string, MultipartPart> parts;
+    std::string why;
+    if (!read_multipart(photo, multipart_boundary(type), parts, why) || !parts.contains("photo")) return std::nullopt;
+    photo = parts["photo"].data;
+  }
+  photo::PrepError prep_error;
+  if (photo::AvatarPreparer::check_photo(photo, prep_error, context_.config.max_photo_pixels) ||
+      prep_error.code != photo::PrepErrorCode::too_many_pixels)
+    return std::nullopt;  // other faults are answered by handle(), with the same check
+  context_.abuse.note(Abuse::photo_too_large, peer_address, "refused from its header: " + prep_error.message);
+  return error_response(http::status::payload_too_large, request.version(), prep_error.message);
 }
 
 namespace {
@@ -110,7 +152,8 @@ Response prep_refusal(const Request& request, const photo::PrepError& prep_error
 std::optional<Response> PhotoPreparation::prepare_photo(const Request& request, std::span<const std::uint8_t> photo,
                                                         Upload& upload) {
   photo::PrepError prep_error;
-  if (!photo::AvatarPreparer::check_photo(photo, prep_error)) return prep_refusal(request, prep_error);
+  if (!photo::AvatarPreparer::check_photo(photo, prep_error, context_.config.max_photo_pixels))
+    return prep_refusal(request, prep_error);
   photo::AvatarPreparer* preparer = worker_.preparer(prep_error);
   if (!preparer)
     return error_response(http::status::service_unavailable, request.version(),
@@ -166,7 +209,8 @@ std::optional<Response> PhotoPreparation::read_multipart_upload(const Request& r
   if (photo.content_type != "image/jpeg" && photo.content_type != "image/png")
     return refuse(http::status::unsupported_media_type, "the part 'photo' must be image/jpeg or image/png");
   photo::PrepError prep_error;
-  if (!photo::AvatarPreparer::check_photo(photo.data, prep_error)) return prep_refusal(request, prep_error);
+  if (!photo::AvatarPreparer::check_photo(photo.data, prep_error, context_.config.max_photo_pixels))
+    return prep_refusal(request, prep_error);
   upload.photo = photo.data;
   return std::nullopt;
 }

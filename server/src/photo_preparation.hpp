@@ -26,13 +26,18 @@ class PhotoPreparation {
   PhotoPreparation(ServerContext& context, PhotoWorker& worker);
 
   /// Decides from an upload's header alone, before its body is read,
-  /// whether the body may come: nullopt, and `body_bytes` (its declared
-  /// length, or the largest upload for a chunked one) reserved in
-  /// `reservation`, when it may; else the refusal, 429 (this address's rate
-  /// or bytes in flight) or 503 (the server's bytes in flight, a full photo
-  /// queue), with Retry-After. Counts an upload of the address's rate.
+  /// whether the body may come: nullopt, and `reservation` ready to count
+  /// the body's bytes as they arrive, when `body_bytes` (its declared
+  /// length, or the largest upload for a chunked one) would fit in the
+  /// shares now; else the refusal, 429 (this address's rate or bytes in
+  /// flight) or 503 (the server's bytes in flight, a full photo queue or
+  /// the block's share of it), with Retry-After. Counts an upload of the
+  /// address's rate.
   std::optional<Response> admit(unsigned version, std::uint64_t body_bytes, const std::string& peer_address,
                                 UploadReservation& reservation);
+  /// The refusal of an upload whose `bytes` do not fit in `share` (429 for
+  /// the address's, 503 for the server's), with Retry-After; counted.
+  Response share_refusal(UploadShare share, unsigned version, std::size_t bytes, const std::string& peer_address);
   /// Handles one upload admitted and read; `done` gets the response, on a
   /// photo worker's thread (or on this one when the queue is full).
   void upload(Request request, std::string peer_address, std::function<void(Response)> done);
@@ -54,7 +59,11 @@ class PhotoPreparation {
   /// photo alone, as a browser's form sends it.
   std::optional<Response> read_multipart_upload(const Request& request, std::span<const std::uint8_t> body,
                                                 Upload& upload);
-  /// 503: the photo queue is full; Retry-After when it likely has room.
+  /// 413 for a photo (raw, or a form's part 'photo') whose header declares
+  /// more than --max-photo-pixels, decided without decoding; counted.
+  std::optional<Response> refuse_oversized_photo(const Request& request, const std::string& peer_address);
+  /// 503: the photo queue is full, or the uploader's block holds its share
+  /// of it; Retry-After when it likely has room.
   Response queue_full(unsigned version, const std::string& peer_address);
 
   ServerContext& context_;

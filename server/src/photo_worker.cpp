@@ -30,7 +30,7 @@ thread_local std::size_t t_index = 0;
 
 PhotoWorker::PhotoWorker(std::string landmark_model, std::size_t threads, std::size_t queue_limit)
     : landmark_model_(std::move(landmark_model)), preparers_(std::max<std::size_t>(threads, 1)),
-      queue_(queue_limit), busy_(preparers_.size(), false) {
+      queue_(queue_limit, std::max<std::size_t>(preparers_.size() - 1, 1)), busy_(preparers_.size(), false) {
   for (std::size_t i = 0; i < preparers_.size(); ++i) threads_.emplace_back([this, i] { run(i); });
 }
 
@@ -64,6 +64,11 @@ void PhotoWorker::post(std::function<void()> job) {
 bool PhotoWorker::full() const {
   std::lock_guard lock(mutex_);
   return queue_.full();
+}
+
+bool PhotoWorker::full_for(const std::string& owner) const {
+  std::lock_guard lock(mutex_);
+  return queue_.full_for(owner);
 }
 
 int PhotoWorker::expected_wait_seconds() const {

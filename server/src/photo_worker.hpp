@@ -1,8 +1,11 @@
 #pragma once
 // The threads that prepare photos (dlib and OpenCV, about a second of CPU
 // each, so neither I/O nor rooms wait on them): uploads and stored avatars
-// prepared again take their turns on them, by owner (photo_job_queue.hpp:
-// one address's burst of photos does not hold up another's). dlib's
+// prepared again take their turns on them, by network block and by owner
+// (photo_job_queue.hpp: one address's burst of photos does not hold up
+// another's, nor do many addresses of one block). With more than one
+// thread, a block prepares at most one photo fewer than there are threads
+// at once, so that one is always left for another block's photo. dlib's
 // detector is not thread-safe, so each thread has its own preparer; its
 // landmark model (about 100 MB) loads on the thread's first photo, not at
 // start. At most `queue_limit` uploads wait; more are refused, so that a
@@ -48,6 +51,9 @@ class PhotoWorker {
   /// Whether an upload would be refused now (to refuse it from its header,
   /// before its body is read; try_post decides).
   bool full() const;
+  /// The same for an upload of `owner`: the queue is full, or its block
+  /// holds its share of the places (PhotoJobQueue::full_for).
+  bool full_for(const std::string& owner) const;
   /// Seconds until a photo queued now would likely be done, from the
   /// photos ahead and how long photos took lately (at least 1).
   int expected_wait_seconds() const;

@@ -10,6 +10,7 @@
 #include <spdlog/spdlog.h>
 
 #include "endpoint.hpp"
+#include "fw/photo/photo_limits.hpp"
 #include "logging.hpp"
 #include "network_server.hpp"
 #include "redis_url.hpp"
@@ -81,6 +82,15 @@ void add_limit_flags(CLI::App& cmd, ServerConfig& config) {
                  "delete uploaded avatars and their photos after this many days without a use; 0: keep them until "
                  "their uploader deletes them")
       ->check(CLI::Range(0u, 36500u))
+      ->capture_default_str();
+  cmd.add_option("--min-upload-bytes-per-second", config.min_upload_bytes_per_second,
+                 "an upload's body, once started, must bring this many bytes a second over each 5 s (the first "
+                 "5 s free), else 408; 0: no pace, 15 s for the whole body")
+      ->check(CLI::Range(std::size_t{0}, std::size_t{1'000'000'000}))
+      ->capture_default_str();
+  cmd.add_option("--max-photo-pixels", config.max_photo_pixels,
+                 "photos whose header declares more pixels are refused (413) before they are decoded")
+      ->check(CLI::Range(std::size_t{10'000}, photo::kMaxPhotoPixels))
       ->capture_default_str();
   cmd.add_option("--auth-secret", config.auth_secret, "require join tokens signed with this secret")
       ->envname("FACEWIRE_AUTH_SECRET");

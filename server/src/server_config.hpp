@@ -38,6 +38,16 @@ struct ServerConfig {
   /// Avatars and their photos are deleted after this many days without a
   /// use (avatar_retention.hpp); 0 keeps them until their uploader deletes them.
   std::uint32_t avatar_retention_days = 30;
+  /// Once an upload's body has started, every limits::kUploadPaceWindow must
+  /// bring this many bytes a second on average (a phone on a slow link
+  /// sends 30 KiB/s and more); a body slower than that is answered 408 and
+  /// closed. 0: no pace, a body's fixed limits::kUploadTimeout instead.
+  std::size_t min_upload_bytes_per_second = 16 * 1024;
+  /// The most pixels a photo's header may declare (at most
+  /// photo::kMaxPhotoPixels); a larger one is refused from its header,
+  /// before it is decoded (a 12-megapixel phone photo passes; a PNG
+  /// declaring 40 megapixels in a few kilobytes does not).
+  std::size_t max_photo_pixels = 16 * 1000 * 1000;
   std::string auth_secret;       ///< empty: no tokens needed
   std::string metrics_secret;    ///< empty: /metrics open, unless auth_secret is set (then closed)
   bool demo_room = true;         ///< the "lobby" with three autonomous avatars

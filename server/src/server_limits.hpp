@@ -16,8 +16,12 @@ inline constexpr std::chrono::seconds kRequestTimeout{15};
 /// a WebSocket upgrade included: from accept; a later one: from its first
 /// byte). A fixed deadline: dribbling bytes does not extend it.
 inline constexpr std::chrono::seconds kHeaderTimeout{10};
-/// Time allowed for an upload's body (a 4 MiB photo at 2.5 Mbit/s).
+/// Time allowed for an upload's body when no pace is required
+/// (--min-upload-bytes-per-second 0): a 4 MiB photo at 2.5 Mbit/s.
 inline constexpr std::chrono::seconds kUploadTimeout{15};
+/// The window over which an upload's body must keep its pace
+/// (--min-upload-bytes-per-second); the body's first window is free.
+inline constexpr std::chrono::seconds kUploadPaceWindow{5};
 /// After an answer that closes the connection, what the peer still sends
 /// (the rest of a refused upload) is read and dropped for at most this long
 /// before the socket closes: closing it with unread bytes would reset the

@@ -1,8 +1,10 @@
 #pragma once
-// The body bytes of one upload, reserved against its address's and the
-// server's share (AddressLimits::reserve_upload) from its header until it is
-// answered, so that uploads held open cannot hold more memory than the
-// shares. Given back when it goes, or when emptied.
+// The body bytes of one upload, counted against its address's and the
+// server's share (AddressLimits::reserve_upload) as they are received, and
+// held until the upload is answered, so that uploads held open cannot hold
+// more memory than the shares. Bytes declared but not sent hold nothing: a
+// body dribbled a byte at a time holds the bytes it sent, not the
+// Content-Length it promised. Given back when it goes, or when emptied.
 #include <cstddef>
 #include <string>
 #include <utility>
@@ -14,9 +16,8 @@ namespace fw::server {
 class UploadReservation {
  public:
   UploadReservation() = default;
-  /// Takes over `bytes` that `limits` granted to `key`.
-  UploadReservation(AddressLimits& limits, std::string key, std::size_t bytes)
-      : limits_(&limits), key_(std::move(key)), bytes_(bytes) {}
+  /// Counts the bytes of an upload from `key` against `limits`; none yet.
+  UploadReservation(AddressLimits& limits, std::string key) : limits_(&limits), key_(std::move(key)) {}
   UploadReservation(UploadReservation&& other) noexcept
       : limits_(std::exchange(other.limits_, nullptr)), key_(std::move(other.key_)), bytes_(other.bytes_) {}
   UploadReservation& operator=(UploadReservation&& other) noexcept {
@@ -32,10 +33,19 @@ class UploadReservation {
   UploadReservation& operator=(const UploadReservation&) = delete;
   ~UploadReservation() { release(); }
 
+  /// Counts `more` bytes received; the share that is full (and nothing
+  /// counted) when they do not fit.
+  UploadShare grow(std::size_t more) {
+    if (!limits_ || more == 0) return UploadShare::granted;
+    const UploadShare share = limits_->reserve_upload(key_, more);
+    if (share == UploadShare::granted) bytes_ += more;
+    return share;
+  }
   /// Gives the bytes back now.
   void release() {
     if (limits_) limits_->release_upload(key_, bytes_);
     limits_ = nullptr;
+    bytes_ = 0;
   }
   std::size_t bytes() const { return limits_ ? bytes_ : 0; }
 

@@ -106,6 +106,20 @@ TEST(ImageInspection, ARestartMarkerDoesNotHideABomb) {
   EXPECT_FALSE(header.has_value()) << "read as " << header->width << "x" << header->height;
 }
 
+// A server's own pixel limit, lower than the decoder's: read from the
+// header like the decoder's, and named in the message for the person.
+TEST(ImageInspection, ALowerPixelLimitIsReadFromTheHeaderAndNamed) {
+  PrepError error;
+  const auto small = encoded(300, 200, ".png");
+  EXPECT_TRUE(inspect_photo(small, error, 60000).has_value()) << "exactly at the limit: " << error.message;
+  EXPECT_FALSE(inspect_photo(small, error, 59999).has_value());
+  EXPECT_EQ(error.code, PrepErrorCode::too_many_pixels);
+  EXPECT_NE(error.message.find("300x200 pixels; at most 59999 pixels"), std::string::npos) << error.message;
+  EXPECT_FALSE(inspect_photo(encoded(2000, 1001, ".jpg"), error, 2000000).has_value());
+  EXPECT_NE(error.message.find("2000x1001 pixels; at most 2 megapixels"), std::string::npos) << error.message;
+  EXPECT_NE(error.message.find("scale it down"), std::string::npos) << error.message;
+}
+
 }  // namespace
 }  // namespace fw::photo
 

@@ -1,8 +1,10 @@
-// The photo worker's queue without photos: jobs taken in turn by owner (one
-// address's burst does not hold up another's photo), at most one job of an
-// owner running at a time, uploads bounded and refused when the queue is
-// full, stored avatars prepared again never refused, and a second thread
-// that takes a job only while the first is busy.
+// The photo worker's queue without photos: jobs taken in turn by network
+// block and by owner (one address's burst, or many addresses of one /24, do
+// not hold up another's photo), at most one job of an owner running at a
+// time and a block held to its share of the threads, uploads bounded (and a
+// block to half of the places) and refused when the queue is full, stored
+// avatars prepared again never refused, and a second thread that takes a job
+// only while the first is busy.
 #include "photo_worker.hpp"
 
 #include <atomic>
@@ -80,6 +82,60 @@ TEST(PhotoJobQueue, UploadsAreBoundedAndOtherJobsAreNot) {
   EXPECT_TRUE(queue.push_bounded("c", [] {}));
 }
 
+TEST(PhotoJobQueue, ManyAddressesOfOneBlockGetOneBlocksTurn) {
+  PhotoJobQueue queue(100);
+  // Five addresses rented in one /24, one photo each, then a person's
+  // photo from another block: it waits for one of them, not for five.
+  for (int i = 1; i <= 5; ++i) ASSERT_TRUE(queue.push_bounded("127.0.1." + std::to_string(i), [] {}));
+  ASSERT_TRUE(queue.push_bounded("127.0.2.9", [] {}));
+  EXPECT_EQ(drain(queue), (std::vector<std::string>{"127.0.1.1", "127.0.2.9", "127.0.1.2", "127.0.1.3", "127.0.1.4",
+                                                    "127.0.1.5"}));
+}
+
+TEST(PhotoJobQueue, WithinABlockAddressesTakeTurns) {
+  PhotoJobQueue queue(100);
+  for (int i = 0; i < 3; ++i) ASSERT_TRUE(queue.push_bounded("127.0.1.1", [] {}));
+  ASSERT_TRUE(queue.push_bounded("127.0.1.2", [] {}));
+  ASSERT_TRUE(queue.push_bounded("127.0.2.9", [] {}));
+  EXPECT_EQ(drain(queue),
+            (std::vector<std::string>{"127.0.1.1", "127.0.2.9", "127.0.1.2", "127.0.1.1", "127.0.1.1"}));
+}
+
+TEST(PhotoJobQueue, ABlockRunsNoMoreThanItsShareOfThreads) {
+  PhotoJobQueue queue(100, 1);
+  ASSERT_TRUE(queue.push_bounded("127.0.1.1", [] {}));
+  ASSERT_TRUE(queue.push_bounded("127.0.1.2", [] {}));
+  ASSERT_TRUE(queue.push_bounded("127.0.2.9", [] {}));
+  auto first = queue.take();
+  ASSERT_TRUE(first);
+  EXPECT_EQ(first->owner, "127.0.1.1");
+  auto second = queue.take();
+  ASSERT_TRUE(second) << "another block's photo is ready";
+  EXPECT_EQ(second->owner, "127.0.2.9");
+  EXPECT_FALSE(queue.ready()) << "127.0.1.2 is another address, but its block already prepares a photo";
+  queue.finished("127.0.2.9");
+  EXPECT_FALSE(queue.take());
+  queue.finished("127.0.1.1");
+  auto third = queue.take();
+  ASSERT_TRUE(third);
+  EXPECT_EQ(third->owner, "127.0.1.2");
+}
+
+TEST(PhotoJobQueue, OneBlockFillsAtMostHalfOfTheQueue) {
+  PhotoJobQueue queue(8);
+  EXPECT_EQ(queue.block_places(), 4u);
+  for (int i = 1; i <= 4; ++i) ASSERT_TRUE(queue.push_bounded("127.0.1." + std::to_string(i), [] {}));
+  EXPECT_TRUE(queue.full_for("127.0.1.200"));
+  EXPECT_FALSE(queue.push_bounded("127.0.1.5", [] {})) << "a fifth address of the block";
+  EXPECT_FALSE(queue.full());
+  EXPECT_FALSE(queue.full_for("127.0.2.9"));
+  EXPECT_TRUE(queue.push_bounded("127.0.2.9", [] {})) << "another block still has places";
+  // A place taken to preparation is free again for the block.
+  auto taken = queue.take();
+  ASSERT_TRUE(taken);
+  EXPECT_TRUE(queue.push_bounded("127.0.1.5", [] {}));
+}
+
 /// Jobs that hold their thread until the gate opens: at the end of the
 /// test at the latest, so that a failed test does not hang in the worker's
 /// destructor (declare the gate after the worker).
@@ -142,6 +198,22 @@ TEST(PhotoWorker, ASecondThreadPreparesAnotherAddressesPhotoWhileTheFirstIsBusy)
   EXPECT_EQ(started, 1) << "the flood's second photo waits for its first";
   gate.open();
   ASSERT_TRUE(eventually([&] { return started == 2; }));
+}
+
+TEST(PhotoWorker, ABlockThatFloodsLeavesAThreadForAnotherBlock) {
+  std::atomic<int> started{0};
+  PhotoWorker worker("", 2, 8);
+  Gate gate;
+  // Slow photos from three addresses of one /24: with two threads, the
+  // block prepares one at a time, and the other thread stays free.
+  for (int i = 1; i <= 3; ++i) ASSERT_TRUE(worker.try_post("127.0.1." + std::to_string(i), gate.job(started)));
+  ASSERT_TRUE(eventually([&] { return started == 1; }));
+  std::promise<void> other;
+  ASSERT_TRUE(worker.try_post("127.0.2.9", [&] { other.set_value(); }));
+  ASSERT_EQ(other.get_future().wait_for(10s), std::future_status::ready) << "another block's photo waited";
+  EXPECT_EQ(started, 1) << "the block's other addresses wait for its first photo";
+  gate.open();
+  ASSERT_TRUE(eventually([&] { return started == 3; }));
 }
 
 TEST(PhotoWorker, OneUploadAfterAnotherStaysOnTheFirstThread) {

@@ -1,20 +1,14 @@
-// Uploads against the limits that keep one client from taking the server's
-// memory or its photo preparation (server/PROTOCOL.md, "Limits"): an upload
-// is refused from its header, before its body is read, when its address is
-// over its rate or holds its share of bytes in flight, when the server's
-// bytes in flight are taken, or when the photo queue is full; each refusal
-// says when to try again (Retry-After), and other addresses still upload.
-// The real server on loopback sockets; other clients connect from
-// 127.0.0.2 and up.
-#include <arpa/inet.h>
-#include <netinet/in.h>
-#include <poll.h>
-#include <sys/socket.h>
-#include <unistd.h>
-
+// Uploads against the limits that keep one client, or many addresses
+// together, from taking the server's memory or its photo preparation
+// (server/PROTOCOL.md, "Limits"): an upload is refused from its header,
+// before its body is read, when its address is over its rate or its
+// declared bytes would take the address's or the server's bytes in flight
+// (counted as received) past their share, or when the photo queue is full;
+// each refusal says when to try again (Retry-After), and other addresses
+// still upload. The real server on loopback sockets; other clients connect
+// from 127.0.0.2 and up, and from several /24s (127.0.1.x, 127.0.2.x).
+// Dribbled bodies and photo bombs: upload_starvation_test.cpp.
 #include <chrono>
-#include <filesystem>
-#include <fstream>
 #include <future>
 #include <optional>
 #include <regex>
@@ -26,115 +20,14 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
-#include "http_get.hpp"
-#include "room_test_server.hpp"
 #include "test_paths.hpp"
+#include "upload_client.hpp"
 
 namespace fw::server {
 namespace {
 
 using namespace std::chrono_literals;
-using test::RunningServer;
-
-constexpr std::size_t kMiB = 1024 * 1024;
-
-std::string read_bytes(const std::filesystem::path& path) {
-  std::ifstream file(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
-}
-
-/// A socket to the server's port from `source` (127.0.0.x: another client).
-int connect_from(const std::string& source, int port) {
-  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-  if (fd < 0) return -1;
-  sockaddr_in local{};
-  local.sin_family = AF_INET;
-  ::inet_pton(AF_INET, source.c_str(), &local.sin_addr);
-  sockaddr_in remote{};
-  remote.sin_family = AF_INET;
-  remote.sin_port = htons(static_cast<std::uint16_t>(port));
-  remote.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  timeval send_timeout{20, 0};
-  ::setsockopt(fd, SOL_SOCKET, SO_SNDTIMEO, &send_timeout, sizeof send_timeout);
-  if (::bind(fd, reinterpret_cast<sockaddr*>(&local), sizeof local) != 0 ||
-      ::connect(fd, reinterpret_cast<sockaddr*>(&remote), sizeof remote) != 0) {
-    ::close(fd);
-    return -1;
-  }
-  return fd;
-}
-
-bool send_all(int fd, const std::string& bytes) {
-  std::size_t sent = 0;
-  while (sent < bytes.size()) {
-    const ssize_t n = ::send(fd, bytes.data() + sent, bytes.size() - sent, MSG_NOSIGNAL);
-    if (n <= 0) return false;
-    sent += static_cast<std::size_t>(n);
-  }
-  return true;
-}
-
-std::string upload_header(const std::string& type, std::size_t length) {
-  return "POST /api/avatars HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Type: " + type +
-         "\r\nContent-Length: " + std::to_string(length) + "\r\n\r\n";
-}
-
-/// The answer the server sends within `wait` (it closes after a refusal),
-/// or nullopt when none comes: the server is waiting for the body.
-std::optional<test::HttpReply> answer_within(int fd, std::chrono::milliseconds wait) {
-  std::string received;
-  const auto until = std::chrono::steady_clock::now() + wait;
-  for (;;) {
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(until - std::chrono::steady_clock::now());
-    pollfd p{fd, POLLIN, 0};
-    if (left.count() <= 0 || ::poll(&p, 1, static_cast<int>(left.count())) <= 0) break;
-    char buffer[4096];
-    const ssize_t n = ::recv(fd, buffer, sizeof buffer, 0);
-    if (n <= 0) break;
-    received.append(buffer, static_cast<std::size_t>(n));
-  }
-  const auto end = received.find("\r\n\r\n");
-  if (received.rfind("HTTP/1.1 ", 0) != 0 || end == std::string::npos) return std::nullopt;
-  test::HttpReply reply;
-  reply.status = std::atoi(received.c_str() + 9);
-  reply.headers = received.substr(0, end);
-  reply.body = received.substr(end + 4);
-  return reply;
-}
-
-/// The Retry-After header's seconds; -1 when there is none.
-int retry_after(const test::HttpReply& reply) {
-  std::smatch match;
-  if (!std::regex_search(reply.headers, match, std::regex("Retry-After: (\\d+)"))) return -1;
-  return std::stoi(match[1]);
-}
-
-/// A whole upload from `source`, its answer read (a photo's preparation may
-/// load the landmark model first: a minute's patience).
-test::HttpReply upload_from(const std::string& source, int port, const std::string& type, const std::string& body) {
-  const int fd = connect_from(source, port);
-  if (fd < 0) return {};
-  send_all(fd, upload_header(type, body.size()) + body);
-  auto reply = answer_within(fd, 60s);
-  ::close(fd);
-  return reply.value_or(test::HttpReply{});
-}
-
-long refusals(const RunningServer& server, const std::string& kind) {
-  const auto metrics = test::http_get(server.http_port(), "/metrics");
-  std::smatch match;
-  if (!std::regex_search(metrics.body, match, std::regex("facewire_refusals_total\\{kind=\"" + kind + "\"\\} (\\d+)")))
-    return -1;
-  return std::stol(match[1]);
-}
-
-/// Open sockets, closed at the end.
-struct Sockets {
-  std::vector<int> fds;
-  ~Sockets() {
-    for (const int fd : fds) ::close(fd);
-  }
-};
+using namespace fw::test;
 
 // One address starts many 4 MiB uploads and sends most of each body, as if
 // it would finish them: only its share is admitted and held; the rest are
@@ -164,6 +57,8 @@ TEST(UploadLimits, UploadsHeldOpenHoldNoMoreThanTheAddressesShare) {
     }
     ++admitted;
     ASSERT_TRUE(send_all(fd, most_of_a_body)) << "upload " << i;
+    // Bytes count as they are received: a moment for the server to read them.
+    std::this_thread::sleep_for(300ms);
   }
   std::this_thread::sleep_for(500ms);
   const long grown_mib = (server.rss_kb() - rss_before) / 1024;
@@ -179,31 +74,71 @@ TEST(UploadLimits, UploadsHeldOpenHoldNoMoreThanTheAddressesShare) {
   EXPECT_EQ(other.status, 201) << other.body;
 }
 
-// Many addresses together hold no more than the server's share (64 MiB).
-TEST(UploadLimits, ManyAddressesTogetherHoldNoMoreThanTheServersShare) {
-  RunningServer server("--no-demo-room");
+// Uploads admitted together from one address are held to its share (8 MiB)
+// as their bytes arrive: three are admitted from their headers (each fits
+// beside what the others have sent so far), and the one whose bytes would
+// take the address past its share is refused 429 while its body comes,
+// with Retry-After, and closed. No pace (0): bodies stay open meanwhile.
+TEST(UploadLimits, BytesReceivedAreHeldToTheAddressesShareWhileBodiesCome) {
+  RunningServer server("--no-demo-room --min-upload-bytes-per-second 0");
   ASSERT_GT(server.http_port(), 0);
   Sockets held;
-  for (int i = 0; i < 20; ++i) {
-    const int fd = connect_from("127.0.1." + std::to_string(10 + i), server.http_port());
+  std::vector<int> fds;
+  for (int i = 0; i < 3; ++i) {
+    const int fd = connect_from("127.0.6.1", server.http_port());
+    ASSERT_GE(fd, 0);
+    held.fds.push_back(fd);
+    fds.push_back(fd);
+  }
+  ASSERT_TRUE(send_all(fds[0], upload_header("image/jpeg", 4 * kMiB) + std::string(3 * kMiB, '\xff')));
+  std::this_thread::sleep_for(300ms);  // 3 MiB received and counted
+  // 3 + 4 declared fit in 8: both admitted, neither has sent a byte yet.
+  ASSERT_TRUE(send_all(fds[1], upload_header("image/jpeg", 4 * kMiB)));
+  ASSERT_TRUE(send_all(fds[2], upload_header("image/jpeg", 4 * kMiB)));
+  EXPECT_FALSE(answer_within(fds[1], 300ms)) << "admitted from its header";
+  EXPECT_FALSE(answer_within(fds[2], 300ms)) << "admitted from its header";
+  ASSERT_TRUE(send_all(fds[1], std::string(3 * kMiB, '\xff')));
+  std::this_thread::sleep_for(300ms);  // 6 MiB held now
+  ASSERT_TRUE(send_all(fds[2], std::string(3 * kMiB, '\xff')));
+  const auto refused = answer_within(fds[2], 5s);
+  ASSERT_TRUE(refused) << "the body past the address's share is answered while it comes";
+  EXPECT_EQ(refused->status, 429) << refused->body;
+  EXPECT_GE(retry_after(*refused), 1) << refused->headers;
+  EXPECT_NE(refused->body.find("send one photo at a time"), std::string::npos) << refused->body;
+  EXPECT_FALSE(answer_within(fds[0], 100ms)) << "the others still come";
+  EXPECT_FALSE(answer_within(fds[1], 100ms)) << "the others still come";
+  EXPECT_EQ(refusals(server, "upload_bytes"), 1);
+}
+
+// Many addresses together hold no more than the server's share (64 MiB),
+// counted in bytes received: each upload sends 3 of the 4 MiB it declares,
+// and an upload is admitted while its 4 MiB would still fit beside what the
+// others sent. No pace (0), so that the bodies left waiting are not closed
+// before the count is done.
+TEST(UploadLimits, ManyAddressesTogetherHoldNoMoreThanTheServersShare) {
+  RunningServer server("--no-demo-room --min-upload-bytes-per-second 0");
+  ASSERT_GT(server.http_port(), 0);
+  Sockets held;
+  int admitted = 0, unavailable = 0;
+  for (int i = 0; i < 24; ++i) {
+    const int fd = connect_from("127.0." + std::to_string(1 + i / 8) + "." + std::to_string(10 + i), server.http_port());
     ASSERT_GE(fd, 0);
     held.fds.push_back(fd);
     ASSERT_TRUE(send_all(fd, upload_header("image/jpeg", 4 * kMiB)));
-  }
-  // Every header is decided in a moment; the admitted wait for their bodies.
-  std::this_thread::sleep_for(1500ms);
-  int admitted = 0, unavailable = 0;
-  for (const int fd : held.fds) {
-    if (const auto reply = answer_within(fd, 100ms)) {
+    if (const auto reply = answer_within(fd, 300ms)) {
       EXPECT_EQ(reply->status, 503) << reply->body;
       EXPECT_GE(retry_after(*reply), 1) << reply->headers;
       ++unavailable;
-    } else {
-      ++admitted;
+      continue;
     }
+    ++admitted;
+    ASSERT_TRUE(send_all(fd, std::string(3 * kMiB, '\xff')));
+    std::this_thread::sleep_for(150ms);  // read and counted
   }
-  EXPECT_EQ(admitted, 16);
-  EXPECT_EQ(unavailable, 4);
+  // 3 MiB received from each of 21 uploads leave no room for 4 more.
+  EXPECT_EQ(admitted, 21);
+  EXPECT_EQ(unavailable, 3);
+  EXPECT_EQ(refusals(server, "upload_bytes"), 3);
 }
 
 // The rate is counted from the header: the seventh upload within a minute
@@ -281,6 +216,7 @@ TEST(UploadLimits, AFullPhotoQueueIsAnsweredAndTheServerRecovers) {
   const auto later = upload_from("127.0.2.30", server.http_port(), "image/jpeg", photo);
   EXPECT_EQ(later.status, 201) << later.body;
 }
+
 
 }  // namespace
 }  // namespace fw::server

@@ -1,5 +1,6 @@
 #include "image_inspection.hpp"
 
+#include <algorithm>
 #include <cstring>
 #include <string>
 
@@ -126,9 +127,18 @@ std::optional<PhotoHeader> inspect_jpeg(std::span<const std::uint8_t> b, PrepErr
   }
 }
 
+/// A pixel count as a person reads it: "40 megapixels", or the pixels
+/// themselves when the limit is no whole number of megapixels.
+std::string pixels_text(std::size_t pixels) {
+  if (pixels % 1000000 == 0) return std::to_string(pixels / 1000000) + " megapixels";
+  return std::to_string(pixels) + " pixels";
+}
+
 }  // namespace
 
-std::optional<PhotoHeader> inspect_photo(std::span<const std::uint8_t> bytes, PrepError& error) {
+std::optional<PhotoHeader> inspect_photo(std::span<const std::uint8_t> bytes, PrepError& error,
+                                         std::size_t max_pixels) {
+  max_pixels = std::min(max_pixels, kMaxPhotoPixels);
   if (bytes.size() > kMaxPhotoBytes)
     return fail(error, PrepErrorCode::too_many_bytes,
                 "the photo is " + std::to_string(bytes.size() / 1000000) + " MB; at most 10 MB is accepted: send a smaller JPEG");
@@ -146,10 +156,13 @@ std::optional<PhotoHeader> inspect_photo(std::span<const std::uint8_t> bytes, Pr
   if (header->width <= 0 || header->height <= 0)
     return fail(error, PrepErrorCode::undecodable, "the image header gives no size; the file is damaged");
   const auto pixels = static_cast<std::uint64_t>(header->width) * static_cast<std::uint64_t>(header->height);
-  if (pixels > kMaxPhotoPixels)
+  // Read from the header, before any decoding: a small PNG may declare a
+  // picture that takes hundreds of megabytes and seconds to decode.
+  if (pixels > max_pixels)
     return fail(error, PrepErrorCode::too_many_pixels,
                 "the photo is " + std::to_string(header->width) + "x" + std::to_string(header->height) +
-                    " pixels; at most 40 megapixels is accepted: scale it down");
+                    " pixels; at most " + pixels_text(max_pixels) +
+                    " is accepted: scale it down (a face needs no more than a few megapixels)");
   return header;
 }
 

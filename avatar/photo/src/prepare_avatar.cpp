@@ -64,8 +64,8 @@ std::unique_ptr<AvatarPreparer> AvatarPreparer::create(const std::optional<std::
   return std::unique_ptr<AvatarPreparer>(new AvatarPreparer(std::move(finder)));
 }
 
-bool AvatarPreparer::check_photo(std::span<const std::uint8_t> photo, PrepError& error) {
-  return inspect_photo(photo, error).has_value();
+bool AvatarPreparer::check_photo(std::span<const std::uint8_t> photo, PrepError& error, std::size_t max_pixels) {
+  return inspect_photo(photo, error, max_pixels).has_value();
 }
 
 std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8_t> bytes, const PrepOptions& options,

@@ -11,6 +11,7 @@
 // colour, closed-lid layer -> vascular region masks, skin tone -> encoded
 // package.
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -24,6 +25,7 @@
 #include "fw/codec/face_params.hpp"
 #include "fw/model/avatar_package.hpp"
 #include "fw/model/image.hpp"
+#include "fw/photo/photo_limits.hpp"
 #include "fw/photo/prep_error.hpp"
 
 namespace fw::photo {
@@ -75,8 +77,10 @@ class AvatarPreparer {
   /// Checks what can be checked without the landmark model: the format
   /// signature, the header's size, the byte and pixel limits. A server calls
   /// it first so that a file that is no photo is refused at once, not after
-  /// the model has loaded. prepare() runs the same check.
-  static bool check_photo(std::span<const std::uint8_t> photo, PrepError& error);
+  /// the model has loaded. prepare() runs the same check. `max_pixels`: a
+  /// lower pixel limit than kMaxPhotoPixels (a server's own, a flag).
+  static bool check_photo(std::span<const std::uint8_t> photo, PrepError& error,
+                          std::size_t max_pixels = kMaxPhotoPixels);
 
   /// Prepares one photo (JPEG, PNG or WebP bytes). nullopt and `error` (with a
   /// message for the person) if the photo cannot make an avatar.
