@@ -34,8 +34,9 @@ enum class Abuse {
   face_not_yours,            ///< a hello naming an asset without its secret
   bad_name,                  ///< a display name with control, bidi or zero-width characters
   bad_forwarded_header,      ///< a trusted proxy's X-Forwarded-For or Forwarded that names no address
+  cluster_message,           ///< a message on the cluster's Redis channels no node of it could have sent
 };
-inline constexpr std::size_t kAbuseKinds = 21;
+inline constexpr std::size_t kAbuseKinds = 22;
 
 /// The kind's name in logs and in /metrics' label.
 std::string_view abuse_name(Abuse kind);

@@ -170,6 +170,9 @@ void ClusterNode::lost(const std::string& why) {
   if (subscriber_) subscriber_->close();
   commands_.reset();
   subscriber_.reset();
+  // What waited for a read from Redis is dropped: bridges ask for a roster when it is back.
+  held_down_.clear();
+  held_from_.clear();
 }
 
 void ClusterNode::schedule_heartbeat() {
@@ -387,7 +390,7 @@ void ClusterNode::bridge(const std::string& room) {
 void ClusterNode::on_message(std::string_view channel_view, std::string_view payload) {
   const std::string channel(channel_view);
   const auto* data = reinterpret_cast<const std::uint8_t*>(payload.data());
-  if (channel == keys::kLimitsChannel) return apply_limits(payload);
+  if (channel == keys::kLimitsChannel) return on_limits(payload);
   if (channel == keys::node_inbox(node_)) {
     if (payload.rfind("own ", 0) == 0) {
       const std::string room(payload.substr(4));
@@ -397,13 +400,15 @@ void ClusterNode::on_message(std::string_view channel_view, std::string_view pay
   }
   const auto target = keys::parse_room_channel(channel);
   if (target.room.empty()) return;
-  auto room = context_.rooms->find(target.room);
-  if (!room) return;
+  if (!context_.rooms->find(target.room)) return;
   if (target.down) {
-    if (auto message = bridge::decode_down(data, payload.size()); message && message->owner != node_)
-      room->on_down(std::move(*message));
-  } else if (auto message = bridge::decode_up(data, payload.size())) {
-    room->on_up(std::move(*message));
+    auto message = bridge::decode_down(data, payload.size());
+    if (!message) return refuse("a node", "room " + target.room + ": a down message this build cannot read");
+    on_down(target.room, std::move(*message));
+  } else {
+    auto message = bridge::decode_up(data, payload.size());
+    if (!message) return refuse("a node", "room " + target.room + ": an up message this build cannot read");
+    on_up(target.room, std::move(*message));
   }
 }
 
@@ -453,6 +458,7 @@ void ClusterNode::keep_chat(const std::string& room, bridge::Bytes chat_message)
 
 void ClusterNode::room_closed(const std::string& room) {
   net::post(strand_, [this, room] {
+    leases_.erase(room);
     if (bridged_.erase(room)) {
       if (up_ && subscriber_) subscriber_->unsubscribe({keys::room_down(room)});
       return;
