@@ -116,6 +116,18 @@ bool plausible_node_name(std::string_view name) {
   return !name.empty() && within(name, kMaxNodeNameBytes) && plain(name);
 }
 
+Refusal refusal_of(const bridge::MemberRecord& member) { return member_refusal(member); }
+
+Refusal refusal_of(const bridge::RoomState& state) {
+  std::set<std::uint32_t> ids;
+  for (const auto& mood : state.moods) {
+    if (!plausible_avatar(mood.avatar) || !ids.insert(mood.avatar).second) return "a mood's avatar id is out of range or repeated";
+    for (const float v : mood.values)
+      if (!std::isfinite(v)) return "a mood that is not a finite number";
+  }
+  return std::nullopt;
+}
+
 Refusal refusal_of(bridge::Down& m) {
   if (!plausible_node_name(m.owner)) return "the sender's node name is malformed";
   switch (m.kind) {

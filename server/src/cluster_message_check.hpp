@@ -43,6 +43,10 @@ std::optional<std::string> refusal_of(bridge::Down& message);
 /// Why `message`, read from a room's up channel, cannot be a bridging
 /// node's request; nullopt when it can.
 std::optional<std::string> refusal_of(const bridge::Up& message);
+/// Why a member's record, or a room's moods, read from a room's record in
+/// Redis (what a takeover restores) cannot be what its owner kept.
+std::optional<std::string> refusal_of(const bridge::MemberRecord& member);
+std::optional<std::string> refusal_of(const bridge::RoomState& state);
 /// Why `news`, read from the limits channel, cannot be a node's report:
 /// more lines than a node holds connections, spending that is not a finite
 /// number a node could have taken in a few beats under `limits`, more

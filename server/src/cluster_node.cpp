@@ -8,6 +8,7 @@
 #include "client_session.hpp"
 #include "cluster_keys.hpp"
 #include "cluster_limits.hpp"
+#include "cluster_message_check.hpp"
 #include "demo_room.hpp"
 #include "room.hpp"
 #include "room_registry.hpp"
@@ -354,15 +355,23 @@ void ClusterNode::restore(const std::string& name, const RedisReply& members, co
   if (bridged_.erase(name) && subscriber_) subscriber_->unsubscribe({keys::room_down(name)});
   if (subscriber_) subscriber_->subscribe({keys::room_up(name)});
   commands_->command({"SADD", keys::kRooms, name});
+  // The record is read from Redis: checked as the news is (cluster_message_check.hpp).
   std::vector<bridge::MemberRecord> records;
   for (std::size_t i = 0; i + 1 < members.elements.size(); i += 2) {
     const std::string& bytes = members.elements[i + 1].text;
-    if (auto record = bridge::decode_member(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()))
-      records.push_back(std::move(*record));
+    auto record = bridge::decode_member(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
+    const auto why = record ? cluster_check::refusal_of(*record) : std::optional<std::string>("unreadable");
+    if (why) refuse(record ? record->node : "a node", "room " + name + ": a member's record: " + *why);
+    else records.push_back(std::move(*record));
   }
   std::optional<bridge::RoomState> moods;
   if (state.type == RedisReply::Type::string)
     moods = bridge::decode_state(reinterpret_cast<const std::uint8_t*>(state.text.data()), state.text.size());
+  if (moods)
+    if (const auto why = cluster_check::refusal_of(*moods)) {
+      refuse("a node", "room " + name + ": its moods: " + *why);
+      moods.reset();
+    }
   const bool fresh = records.empty();
   spdlog::info("cluster: node {} owns room {} now ({} members restored)", node_, name, records.size());
   room->take_over(std::move(records), std::move(moods), live_);

@@ -273,6 +273,19 @@ TEST(ClusterCheck, ForgedRequestsOfEveryKindAreRefused) {
   EXPECT_TRUE(refused(bridge::up_sync(std::string(65, 'n')))) << "a node name past 64 bytes";
 }
 
+TEST(ClusterCheck, ARoomsRecordIsCheckedBeforeATakeoverRestoresIt) {
+  EXPECT_FALSE(cluster_check::refusal_of(sample_member()));
+  auto forged = sample_member();
+  forged.info.seat.facing_yaw_rad = std::numeric_limits<float>::infinity();
+  EXPECT_TRUE(cluster_check::refusal_of(forged));
+  bridge::RoomState moods{{{1, {0.1f, 0.f, -0.2f}}, {2, {0.f}}}};
+  EXPECT_FALSE(cluster_check::refusal_of(moods));
+  moods.moods[1].values[0] = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_TRUE(cluster_check::refusal_of(moods)) << "a NaN mood would stay NaN through the simulation's clamp";
+  moods.moods[1] = {1, {0.f}};
+  EXPECT_TRUE(cluster_check::refusal_of(moods)) << "one face's mood twice";
+}
+
 TEST(ClusterCheck, ForgedLimitsNewsIsRefused) {
   const AbuseLimits limits;
   auto refused = [&](auto forge) {
