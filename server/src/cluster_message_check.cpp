@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <set>
+#include <utility>
 
 #include "display_name.hpp"
 #include "fw/codec/codec.hpp"
@@ -86,10 +87,25 @@ Refusal member_refusal(const bridge::MemberRecord& m) {
   return std::nullopt;
 }
 
-/// The faces of a tick: every number finite and within the codec's range
-/// of its channel. The owner's physics may overshoot a range a little (the
-/// encoder clamps it): such values are clamped here too; values far out
-/// are no simulation's and refuse the message.
+/// The values channel `c` may carry: its field's range, or for an eye,
+/// which the simulation turns past its own range to counter the head's
+/// turn (the codec codes it as eye plus head), the sum of both ranges.
+std::pair<float, float> carried_range(std::size_t c) {
+  const auto& table = codec::channel_table();
+  float low = static_cast<float>(table[c].min_q) * table[c].step;
+  float high = static_cast<float>(table[c].max_q) * table[c].step;
+  if (const int base = table[c].base; base >= 0) {
+    const auto& b = table[static_cast<std::size_t>(base)];
+    low += static_cast<float>(b.min_q) * b.step;
+    high += static_cast<float>(b.max_q) * b.step;
+  }
+  return {low, high};
+}
+
+/// The faces of a tick: every number finite and within the range the codec
+/// carries for its channel. The owner's physics may overshoot a range a
+/// little (the encoder clamps it): such values are clamped here too; values
+/// far out are no simulation's and refuse the message.
 Refusal faces_refusal(std::vector<bridge::FaceEntry>& faces) {
   if (faces.size() > kMaxRosterMembers) return "more faces than a room holds";
   std::set<std::uint32_t> ids;
@@ -98,8 +114,7 @@ Refusal faces_refusal(std::vector<bridge::FaceEntry>& faces) {
     if (!plausible_avatar(entry.id) || !ids.insert(entry.id).second) return "a face's avatar id is out of range or repeated";
     for (std::size_t c = 0; c < codec::kChannelCount; ++c) {
       const float value = codec::channel_value(entry.face, c);
-      const float low = static_cast<float>(table[c].min_q) * table[c].step;
-      const float high = static_cast<float>(table[c].max_q) * table[c].step;
+      const auto [low, high] = carried_range(c);
       const float slack = 0.1f * (high - low);
       if (!std::isfinite(value)) return "a face's " + std::string(table[c].name) + " is not a finite number";
       if (value < low - slack || value > high + slack)

@@ -38,7 +38,8 @@ bool plausible_node_name(std::string_view name);
 
 /// Why `message`, read from a room's down channel, cannot be its owner's;
 /// nullopt when it can. Faces a little outside the codec's ranges (no more
-/// than a tenth of the range) are clamped into them.
+/// than a tenth of the range; an eye's is its own plus the head's, as the
+/// codec carries it) are clamped into them.
 std::optional<std::string> refusal_of(bridge::Down& message);
 /// Why `message`, read from a room's up channel, cannot be a bridging
 /// node's request; nullopt when it can.

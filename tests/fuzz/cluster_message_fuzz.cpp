@@ -6,7 +6,8 @@
 // that read again to the same bytes written (one meaning per message).
 // What reads is then checked as a node checks what Redis brings
 // (cluster_message_check.hpp): no crash, and a message believed once is
-// believed again as written, its faces within the codec's ranges.
+// believed again as written, its faces finite.
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <string>
@@ -28,17 +29,14 @@ void round_trip(const bridge::Bytes& written, Decode decode) {
 }
 
 /// A down message the check let through (its faces clamped): believed
-/// again as it is, its faces in range.
+/// again as it is, its faces finite.
 void believed_again(const bridge::Down& believed) {
   const auto bytes = bridge::encode(believed);
   auto again = bridge::decode_down(bytes.data(), bytes.size());
   if (!again || cluster_check::refusal_of(*again)) std::abort();
-  const auto& table = codec::channel_table();
   for (const auto& entry : again->faces)
-    for (std::size_t c = 0; c < codec::kChannelCount; ++c) {
-      const float v = codec::channel_value(entry.face, c);
-      if (!(v >= table[c].min_q * table[c].step && v <= table[c].max_q * table[c].step)) std::abort();
-    }
+    for (std::size_t c = 0; c < codec::kChannelCount; ++c)
+      if (!std::isfinite(codec::channel_value(entry.face, c))) std::abort();
 }
 
 }  // namespace

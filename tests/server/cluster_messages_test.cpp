@@ -237,6 +237,7 @@ TEST(ClusterCheck, ForgedNewsOfEveryKindIsRefused) {
   expect_refused(K::tick, [&](auto& m) { m.faces[0].face.head_pitch_rad = inf; }, "a face with infinity");
   expect_refused(K::tick, [](auto& m) { m.faces[0].face.head_yaw_rad = 100.f; }, "a head turned 100 rad");
   expect_refused(K::tick, [](auto& m) { m.faces[1].face.blush[2] = -3.f; }, "negative blush");
+  expect_refused(K::tick, [](auto& m) { m.faces[1].face.eye_left.yaw_rad = 5.f; }, "an eye turned 5 rad");
   expect_refused(K::tick, [](auto& m) { m.faces[1].id = 7; }, "a tick with one face twice");
   expect_refused(K::tick, [](auto& m) { m.faces[1].id = 0; }, "a face of avatar 0");
   expect_refused(K::tick, [](auto& m) { m.faces.resize(65, m.faces[0]); }, "more faces than a room holds");
@@ -251,6 +252,13 @@ TEST(ClusterCheck, FacesAHairOutOfRangeAreClampedNotRefused) {
   EXPECT_EQ(tick.faces[0].face.au[0], 1.f);
   EXPECT_NEAR(tick.faces[0].face.head_yaw_rad, -1.2f, 0.01f);
   EXPECT_EQ(tick.faces[0].face.head_translation_mm[2], 12.f) << "values in range are left alone";
+  // An eye turns past its own range to counter the head (the codec carries
+  // eye plus head): the owner's simulation does so, and it goes through as it is.
+  tick.faces[1].face.eye_left.yaw_rad = -0.9f;
+  tick.faces[1].face.eye_right.pitch_rad = 0.75f;
+  EXPECT_FALSE(cluster_check::refusal_of(tick));
+  EXPECT_EQ(tick.faces[1].face.eye_left.yaw_rad, -0.9f);
+  EXPECT_EQ(tick.faces[1].face.eye_right.pitch_rad, 0.75f);
 }
 
 TEST(ClusterCheck, ForgedRequestsOfEveryKindAreRefused) {
