@@ -35,8 +35,8 @@ void believed_again(const bridge::Down& believed) {
   auto again = bridge::decode_down(bytes.data(), bytes.size());
   if (!again || cluster_check::refusal_of(*again)) std::abort();
   for (const auto& entry : again->faces)
-    for (std::size_t c = 0; c < codec::kChannelCount; ++c)
-      if (!std::isfinite(codec::channel_value(entry.face, c))) std::abort();
+    for (std::size_t c = 0; c < fw::codec::kChannelCount; ++c)
+      if (!std::isfinite(fw::codec::channel_value(entry.face, c))) std::abort();
 }
 
 }  // namespace
