@@ -30,8 +30,11 @@ inline constexpr std::size_t kMaxHashBytes = 64;          ///< a secret_hash(): 
 inline constexpr std::size_t kMaxJoinRefBytes = kMaxNodeNameBytes + 1 + 20;  ///< "NODE/NUMBER"
 inline constexpr std::size_t kMaxRosterMembers = 64;      ///< --room-size at most
 inline constexpr std::size_t kMaxRosterBytes = 64 * 1024; ///< every encoded client message a down message carries
-/// Connections one node can hold at once, so lines of one limits message.
-inline constexpr std::size_t kMaxLimitsLines = 4 * 2048 + 64;
+/// Lines of one limits message: far more than a node reports in a beat
+/// (its connections, and the addresses that spent since the last beat,
+/// a flood of new ones included), so that its news is never refused when
+/// it matters most.
+inline constexpr std::size_t kMaxLimitsLines = 65536;
 
 /// A node name as --node allows it: 1 to 64 letters, digits, - _ . or :.
 bool plausible_node_name(std::string_view name);

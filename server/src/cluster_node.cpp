@@ -361,7 +361,7 @@ void ClusterNode::restore(const std::string& name, const RedisReply& members, co
     const std::string& bytes = members.elements[i + 1].text;
     auto record = bridge::decode_member(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
     const auto why = record ? cluster_check::refusal_of(*record) : std::optional<std::string>("unreadable");
-    if (why) refuse(record ? record->node : "a node", "room " + name + ": a member's record: " + *why);
+    if (why) refuse(record ? record->node : "unknown", "room " + name + ": a member's record: " + *why);
     else records.push_back(std::move(*record));
   }
   std::optional<bridge::RoomState> moods;
@@ -369,7 +369,7 @@ void ClusterNode::restore(const std::string& name, const RedisReply& members, co
     moods = bridge::decode_state(reinterpret_cast<const std::uint8_t*>(state.text.data()), state.text.size());
   if (moods)
     if (const auto why = cluster_check::refusal_of(*moods)) {
-      refuse("a node", "room " + name + ": its moods: " + *why);
+      refuse("unknown", "room " + name + ": its moods: " + *why);
       moods.reset();
     }
   const bool fresh = records.empty();
@@ -412,11 +412,11 @@ void ClusterNode::on_message(std::string_view channel_view, std::string_view pay
   if (!context_.rooms->find(target.room)) return;
   if (target.down) {
     auto message = bridge::decode_down(data, payload.size());
-    if (!message) return refuse("a node", "room " + target.room + ": a down message this build cannot read");
+    if (!message) return refuse("unknown", "room " + target.room + ": a down message this build cannot read");
     on_down(target.room, std::move(*message));
   } else {
     auto message = bridge::decode_up(data, payload.size());
-    if (!message) return refuse("a node", "room " + target.room + ": an up message this build cannot read");
+    if (!message) return refuse("unknown", "room " + target.room + ": an up message this build cannot read");
     on_up(target.room, std::move(*message));
   }
 }

@@ -89,7 +89,7 @@ void ClusterNode::on_up(const std::string& room, bridge::Up message) {
 
 void ClusterNode::on_limits(std::string_view payload) {
   auto news = decode_limits(payload);
-  if (!news) return refuse("a node", "limits news this build cannot read");
+  if (!news) return refuse("unknown", "limits news this build cannot read");
   if (news->node == node_) return;
   if (auto why = cluster_check::refusal_of(*news, context_.config.abuse)) return refuse(news->node, *why);
   const std::string node = news->node;

@@ -312,7 +312,8 @@ TEST(ClusterCheck, ForgedLimitsNewsIsRefused) {
   EXPECT_TRUE(refused([&](LimitsNews& n) { n.connections["127.0.1.6"] = limits.connections_per_address + 1; }))
       << "more connections than the address may hold";
   EXPECT_TRUE(refused([](LimitsNews& n) {
-    for (int i = 0; i < 20000; ++i) n.connections["10.0." + std::to_string(i / 256) + "." + std::to_string(i % 256)] = 1;
+    for (int i = 0; i < 70000; ++i)
+      n.connections["10." + std::to_string(i / 65536) + "." + std::to_string(i / 256 % 256) + "." + std::to_string(i % 256)] = 1;
   })) << "more addresses than a node holds connections";
   EXPECT_TRUE(refused([](LimitsNews& n) { n.tokens = {{"", "r", ""}}; })) << "a token without its hash";
   // What the text form cannot carry is refused when read already.
