@@ -35,6 +35,7 @@ std::string_view abuse_name(Abuse kind) {
     case Abuse::idle_timeout: return "idle_timeout";
     case Abuse::upload_too_slow: return "upload_too_slow";
     case Abuse::photo_too_large: return "photo_too_large";
+    case Abuse::cluster_message: return "cluster_message";
     case Abuse::count_: break;
   }
   return "unknown";

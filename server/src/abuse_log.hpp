@@ -40,6 +40,7 @@ enum class Abuse {
   idle_timeout,              ///< a room connection that sent nothing, not even pings, for too long
   upload_too_slow,           ///< an upload's body slower than --min-upload-bytes-per-second, closed with 408
   photo_too_large,           ///< a photo whose header declares more than --max-photo-pixels, refused undecoded
+  cluster_message,           ///< a message on the cluster's Redis channels no node of it could have sent
   count_,                    ///< not a kind: how many there are
 };
 inline constexpr std::size_t kAbuseKinds = static_cast<std::size_t>(Abuse::count_);

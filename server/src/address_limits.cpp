@@ -1,5 +1,7 @@
 #include "address_limits.hpp"
 
+#include <algorithm>
+
 namespace fw::server {
 
 AddressLimits::AddressLimits(const AbuseLimits& limits) : limits_(limits) {}
@@ -7,7 +9,7 @@ AddressLimits::AddressLimits(const AbuseLimits& limits) : limits_(limits) {}
 bool AddressLimits::open_connection(const std::string& key) {
   std::lock_guard lock(mutex_);
   Entry& entry = entries_[key];
-  if (entry.connections + remote_connections(key) >= limits_.connections_per_address) return false;
+  if (entry.connections + remote_connections(key, Clock::now()) >= limits_.connections_per_address) return false;
   ++entry.connections;
   return true;
 }
@@ -26,15 +28,17 @@ std::size_t AddressLimits::connections(const std::string& key) const {
   return it == entries_.end() ? 0 : it->second.connections;
 }
 
-BucketRate AddressLimits::rate_of(AddressRate rate) const {
+BucketRate rate_of(const AbuseLimits& limits, AddressRate rate) {
   switch (rate) {
-    case AddressRate::join: return limits_.joins;
-    case AddressRate::chat: return limits_.chat;
-    case AddressRate::upload: return limits_.uploads;
-    case AddressRate::room_creation: return limits_.room_creations;
+    case AddressRate::join: return limits.joins;
+    case AddressRate::chat: return limits.chat;
+    case AddressRate::upload: return limits.uploads;
+    case AddressRate::room_creation: return limits.room_creations;
   }
   return {};
 }
+
+BucketRate AddressLimits::rate_of(AddressRate rate) const { return server::rate_of(limits_, rate); }
 
 std::optional<double> AddressLimits::take(AddressRate rate, const std::string& key, Clock::time_point now) {
   std::lock_guard lock(mutex_);
@@ -57,12 +61,16 @@ std::vector<AddressLimits::Spent> AddressLimits::take_spending() {
   return spent;
 }
 
-void AddressLimits::charge(AddressRate rate, const std::string& key, double tokens, Clock::time_point now) {
+void AddressLimits::charge(AddressRate rate, const std::string& key, double tokens, Clock::time_point now,
+                           std::chrono::duration<double> longest_wait) {
   std::lock_guard lock(mutex_);
   auto it = entries_.try_emplace(key).first;
   auto& bucket = it->second.buckets[static_cast<std::size_t>(rate)];
-  if (!bucket) bucket.emplace(rate_of(rate), now);
-  bucket->spend(now, tokens);
+  const BucketRate bucket_rate = rate_of(rate);
+  if (!bucket) bucket.emplace(bucket_rate, now);
+  // The next token is due within `longest_wait`: what refills meanwhile is kept.
+  const double keep = std::max(0.0, 1.0 - bucket_rate.per_second * longest_wait.count());
+  bucket->spend(now, std::min(tokens, bucket_rate.burst), keep);
 }
 
 std::map<std::string, std::size_t> AddressLimits::connection_counts() const {
@@ -73,16 +81,20 @@ std::map<std::string, std::size_t> AddressLimits::connection_counts() const {
   return counts;
 }
 
-void AddressLimits::set_remote_connections(const std::string& node, std::map<std::string, std::size_t> counts) {
+void AddressLimits::set_remote_connections(const std::string& node, std::map<std::string, std::size_t> counts,
+                                           Clock::time_point now, Clock::time_point expires) {
   std::lock_guard lock(mutex_);
-  if (counts.empty()) remote_.erase(node);
-  else remote_[node] = std::move(counts);
+  for (auto it = remote_.begin(); it != remote_.end();) it = it->second.expires <= now ? remote_.erase(it) : std::next(it);
+  if (counts.empty()) return (void)remote_.erase(node);
+  if (!remote_.count(node) && remote_.size() >= kMaxRemoteNodes) return;
+  for (auto& [key, count] : counts) count = std::min(count, limits_.connections_per_address);
+  remote_[node] = {std::move(counts), expires};
 }
 
-std::size_t AddressLimits::remote_connections(const std::string& key) const {
+std::size_t AddressLimits::remote_connections(const std::string& key, Clock::time_point now) const {
   std::size_t total = 0;
-  for (const auto& [node, counts] : remote_)
-    if (const auto it = counts.find(key); it != counts.end()) total += it->second;
+  for (const auto& [node, remote] : remote_)
+    if (const auto it = remote.counts.find(key); it != remote.counts.end() && remote.expires > now) total += it->second;
   return total;
 }
 

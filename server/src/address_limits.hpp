@@ -23,6 +23,9 @@ namespace fw::server {
 enum class AddressRate { join, chat, upload, room_creation };
 inline constexpr std::size_t kAddressRateCount = 4;
 
+/// The bucket of `rate` under `limits`.
+BucketRate rate_of(const AbuseLimits& limits, AddressRate rate);
+
 /// Whether an upload's bytes fit: granted, or whose share is taken.
 enum class UploadShare { granted, address_full, server_full };
 
@@ -73,13 +76,25 @@ class AddressLimits {
   void share_spending() { sharing_ = true; }
   /// What was taken here since the last call.
   std::vector<Spent> take_spending();
+  //
+  // What another node says is news that ages: Redis is open to whoever
+  // reaches it, and a node that stops reporting is gone. Spending is taken
+  // from the buckets here, but never so much that the address waits longer
+  // than `longest_wait` for its next token here; connections count until
+  // `expires` unless the node says them again (every beat), and at most
+  // the address's share.
   /// Tokens an address spent on another node, taken here too.
-  void charge(AddressRate rate, const std::string& key, double tokens, Clock::time_point now = Clock::now());
+  void charge(AddressRate rate, const std::string& key, double tokens, Clock::time_point now,
+              std::chrono::duration<double> longest_wait);
   /// Connections open here, by address.
   std::map<std::string, std::size_t> connection_counts() const;
   /// The connections `node` holds, by address; replaces what it said before
-  /// (an empty map: it holds none, or left the cluster).
-  void set_remote_connections(const std::string& node, std::map<std::string, std::size_t> counts);
+  /// (an empty map: it holds none, or left the cluster). At most
+  /// kMaxRemoteNodes nodes are heard at once.
+  void set_remote_connections(const std::string& node, std::map<std::string, std::size_t> counts,
+                              Clock::time_point now = Clock::now(),
+                              Clock::time_point expires = Clock::time_point::max());
+  static constexpr std::size_t kMaxRemoteNodes = 256;
 
  private:
   struct Entry {
@@ -94,13 +109,17 @@ class AddressLimits {
   /// Forgets every idle entry; amortised over many takes.
   void sweep(Clock::time_point now);
 
-  std::size_t remote_connections(const std::string& key) const;
+  std::size_t remote_connections(const std::string& key, Clock::time_point now) const;
 
   AbuseLimits limits_;
   mutable std::mutex mutex_;
   bool sharing_ = false;
   std::map<std::pair<std::string, AddressRate>, double> spent_;
-  std::map<std::string, std::map<std::string, std::size_t>> remote_;  ///< node -> address -> connections
+  struct Remote {
+    std::map<std::string, std::size_t> counts;  ///< address -> connections
+    Clock::time_point expires;
+  };
+  std::map<std::string, Remote> remote_;  ///< by node
   std::map<std::string, Entry> entries_;
   std::size_t upload_bytes_ = 0;
   std::size_t takes_since_sweep_ = 0;

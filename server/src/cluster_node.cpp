@@ -8,6 +8,7 @@
 #include "client_session.hpp"
 #include "cluster_keys.hpp"
 #include "cluster_limits.hpp"
+#include "cluster_message_check.hpp"
 #include "demo_room.hpp"
 #include "room.hpp"
 #include "room_registry.hpp"
@@ -170,6 +171,9 @@ void ClusterNode::lost(const std::string& why) {
   if (subscriber_) subscriber_->close();
   commands_.reset();
   subscriber_.reset();
+  // What waited for a read from Redis is dropped: bridges ask for a roster when it is back.
+  held_down_.clear();
+  held_from_.clear();
 }
 
 void ClusterNode::schedule_heartbeat() {
@@ -351,15 +355,23 @@ void ClusterNode::restore(const std::string& name, const RedisReply& members, co
   if (bridged_.erase(name) && subscriber_) subscriber_->unsubscribe({keys::room_down(name)});
   if (subscriber_) subscriber_->subscribe({keys::room_up(name)});
   commands_->command({"SADD", keys::kRooms, name});
+  // The record is read from Redis: checked as the news is (cluster_message_check.hpp).
   std::vector<bridge::MemberRecord> records;
   for (std::size_t i = 0; i + 1 < members.elements.size(); i += 2) {
     const std::string& bytes = members.elements[i + 1].text;
-    if (auto record = bridge::decode_member(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()))
-      records.push_back(std::move(*record));
+    auto record = bridge::decode_member(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
+    const auto why = record ? cluster_check::refusal_of(*record) : std::optional<std::string>("unreadable");
+    if (why) refuse(record ? record->node : "unknown", "room " + name + ": a member's record: " + *why);
+    else records.push_back(std::move(*record));
   }
   std::optional<bridge::RoomState> moods;
   if (state.type == RedisReply::Type::string)
     moods = bridge::decode_state(reinterpret_cast<const std::uint8_t*>(state.text.data()), state.text.size());
+  if (moods)
+    if (const auto why = cluster_check::refusal_of(*moods)) {
+      refuse("unknown", "room " + name + ": its moods: " + *why);
+      moods.reset();
+    }
   const bool fresh = records.empty();
   spdlog::info("cluster: node {} owns room {} now ({} members restored)", node_, name, records.size());
   room->take_over(std::move(records), std::move(moods), live_);
@@ -387,7 +399,7 @@ void ClusterNode::bridge(const std::string& room) {
 void ClusterNode::on_message(std::string_view channel_view, std::string_view payload) {
   const std::string channel(channel_view);
   const auto* data = reinterpret_cast<const std::uint8_t*>(payload.data());
-  if (channel == keys::kLimitsChannel) return apply_limits(payload);
+  if (channel == keys::kLimitsChannel) return on_limits(payload);
   if (channel == keys::kAvatarDeletions) return forget_deleted_avatar(payload);
   if (channel == keys::node_inbox(node_)) {
     if (payload.rfind("own ", 0) == 0) {
@@ -398,13 +410,15 @@ void ClusterNode::on_message(std::string_view channel_view, std::string_view pay
   }
   const auto target = keys::parse_room_channel(channel);
   if (target.room.empty()) return;
-  auto room = context_.rooms->find(target.room);
-  if (!room) return;
+  if (!context_.rooms->find(target.room)) return;
   if (target.down) {
-    if (auto message = bridge::decode_down(data, payload.size()); message && message->owner != node_)
-      room->on_down(std::move(*message));
-  } else if (auto message = bridge::decode_up(data, payload.size())) {
-    room->on_up(std::move(*message));
+    auto message = bridge::decode_down(data, payload.size());
+    if (!message) return refuse("unknown", "room " + target.room + ": a down message this build cannot read");
+    on_down(target.room, std::move(*message));
+  } else {
+    auto message = bridge::decode_up(data, payload.size());
+    if (!message) return refuse("unknown", "room " + target.room + ": an up message this build cannot read");
+    on_up(target.room, std::move(*message));
   }
 }
 
@@ -454,6 +468,7 @@ void ClusterNode::keep_chat(const std::string& room, bridge::Bytes chat_message)
 
 void ClusterNode::room_closed(const std::string& room) {
   net::post(strand_, [this, room] {
+    leases_.erase(room);
     if (bridged_.erase(room)) {
       if (up_ && subscriber_) subscriber_->unsubscribe({keys::room_down(room)});
       return;

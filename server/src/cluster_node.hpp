@@ -18,6 +18,8 @@
 // Everything runs on one strand of the node's I/O loop; the RoomBus calls
 // rooms make from their own strands are posted to it.
 #include <chrono>
+#include <deque>
+#include <functional>
 #include <map>
 #include <memory>
 #include <set>
@@ -28,6 +30,7 @@
 #include <boost/asio/steady_timer.hpp>
 #include <boost/asio/strand.hpp>
 
+#include "cluster_limits.hpp"
 #include "redis_blocking.hpp"
 #include "redis_connection.hpp"
 #include "room_bus.hpp"
@@ -83,10 +86,21 @@ class ClusterNode : public RoomBus {
   void own_unplaced();
   void bridge(const std::string& room);
   void on_message(std::string_view channel, std::string_view payload);
+  // Who may say what (cluster_node_checks.cpp): every message is checked
+  // (cluster_message_check.hpp); a room's news is believed from the holder
+  // of its lease only, requests and limits news from live nodes only.
+  void on_down(const std::string& room, bridge::Down message);
+  void on_up(const std::string& room, bridge::Up message);
+  void on_limits(std::string_view payload);
+  /// Runs `then` once `node` is known to be alive (at once when it was at
+  /// the last look), or refuses `what` from it; in the order they came.
+  void when_alive(const std::string& node, const std::string& what, std::function<void()> then);
+  /// Counts and logs (rate-limited) a message refused from `sender`.
+  void refuse(std::string_view sender, std::string_view why);
   /// The per-address limits and tokens in use, to and from the others
   /// (cluster_limits.hpp; cluster_node_limits.cpp).
   void share_limits();
-  void apply_limits(std::string_view message);
+  void apply_limits(LimitsNews news);
   std::string least_loaded() const;
   void publish(const std::string& channel, bridge::Bytes message);
   // cluster_node_avatars.cpp
@@ -116,6 +130,16 @@ class ClusterNode : public RoomBus {
   std::map<std::string, double> loads_;  ///< live nodes and their load, as last seen
   std::set<std::string> live_;           ///< nodes alive at the last look
   RedisBlocking avatars_;                ///< avatar copies (redis_blocking.hpp)
+  struct Lease {
+    std::string holder;     ///< empty: none
+    Clock::time_point read;
+  };
+  std::map<std::string, Lease> leases_;  ///< bridged rooms: their lease holder, as last read
+  /// A room's news from a node that is not the lease holder last read
+  /// waits here (in order, with what comes after it) while the lease is read again.
+  std::map<std::string, std::deque<bridge::Down>> held_down_;
+  /// What nodes not (yet) seen alive said, while their liveness is read.
+  std::map<std::string, std::deque<std::pair<std::string, std::function<void()>>>> held_from_;
 };
 
 }  // namespace fw::server

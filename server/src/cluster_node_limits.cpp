@@ -1,5 +1,7 @@
 // ClusterNode (cluster_node.hpp): the per-address limits and the join
 // tokens in use, told to and heard from the other nodes (cluster_limits.hpp).
+#include <algorithm>
+
 #include "client_session.hpp"
 #include "cluster_keys.hpp"
 #include "cluster_limits.hpp"
@@ -9,25 +11,36 @@ namespace fw::server {
 
 namespace keys = cluster_keys;
 
+namespace {
+// What another node says of an address counts this long after it said it
+// (six beats: a node that misses a beat or two under load loses nothing):
+// its connections, unless said again; its spending, as the longest it can
+// make the address wait for its next token here.
+constexpr auto kRemoteNewsLife = std::chrono::seconds(3);
+}  // namespace
+
 void ClusterNode::share_limits() {
   LimitsNews news;
   news.node = node_;
   news.beat = true;
   news.spent = context_.addresses->take_spending();
+  // Past a burst, spending says nothing more (a bucket holds no more), and
+  // the others refuse a report of more than an address can spend.
+  for (auto& spent : news.spent) spent.tokens = std::min(spent.tokens, rate_of(context_.config.abuse, spent.rate).burst);
   news.connections = context_.addresses->connection_counts();
   news.tokens = context_.tokens.held_here();
   commands_->command({"PUBLISH", keys::kLimitsChannel, encode_limits(news)});
 }
 
-void ClusterNode::apply_limits(std::string_view message) {
-  auto news = decode_limits(message);
-  if (!news || news->node == node_) return;
+void ClusterNode::apply_limits(LimitsNews news) {
   const auto now = std::chrono::steady_clock::now();
-  for (const auto& spent : news->spent) context_.addresses->charge(spent.rate, spent.key, spent.tokens, now);
-  if (news->beat) context_.addresses->set_remote_connections(news->node, std::move(news->connections));
+  for (const auto& spent : news.spent)
+    context_.addresses->charge(spent.rate, spent.key, spent.tokens, now, kRemoteNewsLife);
+  if (news.beat)
+    context_.addresses->set_remote_connections(news.node, std::move(news.connections), now, now + kRemoteNewsLife);
   // A hold lasts a few beats unless told again (a node that dies stops telling).
-  for (const auto& token : news->tokens) {
-    context_.tokens.remote_news(news->node, token, now + std::chrono::seconds(3));
+  for (const auto& token : news.tokens) {
+    context_.tokens.remote_news(news.node, token, now + kRemoteNewsLife);
     if (token.taken_from != node_) continue;
     if (auto holder = context_.tokens.give_way(token.token_hash))
       holder->close(codec::CloseCode::unauthorized, "replaced by your newer connection");

@@ -152,7 +152,15 @@ int run_network_server(const ServerConfig& config) {
   if (!config.redis.empty()) {
     // Before the loop runs (no request is served yet): the cluster's server
     // key signs this node's avatar keys.
-    const RedisAddress address = *parse_redis_url(config.redis, error);  // checked with the flag
+    RedisAddress address = *parse_redis_url(config.redis, error);  // checked with the flag
+    if (!config.redis_password_file.empty()) {
+      const auto password = read_redis_password_file(config.redis_password_file, error);
+      if (!password) return cannot_start(error);
+      address.password = *password;
+    }
+    if (!address.username.empty() && address.password.empty())
+      return cannot_start("--redis names a user but no password: add it to the URL (USER:PASSWORD@) or give "
+                          "--redis-password-file");
     cluster = std::make_unique<ClusterNode>(core.context(), ioc.get_executor(), address,
                                             node_name(config, listeners.http->local_endpoint().port()));
     cluster->start();

@@ -4,6 +4,7 @@
 
 #include <cctype>
 #include <charconv>
+#include <fstream>
 
 #include "log_text.hpp"
 
@@ -13,7 +14,7 @@ namespace {
 constexpr std::string_view scheme = "redis://";
 constexpr std::string_view expected_form =
     "expected redis://HOST[:PORT][/DB], e.g. redis://127.0.0.1:6379/0 (IPv6: redis://[::1]:6379; "
-    "a password: redis://:PASSWORD@HOST)";
+    "a password: redis://:PASSWORD@HOST, or redis://USER@HOST with --redis-password-file)";
 
 bool starts_with_ignoring_case(std::string_view text, std::string_view prefix) {
   if (text.size() < prefix.size()) return false;
@@ -98,13 +99,15 @@ std::optional<RedisAddress> parse_redis_url(std::string_view url, std::string& e
   if (const auto at = rest.rfind('@'); at != std::string_view::npos) {
     const std::string_view user_part = rest.substr(0, at);
     rest = rest.substr(at + 1);
+    // USER alone: the password comes from --redis-password-file.
     const auto colon = user_part.find(':');
-    if (colon == std::string_view::npos)
-      return fail("the part before '@' must be :PASSWORD or USER:PASSWORD");
+    if (colon == 0 && user_part.size() == 1) return fail("the password after ':' is empty");
+    if (user_part.empty()) return fail("the part before '@' must be USER, :PASSWORD or USER:PASSWORD");
     const auto username = percent_decoded(user_part.substr(0, colon));
-    const auto password = percent_decoded(user_part.substr(colon + 1));
+    const auto password =
+        colon == std::string_view::npos ? std::optional<std::string>("") : percent_decoded(user_part.substr(colon + 1));
     if (!username || !password) return fail("a '%' in the user or password must start a %XX escape");
-    if (password->empty()) return fail("the password after ':' is empty");
+    if (colon != std::string_view::npos && password->empty()) return fail("the password after ':' is empty");
     address.username = *username;
     address.password = *password;
   }
@@ -170,6 +173,22 @@ std::string to_string(const RedisAddress& address) {
   if (ipv6) text.push_back(']');
   text.append(":").append(std::to_string(address.port)).append("/").append(std::to_string(address.db));
   return text;
+}
+
+std::optional<std::string> read_redis_password_file(const std::string& path, std::string& error) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file) {
+    error = "cannot read the Redis password file " + printable(path, 200) + ": check its path and that this user may read it";
+    return std::nullopt;
+  }
+  std::string password;
+  std::getline(file, password);
+  if (!password.empty() && password.back() == '\r') password.pop_back();
+  if (password.empty()) {
+    error = "the Redis password file " + printable(path, 200) + " is empty: its first line is the password";
+    return std::nullopt;
+  }
+  return password;
 }
 
 }  // namespace fw::server

@@ -2,7 +2,9 @@
 // Where a cluster node finds Redis: "redis://HOST[:PORT][/DB]", as given to
 // `serve --redis`. A password (Redis' requirepass, or a user of its ACL)
 // may ride in the URL's user part: "redis://:PASSWORD@HOST" or
-// "redis://USER:PASSWORD@HOST", percent-encoded where it needs to be.
+// "redis://USER:PASSWORD@HOST", percent-encoded where it needs to be, or
+// come from a file (--redis-password-file), the URL naming the user alone
+// ("redis://USER@HOST") or none.
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -22,6 +24,12 @@ struct RedisAddress {
 /// nullopt and `error` saying what was wrong and the expected form; the
 /// error never repeats a password.
 std::optional<RedisAddress> parse_redis_url(std::string_view url, std::string& error);
+
+/// The password in the file at `path` (--redis-password-file): its first
+/// line, so that it stays out of the command line and the environment.
+/// nullopt and `error` (naming the file, never its content) when the file
+/// cannot be read or its first line is empty.
+std::optional<std::string> read_redis_password_file(const std::string& path, std::string& error);
 
 /// For logs: "redis://host:port/db", never the credentials.
 std::string to_string(const RedisAddress& address);

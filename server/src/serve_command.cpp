@@ -101,11 +101,18 @@ void add_limit_flags(CLI::App& cmd, ServerConfig& config) {
 
 void add_cluster_flags(CLI::App& cmd, ServerConfig& config) {
   cmd.add_option("--redis", config.redis,
-                 "join a cluster on this Redis: redis://HOST[:PORT][/DB] (server/CLUSTER.md); none: one process")
+                 "join a cluster on this Redis: redis://[USER[:PASSWORD]@]HOST[:PORT][/DB] (server/CLUSTER.md); none: one process")
       ->envname("FACEWIRE_REDIS")
       ->check([](const std::string& url) {
         std::string error;
         return parse_redis_url(url, error) ? std::string() : error;
+      });
+  cmd.add_option("--redis-password-file", config.redis_password_file,
+                 "read the Redis password (or the ACL user's, with redis://USER@HOST) from this file's first line")
+      ->envname("FACEWIRE_REDIS_PASSWORD_FILE")
+      ->check([](const std::string& path) {
+        std::string error;
+        return read_redis_password_file(path, error) ? std::string() : error;
       });
   cmd.add_option("--node", config.node, "this node's name in the cluster (default: the host name and HTTP port)")
       ->envname("FACEWIRE_NODE")

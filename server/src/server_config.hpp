@@ -69,6 +69,7 @@ struct ServerConfig {
   AbuseLimits abuse;             ///< per address and per room
   // Cluster (server/CLUSTER.md).
   std::string redis;             ///< redis://HOST:PORT[/DB]; empty: one process, no cluster
+  std::string redis_password_file;  ///< the Redis password's file, instead of the URL's; empty: none
   std::string node;              ///< this node's name in the cluster; empty: the host name and port
   /// How long a room's new owner keeps the seat of a person whose node died,
   /// for them to take back with their resume key.

@@ -26,10 +26,10 @@ class TokenBucket {
     return true;
   }
   /// Takes `cost` tokens spent elsewhere (another node of a cluster), as
-  /// many as there are.
-  void spend(Clock::time_point now, double cost) {
+  /// many as there are above `keep` (what was taken here stays taken).
+  void spend(Clock::time_point now, double cost, double keep = 0) {
     refill(now);
-    tokens_ = std::max(0.0, tokens_ - cost);
+    tokens_ = std::max(std::min(tokens_, keep), tokens_ - cost);
   }
   /// Seconds until `cost` tokens are there (0: now).
   double seconds_until(Clock::time_point now, double cost = 1) {

@@ -2,11 +2,14 @@
 // real facewire-server nodes on it (server/CLUSTER.md). Clients spread over
 // the nodes meet in one room; the room's owner is killed (SIGKILL) and
 // another node takes it over; Redis restarts; a subscriber that stops
-// reading on one node leaves the room's pace on another alone.
+// reading on one node leaves the room's pace on another alone; messages
+// forged straight into Redis change nothing a client sees.
 #include <chrono>
 #include <csignal>
 #include <filesystem>
+#include <limits>
 #include <memory>
+#include <regex>
 #include <set>
 #include <string>
 #include <thread>
@@ -17,6 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include "demo_faces.hpp"
+#include "bridge_message.hpp"
 #include "file_bytes.hpp"
 #include "http_get.hpp"
 #include "join_token.hpp"
@@ -95,8 +99,8 @@ std::set<std::uint32_t> known_avatars(const RoomTestClient& client) {
 }
 
 std::unique_ptr<RoomTestClient> join_node(RunningServer& node, const std::string& room, const std::string& name,
-                                          const std::string& resume = "") {
-  auto client = std::make_unique<RoomTestClient>(Transport::websocket, node.http_port());
+                                          const std::string& resume = "", const std::string& from = "") {
+  auto client = std::make_unique<RoomTestClient>(Transport::websocket, node.http_port(), from);
   EXPECT_TRUE(client->connected());
   codec::Hello hello;
   hello.room = room;
@@ -512,6 +516,104 @@ TEST(Cluster, AnAvatarDeletedOnOneNodeIsGoneFromEveryNodeAndItsWearerShownNeutra
       10s))
       << "Bo, on another node, still sees the deleted face";
   EXPECT_TRUE(bo->errors.empty()) << bo->errors.front();
+
+long refusals(const RunningServer& node, const std::string& kind) {
+  const auto metrics = http_get(node.http_port(), "/metrics");
+  std::smatch match;
+  if (!std::regex_search(metrics.body, match, std::regex("facewire_refusals_total\\{kind=\"" + kind + "\"\\} (\\d+)")))
+    return -1;
+  return std::stol(match[1]);
+}
+
+/// How many action units of `avatar`'s face, as `client` decodes it now, are
+/// near their full intensity: a face the room's behavior never makes has
+/// them all so (the forged one below).
+std::size_t full_action_units(const RoomTestClient& client, std::uint32_t avatar) {
+  const codec::Decoder* decoder = client.decoder.avatar(avatar);
+  if (!decoder) return 0;
+  const codec::FaceParams face = decoder->face();
+  std::size_t full = 0;
+  for (const float au : face.au) full += au >= 0.95f;
+  return full;
+}
+
+// An attacker who can publish on the cluster's Redis channels, and is not a
+// node holding a room's lease (nor a node at all), tries what one forged
+// line could do before: block an address on every node for good, throw
+// every bridged person out with an empty roster, and put a face on someone.
+TEST(Cluster, MessagesForgedIntoRedisChangeNothingAClientSees) {
+  Cluster cluster;
+  const std::string flags = kManyClientsFromOneAddress + " --max-connections-per-address 4";
+  cluster.add_node("a", flags);
+  cluster.add_node("b", flags);
+  for (std::size_t i = 0; i < 2; ++i) ASSERT_TRUE(eventually([&] { return ready(cluster.node(i).http_port()); }, 20s));
+  auto first = join_node(cluster.node(0), "forge", "First", "", "127.0.1.10");
+  const std::string owner = cluster.owner_of("forge");
+  ASSERT_FALSE(owner.empty());
+  RunningServer& bridging = cluster.node(1 - cluster.index_of(owner));
+  auto bridged = join_node(bridging, "forge", "Bridged", "", "127.0.2.10");
+  ASSERT_TRUE(first->welcome && bridged->welcome);
+  const std::uint32_t first_id = first->welcome->you, bridged_id = bridged->welcome->you;
+  std::vector<RoomTestClient*> both{first.get(), bridged.get()};
+  ASSERT_TRUE(eventually([&] { pump_all(both, 100ms); return everyone_sees(both, {first_id, bridged_id}); }, 30s));
+  const auto members_before = known_avatars(*bridged);
+  const long refused_before = refusals(bridging, "cluster_message");
+
+  server::RedisBlocking attacker(cluster.redis_address(), 2000ms);
+  auto publish = [&](const std::string& channel, const std::string& payload) {
+    const auto reply = attacker.command({"PUBLISH", channel, payload});
+    ASSERT_TRUE(reply && reply->type == server::RedisReply::Type::integer) << "PUBLISH to " << channel;
+  };
+  auto down = [&](server::bridge::Down message) {
+    const auto bytes = server::bridge::encode(message);
+    publish("fw:room:forge:down", std::string(bytes.begin(), bytes.end()));
+  };
+  // 1. An address blocked on every node: a node that is none says it holds
+  // a thousand connections from it.
+  for (int i = 0; i < 3; ++i) publish("fw:limits", "node mallory\nbeat\nc 1000 127.0.3.7\n");
+  // 2. Faces: every action unit at full intensity on both people, for a
+  // second of ticks, and one tick of faces that are not numbers at all.
+  codec::FaceParams mask;
+  mask.au.fill(1.f);
+  mask.head_yaw_rad = 1.2f;
+  codec::FaceParams broken;
+  broken.au.fill(std::numeric_limits<float>::quiet_NaN());
+  broken.head_pitch_rad = std::numeric_limits<float>::infinity();
+  std::size_t forged_faces_seen = 0;
+  for (std::uint32_t tick = 0; tick < 30; ++tick) {
+    down({.kind = server::bridge::DownKind::tick, .owner = "mallory", .tick = 1'000'000 + tick,
+          .faces = {{first_id, tick == 15 ? broken : mask}, {bridged_id, mask}}});
+    bridged->pump_for(30ms);
+    forged_faces_seen += full_action_units(*bridged, first_id) >= 20;
+  }
+  // 3. An empty roster: everyone bridged is told the room moved.
+  server::bridge::Down roster{.kind = server::bridge::DownKind::roster, .owner = "mallory"};
+  codec::write_message(codec::Attention{}, roster.attention);
+  down(roster);
+  // 4. Bytes that are no chat line, as chat.
+  down({.kind = server::bridge::DownKind::chat, .owner = "mallory", .message = {0x80 | 3, 0xff, 0xff, 0xff, 0xff}});
+
+  pump_all(both, 1500ms);
+  const long refused = refusals(bridging, "cluster_message") - refused_before;
+  auto victim = std::make_unique<RoomTestClient>(Transport::websocket, bridging.http_port(), "127.0.3.7");
+  const bool victim_in = victim->connected() && !victim->pump_until([&] { return victim->closed(); }, 1500ms);
+  std::cout << "forged into Redis: 127.0.3.7 " << (victim_in ? "connects" : "is refused") << "; the bridged person "
+            << (bridged->closing ? "was disconnected (" + bridged->closing->reason + ")" : std::string("stays"))
+            << "; forged faces decoded in " << forged_faces_seen << " of 30 ticks; " << refused
+            << " messages refused as cluster_message" << std::endl;
+  EXPECT_TRUE(victim_in) << "a forged limits line blocked an address";
+  EXPECT_FALSE(bridged->closing.has_value()) << "a forged roster disconnected a bridged person: " << bridged->closing->reason;
+  EXPECT_EQ(known_avatars(*bridged), members_before) << "a forged roster changed whom the bridged person sees";
+  EXPECT_EQ(forged_faces_seen, 0u) << "forged faces reached a client";
+  EXPECT_EQ(full_action_units(*bridged, first_id), 0u) << "a forged face stuck";
+  EXPECT_TRUE(bridged->errors.empty()) << bridged->errors.front();
+  EXPECT_TRUE(first->errors.empty()) << first->errors.front();
+  // 3 limits lines, 30 ticks, the roster and the chat line; more would be
+  // the owner's own news refused.
+  EXPECT_EQ(refused, 35) << "forged messages not counted in /metrics, or the owner's news refused";
+  // The room goes on for both, as before.
+  for (auto* c : both) c->frames_per_avatar.clear();
+  EXPECT_TRUE(eventually([&] { pump_all(both, 100ms); return everyone_sees(both, {first_id, bridged_id}); }, 10s));
 }
 
 }  // namespace

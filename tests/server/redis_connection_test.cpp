@@ -9,6 +9,8 @@
 
 #include <boost/asio/io_context.hpp>
 #include <chrono>
+#include <cstdio>
+#include <fstream>
 #include <functional>
 #include <memory>
 #include <random>
@@ -62,6 +64,22 @@ TEST(RedisUrl, ReadsHostPortAndDatabase) {
   const auto user = parsed("redis://node:pw@cache");
   EXPECT_EQ(user.username, "node");
   EXPECT_EQ(user.password, "pw");
+  const auto user_alone = parsed("redis://node@cache");
+  EXPECT_EQ(user_alone.username, "node") << "the password comes from --redis-password-file";
+  EXPECT_TRUE(user_alone.password.empty());
+}
+
+TEST(RedisUrl, ThePasswordFileGivesItsFirstLine) {
+  const std::string path = ::testing::TempDir() + "fw-redis-password-" + std::to_string(::getpid());
+  std::string error;
+  std::ofstream(path) << "s3cret pass\r\nsecond line\n";
+  EXPECT_EQ(read_redis_password_file(path, error).value_or("?"), "s3cret pass") << error;
+  std::ofstream(path) << "\n";
+  EXPECT_FALSE(read_redis_password_file(path, error));
+  EXPECT_NE(error.find("is empty"), std::string::npos) << error;
+  std::remove(path.c_str());
+  EXPECT_FALSE(read_redis_password_file(path, error));
+  EXPECT_NE(error.find("cannot read the Redis password file " + path), std::string::npos) << error;
 }
 
 TEST(RedisUrl, PrintsTheAddressWithoutCredentials) {
@@ -96,7 +114,7 @@ TEST(RedisUrl, RefusesBadFormsSayingWhatWasWrong) {
       {"redis://cache:6379/1/2", "the database after '/' must be a number"},
       {"redis://cache?db=1", "options after '?' or '#' are not supported"},
       {"redis://ca che", "has characters no host name has"},
-      {"redis://secret@cache", "must be :PASSWORD or USER:PASSWORD"},
+      {"redis://@cache", "must be USER, :PASSWORD or USER:PASSWORD"},
       {"redis://:@cache", "the password after ':' is empty"},
       {"redis://:pw%2@cache", "must start a %XX escape"},
   };
