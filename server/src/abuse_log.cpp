@@ -11,7 +11,7 @@ std::string_view abuse_name(Abuse kind) {
       "chat_rate",        "upload_rate",              "upload_bytes",          "photo_queue_full",
       "room_creation",    "room_seats",               "idle_person",           "not_reading",
       "unauthorized",     "token_in_use",             "face_not_yours",        "bad_name",
-      "bad_forwarded_header"};
+      "bad_forwarded_header", "block_connection_limit", "connection_evicted", "room_share"};
   return kNames[static_cast<std::size_t>(kind)];
 }
 

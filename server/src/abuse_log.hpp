@@ -34,8 +34,11 @@ enum class Abuse {
   face_not_yours,            ///< a hello naming an asset without its secret
   bad_name,                  ///< a display name with control, bidi or zero-width characters
   bad_forwarded_header,      ///< a trusted proxy's X-Forwarded-For or Forwarded that names no address
+  block_connection_limit,    ///< one network block (/24, /48) holds its share of a port's connections
+  connection_evicted,        ///< a connection that had sent nothing useful yet gave its place to a newcomer
+  room_share,                ///< an address or its block holds its share of rooms, or only fresh blocks may open one
 };
-inline constexpr std::size_t kAbuseKinds = 21;
+inline constexpr std::size_t kAbuseKinds = 24;
 
 /// The kind's name in logs and in /metrics' label.
 std::string_view abuse_name(Abuse kind);
