@@ -44,7 +44,7 @@ std::string share_refusal_text(RoomShareRefusal why, const RoomShareLimits& limi
 
 }  // namespace
 
-RoomRegistry::RoomRegistry(ServerContext& context) : context_(context), shares_(room_shares_of(context.config)) {}
+RoomRegistry::RoomRegistry(ServerContext& context) : context_(context) {}
 RoomRegistry::~RoomRegistry() = default;
 
 std::shared_ptr<Room> RoomRegistry::find_or_create(const std::string& name, bool persistent, bool place) {
@@ -94,14 +94,15 @@ RoomOpening RoomRegistry::open_for(const std::string& name, const std::string& a
                                     std::to_string(static_cast<long>(std::ceil(*wait))) + " s",
                                 Abuse::room_creation);
   }
+  if (!shares_) shares_.emplace(room_shares_of(context_.config));
   const std::string block = address_group(address);
-  if (const auto why = shares_.may_open(address, block, rooms_.size(), context_.config.max_rooms);
+  if (const auto why = shares_->may_open(address, block, rooms_.size(), context_.config.max_rooms);
       why != RoomShareRefusal::none)
     return RoomOpening::refused(
         why == RoomShareRefusal::reserve ? codec::CloseCode::server_full : codec::CloseCode::rate_limited,
-        share_refusal_text(why, shares_.limits()), Abuse::room_share);
+        share_refusal_text(why, shares_->limits()), Abuse::room_share);
   auto room = start_room(name, false);
-  shares_.opened(name, address, block);
+  shares_->opened(name, address, block);
   lock.unlock();
   if (context_.bus) context_.bus->room_opened(name);
   return RoomOpening::opened(room);
@@ -113,7 +114,7 @@ void RoomRegistry::remove_if_empty(const std::shared_ptr<Room>& room) {
   auto it = rooms_.find(room->name());
   if (it == rooms_.end() || it->second != room) return;
   rooms_.erase(it);
-  shares_.closed(room->name());
+  if (shares_) shares_->closed(room->name());
   room->close();
 }
 
@@ -156,7 +157,8 @@ void RoomRegistry::close_all_rooms() {
     std::lock_guard lock(mutex_);
     closed_ = true;
     rooms.swap(rooms_);
-    for (const auto& [name, room] : rooms) shares_.closed(name);
+    if (shares_)
+      for (const auto& [name, room] : rooms) shares_->closed(name);
   }
   for (auto& [name, room] : rooms) room->close();
 }

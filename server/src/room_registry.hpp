@@ -85,7 +85,9 @@ class RoomRegistry {
   mutable std::mutex mutex_;
   std::map<std::string, std::shared_ptr<Room>> rooms_;
   std::map<const ClientSession*, std::weak_ptr<ClientSession>> sessions_;
-  RoomShares shares_;  ///< who opened the rooms open_for() opened
+  /// Who opened the rooms open_for() opened; made on first use, since the
+  /// context's configuration is filled after the registry is made.
+  std::optional<RoomShares> shares_;
   std::uint64_t next_seed_ = 1;
   bool closed_ = false;  ///< close_all_rooms() ran: the worker pool is to run out of work
 };
