@@ -6,6 +6,7 @@
 // address raise them.
 #include <cstddef>
 
+#include "server_limits.hpp"
 #include "token_bucket.hpp"
 
 namespace fw::server {
@@ -26,6 +27,16 @@ struct AbuseLimits {
   BucketRate uploads{6.0 / 60.0, 6};
   /// Rooms one address may create.
   BucketRate room_creations{5.0 / 60.0, 5};
+  /// Rooms open at once that one address, and one network block
+  /// (address_group(): an IPv4 /24, an IPv6 /48), opened (RoomShares).
+  std::size_t rooms_per_address = 5;
+  std::size_t rooms_per_block = 20;
+  /// Connections one network block may hold on each port (ConnectionShares).
+  std::size_t connections_per_block = limits::kMaxConnectionsPerBlock;
+  /// The share of rooms, and of each port's connections, kept for
+  /// addresses whose block holds none: what a crowd from a few networks
+  /// leaves to everyone else, in percent.
+  std::size_t fresh_share_percent = 10;
   /// Seats one address may hold in one room; 0: half the room size.
   std::size_t seats_per_address = 0;
   /// Upload body bytes being received at once, from one address and in all.

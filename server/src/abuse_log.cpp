@@ -36,6 +36,9 @@ std::string_view abuse_name(Abuse kind) {
     case Abuse::upload_too_slow: return "upload_too_slow";
     case Abuse::photo_too_large: return "photo_too_large";
     case Abuse::cluster_message: return "cluster_message";
+    case Abuse::block_connection_limit: return "block_connection_limit";
+    case Abuse::connection_evicted: return "connection_evicted";
+    case Abuse::room_share: return "room_share";
     case Abuse::count_: break;
   }
   return "unknown";

@@ -41,6 +41,9 @@ enum class Abuse {
   upload_too_slow,           ///< an upload's body slower than --min-upload-bytes-per-second, closed with 408
   photo_too_large,           ///< a photo whose header declares more than --max-photo-pixels, refused undecoded
   cluster_message,           ///< a message on the cluster's Redis channels no node of it could have sent
+  block_connection_limit,    ///< one network block (/24, /48) holds its share of a port's connections
+  connection_evicted,        ///< a connection that had sent nothing useful yet gave its place to a newcomer
+  room_share,                ///< an address or its block holds its share of rooms, or only fresh blocks may open one
   count_,                    ///< not a kind: how many there are
 };
 inline constexpr std::size_t kAbuseKinds = static_cast<std::size_t>(Abuse::count_);

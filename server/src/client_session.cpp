@@ -131,6 +131,18 @@ void ClientSession::do_close(CloseCode code, std::string reason) {
   if (!writing_) write_next();
 }
 
+void ClientSession::give_up_place() {
+  net::post(executor_, [self = shared_from_this()] {
+    if (self->state_ == State::closing || self->state_ == State::closed) return;
+    if (self->state_ != State::greeting)  // its hello came meanwhile: it is told why
+      return self->do_close(CloseCode::server_full, "the server is full; connect again in a moment");
+    // It said nothing, so it reads nothing: the socket goes at once, and
+    // with it the descriptor the newcomer needs.
+    self->state_ = State::closed;
+    self->shutdown_transport(CloseCode::server_full, "the server is full", true);
+  });
+}
+
 void ClientSession::on_transport_error(CloseCode code, const std::string& reason) {
   if (code == CloseCode::protocol_error || code == CloseCode::message_too_large)
     context_.metrics.protocol_errors.fetch_add(1);
@@ -200,7 +212,9 @@ void ClientSession::on_message(std::span<const std::uint8_t> message) {
     return protocol_error(CloseCode::rate_limited, "too many messages; at most 50 a second and 64 KiB a second",
                           Abuse::message_rate);
   switch (state_) {
-    case State::greeting: return handle_hello(message);
+    case State::greeting:
+      on_first_message();
+      return handle_hello(message);
     case State::joining:
       if (early_messages_.size() >= limits::kMaxEarlyMessages)
         return protocol_error(CloseCode::rate_limited, "too many messages before the welcome; wait for it",

@@ -37,6 +37,10 @@ class ClientSession : public RoomConnection, public std::enable_shared_from_this
   std::uint64_t bytes_written() const override { return bytes_written_.load(std::memory_order_relaxed); }
   void close(codec::CloseCode code, std::string reason) override;
   void joined(std::uint32_t avatar, SharedBytes welcome) override;
+  /// The port is full and this connection had said nothing yet when a
+  /// newcomer took its place (ConnectionShares): it closes at once, from
+  /// any thread.
+  void give_up_place();
 
  protected:
   /// The transport is connected: start the clock and read.
@@ -55,6 +59,9 @@ class ClientSession : public RoomConnection, public std::enable_shared_from_this
   /// False, and the connection closing with rate_limited, past them.
   bool note_control_frame(std::size_t bytes);
 
+  /// The first message came (the hello, or what stands for it): from here
+  /// on the connection carries something, and keeps its place on the port.
+  virtual void on_first_message() {}
   virtual void start_reading() = 0;
   /// Writes one message; calls on_write_done when finished. One at a time.
   virtual void start_write(const SharedBytes& message) = 0;

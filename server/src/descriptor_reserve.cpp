@@ -43,4 +43,11 @@ unsigned long raise_descriptor_limit(unsigned long most) {
   return static_cast<unsigned long>(limit.rlim_cur);
 }
 
+std::size_t connections_per_port(unsigned long descriptors, std::size_t ports, std::size_t most) {
+  if (descriptors == 0) return most;  // the limit is unknown
+  const unsigned long for_connections = descriptors > kDescriptorsForFiles ? descriptors - kDescriptorsForFiles : 1;
+  const std::size_t each = static_cast<std::size_t>(for_connections) / std::max<std::size_t>(ports, 1);
+  return std::clamp<std::size_t>(each, 1, most);
+}
+
 }  // namespace fw::server

@@ -6,6 +6,8 @@
 // descriptor back (on /dev/null) so that the listener can give it up,
 // accept a waiting connection, tell it the server is full, close it and
 // take the reserve again, before it waits a moment and accepts again.
+#include <cstddef>
+
 #include <boost/system/error_code.hpp>
 
 namespace fw::server {
@@ -36,5 +38,13 @@ bool is_descriptor_exhaustion(const boost::system::error_code& ec);
 /// holds thousands of connections needs, and the hard limit is what the
 /// operator allowed. Returns the limit in force.
 unsigned long raise_descriptor_limit(unsigned long most);
+
+/// Descriptors kept for what is not a connection: files of the avatar
+/// store, photos, the log, Redis, the reserves.
+inline constexpr unsigned long kDescriptorsForFiles = 64;
+
+/// Connections each of `ports` may hold with `descriptors` open files in
+/// all (kDescriptorsForFiles kept aside), as far as `most`; at least 1.
+std::size_t connections_per_port(unsigned long descriptors, std::size_t ports, std::size_t most);
 
 }  // namespace fw::server

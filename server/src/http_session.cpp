@@ -60,6 +60,17 @@ HttpSession::HttpSession(ServerContext& context, PhotoPreparation& photos, net::
 HttpSession::~HttpSession() { context_.metrics.http_connections.fetch_sub(1); }
 
 void HttpSession::run() {
+  // When the port is full, a connection still waiting for a whole header
+  // gives its place up (ConnectionShares): its socket closes, the read
+  // under way ends, and the session with it.
+  ticket_.on_evict([weak = weak_from_this(), executor = stream_.get_executor()] {
+    net::post(executor, [weak] {
+      if (auto self = weak.lock()) {
+        beast::error_code ignored;
+        self->stream_.socket().close(ignored);
+      }
+    });
+  });
   // Sessions run on their own strand (the socket was accepted onto one).
   net::dispatch(stream_.get_executor(), beast::bind_front_handler(&HttpSession::do_read, shared_from_this()));
 }
@@ -82,6 +93,7 @@ void HttpSession::do_read() {
   // header's deadline starts with the request's first byte.
   reading_ = Reading::idle;
   stream_.expires_after(limits::kIdleTimeout);
+  ticket_.waiting(std::chrono::steady_clock::now() + limits::kIdleTimeout);
   stream_.async_read_some(buffer_.prepare(limits::kMaxHeaderBytes),
                           [self = shared_from_this()](beast::error_code ec, std::size_t bytes) {
                             if (self->answer_read_error(ec)) return;
@@ -96,6 +108,7 @@ void HttpSession::read_header() {
   // the address's share) for this long at most. Set once, not per read.
   reading_ = Reading::header;
   stream_.expires_after(limits::kHeaderTimeout);
+  ticket_.waiting(std::chrono::steady_clock::now() + limits::kHeaderTimeout);
   first_request_ = false;
   // The header first: an upload may be larger than other requests' bodies.
   http::async_read_header(stream_, buffer_, *parser_,
@@ -158,7 +171,8 @@ bool HttpSession::take_forwarded_client() {
                       "request through a proxy refused: the address holds " + std::to_string(per_address) +
                           " connections already");
   Response refusal = error_response(http::status::too_many_requests, parser_->get().version(),
-                                    refusal_reason(Abuse::address_connection_limit, per_address));
+                                    refusal_reason(Abuse::address_connection_limit, per_address,
+                                                   std::chrono::seconds(10)));
   refusal.set(http::field::retry_after, "10");
   send(std::move(refusal));
   return false;
@@ -166,6 +180,8 @@ bool HttpSession::take_forwarded_client() {
 
 void HttpSession::on_header(beast::error_code ec, std::size_t) {
   if (answer_read_error(ec)) return;
+  // A whole header: the connection carries a request, and keeps its place.
+  ticket_.busy(std::chrono::steady_clock::now() + limits::kRequestTimeout);
   if (!take_forwarded_client()) return;
   const auto& header = parser_->get();
   const std::string_view target(header.target().data(), header.target().size());

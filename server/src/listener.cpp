@@ -14,10 +14,11 @@ namespace net = boost::asio;
 namespace beast = boost::beast;
 
 Listener::Listener(ServerContext& context, net::io_context& ioc, const net::ip::tcp::endpoint& endpoint,
-                   SessionFactory factory, Refusal refusal, beast::error_code& ec, const TrustedProxies* proxies)
+                   SessionFactory factory, Refusal refusal, ConnectionShareLimits shares, beast::error_code& ec,
+                   const TrustedProxies* proxies)
     : context_(context), ioc_(ioc), acceptor_(net::make_strand(ioc)), pause_(acceptor_.get_executor()),
-      factory_(std::move(factory)), refusal_(std::move(refusal)),
-      admission_(*context.addresses, limits::kMaxConnections), proxies_(proxies) {
+      factory_(std::move(factory)), refusal_(std::move(refusal)), admission_(*context.addresses, shares),
+      proxies_(proxies) {
   if (acceptor_.open(endpoint.protocol(), ec)) return;
   if (acceptor_.set_option(net::socket_base::reuse_address(true), ec)) return;
   if (acceptor_.bind(endpoint, ec)) return;
@@ -57,30 +58,54 @@ void Listener::on_accept(beast::error_code ec, net::ip::tcp::socket socket) {
   do_accept();
 }
 
-void Listener::admit(net::ip::tcp::socket socket) {
+bool Listener::admit(net::ip::tcp::socket socket, bool must_evict) {
   beast::error_code ec;
   const auto remote = socket.remote_endpoint(ec);
-  if (ec) return;  // already gone; the socket closes here
+  if (ec) return false;  // already gone; the socket closes here
+  const std::string peer = remote.address().to_string();
   // A trusted proxy carries many people's connections: its own address is
   // no one's share, and the session counts each request's client instead.
   const bool proxied = proxies_ && proxies_->contains(remote.address());
-  Admission admission =
-      proxied ? admission_.admit_from_trusted_proxy() : admission_.admit(address_key(remote.address()));
+  const auto now = std::chrono::steady_clock::now();
+  Admission admission = proxied ? admission_.admit_from_trusted_proxy(now, must_evict)
+                                : admission_.admit(address_key(remote.address()), now, must_evict);
   if (!admission.ticket) {
-    refuse(socket, admission.refusal);
-    const std::string what =
-        admission.refusal == Abuse::address_connection_limit
-            ? "connection refused: the address holds " + std::to_string(admission_.per_address()) + " already"
-            : "connection refused: " + std::to_string(admission_.max_total()) + " connections open on this port";
-    context_.abuse.note(admission.refusal, remote.address().to_string(), what);
-    return;
+    refuse(socket, admission);
+    const std::string again = "; told to try again in " + std::to_string(admission.retry_after.count()) + " s";
+    switch (admission.refusal) {
+      case Abuse::address_connection_limit:
+        context_.abuse.note(admission.refusal, peer,
+                            "connection refused: the address holds " + std::to_string(admission_.per_address()) +
+                                " already" + again);
+        break;
+      case Abuse::block_connection_limit:
+        context_.abuse.note(admission.refusal, peer,
+                            "connection refused: its network holds " + std::to_string(admission_.per_block()) +
+                                " on this port already" + again);
+        break;
+      case Abuse::descriptors_exhausted: break;  // counted and logged by the caller, at most once a second
+      default:
+        context_.abuse.note(admission.refusal, peer,
+                            "connection refused: " + std::to_string(admission_.open()) + " of " +
+                                std::to_string(admission_.max_total()) +
+                                " connections open on this port, none of them a waiting one from a larger "
+                                "network" + again);
+    }
+    return false;
   }
+  if (!admission.evicted.empty())
+    context_.abuse.note(Abuse::connection_evicted, admission.evicted,
+                        std::string(must_evict ? "no file descriptor left" : "the port is full") +
+                            ": a connection that had sent nothing useful yet gave its place to " + peer);
   factory_(std::move(socket), std::move(*admission.ticket));
+  return true;
 }
 
-void Listener::refuse(net::ip::tcp::socket& socket, Abuse why) {
+void Listener::refuse(net::ip::tcp::socket& socket, const Admission& admission) {
   beast::error_code ignored;
-  const std::string answer = refusal_(why, admission_.per_address());
+  const std::size_t share = admission.refusal == Abuse::block_connection_limit ? admission_.per_block()
+                                                                               : admission_.per_address();
+  const std::string answer = refusal_(admission.refusal, share, admission.retry_after);
   socket.non_blocking(true, ignored);
   socket.send(net::buffer(answer), 0, ignored);
   socket.shutdown(net::ip::tcp::socket::shutdown_both, ignored);
@@ -89,8 +114,11 @@ void Listener::refuse(net::ip::tcp::socket& socket, Abuse why) {
 
 void Listener::on_descriptors_exhausted(const beast::error_code& ec) {
   // The connection that failed is still queued, and so may be more: with
-  // the reserve descriptor free, each can be accepted long enough to be
-  // told the server is full, instead of waiting in the queue for nothing.
+  // the reserve descriptor free, each can be accepted and looked at. One
+  // from a network that holds fewer stays in the place of a connection that
+  // had sent nothing useful yet (whose descriptor frees in a moment); the
+  // rest are told the server is full and when to try again, instead of
+  // waiting in the queue for nothing.
   reserve_.restore();  // if another thread took it last time
   int refused = 0;
   std::string peer = "(no peer)";
@@ -101,8 +129,7 @@ void Listener::on_descriptors_exhausted(const beast::error_code& ec) {
     if (!accept_ec) {
       beast::error_code ignored;
       peer = socket.remote_endpoint(ignored).address().to_string();
-      refuse(socket, Abuse::descriptors_exhausted);
-      ++refused;
+      if (!admit(std::move(socket), true)) ++refused;
     }
     reserve_.restore();  // may fail if another thread took the descriptor: tried again next time
     if (accept_ec) break;  // nothing waits any more, or no descriptor after all

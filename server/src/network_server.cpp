@@ -34,6 +34,18 @@ namespace net = boost::asio;
 /// Two ports of limits::kMaxConnections each, and files besides.
 constexpr unsigned long kDescriptorsWanted = 2 * limits::kMaxConnections + 1024;
 
+/// Each port's places (ConnectionShares): --max-connections, or fewer when
+/// the open-files limit allows fewer, so that a port fills (and a newcomer
+/// takes the place of a connection that waits) before descriptors run out.
+ConnectionShareLimits port_shares(const ServerConfig& config, unsigned long descriptors) {
+  ConnectionShareLimits shares;
+  const std::size_t ports = config.tcp.empty() ? 1 : 2;
+  shares.max_total = connections_per_port(descriptors, ports, config.max_connections);
+  shares.per_block = config.abuse.connections_per_block;
+  shares.fresh_reserve = shares.max_total * config.abuse.fresh_share_percent / 100;
+  return shares;
+}
+
 int cannot_start(const std::string& why) {
   std::cerr << "facewire-server: " << why << "\n";
   return 2;
@@ -43,7 +55,7 @@ int cannot_start(const std::string& why) {
 /// `proxies`: whose connections its sessions count by the client they forward (Listener).
 std::shared_ptr<Listener> listen(net::io_context& ioc, ServerContext& context, const std::string& flag,
                                  const std::string& address, Listener::SessionFactory factory,
-                                 Listener::Refusal refusal, std::string& error,
+                                 Listener::Refusal refusal, ConnectionShareLimits shares, std::string& error,
                                  const TrustedProxies* proxies = nullptr) {
   const auto endpoint = parse_endpoint(address, error);
   if (!endpoint) {
@@ -52,7 +64,8 @@ std::shared_ptr<Listener> listen(net::io_context& ioc, ServerContext& context, c
   }
   boost::beast::error_code ec;
   auto listener =
-      std::make_shared<Listener>(context, ioc, *endpoint, std::move(factory), std::move(refusal), ec, proxies);
+      std::make_shared<Listener>(context, ioc, *endpoint, std::move(factory), std::move(refusal), shares, ec,
+                                 proxies);
   if (ec) {
     error = "cannot listen on " + address + ": " + ec.message() +
             " (is another server using the port? choose another with " + flag + " ADDR:PORT)";
@@ -77,7 +90,11 @@ struct Listeners {
 };
 
 bool open_listeners(net::io_context& ioc, ServerContext& context, PhotoPreparation& photos, Listeners& listeners,
-                    std::string& error) {
+                    unsigned long descriptors, std::string& error) {
+  const ConnectionShareLimits shares = port_shares(context.config, descriptors);
+  if (shares.max_total < context.config.max_connections)
+    spdlog::info("open files limited to {}: {} connections at most on each port (ulimit -n)", descriptors,
+                 shares.max_total);
   // Each session keeps its connection's ticket until the connection closes.
   const auto http_session = [&context, &photos](net::ip::tcp::socket&& socket, ConnectionTicket&& ticket) {
     std::make_shared<HttpSession>(context, photos, std::move(socket), std::move(ticket))->run();
@@ -88,11 +105,11 @@ bool open_listeners(net::io_context& ioc, ServerContext& context, PhotoPreparati
     std::make_shared<TcpSession>(context, std::move(socket), std::move(peer), std::move(ticket))->run();
   };
   // Only HTTP requests name a forwarded client; the TCP port has no headers.
-  listeners.http = listen(ioc, context, "--http", context.config.http, http_session, http_refusal, error,
+  listeners.http = listen(ioc, context, "--http", context.config.http, http_session, http_refusal, shares, error,
                           &context.config.trusted_proxies);
   if (!listeners.http) return false;
   if (context.config.tcp.empty()) return true;
-  listeners.tcp = listen(ioc, context, "--tcp", context.config.tcp, tcp_session, tcp_refusal, error);
+  listeners.tcp = listen(ioc, context, "--tcp", context.config.tcp, tcp_session, tcp_refusal, shares, error);
   return listeners.tcp != nullptr;
 }
 
@@ -136,8 +153,6 @@ void run_io_threads(net::io_context& ioc, int threads) {
 int run_network_server(const ServerConfig& config) {
   // Each connection takes a descriptor; the soft limit is often far below what the operator allows.
   const unsigned long descriptors = raise_descriptor_limit(kDescriptorsWanted);
-  if (descriptors < 2 * limits::kMaxConnections)
-    spdlog::info("open files limited to {}: connections beyond about that many are refused (ulimit -n)", descriptors);
   ServerCore core(config);
   std::string error;
   if (!core.open(error)) return cannot_start(error);
@@ -147,7 +162,7 @@ int run_network_server(const ServerConfig& config) {
   AvatarRepreparation repreparation(core.context(), photo_worker);
   AvatarSweeper sweeper(core.context());  // --avatar-retention-days
   Listeners listeners;
-  if (!open_listeners(ioc, core.context(), photos, listeners, error)) return cannot_start(error);
+  if (!open_listeners(ioc, core.context(), photos, listeners, descriptors, error)) return cannot_start(error);
   std::unique_ptr<ClusterNode> cluster;
   if (!config.redis.empty()) {
     // Before the loop runs (no request is served yet): the cluster's server

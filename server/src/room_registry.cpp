@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "client_session.hpp"
+#include "peer_address.hpp"
 #include "room.hpp"
 #include "room_bus.hpp"
 
@@ -16,6 +17,32 @@ bool is_valid_room_name(std::string_view name) {
       return false;
   return true;
 }
+
+namespace {
+
+RoomShareLimits room_shares_of(const ServerConfig& config) {
+  RoomShareLimits limits;
+  limits.per_address = config.abuse.rooms_per_address;
+  limits.per_block = config.abuse.rooms_per_block;
+  limits.fresh_reserve = config.max_rooms * config.abuse.fresh_share_percent / 100;
+  return limits;
+}
+
+/// What a person refused a new room by its shares reads, and what to do.
+std::string share_refusal_text(RoomShareRefusal why, const RoomShareLimits& limits) {
+  switch (why) {
+    case RoomShareRefusal::address:
+      return "your address has " + std::to_string(limits.per_address) +
+             " rooms open already; join one that exists, or open one when one of yours closes";
+    case RoomShareRefusal::block:
+      return "your network has " + std::to_string(limits.per_block) +
+             " rooms open already; join one that exists, or open one when one of them closes";
+    default:
+      return "the server's last free rooms are kept for networks that hold none; join one that exists, or try later";
+  }
+}
+
+}  // namespace
 
 RoomRegistry::RoomRegistry(ServerContext& context) : context_(context) {}
 RoomRegistry::~RoomRegistry() = default;
@@ -67,7 +94,15 @@ RoomOpening RoomRegistry::open_for(const std::string& name, const std::string& a
                                     std::to_string(static_cast<long>(std::ceil(*wait))) + " s",
                                 Abuse::room_creation);
   }
+  if (!shares_) shares_.emplace(room_shares_of(context_.config));
+  const std::string block = address_group(address);
+  if (const auto why = shares_->may_open(address, block, rooms_.size(), context_.config.max_rooms);
+      why != RoomShareRefusal::none)
+    return RoomOpening::refused(
+        why == RoomShareRefusal::reserve ? codec::CloseCode::server_full : codec::CloseCode::rate_limited,
+        share_refusal_text(why, shares_->limits()), Abuse::room_share);
   auto room = start_room(name, false);
+  shares_->opened(name, address, block);
   lock.unlock();
   if (context_.bus) context_.bus->room_opened(name);
   return RoomOpening::opened(room);
@@ -79,6 +114,7 @@ void RoomRegistry::remove_if_empty(const std::shared_ptr<Room>& room) {
   auto it = rooms_.find(room->name());
   if (it == rooms_.end() || it->second != room) return;
   rooms_.erase(it);
+  if (shares_) shares_->closed(room->name());
   room->close();
 }
 
@@ -121,6 +157,8 @@ void RoomRegistry::close_all_rooms() {
     std::lock_guard lock(mutex_);
     closed_ = true;
     rooms.swap(rooms_);
+    if (shares_)
+      for (const auto& [name, room] : rooms) shares_->closed(name);
   }
   for (auto& [name, room] : rooms) room->close();
 }

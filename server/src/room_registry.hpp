@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "fw/codec/messages.hpp"
+#include "room_shares.hpp"
 #include "server_context.hpp"
 
 namespace fw::server {
@@ -56,8 +57,9 @@ class RoomRegistry {
   std::shared_ptr<Room> find_or_create(const std::string& name, bool persistent = false, bool place = true);
   /// The room called `name` for a person from `address` (address_key()):
   /// created if needed, when that address may still create rooms
-  /// (AbuseLimits::room_creations) and the server holds fewer than its
-  /// maximum.
+  /// (AbuseLimits::room_creations), it and its block hold fewer than their
+  /// shares of open rooms (RoomShares), and the server holds fewer than its
+  /// maximum (its last rooms only for a block that holds none).
   RoomOpening open_for(const std::string& name, const std::string& address);
   /// The room called `name` if this node holds it (owned or bridged).
   std::shared_ptr<Room> find(const std::string& name) const;
@@ -83,6 +85,9 @@ class RoomRegistry {
   mutable std::mutex mutex_;
   std::map<std::string, std::shared_ptr<Room>> rooms_;
   std::map<const ClientSession*, std::weak_ptr<ClientSession>> sessions_;
+  /// Who opened the rooms open_for() opened; made on first use, since the
+  /// context's configuration is filled after the registry is made.
+  std::optional<RoomShares> shares_;
   std::uint64_t next_seed_ = 1;
   bool closed_ = false;  ///< close_all_rooms() ran: the worker pool is to run out of work
 };

@@ -64,6 +64,15 @@ void add_room_flags(CLI::App& cmd, ServerConfig& config) {
       ->check(CLI::Range(1, 64))
       ->capture_default_str();
   cmd.add_option("--max-rooms", config.max_rooms, "rooms at once")->check(CLI::Range(1, 100000))->capture_default_str();
+  cmd.add_option_function<double>(
+         "--idle-seat-seconds",
+         [&config](double seconds) {
+           config.timeouts.idle_person = std::chrono::milliseconds(static_cast<long>(seconds * 1000));
+         },
+         "a person who neither sends (pings aside) nor reads for this long is let go, and their seat and a room "
+         "only they hold with them (default " +
+             std::to_string(std::chrono::seconds(limits::kIdlePersonTimeout).count()) + ")")
+      ->check(CLI::Range(0.1, 86400.0));
   cmd.add_flag("!--no-demo-room", config.demo_room, "do not open the demo room 'lobby'");
 }
 
@@ -142,6 +151,10 @@ void add_rate_flag(CLI::App& cmd, const std::string& flag, BucketRate& rate, dou
 
 void add_address_limit_flags(CLI::App& cmd, ServerConfig& config) {
   AbuseLimits& abuse = config.abuse;
+  cmd.add_option("--max-connections", config.max_connections,
+                 "connections open at once on each port (fewer if the open-files limit allows fewer)")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{1'000'000}))
+      ->capture_default_str();
   cmd.add_option("--max-connections-per-address", abuse.connections_per_address,
                  "connections open at once from one address (IPv6: one /64)")
       ->check(CLI::Range(std::size_t{1}, std::size_t{1'000'000}))
@@ -152,6 +165,21 @@ void add_address_limit_flags(CLI::App& cmd, ServerConfig& config) {
   add_rate_flag(cmd, "--room-joins-per-minute", abuse.room_joins, 60, "joins into one room a minute, from everyone");
   add_rate_flag(cmd, "--uploads-per-minute", abuse.uploads, 60, "uploads from one address a minute");
   add_rate_flag(cmd, "--rooms-per-hour", abuse.room_creations, 3600, "rooms one address may create an hour");
+  cmd.add_option("--max-connections-per-block", abuse.connections_per_block,
+                 "connections open at once on each port from one network block (IPv4 /24, IPv6 /48)")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{1'000'000}))
+      ->capture_default_str();
+  cmd.add_option("--rooms-per-address", abuse.rooms_per_address, "rooms open at once that one address opened")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{100'000}))
+      ->capture_default_str();
+  cmd.add_option("--rooms-per-block", abuse.rooms_per_block,
+                 "rooms open at once that one network block (IPv4 /24, IPv6 /48) opened")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{100'000}))
+      ->capture_default_str();
+  cmd.add_option("--fresh-share-percent", abuse.fresh_share_percent,
+                 "percent of rooms and of each port's connections kept for networks that hold none")
+      ->check(CLI::Range(std::size_t{0}, std::size_t{50}))
+      ->capture_default_str();
   cmd.add_option("--seats-per-address", abuse.seats_per_address,
                  "seats one address may hold in one room (0: half the room size)")
       ->capture_default_str();

@@ -19,7 +19,8 @@ struct SessionTimeouts {
   std::chrono::milliseconds idle = limits::kSessionIdleTimeout;
   std::chrono::milliseconds close = limits::kCloseTimeout;
   /// A person who neither sends anything but pings nor reads what waits
-  /// for them this long is let go: a seat held for nothing.
+  /// for them this long is let go: a seat held for nothing
+  /// (--idle-seat-seconds).
   std::chrono::milliseconds idle_person = limits::kIdlePersonTimeout;
 };
 
@@ -32,6 +33,9 @@ struct ServerConfig {
   int tick_hz = 30;
   std::size_t room_size = 16;
   std::size_t max_rooms = 1000;
+  /// Connections open at once on each port (ConnectionShares); fewer when
+  /// the open-files limit allows fewer.
+  std::size_t max_connections = limits::kMaxConnections;
   std::uint32_t default_client_bps = 64000;
   std::uint32_t max_client_bps = 1'000'000;
   std::size_t max_upload_bytes = 4 * 1024 * 1024;

@@ -33,12 +33,17 @@ inline constexpr std::chrono::seconds kIdleTimeout{30};
 /// Connections open at once on each port, from accept to close (HTTP,
 /// WebSocket and TCP, greeting or in a room); more are refused.
 inline constexpr std::size_t kMaxConnections = 2048;
+/// Of those, what one network block (address_group(): an IPv4 /24, an IPv6
+/// /48) may hold: eight blocks, not one, to fill a port.
+inline constexpr std::size_t kMaxConnectionsPerBlock = 256;
 
 // Room connections.
 inline constexpr std::chrono::seconds kHandshakeTimeout{5};
 inline constexpr std::chrono::seconds kSessionIdleTimeout{60};
-/// A person who sends nothing but pings and reads nothing is let go after this.
-inline constexpr std::chrono::minutes kIdlePersonTimeout{5};
+/// A person who sends nothing but pings and reads nothing is let go after
+/// this (--idle-seat-seconds): their seat, and a room only they hold, go
+/// to someone who is there.
+inline constexpr std::chrono::minutes kIdlePersonTimeout{2};
 /// An avatar id rests this long after its avatar left before a newcomer gets it.
 inline constexpr std::chrono::seconds kAvatarIdQuiet{60};
 /// How long a closing message may take before the socket is closed anyway.

@@ -20,6 +20,12 @@ std::size_t TcpSession::framing_bytes(std::size_t message_bytes) const {
 }
 
 void TcpSession::run() {
+  // Until its hello the connection may give its place up to a newcomer
+  // when the port is full (ConnectionShares).
+  ticket_.waiting(std::chrono::steady_clock::now() + context_.config.timeouts.handshake);
+  ticket_.on_evict([weak = weak_from_this()] {
+    if (auto session = weak.lock()) session->give_up_place();
+  });
   net::post(executor_, [self = std::static_pointer_cast<TcpSession>(shared_from_this())] {
     boost::system::error_code ignored;
     self->socket_.set_option(net::ip::tcp::no_delay(true), ignored);
@@ -30,6 +36,8 @@ void TcpSession::run() {
     self->start();
   });
 }
+
+void TcpSession::on_first_message() { ticket_.busy(); }
 
 void TcpSession::start_reading() {
   socket_.async_read_some(net::buffer(read_buffer_),

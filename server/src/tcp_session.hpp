@@ -20,6 +20,7 @@ class TcpSession : public ClientSession {
   std::size_t framing_bytes(std::size_t message_bytes) const override;
 
  private:
+  void on_first_message() override;
   void start_reading() override;
   void start_write(const SharedBytes& message) override;
   void shutdown_transport(codec::CloseCode code, const std::string& reason, bool abort) override;

@@ -65,6 +65,12 @@ void WebSocketSession::run(beast::http::request<beast::http::string_body> reques
     note_control_frame(payload.size() + kControlFrameHeaderBytes);
   });
   auto self = std::static_pointer_cast<WebSocketSession>(shared_from_this());
+  // Until its hello the connection may give its place up to a newcomer
+  // when the port is full (ConnectionShares).
+  ticket_.waiting(std::chrono::steady_clock::now() + context_.config.timeouts.handshake);
+  ticket_.on_evict([weak = std::weak_ptr<WebSocketSession>(self)] {
+    if (auto session = weak.lock()) session->give_up_place();
+  });
   ws_.async_accept(request, [self](beast::error_code ec) {
     if (ec) {
       // Beast answered a bad upgrade request with 400 itself.
@@ -76,6 +82,8 @@ void WebSocketSession::run(beast::http::request<beast::http::string_body> reques
     self->start();
   });
 }
+
+void WebSocketSession::on_first_message() { ticket_.busy(); }
 
 void WebSocketSession::start_reading() {
   ws_.async_read(buffer_, beast::bind_front_handler(&WebSocketSession::on_read,

@@ -7,6 +7,7 @@
 
 #include "connection_admission.hpp"
 #include "connection_refusal.hpp"
+#include "descriptor_reserve.hpp"
 #include "fw/codec/messages.hpp"
 
 namespace fw::server {
@@ -91,18 +92,25 @@ TEST(ConnectionAdmission, AProxysConnectionCountsAgainstTheClientItForwards) {
 }
 
 TEST(ConnectionRefusal, HttpSaysWhyAndWhenToComeBack) {
-  const std::string address = http_refusal(Abuse::address_connection_limit, 64);
+  const std::string address = http_refusal(Abuse::address_connection_limit, 64, std::chrono::seconds(7));
   EXPECT_EQ(address.rfind("HTTP/1.1 429 ", 0), 0u);
-  EXPECT_NE(address.find("Retry-After: "), std::string::npos);
+  EXPECT_NE(address.find("Retry-After: 7\r\n"), std::string::npos);
   EXPECT_NE(address.find("at most 64 at once"), std::string::npos);
+  EXPECT_NE(address.find("try again in 7 s"), std::string::npos);
   const auto body = address.substr(address.find("\r\n\r\n") + 4);
   EXPECT_NE(address.find("Content-Length: " + std::to_string(body.size()) + "\r\n"), std::string::npos);
-  EXPECT_EQ(http_refusal(Abuse::descriptors_exhausted, 64).rfind("HTTP/1.1 503 ", 0), 0u);
-  EXPECT_EQ(http_refusal(Abuse::connection_limit, 64).rfind("HTTP/1.1 503 ", 0), 0u);
+  const std::string block = http_refusal(Abuse::block_connection_limit, 256, std::chrono::seconds(3));
+  EXPECT_EQ(block.rfind("HTTP/1.1 429 ", 0), 0u);
+  EXPECT_NE(block.find("from your network (at most 256 at once)"), std::string::npos);
+  EXPECT_EQ(http_refusal(Abuse::descriptors_exhausted, 64, std::chrono::seconds(2)).rfind("HTTP/1.1 503 ", 0), 0u);
+  const std::string full = http_refusal(Abuse::connection_limit, 64, std::chrono::seconds(9));
+  EXPECT_EQ(full.rfind("HTTP/1.1 503 ", 0), 0u);
+  EXPECT_NE(full.find("Retry-After: 9\r\n"), std::string::npos);
+  EXPECT_NE(full.find("try again in 9 s"), std::string::npos);
 }
 
 TEST(ConnectionRefusal, TcpSendsAClosingMessage) {
-  const std::string framed = tcp_refusal(Abuse::address_connection_limit, 8);
+  const std::string framed = tcp_refusal(Abuse::address_connection_limit, 8, std::chrono::seconds(4));
   codec::TcpDeframer deframer{codec::kMaxDownstreamMessageBytes};
   deframer.feed({reinterpret_cast<const std::uint8_t*>(framed.data()), framed.size()});
   std::span<const std::uint8_t> message;
@@ -111,13 +119,54 @@ TEST(ConnectionRefusal, TcpSendsAClosingMessage) {
   ASSERT_EQ(codec::read_message(message, closing), codec::MessageError::ok);
   EXPECT_EQ(closing.code, codec::CloseCode::rate_limited);
   EXPECT_NE(closing.reason.find("too many connections"), std::string::npos);
+  EXPECT_NE(closing.reason.find("try again in 4 s"), std::string::npos);
   EXPECT_LE(closing.reason.size(), codec::kMaxReasonBytes);
-  const std::string full = tcp_refusal(Abuse::connection_limit, 8);
+  const std::string full = tcp_refusal(Abuse::connection_limit, 8, std::chrono::seconds(6));
   deframer = codec::TcpDeframer{codec::kMaxDownstreamMessageBytes};
   deframer.feed({reinterpret_cast<const std::uint8_t*>(full.data()), full.size()});
   ASSERT_EQ(deframer.next(message), codec::TcpDeframer::Status::message);
   ASSERT_EQ(codec::read_message(message, closing), codec::MessageError::ok);
   EXPECT_EQ(closing.code, codec::CloseCode::server_full);
+  EXPECT_NE(closing.reason.find("try again in 6 s"), std::string::npos);
+}
+
+TEST(ConnectionAdmission, ABlockHoldsItsShareOfThePortAndTheAddressIsNotCharged) {
+  AddressLimits addresses(limits_of(10));
+  ConnectionAdmission admission(addresses, ConnectionShareLimits{100, 2, 0});
+  auto a = admission.admit("10.0.0.1");
+  auto b = admission.admit("10.0.0.2");
+  ASSERT_TRUE(a.ticket && b.ticket);
+  const auto c = admission.admit("10.0.0.3");
+  EXPECT_FALSE(c.ticket);
+  EXPECT_EQ(c.refusal, Abuse::block_connection_limit);
+  EXPECT_EQ(addresses.connections("10.0.0.3"), 0u) << "nothing counted against the refused address";
+  EXPECT_TRUE(admission.admit("10.0.1.3").ticket) << "the next /24";
+}
+
+TEST(ConnectionAdmission, ATicketThatGaveItsPlaceUpIsClosedAndCountedNoMore) {
+  AddressLimits addresses(limits_of(10));
+  ConnectionAdmission admission(addresses, ConnectionShareLimits{2, 100, 0});
+  auto a = admission.admit("10.0.0.1");
+  auto b = admission.admit("10.0.0.2");
+  bool closed = false;
+  a.ticket->on_evict([&closed] { closed = true; });
+  b.ticket->busy();
+  const auto person = admission.admit("192.0.2.1");
+  ASSERT_TRUE(person.ticket);
+  EXPECT_EQ(person.evicted, "10.0.0.1");
+  EXPECT_TRUE(closed);
+  EXPECT_EQ(admission.open(), 2u);
+  EXPECT_EQ(addresses.connections("10.0.0.1"), 1u) << "its address counts it until it is gone";
+  a.ticket.reset();
+  EXPECT_EQ(addresses.connections("10.0.0.1"), 0u);
+  EXPECT_EQ(admission.open(), 2u);
+}
+
+TEST(DescriptorLimit, EachPortGetsItsPartOfTheOpenFilesLimit) {
+  EXPECT_EQ(connections_per_port(1024, 2, 2048), (1024 - kDescriptorsForFiles) / 2);
+  EXPECT_EQ(connections_per_port(1024, 1, 2048), 1024 - kDescriptorsForFiles);
+  EXPECT_EQ(connections_per_port(1u << 20, 2, 2048), 2048u) << "never more than asked";
+  EXPECT_EQ(connections_per_port(10, 2, 2048), 1u) << "at least one";
 }
 
 }  // namespace
