@@ -136,7 +136,10 @@ bool AvatarStore::remove(const std::string& asset) {
   const bool removed = remove_here(asset);
   // Also when only the cluster had it: the copy goes, and every node is told.
   if (replica_.remove) replica_.remove(asset);
-  if (removed) spdlog::info("avatar {} deleted by its uploader", asset);
+  if (removed) {
+    spdlog::info("avatar {} deleted by its uploader", asset);
+    metrics_.deleted_avatars.fetch_add(1);
+  }
   return removed;
 }
 
@@ -255,6 +258,7 @@ std::vector<std::string> AvatarStore::remove_unused_since(std::filesystem::file_
       last_noted_.erase(asset);
     }
     removed.push_back(asset);
+    metrics_.expired_avatars.fetch_add(1);
   }
   return removed;
 }

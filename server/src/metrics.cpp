@@ -53,6 +53,10 @@ std::string Metrics::render(double physics_share, const AbuseLog& abuse) const {
          outdated_avatars.load());
   family("facewire_damaged_avatars_total", "counter", "Stored avatar packages found corrupt and refused.",
          damaged_avatars.load());
+  family("facewire_deleted_avatars_total", "counter", "Avatars and their photos deleted by their uploader on this node.",
+         deleted_avatars.load());
+  family("facewire_expired_avatars_total", "counter",
+         "Avatars and their photos deleted after --avatar-retention-days without a use.", expired_avatars.load());
 
   out << "# HELP facewire_refusals_total Requests, connections and messages refused or cut off, by kind.\n"
       << "# TYPE facewire_refusals_total counter\n";

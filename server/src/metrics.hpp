@@ -33,6 +33,8 @@ struct Metrics {
   std::atomic<std::uint64_t> repreparation_failures{0};
   std::atomic<std::uint64_t> outdated_avatars{0};
   std::atomic<std::uint64_t> damaged_avatars{0};  ///< stored packages found corrupt
+  std::atomic<std::uint64_t> deleted_avatars{0};  ///< deleted by their uploader (here, not on other nodes)
+  std::atomic<std::uint64_t> expired_avatars{0};  ///< swept after --avatar-retention-days unused
 
   /// Upper bounds of the tick-duration buckets in seconds (simulation and
   /// encoding of one room tick).

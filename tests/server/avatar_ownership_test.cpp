@@ -273,6 +273,7 @@ TEST(AvatarOwnership, OnlyTheUploaderDeletesAndWhoWoreItIsShownWithAProceduralFa
   const auto metrics = get_from(kAlice, port, "/metrics");
   EXPECT_NE(metrics.body.find("facewire_refusals_total{kind=\"face_not_yours\"} 2"), std::string::npos)
       << "the deletions without the key";
+  EXPECT_NE(metrics.body.find("facewire_deleted_avatars_total 1"), std::string::npos);
 }
 
 }  // namespace

@@ -127,6 +127,7 @@ TEST_F(StoreDirectory, ADeletedAvatarIsGoneWithItsPhotoAndStaysGone) {
   const auto kept = store.put(package, error);  // a copy: another avatar, untouched
   ASSERT_TRUE(kept) << error;
   EXPECT_TRUE(store.remove(stored->asset));
+  EXPECT_EQ(metrics_.deleted_avatars.load(), 1u);
   for (const char* suffix : {".fwa", ".preview.fwa", ".photo"})
     EXPECT_FALSE(std::filesystem::exists(file(stored->asset, suffix))) << suffix;
   const AvatarLookup gone = store.lookup(stored->asset);
@@ -162,6 +163,7 @@ TEST_F(StoreDirectory, AvatarsUnusedForTheRetentionPeriodAreSweptWithTheirPhotos
     std::filesystem::last_write_time(file(asset, ".fwa"), now - std::chrono::hours(24 * 31));
   const auto removed = store.remove_unused_since(*thirty_days.cutoff(now), {own->asset});
   ASSERT_EQ(removed, std::vector<std::string>{stale->asset});
+  EXPECT_EQ(metrics_.expired_avatars.load(), 1u);
   EXPECT_FALSE(std::filesystem::exists(file(stale->asset, ".photo")));
   EXPECT_FALSE(std::filesystem::exists(file(stale->asset, ".fwa")));
   EXPECT_EQ(store.lookup(stale->asset).status, AvatarStatus::unknown);
