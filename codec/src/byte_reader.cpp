@@ -46,7 +46,9 @@ std::uint32_t ByteReader::varint(std::size_t max_bytes) {
       return value;
     }
   }
+  // Longer than the field allows, overlong or too wide: the bytes were there.
   failed_ = true;
+  bad_number_ = true;
   return 0;
 }
 

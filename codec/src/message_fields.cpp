@@ -48,7 +48,7 @@ void read_string(ByteReader& r, std::size_t max_bytes, std::string& out, Message
   out.clear();
   const std::uint32_t length = r.varint(3);
   if (r.failed()) {
-    if (error == MessageError::ok) error = MessageError::truncated;
+    if (error == MessageError::ok) error = failure_of(r);
     return;
   }
   if (length > max_bytes) {

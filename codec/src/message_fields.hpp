@@ -33,6 +33,12 @@ void read_string(ByteReader& r, std::size_t max_bytes, std::string& out, Message
 std::uint32_t read_u32_le(ByteReader& r);
 std::uint64_t read_u64_le(ByteReader& r);
 
+/// Why a failed reader failed: a number written wrongly (bad_number), or
+/// bytes that ran out (truncated).
+inline MessageError failure_of(const ByteReader& r) {
+  return r.bad_number() ? MessageError::bad_number : MessageError::truncated;
+}
+
 /// The first-byte check of every reader.
 MessageError check_first_byte(ByteReader& r, std::size_t size, MessageType expected, std::size_t max_bytes);
 

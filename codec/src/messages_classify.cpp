@@ -43,6 +43,8 @@ std::string_view describe(MessageError error) {
     case MessageError::too_many_entries: return "a list holds more entries than allowed";
     case MessageError::unsupported_version: return "another protocol version";
     case MessageError::bad_flags: return "reserved flag bits are set";
+    case MessageError::bad_number:
+      return "a number is written in more bytes than it needs or than its field allows (each has one encoding)";
   }
   return "unknown message error";
 }

@@ -12,7 +12,7 @@ using namespace message_fields;
 /// else a cut, else trailing bytes.
 MessageError finish(const ByteReader& r, MessageError error) {
   if (error != MessageError::ok) return error;
-  if (r.failed()) return MessageError::truncated;
+  if (r.failed()) return failure_of(r);
   if (r.remaining() != 0) return MessageError::trailing_bytes;
   return MessageError::ok;
 }
@@ -63,7 +63,7 @@ MessageError read_message(std::span<const std::uint8_t> bytes, Hello& m) {
   if (auto e = check_first_byte(r, bytes.size(), MessageType::hello, kMaxUpstreamMessageBytes); e != MessageError::ok)
     return e;
   m.protocol_version = r.u16_le();
-  if (r.failed()) return MessageError::truncated;
+  if (r.failed()) return failure_of(r);
   // Another version may lay out the rest differently: stop here.
   if (m.protocol_version != kProtocolVersion) return MessageError::unsupported_version;
   MessageError error = MessageError::ok;
@@ -88,7 +88,7 @@ MessageError read_message(std::span<const std::uint8_t> bytes, Welcome& m) {
       e != MessageError::ok)
     return e;
   m.protocol_version = r.u16_le();
-  if (r.failed()) return MessageError::truncated;
+  if (r.failed()) return failure_of(r);
   if (m.protocol_version != kProtocolVersion) return MessageError::unsupported_version;
   MessageError error = MessageError::ok;
   m.you = read_bounded(r, 3, kMaxAvatarIdValue, error);
@@ -135,7 +135,7 @@ MessageError read_message(std::span<const std::uint8_t> bytes, Command& m) {
   MessageError error = MessageError::ok;
   m.request_id = r.varint(5);
   const std::uint8_t kind = r.u8();
-  if (r.failed()) return MessageError::truncated;
+  if (r.failed()) return failure_of(r);
   if (kind > static_cast<std::uint8_t>(Command::Kind::facs)) return MessageError::value_out_of_range;
   m.kind = static_cast<Command::Kind>(kind);
   m.emotion.clear();
@@ -184,7 +184,7 @@ MessageError read_message(std::span<const std::uint8_t> bytes, PackageChunk& m) 
   m.quality = static_cast<PackageChunk::Quality>(quality);
   m.total_bytes = read_bounded(r, 4, kMaxPackageBytes, error);
   m.offset = r.varint(4);
-  if (r.failed()) return MessageError::truncated;
+  if (r.failed()) return failure_of(r);
   if (error != MessageError::ok) return error;
   const std::size_t size = r.remaining();
   if (m.total_bytes == 0 || size == 0 || size > kMaxChunkBytes ||
@@ -254,7 +254,7 @@ MessageError read_message(std::span<const std::uint8_t> bytes, TimedRoomFrame& m
     return e;
   m.tick = r.varint(5);
   m.server_time_us = read_u64_le(r);
-  if (r.failed()) return MessageError::truncated;
+  if (r.failed()) return failure_of(r);
   if (r.remaining() == 0) return MessageError::truncated;
   m.room_frame = r.bytes(r.remaining());
   return MessageError::ok;

@@ -34,20 +34,32 @@ enum class Abuse {
   face_not_yours,            ///< a hello naming an asset without its secret
   bad_name,                  ///< a display name with control, bidi or zero-width characters
   bad_forwarded_header,      ///< a trusted proxy's X-Forwarded-For or Forwarded that names no address
+  bad_hello,                 ///< a hello refused for what it asks: room name, unknown avatar, a key without a face
+  room_full,                 ///< a room's seats or avatar ids, or the server's rooms, all taken
+  shutting_down,             ///< a join while the server drains
+  idle_timeout,              ///< a room connection that sent nothing, not even pings, for too long
   upload_too_slow,           ///< an upload's body slower than --min-upload-bytes-per-second, closed with 408
   photo_too_large,           ///< a photo whose header declares more than --max-photo-pixels, refused undecoded
+  count_,                    ///< not a kind: how many there are
 };
-inline constexpr std::size_t kAbuseKinds = 23;
+inline constexpr std::size_t kAbuseKinds = static_cast<std::size_t>(Abuse::count_);
 
 /// The kind's name in logs and in /metrics' label.
 std::string_view abuse_name(Abuse kind);
 
+/// Every line the server writes about one connection goes through here,
+/// refusals (note) and ordinary comings and goings (event) alike: whoever
+/// can open connections can make such lines, so together they are held to
+/// kLinesPerSecond.
 class AbuseLog {
  public:
   /// Counts one `kind` refused from `peer`, and logs `what` unless more
   /// than kLinesPerSecond lines went out this second (then the next line
   /// that goes out says how many were left out).
   void note(Abuse kind, std::string_view peer, std::string_view what);
+  /// Logs `what` of `peer` at info level (someone joined, left, stored a
+  /// face), counting nothing, within the same lines a second as note().
+  void event(std::string_view peer, std::string_view what);
   std::uint64_t count(Abuse kind) const { return counts_[static_cast<std::size_t>(kind)].load(); }
   /// Counts `n` of `kind` without a line, for a caller that logs a summary
   /// of many itself (the listener when descriptors run out).
@@ -58,6 +70,10 @@ class AbuseLog {
   static constexpr int kLinesPerSecond = 20;
 
  private:
+  /// Whether a line may go out now; `left_out` is how many did not since the
+  /// last one that did.
+  bool may_write(std::uint64_t& left_out);
+
   std::array<std::atomic<std::uint64_t>, kAbuseKinds> counts_{};
   std::mutex mutex_;
   std::chrono::steady_clock::time_point second_{};

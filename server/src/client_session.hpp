@@ -61,6 +61,12 @@ class ClientSession : public RoomConnection, public std::enable_shared_from_this
   /// Ends the connection after the closing message went out, or at once
   /// (`abort`: a write is stuck on a peer that does not read).
   virtual void shutdown_transport(codec::CloseCode code, const std::string& reason, bool abort) = 0;
+  /// Whether the connection closes for something its peer did or failed to
+  /// do (a violation, a flood, silence): then the closing message goes out
+  /// and the connection ends limits::kQuickCloseLinger later, without
+  /// reading what the peer still sends or waiting for its close handshake.
+  /// A refused join from a well-behaved client is closed the ordinary way.
+  bool closing_quickly() const { return quick_close_; }
 
   ServerContext& context_;
   boost::asio::any_io_executor executor_;
@@ -89,7 +95,9 @@ class ClientSession : public RoomConnection, public std::enable_shared_from_this
   void handle_set_rate(std::span<const std::uint8_t> message);
   void handle_ping(std::span<const std::uint8_t> message);
   void malformed(codec::MessageError error, const char* what);
-  void protocol_error(codec::CloseCode code, const std::string& what);
+  /// Closes for something the peer sent, counted as `kind` (and logged
+  /// within the abuse log's lines a second).
+  void protocol_error(codec::CloseCode code, const std::string& what, Abuse kind = Abuse::protocol_violation);
   void on_clock();
   std::chrono::milliseconds clock_period() const;
   /// Takes `cost` from a bucket the clock refills; false if it holds less.
@@ -118,6 +126,7 @@ class ClientSession : public RoomConnection, public std::enable_shared_from_this
   bool transport_gone_ = false;
   codec::CloseCode close_code_ = codec::CloseCode::normal;
   std::string close_reason_;
+  bool quick_close_ = false;  ///< closing_quickly()
 };
 
 }  // namespace fw::server

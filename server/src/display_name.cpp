@@ -7,29 +7,10 @@
 #include <unicode/unistr.h>
 
 #include "fw/codec/messages.hpp"
+#include "visible_text.hpp"
 
 namespace fw::server {
 namespace {
-
-/// Whether `c` would act on the text around it without a glyph of its own,
-/// or is no character at all.
-bool invisible_or_control(UChar32 c) {
-  switch (u_charType(c)) {
-    case U_CONTROL_CHAR:         // C0, C1
-    case U_FORMAT_CHAR:          // bidi embeddings, overrides and isolates, zero-width space and joiners, BOM
-    case U_LINE_SEPARATOR:
-    case U_PARAGRAPH_SEPARATOR:
-    case U_SURROGATE:
-    case U_PRIVATE_USE_CHAR:
-    case U_UNASSIGNED:           // noncharacters included
-      return true;
-    default:
-      break;
-  }
-  // Blank-looking characters of other categories (the Hangul fillers, the
-  // combining grapheme joiner) are default-ignorable: shown as nothing.
-  return u_hasBinaryProperty(c, UCHAR_DEFAULT_IGNORABLE_CODE_POINT);
-}
 
 std::string hex(UChar32 c) {
   char text[16];
@@ -55,14 +36,9 @@ std::string normalize_display_name(std::string_view name, std::string& normalize
     const UChar32 next = after < nfc_text.length() ? nfc_text.char32At(after) : 0;
     const UChar32 before = previous;
     previous = c;
-    // Emoji are written with two invisible characters: a variation
-    // selector after a visible character picks its style (as in "❤️"), and
-    // a zero-width joiner between two pictographs makes one ("👩‍💻").
-    if (c >= 0xFE00 && c <= 0xFE0F && before != 0 && !invisible_or_control(before)) continue;
-    if (c == 0x200D && u_hasBinaryProperty(before, UCHAR_EXTENDED_PICTOGRAPHIC) &&
-        u_hasBinaryProperty(next, UCHAR_EXTENDED_PICTOGRAPHIC))
-      continue;
-    if (invisible_or_control(c))
+    // Emoji keep the variation selectors and joiners they are written with
+    // ("❤️", "👩‍💻"); acts_unseen() knows them.
+    if (acts_unseen(static_cast<char32_t>(before), static_cast<char32_t>(c), static_cast<char32_t>(next)))
       return "the name holds an invisible or control character (" + hex(c) +
              "): use letters, digits, punctuation, spaces and emoji";
     if (!u_isUWhiteSpace(c)) visible = true;

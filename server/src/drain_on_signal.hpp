@@ -1,8 +1,8 @@
 #pragma once
 // SIGINT and SIGTERM drain the server instead of cutting it off: /readyz
-// turns 503, the listeners stop accepting, every session is told to leave
-// ("shutting down"), and the I/O loop stops once they are gone or the drain
-// time is up.
+// turns 503 (and stays reachable: the HTTP port is open until the end), the
+// room port stops accepting, every session is told to leave ("shutting
+// down"), and the I/O loop stops once they are gone or the drain time is up.
 #include <chrono>
 #include <functional>
 
@@ -16,7 +16,8 @@ namespace fw::server {
 
 class DrainOnSignal {
  public:
-  /// Waits for the signal on `ioc`; `stop_accepting` closes the listeners.
+  /// Waits for the signal on `ioc`; `stop_accepting` closes the listeners
+  /// that take no part in the drain.
   DrainOnSignal(boost::asio::io_context& ioc, ServerCore& core, std::chrono::milliseconds drain_time,
                 std::function<void()> stop_accepting);
 

@@ -5,6 +5,7 @@
 #include <openssl/crypto.h>
 
 #include "base64url.hpp"
+#include "display_name.hpp"
 #include "server_keys.hpp"
 
 namespace fw::server {
@@ -50,8 +51,12 @@ std::optional<TokenClaims> verify_join_token(std::string_view token, std::string
   // saw it, under any name.
   if (!payload.contains("name") || !payload["name"].is_string() || payload["name"].get<std::string>().empty())
     return refuse("the join token names nobody; ask the host for a token made with --name");
-  return TokenClaims{payload["room"].get<std::string>(), payload["name"].get<std::string>(),
-                     payload["exp"].get<std::int64_t>()};
+  // Names are compared as the hello's is, in NFC: a token minted elsewhere
+  // with "Zoe\u0301" invites the Zoé who types it either way.
+  std::string name;
+  if (const std::string bad = normalize_display_name(payload["name"].get<std::string>(), name); !bad.empty())
+    return refuse("the join token's name cannot be a display name (" + bad + "); ask the host for a new one");
+  return TokenClaims{payload["room"].get<std::string>(), std::move(name), payload["exp"].get<std::int64_t>()};
 }
 
 std::string check_join_token(std::string_view token, std::string_view secret, std::string_view room,

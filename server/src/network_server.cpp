@@ -65,8 +65,12 @@ struct Listeners {
   std::shared_ptr<Listener> http;
   std::shared_ptr<Listener> tcp;  ///< null without --tcp
 
-  void stop() {
-    if (http) http->stop();
+  /// A drain stops the room port only: the HTTP port keeps answering, so
+  /// that /readyz says 503 "draining" to the balancer that asks (a closed
+  /// port reads as a dead node, not a leaving one), and a WebSocket hello
+  /// is told "shutting down" instead of meeting a reset. It closes when the
+  /// loop stops.
+  void stop_room_port() {
     if (tcp) tcp->stop();
   }
 };
@@ -155,7 +159,7 @@ int run_network_server(const ServerConfig& config) {
   core.open_demo_room();  // ready (/readyz) once listening and the lobby is seated
   log_ready(config);
   const auto drain_time = std::chrono::milliseconds(static_cast<long>(config.drain_seconds * 1000));
-  DrainOnSignal drain(ioc, core, drain_time, [&listeners] { listeners.stop(); });
+  DrainOnSignal drain(ioc, core, drain_time, [&listeners] { listeners.stop_room_port(); });
   run_io_threads(ioc, config.io_threads);
   core.stop();
   if (cluster) {

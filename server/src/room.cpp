@@ -9,6 +9,7 @@
 #include "room_bus.hpp"
 #include "room_registry.hpp"
 #include "server_keys.hpp"
+#include "visible_text.hpp"
 
 namespace fw::server {
 
@@ -109,6 +110,13 @@ void Room::do_chat(std::uint32_t avatar, std::string text) {
     return context_.bus->send_up(name_, bridge::encode(bridge::up_chat(context_.bus->node(), avatar, std::move(text))));
   }
   Member& writer = it->second;
+  // The owner cleans every line, its own people's and those bridged from
+  // other nodes alike: what acts unseen is left out (visible_text.hpp), so
+  // that every reader sees the line as it shows.
+  std::string shown;
+  clean_chat_text(text, shown, codec::kMaxChatBytes);
+  if (shown.empty()) return;
+  text = std::move(shown);
   if (!chat_rate_.take(TokenBucket::Clock::now())) {
     // The room's chat is at its rate (many writers, or one from many
     // addresses): the line is dropped and its writer told so, in place.
@@ -181,7 +189,10 @@ void Room::do_join(JoinRequest request) {
   if (const auto refusal = refusal_of(request)) return refuse(request, refusal->first, refusal->second);
   const bool person = request.connection != nullptr || !request.node.empty();
   const std::uint32_t id = simulation_.add_avatar(AvatarSetup{request.name, person});
-  if (id == 0) return refuse(request, codec::CloseCode::room_full, "room '" + name_ + "' is full; try another room");
+  if (id == 0) {
+    context_.abuse.count_quietly(Abuse::room_full, 1);
+    return refuse(request, codec::CloseCode::room_full, "room '" + name_ + "' is full; try another room");
+  }
   Member member;
   member.address = request.address;
   member.node = request.node;
@@ -222,7 +233,9 @@ void Room::do_join(JoinRequest request) {
     seated.stream->charge(bytes->size());
     seated.stream->connection()->deliver(bytes);
   }
-  spdlog::info("room {}: {} joined as avatar {} ({})", name_, request.name, id, person ? "person" : "autonomous");
+  context_.abuse.event(request.address.empty() ? std::string_view("-") : std::string_view(request.address),
+                       "room '" + name_ + "': " + request.name + " joined as avatar " + std::to_string(id) +
+                           (person ? " (person)" : " (autonomous)"));
 }
 
 void Room::join_successor(JoinRequest request) {
@@ -244,9 +257,11 @@ std::size_t Room::seats_of(const std::string& address) const {
 
 std::optional<std::pair<codec::CloseCode, std::string>> Room::refusal_of(const JoinRequest& request) {
   const auto& config = context_.config;
-  if (members_.size() >= config.room_size)
+  if (members_.size() >= config.room_size) {
+    context_.abuse.count_quietly(Abuse::room_full, 1);
     return {{codec::CloseCode::room_full, "room '" + name_ + "' is full (" + std::to_string(config.room_size) +
                                               " avatars); try another room"}};
+  }
   if ((request.connection || !request.node.empty()) && !request.address.empty()) {
     // One address cannot fill a room (the lobby least of all): the others
     // keep seats.
@@ -268,15 +283,19 @@ std::optional<std::pair<codec::CloseCode, std::string>> Room::refusal_of(const J
     return {{codec::CloseCode::rate_limited,
              "room '" + name_ + "' takes no more joins this moment; try again in " + whole_seconds(wait)}};
   }
-  if (!simulation_.has_free_id())
+  if (!simulation_.has_free_id()) {
+    context_.abuse.count_quietly(Abuse::room_full, 1);
     return {{codec::CloseCode::server_full,
              "room '" + name_ + "' has handed out all its avatar ids lately; try again in a minute"}};
+  }
   return std::nullopt;
 }
 
 void Room::refuse(const JoinRequest& request, codec::CloseCode code, const std::string& why) {
   context_.metrics.rejected_joins.fetch_add(1);
-  spdlog::info("room {}: {} refused: {}", name_, request.name, why);
+  // Counted where the refusal was decided (refusal_of); logged with the rest.
+  context_.abuse.event(request.address.empty() ? std::string_view("-") : std::string_view(request.address),
+                       "room '" + name_ + "': " + request.name + " refused: " + why);
   if (request.connection) request.connection->close(code, why);
   else if (!request.node.empty())
     send_down(bridge::down_refused(request.join_ref, code, why));
@@ -341,7 +360,8 @@ void Room::do_leave(std::uint32_t avatar) {
   }
   const bool person = it->second.person();
   if (it->second.stream) local_persons_.fetch_sub(1);
-  spdlog::info("room {}: {} left", name_, it->second.info.name);
+  context_.abuse.event(it->second.address.empty() ? std::string_view("-") : std::string_view(it->second.address),
+                       "room '" + name_ + "': " + it->second.info.name + " left");
   codec::AvatarInfo info;
   info.id = avatar;
   info.person = person;

@@ -266,7 +266,9 @@ void Room::on_joined(bridge::Down& message) {
   const auto bytes = encode_shared(everyone);
   seated.stream->charge(bytes->size());
   seated.stream->connection()->deliver(bytes);
-  spdlog::info("room {}: {} joined as avatar {} (bridged to {})", name_, request.name, id, message.owner);
+  context_.abuse.event(request.address.empty() ? std::string_view("-") : std::string_view(request.address),
+                       "room '" + name_ + "': " + request.name + " joined as avatar " + std::to_string(id) +
+                           " (bridged to " + message.owner + ")");
 }
 
 void Room::on_left(std::uint32_t avatar) {

@@ -43,6 +43,11 @@ inline constexpr std::chrono::minutes kIdlePersonTimeout{5};
 inline constexpr std::chrono::seconds kAvatarIdQuiet{60};
 /// How long a closing message may take before the socket is closed anyway.
 inline constexpr std::chrono::seconds kCloseTimeout{3};
+/// After a closing message for something the peer did (a flood, a
+/// violation, silence), how long the socket stays half-closed, unread,
+/// before it closes: time for the message to arrive, none for reading more
+/// of a flood.
+inline constexpr std::chrono::milliseconds kQuickCloseLinger{500};
 inline constexpr double kMessagesPerSecond = 50;
 inline constexpr double kMessageBurst = 100;
 inline constexpr double kUpstreamBytesPerSecond = 64 * 1024;

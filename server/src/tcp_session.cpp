@@ -62,6 +62,8 @@ void TcpSession::on_read(boost::system::error_code ec, std::size_t bytes) {
       on_message(message);
     }
   }
+  // A peer closed for what it did is not read any more (closing_quickly).
+  if (closing_quickly()) return;
   start_reading();  // until the peer closes: its close after our closing message ends it
 }
 
@@ -84,11 +86,15 @@ void TcpSession::shutdown_transport(CloseCode, const std::string&, bool abort) {
   // peer's own close ends the read loop, or the linger timer does.
   shut_ = true;
   socket_.shutdown(net::ip::tcp::socket::shutdown_send, ignored);
-  linger_.expires_after(std::chrono::seconds(3));
+  if (closing_quickly())
+    linger_.expires_after(limits::kQuickCloseLinger);
+  else
+    linger_.expires_after(std::chrono::seconds(3));
   linger_.async_wait([self = std::static_pointer_cast<TcpSession>(shared_from_this())](boost::system::error_code ec) {
     if (ec) return;
     boost::system::error_code ignored_too;
     self->socket_.close(ignored_too);
+    self->on_transport_closed();  // no read may be waiting to say so
   });
 }
 

@@ -36,7 +36,7 @@ websocket::close_code close_code_for(CloseCode code) {
 WebSocketSession::WebSocketSession(ServerContext& context, beast::tcp_stream&& stream, std::string peer,
                                    ConnectionTicket ticket)
     : ClientSession(context, stream.get_executor(), std::move(peer)), ticket_(std::move(ticket)),
-      ws_(std::move(stream)) {}
+      ws_(std::move(stream)), linger_(ws_.get_executor()) {}
 
 std::size_t WebSocketSession::framing_bytes(std::size_t message_bytes) const {
   return message_bytes < 126 ? 2 : message_bytes < 65536 ? 4 : 10;  // server frames are not masked
@@ -103,6 +103,8 @@ void WebSocketSession::on_read(beast::error_code ec, std::size_t bytes) {
     on_message({static_cast<const std::uint8_t*>(data.data()), data.size()});
   }
   buffer_.consume(buffer_.size());
+  // A peer closed for what it did is not read any more (closing_quickly).
+  if (closing_quickly()) return;
   start_reading();  // reading on lets the close handshake complete
 }
 
@@ -128,6 +130,21 @@ void WebSocketSession::shutdown_transport(CloseCode code, const std::string& rea
     return on_transport_closed();
   }
   auto self = std::static_pointer_cast<WebSocketSession>(shared_from_this());
+  if (closing_quickly()) {
+    // No close handshake with a peer that floods or stays silent: it would
+    // keep reading the flood, or wait the handshake time-out, for nothing.
+    // The closing message went out; the FIN follows it.
+    beast::error_code ignored;
+    beast::get_lowest_layer(ws_).socket().shutdown(boost::asio::ip::tcp::socket::shutdown_send, ignored);
+    linger_.expires_after(limits::kQuickCloseLinger);
+    linger_.async_wait([self](beast::error_code ec) {
+      if (ec) return;
+      beast::error_code ignored_too;
+      beast::get_lowest_layer(self->ws_).socket().close(ignored_too);
+      self->on_transport_closed();
+    });
+    return;
+  }
   websocket::close_reason why(close_code_for(code), reason.substr(0, 120));
   ws_.async_close(why, [self](beast::error_code) { self->on_transport_closed(); });
 }

@@ -4,6 +4,7 @@
 // when a request asks for the upgrade; it keeps the connection's ticket
 // (counted from accept to close). Pings and pongs count as messages in the
 // session's rate limits.
+#include <boost/asio/steady_timer.hpp>
 #include <boost/beast/core.hpp>
 #include <boost/beast/http.hpp>
 #include <boost/beast/websocket.hpp>
@@ -32,6 +33,7 @@ class WebSocketSession : public ClientSession {
   ConnectionTicket ticket_;
   boost::beast::websocket::stream<boost::beast::tcp_stream> ws_;
   boost::beast::flat_buffer buffer_;
+  boost::asio::steady_timer linger_;  ///< a quick close's half-closed wait (closing_quickly)
 };
 
 }  // namespace fw::server

@@ -216,6 +216,14 @@ TEST(Messages, BadBytesGiveTheirError) {
   EXPECT_EQ(read_message(std::vector<std::uint8_t>{0xF0}, chat), MessageError::unknown_type);
   EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x81}, chat), MessageError::wrong_type);
   EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x84, 0x01, 0x05, 'a'}, chat), MessageError::truncated);
+  EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x84, 0x81}, chat), MessageError::truncated) << "a number cut short";
+  // The same numbers written in more bytes than they need, or than the
+  // field allows: the bytes are all there, so the message is not cut short.
+  EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x84, 0x81, 0x00, 0x01, 'a'}, chat), MessageError::bad_number);
+  EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x84, 0x01, 0x81, 0x80, 0x00, 'a'}, chat), MessageError::bad_number);
+  EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x84, 0x81, 0x81, 0x81, 0x01, 0x01, 'a'}, chat),
+            MessageError::bad_number)
+      << "an avatar id takes at most 3 bytes";
   EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x84, 0x01, 0x01, 'a', 'b'}, chat), MessageError::trailing_bytes);
   EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x84, 0x01, 0x01, 0x07}, chat), MessageError::bad_text);
   EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x84, 0x01, 0x02, 0xC0, 0x80}, chat), MessageError::bad_text);

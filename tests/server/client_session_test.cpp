@@ -155,6 +155,34 @@ TEST(ClientSession, AnUnknownAvatarIsRefusedWithWhatToDo) {
   EXPECT_NE(peer->closing->reason.find("upload it first"), std::string::npos);
 }
 
+TEST(ClientSession, AnAvatarKeyWithoutItsAvatarIsRefusedNotIgnored) {
+  InMemoryServer server;
+  auto peer = server.join("r", "Ann", {.avatar_key = std::string("k3y-_AZaz09k3y-_AZaz09")});
+  ASSERT_TRUE(peer->closing);
+  EXPECT_EQ(peer->closing->code, CloseCode::bad_request);
+  EXPECT_NE(peer->closing->reason.find("without the avatar"), std::string::npos) << peer->closing->reason;
+  EXPECT_EQ(server.context().abuse.count(Abuse::bad_hello), 1u);
+}
+
+TEST(ClientSession, EveryRefusalAndClosingForALimitIsCountedByKind) {
+  InMemoryServer server;
+  auto garbage = server.connect();
+  garbage->send(codec::Chat{0, "hi"});
+  EXPECT_EQ(closed_with(*garbage), CloseCode::protocol_error);
+  EXPECT_EQ(server.context().abuse.count(Abuse::protocol_violation), 1u);
+  EXPECT_EQ(closing_for(server, oversized_hello("no room!", "Ann")), CloseCode::bad_request);
+  EXPECT_EQ(server.context().abuse.count(Abuse::bad_hello), 1u);
+  auto chatter = server.join("r", "Ann");
+  ASSERT_TRUE(chatter->welcome);
+  for (int i = 0; i < 20; ++i) chatter->send(codec::Chat{0, "spam"});
+  EXPECT_EQ(closed_with(*chatter), CloseCode::rate_limited);
+  EXPECT_EQ(server.context().abuse.count(Abuse::chat_rate), 1u);
+  server.context().draining = true;
+  auto late = server.join("r", "Bob");
+  ASSERT_TRUE(late->closing);
+  EXPECT_EQ(server.context().abuse.count(Abuse::shutting_down), 1u);
+}
+
 TEST(ClientSession, WithoutAPackageTheNameChoosesAProceduralFace) {
   InMemoryServer server;
   auto first = server.join("a", "Zoe");

@@ -13,6 +13,15 @@ TEST(JoinToken, AdmitsItsRoomAndName) {
   EXPECT_EQ(check_join_token(token, "secret", "a", "Ann", kNow), "");
 }
 
+TEST(JoinToken, ANameIsComparedInNfcHoweverTheTokenSpellsIt) {
+  // Minted elsewhere with a decomposed "é"; hellos' names arrive in NFC.
+  const std::string token = mint_join_token({"a", "Zoe\u0301", kNow + 60}, "secret");
+  EXPECT_EQ(check_join_token(token, "secret", "a", "Zo\u00e9", kNow), "");
+  const std::string bidi = mint_join_token({"a", "\u202Eevil", kNow + 60}, "secret");
+  EXPECT_NE(check_join_token(bidi, "secret", "a", "\u202Eevil", kNow).find("cannot be a display name"),
+            std::string::npos);
+}
+
 TEST(JoinToken, WithoutANameAdmitsNobody) {
   // Signed and in date, but it names nobody: it would admit anyone who saw it.
   const std::string token = mint_join_token({"a", "", kNow + 60}, "secret");

@@ -107,6 +107,22 @@ TEST(InMemoryRoom, ChatReachesEveryoneTheWriterIncluded) {
   EXPECT_EQ(bob->chat.size(), 1u) << "an empty line is dropped";
 }
 
+TEST(InMemoryRoom, ChatReachesEveryoneAsItShowsWithoutCharactersThatActUnseen) {
+  InMemoryServer server;
+  auto ann = server.join("r", "Ann");
+  auto bob = server.join("r", "Bob");
+  ASSERT_TRUE(ann->welcome && bob->welcome);
+  // A right-to-left override, and a line separator that would start what
+  // looks like Ann's line in Bob's.
+  bob->send(codec::Chat{0, "pay \u202Elive\u202C\u2028Ann: ok"});
+  ASSERT_TRUE(ann->read_until([&] { return !ann->chat.empty(); }));
+  EXPECT_EQ(ann->chat[0].text, "pay liveAnn: ok");
+  bob->send(codec::Chat{0, "\u200B\u200B"});
+  bob->read_for(100ms);
+  ASSERT_TRUE(bob->read_until([&] { return !bob->chat.empty(); }));
+  EXPECT_EQ(bob->chat.size(), 1u) << "a line with nothing visible is dropped";
+}
+
 TEST(InMemoryRoom, CommandsAreAnsweredAcceptedOrRefusedAndTheConnectionStays) {
   InMemoryServer server;
   auto ann = server.join("r", "Ann");

@@ -7,6 +7,9 @@
 import { Limits, MessageError as E, MessageType, PROTOCOL_VERSION, SESSION_BIT, LAST_MESSAGE_TYPE } from './session_types.js';
 import { WireReader, decodeUtf8, isCleanText } from './wire.js';
 
+/** Why a failed reader failed, as the C++ failure_of() says. */
+const failureOf = (r) => (r.badNumber ? E.badNumber : E.truncated);
+
 class Fields {
   constructor(bytes) {
     this.r = new WireReader(bytes);
@@ -23,7 +26,7 @@ class Fields {
   string(maxBytes, allowLayout = false) {
     const length = this.r.varint(3);
     if (this.r.failed) {
-      this.fail(E.truncated);
+      this.fail(failureOf(this.r));
       return '';
     }
     if (length > maxBytes) {
@@ -47,7 +50,7 @@ class Fields {
   get going() { return !this.r.failed && this.error === E.ok; }
   finish(message) {
     if (this.error !== E.ok) return { error: this.error };
-    if (this.r.failed) return { error: E.truncated };
+    if (this.r.failed) return { error: failureOf(this.r) };
     if (this.r.remaining !== 0) return { error: E.trailingBytes };
     return { error: E.ok, message };
   }
@@ -86,7 +89,7 @@ function avatarInfo(f) {
 /** Reads the version first: another version may lay out the rest differently. */
 function versioned(f) {
   const version = f.r.u16();
-  if (f.r.failed) return { error: E.truncated };
+  if (f.r.failed) return { error: failureOf(f.r) };
   if (version !== PROTOCOL_VERSION) return { error: E.unsupportedVersion };
   return null;
 }
@@ -137,7 +140,7 @@ const readers = {
   [MessageType.command]: [Limits.upstreamMessageBytes, (f) => {
     const requestId = f.r.varint(5);
     const kind = f.r.u8();
-    if (f.r.failed) return { error: E.truncated };
+    if (f.r.failed) return { error: failureOf(f.r) };
     if (kind > 3) return { error: E.valueOutOfRange };
     const m = { requestId, kind, emotion: '', intensity: 1, target: 0, durationMs: 3000, sentence: '' };
     if (kind === 0) {
@@ -165,7 +168,7 @@ const readers = {
     if (!f.r.failed && quality > 1) f.fail(E.valueOutOfRange);
     const totalBytes = f.bounded(4, Limits.packageBytes);
     const offset = f.r.varint(4);
-    if (f.r.failed) return { error: E.truncated };
+    if (f.r.failed) return { error: failureOf(f.r) };
     if (f.error !== E.ok) return { error: f.error };
     const size = f.r.remaining;
     if (totalBytes === 0 || size === 0 || size > Limits.chunkBytes || offset + size > totalBytes)
@@ -196,7 +199,8 @@ const readers = {
   [MessageType.timedRoomFrame]: [Limits.downstreamMessageBytes, (f) => {
     const tick = f.r.varint(5);
     const serverTimeUs = f.r.u64();
-    if (f.r.failed || f.r.remaining === 0) return { error: E.truncated };
+    if (f.r.failed) return { error: failureOf(f.r) };
+    if (f.r.remaining === 0) return { error: E.truncated };
     return { error: E.ok, message: { tick, serverTimeUs, roomFrame: f.r.take(f.r.remaining) } };
   }],
   [MessageType.seats]: [Limits.downstreamMessageBytes, (f) => {

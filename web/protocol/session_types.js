@@ -14,7 +14,7 @@ export const LAST_MESSAGE_TYPE = MessageType.attention;
 export const MessageError = Object.freeze({
   ok: 0, empty: 1, notSessionMessage: 2, unknownType: 3, wrongType: 4, truncated: 5, tooLarge: 6,
   stringTooLong: 7, badText: 8, valueOutOfRange: 9, trailingBytes: 10, tooManyEntries: 11,
-  unsupportedVersion: 12, badFlags: 13,
+  unsupportedVersion: 12, badFlags: 13, badNumber: 14,
 });
 const errorNames = Object.fromEntries(Object.entries(MessageError).map(([k, v]) => [v, k]));
 export const messageErrorName = (code) => errorNames[code] ?? `error ${code}`;

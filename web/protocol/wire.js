@@ -8,6 +8,7 @@ export class WireReader {
     this.bytes = bytes;
     this.position = 0;
     this.failed = false;
+    this.badNumber = false;  // failed on a number written wrongly, not on bytes running out
   }
   get remaining() { return this.bytes.length - this.position; }
   u8() {
@@ -48,6 +49,7 @@ export class WireReader {
       }
     }
     this.failed = true;
+    this.badNumber = true;
     return 0;
   }
   take(count) {

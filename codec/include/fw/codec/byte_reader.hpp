@@ -21,13 +21,17 @@ class ByteReader {
   float f32_le();
   /// Unsigned LEB128 of at most `max_bytes` bytes (1 .. 5); a longer one, an
   /// overlong one (a final 0x00 byte after the first), or one whose value
-  /// does not fit 32 bits, fails the reader.
+  /// does not fit 32 bits, fails the reader and marks it bad_number().
   std::uint32_t varint(std::size_t max_bytes = 5);
   /// The next `count` bytes as a view; fails (and returns an empty view) if
   /// fewer remain.
   std::span<const std::uint8_t> bytes(std::size_t count);
 
   bool failed() const { return failed_; }
+  /// Whether it failed on a number written wrongly rather than on bytes
+  /// running out: a sender's bug or forgery, not a cut message, and told
+  /// apart so that the error names the right cause.
+  bool bad_number() const { return bad_number_; }
   std::size_t position() const { return position_; }
   std::size_t remaining() const { return data_.size() - position_; }
 
@@ -35,6 +39,7 @@ class ByteReader {
   std::span<const std::uint8_t> data_;
   std::size_t position_ = 0;
   bool failed_ = false;
+  bool bad_number_ = false;
 };
 
 }  // namespace fw::codec

@@ -75,6 +75,7 @@ enum class MessageError : std::uint8_t {
   too_many_entries = 11,    ///< a list over its limit
   unsupported_version = 12, ///< a hello or welcome of another protocol version
   bad_flags = 13,           ///< reserved flag bits set
+  bad_number = 14,          ///< a number written in more bytes than it needs or than its field allows
 };
 /// A sentence for a person: what was wrong with the message.
 std::string_view describe(MessageError error);
