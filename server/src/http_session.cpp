@@ -214,6 +214,9 @@ void HttpSession::on_header(beast::error_code ec, std::size_t) {
 }
 
 void HttpSession::start_upload_body() {
+  // An empty body (Content-Length: 0) is whole with its header: nothing to
+  // wait for, and a read would wait for bytes that never come.
+  if (parser_->is_done()) return on_read({}, 0);
   const std::size_t pace = context_.config.min_upload_bytes_per_second;
   upload_pace_.emplace(pace, limits::kUploadPaceWindow, UploadPace::Clock::now());
   pace_missed_ = false;
