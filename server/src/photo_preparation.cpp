@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include <nlohmann/json.hpp>
-#include <spdlog/spdlog.h>
 
 #include "fw/model/avatar_package.hpp"
 #include "fw/photo/prepare_avatar.hpp"
@@ -242,8 +241,11 @@ Response PhotoPreparation::handle(const Request& request) {
   const auto stored = context_.store->put(upload.package, upload.photo, why);
   if (!stored) return error(http::status::unprocessable_entity, "the package is not valid: " + why);
   context_.metrics.uploads.fetch_add(1);
-  spdlog::info("stored avatar {} ({} bytes, preview {} bytes{})", stored->asset, stored->full->size(),
-               stored->preview->size(), upload.photo.empty() ? "" : ", with its photo");
+  // One line an upload, which many addresses can make: held to the
+  // connection log's rate (AbuseLog::event).
+  context_.abuse.event("upload", "stored avatar " + stored->asset + " (" + std::to_string(stored->full->size()) +
+                                     " bytes, preview " + std::to_string(stored->preview->size()) + " bytes" +
+                                     (upload.photo.empty() ? "" : ", with its photo") + ")");
   // The key is what lets its holder wear the face (PROTOCOL.md 8.1): it
   // goes to the uploader alone, never to the room.
   const nlohmann::json answer = {{"asset", stored->asset},
