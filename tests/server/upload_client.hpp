@@ -3,10 +3,9 @@
 // upload_starvation_test.cpp): raw sockets from a chosen loopback address
 // (127.x.y.z: another client, in another /24 when y differs), exact headers,
 // bodies sent whole or in part, and the answer read as it comes.
-#include <arpa/inet.h>
-#include <netinet/in.h>
 #include <poll.h>
 #include <sys/socket.h>
+#include <sys/time.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -21,6 +20,7 @@
 #include <vector>
 
 #include "http_get.hpp"
+#include "loopback_socket.hpp"
 #include "room_test_server.hpp"
 
 namespace fw::test {
@@ -34,24 +34,13 @@ inline std::string read_bytes(const std::filesystem::path& path) {
   return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
 }
 
-/// A socket to the server's port from `source` (127.0.0.x: another client).
+/// A socket to the server's port from `source` (127.x.y.z: another client),
+/// whose sends give up after 20 s.
 inline int connect_from(const std::string& source, int port) {
-  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+  const int fd = connect_loopback_from(source.c_str(), port, 60);
   if (fd < 0) return -1;
-  sockaddr_in local{};
-  local.sin_family = AF_INET;
-  ::inet_pton(AF_INET, source.c_str(), &local.sin_addr);
-  sockaddr_in remote{};
-  remote.sin_family = AF_INET;
-  remote.sin_port = htons(static_cast<std::uint16_t>(port));
-  remote.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
   timeval send_timeout{20, 0};
   ::setsockopt(fd, SOL_SOCKET, SO_SNDTIMEO, &send_timeout, sizeof send_timeout);
-  if (::bind(fd, reinterpret_cast<sockaddr*>(&local), sizeof local) != 0 ||
-      ::connect(fd, reinterpret_cast<sockaddr*>(&remote), sizeof remote) != 0) {
-    ::close(fd);
-    return -1;
-  }
   return fd;
 }
 
