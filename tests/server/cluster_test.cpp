@@ -516,6 +516,7 @@ TEST(Cluster, AnAvatarDeletedOnOneNodeIsGoneFromEveryNodeAndItsWearerShownNeutra
       10s))
       << "Bo, on another node, still sees the deleted face";
   EXPECT_TRUE(bo->errors.empty()) << bo->errors.front();
+}
 
 long refusals(const RunningServer& node, const std::string& kind) {
   const auto metrics = http_get(node.http_port(), "/metrics");
