@@ -62,6 +62,10 @@ class ClientSession : public RoomConnection, public std::enable_shared_from_this
   /// The first message came (the hello, or what stands for it): from here
   /// on the connection carries something, and keeps its place on the port.
   virtual void on_first_message() {}
+  /// Bytes the transport's socket holds that the peer has not taken yet
+  /// (sent or not, unacknowledged), or nullopt where it cannot tell (in
+  /// memory): whether a person reads is seen there, not in our queue alone.
+  virtual std::optional<std::size_t> unacknowledged_bytes() { return std::nullopt; }
   virtual void start_reading() = 0;
   /// Writes one message; calls on_write_done when finished. One at a time.
   virtual void start_write(const SharedBytes& message) = 0;
@@ -98,6 +102,9 @@ class ClientSession : public RoomConnection, public std::enable_shared_from_this
   void malformed(codec::MessageError error, const char* what);
   void protocol_error(codec::CloseCode code, const std::string& what);
   void on_clock();
+  /// Samples the socket: the peer took bytes since the last sample (read
+  /// progress) if fewer are held than were held plus written since.
+  void sample_read_progress(std::chrono::steady_clock::time_point now);
   std::chrono::milliseconds clock_period() const;
   /// Takes `cost` from a bucket the clock refills; false if it holds less.
   static bool take_token(double& tokens, double cost);
@@ -120,6 +127,11 @@ class ClientSession : public RoomConnection, public std::enable_shared_from_this
   /// for the peer moved (a write completed, or a wait began): who neither
   /// sends nor reads for SessionTimeouts::idle_person is let go.
   std::chrono::steady_clock::time_point last_sent_, read_progress_;
+  /// The socket's unacknowledged bytes and bytes_written_ at the last
+  /// sample; whether the transport tells them at all.
+  std::size_t socket_queue_ = 0;
+  std::uint64_t written_at_sample_ = 0;
+  bool socket_known_ = false;
   double message_tokens_, byte_tokens_, chat_tokens_;
   bool counted_ = false;
   bool transport_gone_ = false;

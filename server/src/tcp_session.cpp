@@ -5,6 +5,7 @@
 #include <boost/asio/write.hpp>
 
 #include "server_limits.hpp"
+#include "socket_queue.hpp"
 
 namespace fw::server {
 
@@ -38,6 +39,10 @@ void TcpSession::run() {
 }
 
 void TcpSession::on_first_message() { ticket_.busy(); }
+
+std::optional<std::size_t> TcpSession::unacknowledged_bytes() {
+  return socket_unacknowledged_bytes(socket_.native_handle());
+}
 
 void TcpSession::start_reading() {
   socket_.async_read_some(net::buffer(read_buffer_),
