@@ -448,13 +448,15 @@ std::chrono::milliseconds ClientSession::clock_period() const {
 }
 
 void ClientSession::sample_read_progress(std::chrono::steady_clock::time_point now) {
-  const auto held = unacknowledged_bytes();
-  if (!held) return;
+  const auto queue = socket_queue();
+  if (!queue) return;
   socket_known_ = true;
+  const std::size_t held = queue->unacknowledged;
   const std::uint64_t written = bytes_written_.load(std::memory_order_relaxed);
   const std::uint64_t could_hold = socket_queue_ + (written - written_at_sample_);
-  if (*held == 0 || *held < could_hold) read_progress_ = now;
-  socket_queue_ = *held;
+  const bool room_for_it = queue->peer_window ? *queue->peer_window >= held : held < could_hold;
+  if (held == 0 || room_for_it) read_progress_ = now;
+  socket_queue_ = held;
   written_at_sample_ = written;
 }
 

@@ -21,6 +21,7 @@
 #include "room_connection.hpp"
 #include "server_keys.hpp"
 #include "server_context.hpp"
+#include "socket_queue.hpp"
 #include "subscriber_stream.hpp"
 
 namespace fw::server {
@@ -62,10 +63,10 @@ class ClientSession : public RoomConnection, public std::enable_shared_from_this
   /// The first message came (the hello, or what stands for it): from here
   /// on the connection carries something, and keeps its place on the port.
   virtual void on_first_message() {}
-  /// Bytes the transport's socket holds that the peer has not taken yet
-  /// (sent or not, unacknowledged), or nullopt where it cannot tell (in
-  /// memory): whether a person reads is seen there, not in our queue alone.
-  virtual std::optional<std::size_t> unacknowledged_bytes() { return std::nullopt; }
+  /// What the transport's socket holds for the peer, or nullopt where it
+  /// cannot tell (in memory): whether a person reads is seen there, not in
+  /// our queue alone (socket_queue.hpp).
+  virtual std::optional<SocketQueue> socket_queue() { return std::nullopt; }
   virtual void start_reading() = 0;
   /// Writes one message; calls on_write_done when finished. One at a time.
   virtual void start_write(const SharedBytes& message) = 0;
@@ -102,8 +103,10 @@ class ClientSession : public RoomConnection, public std::enable_shared_from_this
   void malformed(codec::MessageError error, const char* what);
   void protocol_error(codec::CloseCode code, const std::string& what);
   void on_clock();
-  /// Samples the socket: the peer took bytes since the last sample (read
-  /// progress) if fewer are held than were held plus written since.
+  /// Samples the socket: the person reads (read progress) if nothing waits
+  /// in it, or the peer has room for what waits (its window is open); where
+  /// the kernel does not tell the window, if it took bytes since the last
+  /// sample (fewer are held than were held plus written since).
   void sample_read_progress(std::chrono::steady_clock::time_point now);
   std::chrono::milliseconds clock_period() const;
   /// Takes `cost` from a bucket the clock refills; false if it holds less.

@@ -40,9 +40,7 @@ void TcpSession::run() {
 
 void TcpSession::on_first_message() { ticket_.busy(); }
 
-std::optional<std::size_t> TcpSession::unacknowledged_bytes() {
-  return socket_unacknowledged_bytes(socket_.native_handle());
-}
+std::optional<SocketQueue> TcpSession::socket_queue() { return fw::server::socket_queue(socket_.native_handle()); }
 
 void TcpSession::start_reading() {
   socket_.async_read_some(net::buffer(read_buffer_),

@@ -86,8 +86,8 @@ void WebSocketSession::run(beast::http::request<beast::http::string_body> reques
 
 void WebSocketSession::on_first_message() { ticket_.busy(); }
 
-std::optional<std::size_t> WebSocketSession::unacknowledged_bytes() {
-  return socket_unacknowledged_bytes(beast::get_lowest_layer(ws_).socket().native_handle());
+std::optional<SocketQueue> WebSocketSession::socket_queue() {
+  return fw::server::socket_queue(beast::get_lowest_layer(ws_).socket().native_handle());
 }
 
 void WebSocketSession::start_reading() {
