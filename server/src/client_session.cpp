@@ -82,7 +82,8 @@ void ClientSession::write_next() {
     }
     return;
   }
-  if (!writing_) read_progress_ = std::chrono::steady_clock::now();  // from now on, bytes wait
+  // From now on, bytes wait (where the socket can tell, the clock samples it instead).
+  if (!writing_ && !socket_known_) read_progress_ = std::chrono::steady_clock::now();
   writing_ = true;
   start_write(queue_.front());
 }
