@@ -38,6 +38,7 @@ ClientSession::~ClientSession() {
 }
 
 void ClientSession::start() {
+  if (state_ == State::closed) return;  // it gave its place up before it started (give_up_place)
   context_.metrics.connections.fetch_add(1);
   counted_ = true;
   context_.rooms->add_session(shared_from_this());
