@@ -39,6 +39,9 @@ struct AbuseLimits {
   std::size_t fresh_share_percent = 10;
   /// Seats one address may hold in one room; 0: half the room size.
   std::size_t seats_per_address = 0;
+  /// Seats one network block may hold in one room; 0: three quarters of the
+  /// room size: addresses of one /24 (or /48) together cannot fill a room.
+  std::size_t seats_per_block = 0;
   /// Upload body bytes being received at once, from one address and in all.
   std::size_t upload_bytes_per_address = 8 * 1024 * 1024;
   std::size_t upload_bytes_total = 64 * 1024 * 1024;

@@ -39,6 +39,7 @@ ClientSession::~ClientSession() {
 }
 
 void ClientSession::start() {
+  if (state_ == State::closed) return;  // it gave its place up before it started (give_up_place)
   context_.metrics.connections.fetch_add(1);
   counted_ = true;
   context_.rooms->add_session(shared_from_this());
@@ -83,7 +84,8 @@ void ClientSession::write_next() {
     }
     return;
   }
-  if (!writing_) read_progress_ = std::chrono::steady_clock::now();  // from now on, bytes wait
+  // From now on, bytes wait (where the socket can tell, the clock samples it instead).
+  if (!writing_ && !socket_known_) read_progress_ = std::chrono::steady_clock::now();
   writing_ = true;
   start_write(queue_.front());
 }
@@ -100,7 +102,9 @@ void ClientSession::on_write_done(bool ok, std::size_t bytes) {
   }
   bytes_written_.fetch_add(bytes, std::memory_order_relaxed);
   context_.metrics.bytes_sent.fetch_add(bytes, std::memory_order_relaxed);
-  read_progress_ = std::chrono::steady_clock::now();
+  // A write completes when the kernel takes the bytes, not the peer: where
+  // the socket can tell, the clock samples it instead (sample_read_progress).
+  if (!socket_known_) read_progress_ = std::chrono::steady_clock::now();
   write_next();
 }
 
@@ -465,9 +469,23 @@ std::chrono::milliseconds ClientSession::clock_period() const {
   return std::clamp<std::chrono::milliseconds>(shortest / 4, std::chrono::milliseconds(10), std::chrono::seconds(1));
 }
 
+void ClientSession::sample_read_progress(std::chrono::steady_clock::time_point now) {
+  const auto queue = socket_queue();
+  if (!queue) return;
+  socket_known_ = true;
+  const std::size_t held = queue->unacknowledged;
+  const std::uint64_t written = bytes_written_.load(std::memory_order_relaxed);
+  const std::uint64_t could_hold = socket_queue_ + (written - written_at_sample_);
+  const bool room_for_it = queue->peer_window ? *queue->peer_window >= held : held < could_hold;
+  if (held == 0 || room_for_it) read_progress_ = now;
+  socket_queue_ = held;
+  written_at_sample_ = written;
+}
+
 void ClientSession::on_clock() {
   const auto now = std::chrono::steady_clock::now();
   const auto& timeouts = context_.config.timeouts;
+  if (state_ == State::joined) sample_read_progress(now);
   if (state_ == State::greeting && now - opened_ > timeouts.handshake) {
     context_.metrics.rejected_joins.fetch_add(1);
     context_.abuse.note(Abuse::handshake_timeout, peer_, "no hello within " + seconds_text(timeouts.handshake));
@@ -479,11 +497,12 @@ void ClientSession::on_clock() {
     do_close(CloseCode::idle_timeout,
              "nothing heard for " + seconds_text(timeouts.idle) + "; send a ping at least every " +
                  seconds_text(timeouts.idle / 3));
-  } else if (state_ == State::joined && now - last_sent_ > timeouts.idle_person && writing_ &&
+  } else if (state_ == State::joined && now - last_sent_ > timeouts.idle_person && (writing_ || socket_queue_ > 0) &&
              now - read_progress_ > timeouts.idle_person) {
-    // Nothing but pings came, and what waits for the person is not taken:
-    // nobody is there, or someone holds a seat for nothing. A quiet viewer
-    // reads, so stays.
+    // Nothing but pings came, and what waits for the person is not taken
+    // (in our queue, or in the socket past what the peer's buffer holds):
+    // nobody is there, or someone holds a seat, and a room, for nothing. A
+    // quiet viewer reads, so stays.
     context_.abuse.note(Abuse::idle_person, peer_, "neither sent nor read; let go");
     quick_close_ = true;
     do_close(CloseCode::idle_timeout, "let go: you neither sent nor read anything for " +

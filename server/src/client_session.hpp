@@ -21,6 +21,7 @@
 #include "room_connection.hpp"
 #include "server_keys.hpp"
 #include "server_context.hpp"
+#include "socket_queue.hpp"
 #include "subscriber_stream.hpp"
 
 namespace fw::server {
@@ -62,6 +63,10 @@ class ClientSession : public RoomConnection, public std::enable_shared_from_this
   /// The first message came (the hello, or what stands for it): from here
   /// on the connection carries something, and keeps its place on the port.
   virtual void on_first_message() {}
+  /// What the transport's socket holds for the peer, or nullopt where it
+  /// cannot tell (in memory): whether a person reads is seen there, not in
+  /// our queue alone (socket_queue.hpp).
+  virtual std::optional<SocketQueue> socket_queue() { return std::nullopt; }
   virtual void start_reading() = 0;
   /// Writes one message; calls on_write_done when finished. One at a time.
   virtual void start_write(const SharedBytes& message) = 0;
@@ -106,6 +111,11 @@ class ClientSession : public RoomConnection, public std::enable_shared_from_this
   /// within the abuse log's lines a second).
   void protocol_error(codec::CloseCode code, const std::string& what, Abuse kind = Abuse::protocol_violation);
   void on_clock();
+  /// Samples the socket: the person reads (read progress) if nothing waits
+  /// in it, or the peer has room for what waits (its window is open); where
+  /// the kernel does not tell the window, if it took bytes since the last
+  /// sample (fewer are held than were held plus written since).
+  void sample_read_progress(std::chrono::steady_clock::time_point now);
   std::chrono::milliseconds clock_period() const;
   /// Takes `cost` from a bucket the clock refills; false if it holds less.
   static bool take_token(double& tokens, double cost);
@@ -128,6 +138,11 @@ class ClientSession : public RoomConnection, public std::enable_shared_from_this
   /// for the peer moved (a write completed, or a wait began): who neither
   /// sends nor reads for SessionTimeouts::idle_person is let go.
   std::chrono::steady_clock::time_point last_sent_, read_progress_;
+  /// The socket's unacknowledged bytes and bytes_written_ at the last
+  /// sample; whether the transport tells them at all.
+  std::size_t socket_queue_ = 0;
+  std::uint64_t written_at_sample_ = 0;
+  bool socket_known_ = false;
   double message_tokens_, byte_tokens_, chat_tokens_;
   bool counted_ = false;
   bool transport_gone_ = false;

@@ -6,6 +6,7 @@
 #include <spdlog/spdlog.h>
 
 #include "monotonic_clock.hpp"
+#include "peer_address.hpp"
 #include "room_bus.hpp"
 #include "room_registry.hpp"
 #include "server_keys.hpp"
@@ -255,6 +256,12 @@ std::size_t Room::seats_of(const std::string& address) const {
   return seats;
 }
 
+std::size_t Room::seats_of_block(const std::string& block) const {
+  std::size_t seats = 0;
+  for (const auto& [id, member] : members_) seats += member.person() && address_group(member.address) == block;
+  return seats;
+}
+
 std::optional<std::pair<codec::CloseCode, std::string>> Room::refusal_of(const JoinRequest& request) {
   const auto& config = context_.config;
   if (members_.size() >= config.room_size) {
@@ -271,6 +278,16 @@ std::optional<std::pair<codec::CloseCode, std::string>> Room::refusal_of(const J
       context_.abuse.note(Abuse::room_seats, request.address, "room '" + name_ + "' seats its share of them");
       return {{codec::CloseCode::room_full, "room '" + name_ + "' already seats " + std::to_string(share) +
                                                 " people from your address, the most one address may hold; "
+                                                "try another room"}};
+    }
+    // Nor can one network's addresses together.
+    const std::size_t block_share = config.abuse.seats_per_block != 0
+                                        ? config.abuse.seats_per_block
+                                        : std::max<std::size_t>(1, config.room_size * 3 / 4);
+    if (seats_of_block(address_group(request.address)) >= block_share) {
+      context_.abuse.note(Abuse::room_seats, request.address, "room '" + name_ + "' seats its network's share");
+      return {{codec::CloseCode::room_full, "room '" + name_ + "' already seats " + std::to_string(block_share) +
+                                                " people from your network, the most one network may hold; "
                                                 "try another room"}};
     }
   }

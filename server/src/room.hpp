@@ -155,6 +155,8 @@ class Room : public std::enable_shared_from_this<Room> {
   void refuse(const JoinRequest& request, codec::CloseCode code, const std::string& why);
   /// Seats the people from `address` hold here.
   std::size_t seats_of(const std::string& address) const;
+  /// Seats held by people from `block` (address_group()).
+  std::size_t seats_of_block(const std::string& block) const;
   void do_chat(std::uint32_t avatar, std::string text);
   /// A line from the server (avatar 0) to one person only.
   void notice(Member& member, const std::string& text);

@@ -183,6 +183,10 @@ void add_address_limit_flags(CLI::App& cmd, ServerConfig& config) {
   cmd.add_option("--seats-per-address", abuse.seats_per_address,
                  "seats one address may hold in one room (0: half the room size)")
       ->capture_default_str();
+  cmd.add_option("--seats-per-block", abuse.seats_per_block,
+                 "seats one network block (IPv4 /24, IPv6 /48) may hold in one room (0: three quarters of the room "
+                 "size)")
+      ->capture_default_str();
   cmd.add_option("--photo-queue", abuse.photo_queue, "photos waiting to be prepared before uploads get 503")
       ->check(CLI::Range(std::size_t{1}, std::size_t{10'000}))
       ->capture_default_str();

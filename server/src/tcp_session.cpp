@@ -5,6 +5,7 @@
 #include <boost/asio/write.hpp>
 
 #include "server_limits.hpp"
+#include "socket_queue.hpp"
 
 namespace fw::server {
 
@@ -38,6 +39,8 @@ void TcpSession::run() {
 }
 
 void TcpSession::on_first_message() { ticket_.busy(); }
+
+std::optional<SocketQueue> TcpSession::socket_queue() { return fw::server::socket_queue(socket_.native_handle()); }
 
 void TcpSession::start_reading() {
   socket_.async_read_some(net::buffer(read_buffer_),

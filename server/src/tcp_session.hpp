@@ -21,6 +21,7 @@ class TcpSession : public ClientSession {
 
  private:
   void on_first_message() override;
+  std::optional<SocketQueue> socket_queue() override;
   void start_reading() override;
   void start_write(const SharedBytes& message) override;
   void shutdown_transport(codec::CloseCode code, const std::string& reason, bool abort) override;

@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include "server_limits.hpp"
+#include "socket_queue.hpp"
 
 namespace fw::server {
 
@@ -84,6 +85,10 @@ void WebSocketSession::run(beast::http::request<beast::http::string_body> reques
 }
 
 void WebSocketSession::on_first_message() { ticket_.busy(); }
+
+std::optional<SocketQueue> WebSocketSession::socket_queue() {
+  return fw::server::socket_queue(beast::get_lowest_layer(ws_).socket().native_handle());
+}
 
 void WebSocketSession::start_reading() {
   ws_.async_read(buffer_, beast::bind_front_handler(&WebSocketSession::on_read,

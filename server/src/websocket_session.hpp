@@ -24,6 +24,7 @@ class WebSocketSession : public ClientSession {
 
  private:
   void on_first_message() override;
+  std::optional<SocketQueue> socket_queue() override;
   void start_reading() override;
   void start_write(const SharedBytes& message) override;
   void shutdown_transport(codec::CloseCode code, const std::string& reason, bool abort) override;

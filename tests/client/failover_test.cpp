@@ -62,7 +62,7 @@ class Node {
             bin("facewire-server"), "--data " + data.string() +
                                         " --no-demo-room --log-level warn --joins-per-minute 100000"
                                         " --room-joins-per-minute 100000 --rooms-per-hour 100000 --seats-per-address 64"
-                                        " --rooms-per-address 100000 --rooms-per-block 100000")) {}
+                                        " --rooms-per-address 100000 --rooms-per-block 100000 --seats-per-block 64")) {}
   int port() const { return port_; }
   std::string url() const { return "ws://127.0.0.1:" + std::to_string(port_) + "/"; }
   /// kill -9, as a node that dies.

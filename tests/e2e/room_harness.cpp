@@ -29,7 +29,7 @@ RoomServer::RoomServer(const std::string& extra_args) {
   process_ = std::make_unique<ServerProcess>(
       bin("facewire-server"), "--tcp 127.0.0.1:0 --data " + data_.string() +
                                   " --no-demo-room --log-level warn --joins-per-minute 100000 --room-joins-per-minute 100000 --rooms-per-hour 100000"
-                                  " --chat-per-minute 100000 --seats-per-address 64 --rooms-per-address 100000 --rooms-per-block 100000 " +
+                                  " --chat-per-minute 100000 --seats-per-address 64 --seats-per-block 64 --rooms-per-address 100000 --rooms-per-block 100000 " +
                                   extra_args);
   // The second line names the TCP port: "facewire-server tcp on tcp://ADDR:PORT".
   const std::string line = process_->port() > 0 ? process_->next_stdout_line(30000) : "";

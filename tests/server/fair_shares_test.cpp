@@ -145,7 +145,7 @@ long refusals(int port, const std::string& kind, const std::string& source) {
 TEST(FairShares, FortyAddressesInFourNetworksCannotTakeEveryRoom) {
   RunningServer server("--no-demo-room --max-rooms 200 --rooms-per-hour 100000");
   ASSERT_GT(server.tcp_port(), 0);
-  constexpr int kBlocks = 4, kAddressesPerBlock = 10, kRoomsTried = 6;
+  constexpr int kBlocks = 4, kAddressesPerBlock = 10, kRoomsTried = 5;  // the burst of --rooms-per-hour
   constexpr int kRoomsPerBlock = 20;  // the default --rooms-per-block
   std::vector<std::unique_ptr<RoomTestClient>> held;
   int welcomed = 0, refused_by_share = 0;
@@ -190,7 +190,8 @@ TEST(FairShares, TheLastRoomsWaitForNetworksThatHoldNone) {
   int welcomed = 0;
   std::string refusal;
   for (int i = 0; i < 60 && refusal.empty(); ++i) {
-    auto client = join_from(server, Transport::tcp, loopback(5, 1 + i % 3), "crowd" + std::to_string(i));
+    // 15 addresses of one /24, each within its burst of new rooms.
+    auto client = join_from(server, Transport::tcp, loopback(5, 1 + i % 15), "crowd" + std::to_string(i));
     if (client->welcome) {
       ++welcomed;
       held.push_back(std::move(client));
@@ -392,7 +393,7 @@ int retry_seconds(const std::string& answer) {
 TEST(FairShares, HalfSentRequestsAtThePortsCapDoNotStopAPersonOnAFreshAddress) {
   ServerWithDescriptors server(kDescriptors, "--no-demo-room");
   ASSERT_GT(server.http_port(), 0);
-  Crowd crowd(server.http_port(), true, 11, 3, 14, 3);  // 126 half-sent requests, twice the port
+  Crowd crowd(server.http_port(), true, 11, 3, 14, 5);  // 210 half-sent requests, more than the descriptors
   std::this_thread::sleep_for(2s);
   const auto first_refusals = crowd.refusals();
   ASSERT_FALSE(first_refusals.empty()) << "the crowd is refused past the port's places";
@@ -409,7 +410,7 @@ TEST(FairShares, HalfSentRequestsAtThePortsCapDoNotStopAPersonOnAFreshAddress) {
     std::this_thread::sleep_for(1s);
   }
   const auto refused = crowd.refusals();
-  std::cout << "126 half-sent requests from 42 addresses at a port of 64: " << refused.size()
+  std::cout << "210 half-sent requests from 42 addresses at a port of 64: " << refused.size()
             << " refused in 7 s; a person on a fresh address: /healthz 200 " << served << " of 5, joined " << joined
             << " of 5\n"
             << (failures.empty() ? "" : failures) << "first refusal: " << first_refusals.front().text << "\n";
@@ -444,7 +445,7 @@ TEST(FairShares, TheCrowdIsToldTheRealWait) {
 }
 
 // The measured attack: with `ulimit -n 1024`, 1,100 silent TCP connections
-// from 22 addresses refused every port for 8-10 s. Here 88 silent TCP
+// from 22 addresses refused every port for 8-10 s. Here 220 silent TCP
 // connections from 22 addresses in two /24s, against 64 places a port (an
 // open-files limit of 192): a person on a fresh address joins over TCP and
 // gets /healthz on the HTTP port, the crowd is told to wait for the hello
@@ -453,7 +454,7 @@ TEST(FairShares, SilentTcpConnectionsAtThePortsCapDoNotStopAPersonJoining) {
   ServerWithDescriptors server(kDescriptors, "--no-demo-room");
   ASSERT_GT(server.tcp_port(), 0);
   const auto start = Clock::now();
-  Crowd crowd(server.tcp_port(), false, 13, 2, 11, 4);  // 88 silent connections from 22 addresses
+  Crowd crowd(server.tcp_port(), false, 13, 2, 11, 10);  // 220 silent connections from 22 addresses
   std::this_thread::sleep_for(1500ms);
   int joined = 0, served = 0;
   std::string failures;
@@ -467,7 +468,7 @@ TEST(FairShares, SilentTcpConnectionsAtThePortsCapDoNotStopAPersonJoining) {
   }
   const auto refused = crowd.refusals();
   ASSERT_FALSE(refused.empty());
-  std::cout << "88 silent TCP connections at a port of 64: a person joined " << joined << " of 3 and got /healthz "
+  std::cout << "220 silent TCP connections at a port of 64: a person joined " << joined << " of 3 and got /healthz "
             << served << " of 3; "
             << refused.size() << " refusals, the first after "
             << std::chrono::duration<double>(refused.front().at - start).count() << " s\n";

@@ -130,6 +130,7 @@ class InMemoryServer {
     config.abuse.joins = config.abuse.chat = config.abuse.room_creations = config.abuse.room_joins = {1e6, 1e6};
     config.abuse.seats_per_address = 64;
     config.abuse.rooms_per_address = config.abuse.rooms_per_block = 100000;
+    config.abuse.seats_per_block = 64;
     return config;
   }
 

@@ -201,6 +201,24 @@ TEST(RoomLimits, OneAddressHoldsAtMostHalfOfARoomsSeats) {
   EXPECT_EQ(server.context().abuse.count(Abuse::room_seats), 1u);
 }
 
+TEST(RoomLimits, OneNetworksAddressesTogetherHoldAtMostThreeQuartersOfARoomsSeats) {
+  ServerConfig config = InMemoryServer::test_config();
+  config.room_size = 8;
+  config.abuse.seats_per_address = 0;  // half the room: 4 per address
+  config.abuse.seats_per_block = 0;    // three quarters: 6 per /24
+  InMemoryServer server(config);
+  std::vector<std::unique_ptr<InMemoryPeer>> seated;
+  for (int i = 1; i <= 6; ++i) {
+    seated.push_back(join_from(server, "10.0.0." + std::to_string(i), "r", "Neighbour"));
+    ASSERT_TRUE(seated.back()->welcome) << i;
+  }
+  auto seventh = join_from(server, "10.0.0.7", "r", "Neighbour");
+  ASSERT_TRUE(seventh->closing);
+  EXPECT_EQ(seventh->closing->code, CloseCode::room_full);
+  EXPECT_NE(seventh->closing->reason.find("from your network"), std::string::npos) << seventh->closing->reason;
+  EXPECT_TRUE(join_from(server, "10.0.1.1", "r", "Elsewhere")->welcome) << "another /24 still joins";
+}
+
 TEST(RoomLimits, OneAddressCreatesAtMostFiveRoomsAtOnce) {
   ServerConfig config = InMemoryServer::test_config();
   config.abuse.room_creations = AbuseLimits{}.room_creations;

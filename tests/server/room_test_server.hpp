@@ -24,7 +24,7 @@ using Transport = RoomTestClient::Transport;
 /// keep the defaults.
 inline const std::string kManyClientsFromOneAddress =
     " --joins-per-minute 100000 --chat-per-minute 100000 --room-chat-per-minute 100000 --room-joins-per-minute 100000 --rooms-per-hour 100000"
-    " --seats-per-address 64 --rooms-per-address 100000 --rooms-per-block 100000 ";
+    " --seats-per-address 64 --seats-per-block 64 --rooms-per-address 100000 --rooms-per-block 100000 ";
 
 /// A server with a TCP port and its own data directory.
 class RunningServer {

@@ -46,7 +46,7 @@ export function runProgram(name, args) {
 
 /// What one address may do, raised: every page and client of a test runs on 127.0.0.1.
 const ONE_ADDRESS_LIMITS = ['--joins-per-minute', '100000', '--room-joins-per-minute', '100000', '--rooms-per-hour', '100000', '--chat-per-minute', '100000',
-  '--seats-per-address', '64'];
+  '--seats-per-address', '64', '--seats-per-block', '64', '--rooms-per-address', '100000', '--rooms-per-block', '100000'];
 
 /// Starts `facewire-server serve` on 127.0.0.1:0 with `args`; resolves with
 /// { url, port, dataDir, log(), stop() } once it prints its address.
