@@ -5,7 +5,8 @@
 // signature it could never guess), or mint_join_token's for the input's
 // room and name (join_token_fuzz_input.hpp has the layout). Whatever the
 // bytes: no crash, and a reason whenever the token is refused. A minted
-// token admits its own room and name until it expires. An admitted token
+// token admits its own room and name until it expires, when the name is a
+// display name as a hello brings it (in NFC; names are compared so). An admitted token
 // admits no other room and no other name (a token binds one person), and
 // no other spelling of its signature (PROTOCOL.md, "Join tokens").
 // Seeded with admitted tokens of every making (corpus/join_token_fuzz,
@@ -16,6 +17,7 @@
 #include <string>
 #include <string_view>
 
+#include "display_name.hpp"
 #include "join_token.hpp"
 #include "join_token_fuzz_input.hpp"
 #include "seed_check.hpp"
@@ -28,6 +30,12 @@ using fw::fuzz::kBase64urlAlphabet;
 
 bool admits(const std::string& token, const JoinTokenInput& in, std::string_view room, std::string_view name) {
   return fw::server::check_join_token(token, in.secret, room, name, in.now).empty();
+}
+
+/// Whether a hello could bring `name` as it is: a display name, in NFC.
+bool hello_name(std::string_view name) {
+  std::string normalized;
+  return fw::server::normalize_display_name(name, normalized).empty() && normalized == name;
 }
 
 }  // namespace
@@ -51,7 +59,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   const std::string why = fw::server::check_join_token(token, in->secret, in->room, in->name, in->now);
   if (!why.empty()) {
-    if (in->making == TokenMaking::minted && !in->name.empty() && in->expires >= in->now) std::abort();
+    if (in->making == TokenMaking::minted && hello_name(in->name) && in->expires >= in->now) std::abort();
     fw::fuzz::seed_refused(why);
     return 0;
   }
