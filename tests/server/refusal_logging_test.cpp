@@ -209,6 +209,12 @@ TEST(RefusalLogging, ADrainingServerAnswersReadyzWith503) {
   codec::write_message(hello, bytes);
   codec::write_tcp_frame(bytes, frame);
   send_all(fd, frame);
+  // Seated once the welcome comes (the first bytes the server sends): a
+  // person still greeting would not hold the drain open.
+  char welcome[256];
+  pollfd p{fd, POLLIN, 0};
+  ASSERT_GT(::poll(&p, 1, 10000), 0) << "no welcome";
+  ASSERT_GT(::recv(fd, welcome, sizeof welcome, 0), 0);
   const auto deadline = Clock::now() + 10s;
   while (http_get(server.process.port(), "/readyz").status != 200 && Clock::now() < deadline)
     std::this_thread::sleep_for(20ms);
