@@ -43,10 +43,13 @@ struct ServerConfig {
   /// use (avatar_retention.hpp); 0 keeps them until their uploader deletes them.
   std::uint32_t avatar_retention_days = 30;
   /// Once an upload's body has started, every limits::kUploadPaceWindow must
-  /// bring this many bytes a second on average (a phone on a slow link
-  /// sends 30 KiB/s and more); a body slower than that is answered 408 and
-  /// closed. 0: no pace, a body's fixed limits::kUploadTimeout instead.
-  std::size_t min_upload_bytes_per_second = 16 * 1024;
+  /// bring this many bytes a second on average; a body slower than that is
+  /// answered 408 and closed. Half of the slowest link facewire serves
+  /// (9.6 kbit/s, 1,200 bytes a second, over which a client uploads its
+  /// package too): a dribbler that sends a byte a second is gone in 5 s, and
+  /// bytes are counted as they arrive, so a slow body holds only what it
+  /// sent. 0: no pace, a body's fixed limits::kUploadTimeout instead.
+  std::size_t min_upload_bytes_per_second = 600;
   /// The most pixels a photo's header may declare (at most
   /// photo::kMaxPhotoPixels); a larger one is refused from its header,
   /// before it is decoded (a 12-megapixel phone photo passes; a PNG
