@@ -144,7 +144,7 @@ nlohmann::json run_once(const FanoutArgs& args, int node_count) {
   server_args += " --joins-per-minute 1000000 --room-joins-per-minute 1000000 --rooms-per-hour 1000000 --seats-per-address " +
                  std::to_string(args.per_room) + " --max-connections-per-address " + std::to_string(clients + 64) +
                  " --max-connections-per-block " + std::to_string(clients + 64) +
-                 " --rooms-per-address 1000000 --rooms-per-block 1000000 --fresh-share-percent 0 --seats-per-block " +
+                 " --rooms-per-address 100000 --rooms-per-block 100000 --fresh-share-percent 0 --seats-per-block " +
                  std::to_string(args.per_room);
   if (args.physics == "awake") server_args += " --physics-always-awake";
   if (args.physics == "off") server_args += " --no-physics";
