@@ -28,6 +28,7 @@
 #include <gtest/gtest.h>
 
 #include "fw/codec/messages.hpp"
+#include "loopback_socket.hpp"
 #include "room_test_client.hpp"
 #include "room_test_server.hpp"
 #include "server_process.hpp"
@@ -65,23 +66,7 @@ std::string outcome(const RoomTestClient& client) {
 
 // --- raw sockets from a chosen loopback address ------------------------------
 
-int connect_from(const std::string& source, int port) {
-  const int fd = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
-  if (fd < 0) return -1;
-  sockaddr_in local{};
-  local.sin_family = AF_INET;
-  ::inet_pton(AF_INET, source.c_str(), &local.sin_addr);
-  sockaddr_in remote{};
-  remote.sin_family = AF_INET;
-  remote.sin_port = htons(static_cast<std::uint16_t>(port));
-  remote.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  if (::bind(fd, reinterpret_cast<sockaddr*>(&local), sizeof local) != 0 ||
-      ::connect(fd, reinterpret_cast<sockaddr*>(&remote), sizeof remote) != 0) {
-    ::close(fd);
-    return -1;
-  }
-  return fd;
-}
+int connect_from(const std::string& source, int port) { return test::connect_loopback_from(source.c_str(), port, 0); }
 
 void send_text(int fd, const std::string& text) { ::send(fd, text.data(), text.size(), MSG_NOSIGNAL | MSG_DONTWAIT); }
 
