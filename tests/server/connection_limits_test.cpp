@@ -31,6 +31,7 @@
 #include <gtest/gtest.h>
 
 #include "fw/codec/messages.hpp"
+#include "loopback_socket.hpp"
 #include "room_inbox.hpp"
 #include "room_test_client.hpp"
 #include "room_test_server.hpp"
@@ -51,51 +52,11 @@ double seconds_since(Clock::time_point start) { return std::chrono::duration<dou
 // --- raw sockets from a chosen loopback address ------------------------------
 
 /// A blocking TCP connection from `source` to 127.0.0.1:`port`; -1 on failure.
-int connect_from(const char* source, int port) {
-  const int fd = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
-  if (fd < 0) return -1;
-  sockaddr_in local{};
-  local.sin_family = AF_INET;
-  ::inet_pton(AF_INET, source, &local.sin_addr);
-  sockaddr_in remote{};
-  remote.sin_family = AF_INET;
-  remote.sin_port = htons(static_cast<std::uint16_t>(port));
-  remote.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  if (::bind(fd, reinterpret_cast<sockaddr*>(&local), sizeof local) != 0 ||
-      ::connect(fd, reinterpret_cast<sockaddr*>(&remote), sizeof remote) != 0) {
-    ::close(fd);
-    return -1;
-  }
-  return fd;
-}
+int connect_from(const char* source, int port) { return test::connect_loopback_from(source, port, 0); }
 
-void send_text(int fd, const std::string& text) { ::send(fd, text.data(), text.size(), MSG_NOSIGNAL | MSG_DONTWAIT); }
-
-/// What the server sent on `fd` within `timeout`, and whether it closed
-/// (end of stream or reset) by then.
-struct Received {
-  std::string bytes;
-  bool closed = false;
-};
-Received receive_for(int fd, std::chrono::milliseconds timeout) {
-  Received received;
-  const auto deadline = Clock::now() + timeout;
-  for (;;) {
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
-    pollfd p{fd, POLLIN, 0};
-    if (::poll(&p, 1, static_cast<int>(std::max<long>(left, 0))) <= 0) return received;
-    char buffer[4096];
-    const ssize_t n = ::recv(fd, buffer, sizeof buffer, MSG_DONTWAIT);
-    if (n > 0) {
-      received.bytes.append(buffer, static_cast<std::size_t>(n));
-      continue;
-    }
-    if (n == 0 || (errno != EAGAIN && errno != EWOULDBLOCK)) {
-      received.closed = true;
-      return received;
-    }
-  }
-}
+using test::Received;
+using test::receive_for;
+using test::send_text;
 
 /// A whole HTTP exchange from `source`: the status (0 if none came within `timeout`) and the text.
 std::pair<int, std::string> http_from(const char* source, int port, const std::string& request,

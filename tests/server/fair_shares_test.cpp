@@ -68,32 +68,9 @@ std::string outcome(const RoomTestClient& client) {
 
 int connect_from(const std::string& source, int port) { return test::connect_loopback_from(source.c_str(), port, 0); }
 
-void send_text(int fd, const std::string& text) { ::send(fd, text.data(), text.size(), MSG_NOSIGNAL | MSG_DONTWAIT); }
-
-/// What the server sent on `fd` within `timeout`, and whether it closed.
-struct Received {
-  std::string bytes;
-  bool closed = false;
-};
-Received receive_for(int fd, std::chrono::milliseconds timeout) {
-  Received received;
-  const auto deadline = Clock::now() + timeout;
-  for (;;) {
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
-    pollfd p{fd, POLLIN, 0};
-    if (::poll(&p, 1, static_cast<int>(std::max<long>(left, 0))) <= 0) return received;
-    char buffer[4096];
-    const ssize_t n = ::recv(fd, buffer, sizeof buffer, MSG_DONTWAIT);
-    if (n > 0) {
-      received.bytes.append(buffer, static_cast<std::size_t>(n));
-      continue;
-    }
-    if (n == 0 || (errno != EAGAIN && errno != EWOULDBLOCK)) {
-      received.closed = true;
-      return received;
-    }
-  }
-}
+using test::Received;
+using test::receive_for;
+using test::send_text;
 
 /// GET `path` from `source`: the status (0 if none within `timeout`) and the whole answer.
 std::pair<int, std::string> get_from(const std::string& source, int port, const std::string& path,

@@ -38,22 +38,9 @@ using Transport = RoomTestClient::Transport;
 /// server closes; status 0 if none came.
 test::HttpReply exchange_from(const std::string& source, int port, const std::string& raw) {
   test::HttpReply reply;
-  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+  // 30 s: a loaded machine; an upload's answer comes from the photo worker.
+  const int fd = test::connect_loopback_from(source.c_str(), port, 30);
   if (fd < 0) return reply;
-  timeval timeout{30, 0};  // a loaded machine; an upload's answer comes from the photo worker
-  ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &timeout, sizeof timeout);
-  sockaddr_in local{};
-  local.sin_family = AF_INET;
-  ::inet_pton(AF_INET, source.c_str(), &local.sin_addr);
-  sockaddr_in remote{};
-  remote.sin_family = AF_INET;
-  remote.sin_port = htons(static_cast<std::uint16_t>(port));
-  remote.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  if (::bind(fd, reinterpret_cast<sockaddr*>(&local), sizeof local) != 0 ||
-      ::connect(fd, reinterpret_cast<sockaddr*>(&remote), sizeof remote) != 0) {
-    ::close(fd);
-    return reply;
-  }
   return test::http_exchange_on(fd, raw);
 }
 

@@ -8,7 +8,13 @@
 #include <sys/time.h>
 #include <unistd.h>
 
+#include <poll.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
 #include <cstdint>
+#include <string>
 
 namespace fw::test {
 
@@ -49,6 +55,39 @@ inline int connect_loopback_from(const char* source, int port, int receive_timeo
     return -1;
   }
   return fd;
+}
+
+/// Sends `text` without waiting (what the socket does not take is dropped:
+/// the tests that use it send a few bytes at a time).
+inline void send_text(int fd, const std::string& text) {
+  ::send(fd, text.data(), text.size(), MSG_NOSIGNAL | MSG_DONTWAIT);
+}
+
+/// What the server sent on `fd` within a time, and whether it closed
+/// (end of stream or reset) by then.
+struct Received {
+  std::string bytes;
+  bool closed = false;
+};
+inline Received receive_for(int fd, std::chrono::milliseconds timeout) {
+  using Clock = std::chrono::steady_clock;
+  Received received;
+  const auto deadline = Clock::now() + timeout;
+  for (;;) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
+    pollfd p{fd, POLLIN, 0};
+    if (::poll(&p, 1, static_cast<int>(std::max<long>(left, 0))) <= 0) return received;
+    char buffer[4096];
+    const ssize_t n = ::recv(fd, buffer, sizeof buffer, MSG_DONTWAIT);
+    if (n > 0) {
+      received.bytes.append(buffer, static_cast<std::size_t>(n));
+      continue;
+    }
+    if (n == 0 || (errno != EAGAIN && errno != EWOULDBLOCK)) {
+      received.closed = true;
+      return received;
+    }
+  }
 }
 
 }  // namespace fw::test
