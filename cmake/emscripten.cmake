@@ -38,11 +38,15 @@ function(fw_wasm_module)
   foreach(dir ${ARG_SYSTEM_INCLUDES})
     list(APPEND include_flags -isystem ${dir})
   endforeach()
+  # Ninja makes an output's folder before running its command; the Unix
+  # Makefiles generator does not, and em++ will not write into a missing one.
+  set(object_dir ${CMAKE_CURRENT_BINARY_DIR}/${ARG_NAME}_objects)
+  file(MAKE_DIRECTORY ${object_dir})
   set(objects)
   foreach(source ${ARG_SOURCES})
     get_filename_component(source_abs ${source} ABSOLUTE)
     string(MAKE_C_IDENTIFIER "${source}" object_name)
-    set(object ${CMAKE_CURRENT_BINARY_DIR}/${ARG_NAME}_objects/${object_name}.o)
+    set(object ${object_dir}/${object_name}.o)
     add_custom_command(
       OUTPUT ${object}
       COMMAND ${FW_EM_ENV} ${FW_EMXX} ${FW_EM_FLAGS} ${ARG_COMPILE_OPTIONS} ${include_flags}

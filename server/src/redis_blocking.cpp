@@ -60,8 +60,20 @@ bool RedisBlocking::connect_locked() {
 
 std::optional<RedisReply> RedisBlocking::command(const std::vector<std::string>& args) {
   std::lock_guard lock(mutex_);
+  const bool reused = context_ != nullptr;
   if (!connect_locked()) return std::nullopt;
   redisReply* reply = run(context_, args);
+  if (!reply && reused && context_->err == REDIS_ERR_EOF) {
+    // The connection was made to a Redis that has since gone (it restarted):
+    // the first call after it comes back would be lost, although the new
+    // one is there. Closed before it answered, the old server did not carry
+    // the command out, so it is sent once more on a fresh connection.
+    redisFree(context_);
+    context_ = nullptr;
+    last_attempt_ = {};
+    if (!connect_locked()) return std::nullopt;
+    reply = run(context_, args);
+  }
   if (!reply) {
     spdlog::warn("Redis at {}:{} did not answer: {}", address_.host, address_.port, context_->errstr);
     redisFree(context_);

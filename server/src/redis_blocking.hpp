@@ -27,7 +27,9 @@ class RedisBlocking {
   RedisBlocking& operator=(const RedisBlocking&) = delete;
 
   /// The reply, or nullopt when Redis did not answer in time (the
-  /// connection is made again at a later call, at most once a second).
+  /// connection is made again at a later call, at most once a second). A
+  /// connection the server closed since the last call (Redis restarted) is
+  /// made again at once and the command sent on it.
   std::optional<RedisReply> command(const std::vector<std::string>& args);
 
  private:

@@ -6,6 +6,7 @@
 #include "first_person_layout.hpp"
 #include "frame_text.hpp"
 #include "head_points.hpp"
+#include "pixel_count.hpp"
 #include "room_view.hpp"
 #include "view_overlay.hpp"
 
@@ -53,13 +54,8 @@ TEST(FrameText, LettersAreLightOnADarkOutline) {
 
 // Pixels of the name colour (light grey letters) in `box`.
 int letter_pixels(const model::RgbaImage& image, int x0, int y0, int x1, int y1) {
-  int n = 0;
-  for (int y = std::max(0, y0); y < std::min(image.height, y1); ++y)
-    for (int x = std::max(0, x0); x < std::min(image.width, x1); ++x) {
-      const std::uint8_t* p = image.at(x, y);
-      n += p[0] > 225 && p[1] > 225 && p[2] > 225 ? 1 : 0;
-    }
-  return n;
+  return fw::test::count_pixels(
+      image, [](const std::uint8_t* p) { return p[0] > 225 && p[1] > 225 && p[2] > 225; }, {x0, y0, x1, y1});
 }
 
 class RoomViewText : public ::testing::Test {

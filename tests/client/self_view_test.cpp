@@ -8,6 +8,7 @@
 #include "first_person_layout.hpp"
 #include "fw/render/jpeg_codec.hpp"
 #include "join_loop.hpp"
+#include "pixel_count.hpp"
 
 namespace fw::client {
 namespace {
@@ -24,16 +25,20 @@ class KeepingSink : public FrameSink {
   std::vector<model::RgbaImage>* frames_;
 };
 
+// The self view's tile in an image of that size.
+fw::test::PixelBox tile_box(int width, int height) {
+  const PixelRect tile = first_person_layout(0, width, height).self_tile;
+  return {tile.x, tile.y, tile.x + tile.width, tile.y + tile.height};
+}
+
 // How many pixels of the self view's tile are near `rgb`.
 int tile_pixels_near(const model::RgbaImage& image, std::array<int, 3> rgb) {
-  const PixelRect tile = first_person_layout(0, image.width, image.height).self_tile;
-  int n = 0;
-  for (int y = tile.y; y < tile.y + tile.height; ++y)
-    for (int x = tile.x; x < tile.x + tile.width; ++x) {
-      const std::uint8_t* p = image.at(x, y);
-      n += std::abs(p[0] - rgb[0]) + std::abs(p[1] - rgb[1]) + std::abs(p[2] - rgb[2]) < 40 ? 1 : 0;
-    }
-  return n;
+  return fw::test::count_pixels(
+      image,
+      [&](const std::uint8_t* p) {
+        return std::abs(p[0] - rgb[0]) + std::abs(p[1] - rgb[1]) + std::abs(p[2] - rgb[2]) < 40;
+      },
+      tile_box(image.width, image.height));
 }
 
 class SelfView : public ::testing::Test {
@@ -92,13 +97,9 @@ TEST_F(SelfView, TheJoinLoopDrawsTheSelfViewWhileItWaitsForTheWelcome) {
   EXPECT_EQ(outcome.frames, 0) << "--frames counts frames in the room only";
   ASSERT_GE(frames_.size(), 1u) << "the first step draws before it looks at the time";
   // Greenish skin fills a good part of the tile in the very first frame.
-  int green = 0;
   const PixelRect tile = first_person_layout(0, 320, 180).self_tile;
-  for (int y = tile.y; y < tile.y + tile.height; ++y)
-    for (int x = tile.x; x < tile.x + tile.width; ++x) {
-      const std::uint8_t* p = frames_[0].at(x, y);
-      green += p[1] > p[0] + 30 && p[1] > p[2] + 30 ? 1 : 0;
-    }
+  const int green = fw::test::count_pixels(
+      frames_[0], [](const std::uint8_t* p) { return p[1] > p[0] + 30 && p[1] > p[2] + 30; }, tile_box(320, 180));
   EXPECT_GT(green, tile.width * tile.height / 6);
 }
 

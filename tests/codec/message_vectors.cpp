@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "fw/codec/messages.hpp"
+#include "sample_messages.hpp"
 
 namespace fw::codec {
 namespace {
@@ -146,17 +147,7 @@ struct Vectors {
 
 json make_vectors() {
   Vectors v;
-  Hello hello;
-  hello.room = "lobby";
-  hello.name = "Zoë";
-  hello.avatar = "0123456789abcdef0123456789abcdef";
-  hello.token = "fw1.e30.sig";
-  hello.max_bps = 9600;
-  hello.timestamps = true;
-  hello.own_package = true;
-  hello.avatar_key = "k3y-_AZaz09k3y-_AZaz09";
-  hello.resume = "r-e_sume0123456789abcd";
-  v.add(hello);
+  v.add(fw::test::sample_hello());
   Welcome welcome;
   welcome.you = 300;
   welcome.room = "r-1.x";

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "fw/codec/codec.hpp"
+#include "sample_messages.hpp"
 #include "test_seed.hpp"
 
 namespace fw::codec {
@@ -18,14 +19,7 @@ std::vector<std::uint8_t> bytes_of(const M& message) {
 }
 
 TEST(Messages, HelloRoundTrips) {
-  Hello hello;
-  hello.room = "lobby";
-  hello.name = "Zoë";
-  hello.avatar = "a1b2c3";
-  hello.token = "tok.en";
-  hello.max_bps = 9600;
-  hello.timestamps = true;
-  hello.own_package = true;
+  const Hello hello = fw::test::sample_hello();
   const auto bytes = bytes_of(hello);
   EXPECT_EQ(bytes[0], 0x81);
   EXPECT_EQ(classify(bytes), MessageKind::session);
@@ -34,12 +28,14 @@ TEST(Messages, HelloRoundTrips) {
   ASSERT_EQ(read_message(bytes, back), MessageError::ok);
   EXPECT_EQ(back.room, "lobby");
   EXPECT_EQ(back.name, "Zoë");
-  EXPECT_EQ(back.avatar, "a1b2c3");
-  EXPECT_EQ(back.token, "tok.en");
+  EXPECT_EQ(back.avatar, hello.avatar);
+  EXPECT_EQ(back.token, hello.token);
   EXPECT_EQ(back.max_bps, 9600u);
   EXPECT_TRUE(back.timestamps);
   EXPECT_FALSE(back.no_packages);
   EXPECT_TRUE(back.own_package);
+  EXPECT_EQ(back.avatar_key, hello.avatar_key);
+  EXPECT_EQ(back.resume, hello.resume);
 }
 
 TEST(Messages, HelloOfAnotherVersionIsRefusedBeforeItsFields) {

@@ -19,6 +19,7 @@
 #include "fw/codec/codec.hpp"
 #include "fw/codec/messages.hpp"
 #include "join_token_fuzz_input.hpp"
+#include "sample_messages.hpp"
 #include "tcp_framing_fuzz_input.hpp"
 
 namespace fs = std::filesystem;
@@ -77,15 +78,7 @@ struct Messages {
 
 Messages make_messages() {
   Messages m;
-  Hello hello;
-  hello.room = "lobby";
-  hello.name = "Zoë";
-  hello.avatar = "0123456789abcdef0123456789abcdef";
-  hello.token = "fw1.eyJyb29tIjoibG9iYnkifQ.c2ln";
-  hello.max_bps = 9600;
-  hello.timestamps = true;
-  hello.own_package = true;
-  m.hello = bytes_of(hello);
+  m.hello = bytes_of(fw::test::sample_hello());
   Hello minimal;
   minimal.room = "r";
   minimal.name = "A";

@@ -7,6 +7,7 @@
 
 #include "fw/behavior/eye_head.hpp"
 #include "fw/model/procedural_texture.hpp"
+#include "pixel_count.hpp"
 #include "polygon_inset.hpp"
 
 namespace fw::render {
@@ -296,10 +297,7 @@ int enclosed_background(const RgbaImage& image) {
 }
 
 int head_pixels(const RgbaImage& image) {
-  int n = 0;
-  for (int y = 0; y < image.height; ++y)
-    for (int x = 0; x < image.width; ++x) n += !is_background(image.at(x, y));
-  return n;
+  return fw::test::count_pixels(image, [](const std::uint8_t* p) { return !is_background(p); });
 }
 
 // Turned 60 degrees, the head shows its side, ear and back, not the edge of

@@ -5,12 +5,6 @@
 // avatar; and an uploader deletes their avatar with its key (nobody else
 // can), after which whoever wore it is shown with a procedural face. The
 // people come from different /24s of 127.0.0.0/8, as strangers would.
-#include <arpa/inet.h>
-#include <netinet/in.h>
-#include <sys/socket.h>
-#include <sys/time.h>
-#include <unistd.h>
-
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -41,33 +35,16 @@ using Transport = RoomTestClient::Transport;
 // Three strangers, each from a network of their own.
 const std::string kAlice = "127.0.1.10", kMallory = "127.0.2.20", kBob = "127.0.3.30";
 
-/// An HTTP exchange from the local address `from` (read until the server closes).
-test::HttpReply http_from(const std::string& from, int port, const std::string& raw, int timeout_s = 60) {
-  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-  if (fd < 0) return {};
-  timeval timeout{timeout_s, 0};
-  ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &timeout, sizeof timeout);
-  sockaddr_in local{}, server{};
-  local.sin_family = server.sin_family = AF_INET;
-  ::inet_pton(AF_INET, from.c_str(), &local.sin_addr);
-  server.sin_port = htons(static_cast<std::uint16_t>(port));
-  server.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  if (::bind(fd, reinterpret_cast<sockaddr*>(&local), sizeof local) != 0 ||
-      ::connect(fd, reinterpret_cast<sockaddr*>(&server), sizeof server) != 0) {
-    ::close(fd);
-    return {};
-  }
-  return test::http_exchange_on(fd, raw);
-}
+using test::get_from;
+using test::http_from;
 
+/// An upload from `from`, its answer read (a photo's preparation may load
+/// the landmark model first: a minute's patience).
 test::HttpReply upload_from(const std::string& from, int port, const std::string& type, const std::string& body) {
   return http_from(from, port,
                    "POST /api/avatars HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\nContent-Type: " + type +
-                       "\r\nContent-Length: " + std::to_string(body.size()) + "\r\n\r\n" + body);
-}
-
-test::HttpReply get_from(const std::string& from, int port, const std::string& path) {
-  return http_from(from, port, "GET " + path + " HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\n\r\n");
+                       "\r\nContent-Length: " + std::to_string(body.size()) + "\r\n\r\n" + body,
+                   60s);
 }
 
 /// DELETE /api/avatars/ID, with `key` in X-Avatar-Key unless it is empty.

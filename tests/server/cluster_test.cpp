@@ -9,7 +9,6 @@
 #include <filesystem>
 #include <limits>
 #include <memory>
-#include <regex>
 #include <set>
 #include <string>
 #include <thread>
@@ -128,6 +127,19 @@ bool everyone_sees(const std::vector<RoomTestClient*>& clients, const std::set<s
     for (const std::uint32_t id : ids)
       if (c->frames_per_avatar[id] == 0) return false;
   return true;
+}
+
+/// Who decodes no frame of whom, for a failure's message: "client 1 (avatar
+/// 3) sees nothing of 2; ...", or an empty string.
+std::string unseen(const std::vector<RoomTestClient*>& clients, const std::set<std::uint32_t>& ids) {
+  std::string text;
+  for (std::size_t i = 0; i < clients.size(); ++i)
+    for (const std::uint32_t id : ids)
+      if (clients[i]->frames_per_avatar[id] == 0)
+        text += "client " + std::to_string(i) + " (avatar " +
+                std::to_string(clients[i]->welcome ? clients[i]->welcome->you : 0) + ") sees nothing of " +
+                std::to_string(id) + "; ";
+  return text;
 }
 
 TEST(Cluster, ThreeNodesOneRoomEveryoneSeesEveryone) {
@@ -282,7 +294,7 @@ TEST(Cluster, RedisRestartsAndTheClusterRecovers) {
         return everyone_sees(all, people);
       },
       30s))
-      << "the cluster did not recover";
+      << "the cluster did not recover: " << unseen(all, people);
 }
 
 TEST(Cluster, ASlowSubscriberOnOneNodeDoesNotSlowTheRoomOnAnother) {
@@ -518,13 +530,6 @@ TEST(Cluster, AnAvatarDeletedOnOneNodeIsGoneFromEveryNodeAndItsWearerShownNeutra
   EXPECT_TRUE(bo->errors.empty()) << bo->errors.front();
 }
 
-long refusals(const RunningServer& node, const std::string& kind) {
-  const auto metrics = http_get(node.http_port(), "/metrics");
-  std::smatch match;
-  if (!std::regex_search(metrics.body, match, std::regex("facewire_refusals_total\\{kind=\"" + kind + "\"\\} (\\d+)")))
-    return -1;
-  return std::stol(match[1]);
-}
 
 /// How many action units of `avatar`'s face, as `client` decodes it now, are
 /// near their full intensity: a face the room's behavior never makes has
@@ -558,7 +563,7 @@ TEST(Cluster, MessagesForgedIntoRedisChangeNothingAClientSees) {
   std::vector<RoomTestClient*> both{first.get(), bridged.get()};
   ASSERT_TRUE(eventually([&] { pump_all(both, 100ms); return everyone_sees(both, {first_id, bridged_id}); }, 30s));
   const auto members_before = known_avatars(*bridged);
-  const long refused_before = refusals(bridging, "cluster_message");
+  const long refused_before = test::refusal_count(bridging.http_port(), "cluster_message");
 
   server::RedisBlocking attacker(cluster.redis_address(), 2000ms);
   auto publish = [&](const std::string& channel, const std::string& payload) {
@@ -595,7 +600,7 @@ TEST(Cluster, MessagesForgedIntoRedisChangeNothingAClientSees) {
   down({.kind = server::bridge::DownKind::chat, .owner = "mallory", .message = {0x80 | 3, 0xff, 0xff, 0xff, 0xff}});
 
   pump_all(both, 1500ms);
-  const long refused = refusals(bridging, "cluster_message") - refused_before;
+  const long refused = test::refusal_count(bridging.http_port(), "cluster_message") - refused_before;
   auto victim = std::make_unique<RoomTestClient>(Transport::websocket, bridging.http_port(), "127.0.3.7");
   const bool victim_in = victim->connected() && !victim->pump_until([&] { return victim->closed(); }, 1500ms);
   std::cout << "forged into Redis: 127.0.3.7 " << (victim_in ? "connects" : "is refused") << "; the bridged person "

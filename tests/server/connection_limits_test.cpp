@@ -31,6 +31,7 @@
 #include <gtest/gtest.h>
 
 #include "fw/codec/messages.hpp"
+#include "http_get.hpp"
 #include "loopback_socket.hpp"
 #include "room_inbox.hpp"
 #include "room_test_client.hpp"
@@ -54,42 +55,12 @@ double seconds_since(Clock::time_point start) { return std::chrono::duration<dou
 /// A blocking TCP connection from `source` to 127.0.0.1:`port`; -1 on failure.
 int connect_from(const char* source, int port) { return test::connect_loopback_from(source, port, 0); }
 
+using test::get_from;
+using test::http_from;
 using test::Received;
 using test::receive_for;
+using test::refusal_count;
 using test::send_text;
-
-/// A whole HTTP exchange from `source`: the status (0 if none came within `timeout`) and the text.
-std::pair<int, std::string> http_from(const char* source, int port, const std::string& request,
-                                      std::chrono::milliseconds timeout = 5s) {
-  const int fd = connect_from(source, port);
-  if (fd < 0) return {0, "cannot connect"};
-  send_text(fd, request);
-  std::string text;
-  const auto deadline = Clock::now() + timeout;
-  Received r;
-  do {
-    r = receive_for(fd, std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()));
-    text += r.bytes;
-  } while (!r.closed && Clock::now() < deadline);
-  ::close(fd);
-  if (text.rfind("HTTP/1.1 ", 0) != 0) return {0, text};
-  return {std::atoi(text.c_str() + 9), text};
-}
-
-std::pair<int, std::string> get_from(const char* source, int port, const std::string& path,
-                                     std::chrono::milliseconds timeout = 5s) {
-  return http_from(source, port, "GET " + path + " HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\n\r\n",
-                   timeout);
-}
-
-/// facewire_refusals_total{kind="`kind`"} in /metrics, asked from 127.0.0.3; -1 if absent.
-long refusals(int port, const std::string& kind) {
-  const auto [status, text] = get_from("127.0.0.3", port, "/metrics");
-  const std::string key = "facewire_refusals_total{kind=\"" + kind + "\"} ";
-  const auto at = text.find(key);
-  if (status != 200 || at == std::string::npos) return -1;
-  return std::atol(text.c_str() + at + key.size());
-}
 
 namespace net = boost::asio;
 namespace beast = boost::beast;
@@ -265,13 +236,13 @@ TEST(ConnectionLimits, ASlowlorisFromOneAddressDoesNotStopAnotherJoiningAndIsLet
   EXPECT_LE(slowloris.open(), 32);
 
   const double join_seconds = seconds_to_join(server.http_port(), "127.0.0.2", "calm", "Visitor");
-  const auto [health, health_text] = get_from("127.0.0.3", server.http_port(), "/healthz");
+  const auto health = get_from("127.0.0.3", server.http_port(), "/healthz");
   std::cout << "while 40 connections dribble from 127.0.0.1: " << slowloris.refused_at_once()
-            << " refused at once, a join from 127.0.0.2 took " << join_seconds << " s, /healthz answered " << health
+            << " refused at once, a join from 127.0.0.2 took " << join_seconds << " s, /healthz answered " << health.status
             << "\n";
   EXPECT_GE(join_seconds, 0) << "another address joins";
   EXPECT_LT(join_seconds, 1.0) << "and within a second";
-  EXPECT_EQ(health, 200) << health_text;
+  EXPECT_EQ(health.status, 200) << health.headers;
 
   // A byte a second does not extend the header's deadline (10 s from accept).
   const auto wait_start = Clock::now();
@@ -280,8 +251,8 @@ TEST(ConnectionLimits, ASlowlorisFromOneAddressDoesNotStopAnotherJoiningAndIsLet
   std::cout << "the dribbling connections were let go " << held << " s after connecting\n";
   EXPECT_GE(held, 9.0);
   EXPECT_LT(held, 12.5) << "the header deadline is 10 s, however slowly bytes come";
-  EXPECT_GT(refusals(server.http_port(), "address_connection_limit"), 0);
-  EXPECT_GT(refusals(server.http_port(), "handshake_timeout"), 0);
+  EXPECT_GT(refusal_count(server.http_port(), "address_connection_limit", "127.0.0.3"), 0);
+  EXPECT_GT(refusal_count(server.http_port(), "handshake_timeout", "127.0.0.3"), 0);
 }
 
 // --- connections still greeting count ------------------------------------
@@ -306,8 +277,8 @@ TEST(ConnectionLimits, ConnectionsStillGreetingCountAgainstTheAddressUntilTheirH
   EXPECT_TRUE(tcp_answer.closed) << "the TCP port refuses the ninth";
   EXPECT_NE(tcp_answer.bytes.find("too many connections"), std::string::npos) << "in a closing message";
   ::close(ninth_tcp);
-  const auto [ninth_http, ninth_text] = get_from("127.0.0.1", server.http_port(), "/healthz");
-  EXPECT_EQ(ninth_http, 429) << ninth_text;
+  const auto ninth_http = get_from("127.0.0.1", server.http_port(), "/healthz");
+  EXPECT_EQ(ninth_http.status, 429) << ninth_http.headers;
   // Another address is not affected.
   EXPECT_GE(seconds_to_join(server.http_port(), "127.0.0.2", "room", "Other"), 0);
 
@@ -321,15 +292,15 @@ TEST(ConnectionLimits, ConnectionsStillGreetingCountAgainstTheAddressUntilTheirH
   }
   for (const int fd : silent) ::close(fd);
   std::this_thread::sleep_for(200ms);
-  const auto [after, after_text] = get_from("127.0.0.1", server.http_port(), "/healthz");
+  const auto after = get_from("127.0.0.1", server.http_port(), "/healthz");
   std::cout << "eight greeting connections held the address's share for " << let_go << " s\n";
-  EXPECT_EQ(after, 200) << after_text;
+  EXPECT_EQ(after.status, 200) << after.headers;
   RoomTestClient again(Transport::tcp, server.tcp_port());
   again.hello("room", "Again");
   EXPECT_TRUE(again.pump_until([&] { return again.welcome.has_value() || again.closed(); }, 5s));
   EXPECT_TRUE(again.welcome) << "the address has its places back";
-  EXPECT_GE(refusals(server.http_port(), "address_connection_limit"), 2);
-  EXPECT_GE(refusals(server.http_port(), "handshake_timeout"), 8);
+  EXPECT_GE(refusal_count(server.http_port(), "address_connection_limit", "127.0.0.3"), 2);
+  EXPECT_GE(refusal_count(server.http_port(), "handshake_timeout", "127.0.0.3"), 8);
 }
 
 // --- descriptors run out --------------------------------------------------
@@ -369,7 +340,7 @@ TEST(ConnectionLimits, RunningOutOfDescriptorsNeitherSpinsNorFloodsTheLogAndRefu
 
   // While the descriptors are taken, another address is told so at once.
   std::this_thread::sleep_for(1s);
-  const auto [during, during_text] = get_from("127.0.0.2", server.port(), "/healthz", 3s);
+  const auto during = get_from("127.0.0.2", server.port(), "/healthz", 3s);
   std::this_thread::sleep_for(2s);
   const double cpu = cpu_seconds(server.pid()) - cpu_before;
   const std::size_t log_lines = lines_in(log);
@@ -377,19 +348,21 @@ TEST(ConnectionLimits, RunningOutOfDescriptorsNeitherSpinsNorFloodsTheLogAndRefu
   for (const int fd : silent)
     if (receive_for(fd, 0ms).bytes.find("503") != std::string::npos) ++answered;
   std::cout << "200 silent connections against 128 descriptors: " << cpu << " CPU-seconds in 3 s, " << log_lines
-            << " log lines, " << answered << " told 503 at once; another address got " << during << "\n";
+            << " log lines, " << answered << " told 503 at once; another address got " << during.status << "\n";
   EXPECT_LT(cpu, 0.5) << "accept() does not spin";
   EXPECT_LT(log_lines, 50u) << "nor the log explode";
   EXPECT_GT(answered, 0) << "the connections past the descriptors are refused, not left waiting";
-  EXPECT_EQ(during, 503) << "another address is refused politely, not left hanging: " << during_text;
+  EXPECT_EQ(during.status, 503) << "another address is refused politely, not left hanging: " << during.headers;
 
   for (const int fd : silent) ::close(fd);
   std::this_thread::sleep_for(500ms);
-  const auto [after, after_text] = get_from("127.0.0.2", server.port(), "/healthz");
-  EXPECT_EQ(after, 200) << "served again once the connections closed: " << after_text;
+  const auto after = get_from("127.0.0.2", server.port(), "/healthz");
+  EXPECT_EQ(after.status, 200) << "served again once the connections closed: " << after.headers;
   // The port takes its part of the descriptors ((128 - 64) per port) and is
   // full before they run out: the refusals are the port's.
-  EXPECT_GT(refusals(server.port(), "connection_limit") + refusals(server.port(), "descriptors_exhausted"), 0);
+  EXPECT_GT(refusal_count(server.port(), "connection_limit", "127.0.0.3") +
+                refusal_count(server.port(), "descriptors_exhausted", "127.0.0.3"),
+            0);
   std::filesystem::remove_all(data);
   std::filesystem::remove(log);
 }
@@ -429,15 +402,15 @@ TEST(ConnectionLimits, AWebSocketPingFloodIsClosedAsAnyMessageFloodAndTheRoomCar
   EXPECT_TRUE(calm->pump_until([&] { return !calm->pongs.empty(); }, 5s));
   calm->pump_for(1s);
   EXPECT_FALSE(calm->closed());
-  EXPECT_GT(refusals(server.http_port(), "message_rate"), 0);
+  EXPECT_GT(refusal_count(server.http_port(), "message_rate", "127.0.0.3"), 0);
 }
 
 // --- refusals are counted -----------------------------------------------------
 
 TEST(ConnectionLimits, BadRequestsAndProtocolViolationsAreCountedInMetrics) {
   RunningServer server("--no-demo-room");
-  EXPECT_EQ(get_from("127.0.0.2", server.http_port(), "/no-such-page").first, 404);
-  EXPECT_EQ(http_from("127.0.0.2", server.http_port(), "NONSENSE\r\n\r\n").first, 400);
+  EXPECT_EQ(get_from("127.0.0.2", server.http_port(), "/no-such-page").status, 404);
+  EXPECT_EQ(http_from("127.0.0.2", server.http_port(), "NONSENSE\r\n\r\n").status, 400);
   // A text message on the room protocol's WebSocket.
   RawWebSocket text(server.http_port(), "127.0.0.2");
   ASSERT_TRUE(text.connected());
@@ -450,8 +423,8 @@ TEST(ConnectionLimits, BadRequestsAndProtocolViolationsAreCountedInMetrics) {
   send_text(tcp, std::string(8, '\xff'));
   EXPECT_TRUE(receive_for(tcp, 5s).closed);
   ::close(tcp);
-  EXPECT_GE(refusals(server.http_port(), "http_bad_request"), 2);
-  EXPECT_GE(refusals(server.http_port(), "protocol_violation"), 2);
+  EXPECT_GE(refusal_count(server.http_port(), "http_bad_request", "127.0.0.3"), 2);
+  EXPECT_GE(refusal_count(server.http_port(), "protocol_violation", "127.0.0.3"), 2);
 }
 
 }  // namespace

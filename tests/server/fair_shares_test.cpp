@@ -28,6 +28,7 @@
 #include <gtest/gtest.h>
 
 #include "fw/codec/messages.hpp"
+#include "http_get.hpp"
 #include "loopback_socket.hpp"
 #include "room_test_client.hpp"
 #include "room_test_server.hpp"
@@ -68,36 +69,12 @@ std::string outcome(const RoomTestClient& client) {
 
 int connect_from(const std::string& source, int port) { return test::connect_loopback_from(source.c_str(), port, 0); }
 
+using test::get_from;
 using test::Received;
 using test::receive_for;
+using test::refusal_count;
 using test::send_text;
 
-/// GET `path` from `source`: the status (0 if none within `timeout`) and the whole answer.
-std::pair<int, std::string> get_from(const std::string& source, int port, const std::string& path,
-                                     std::chrono::milliseconds timeout = 5s) {
-  const int fd = connect_from(source, port);
-  if (fd < 0) return {0, "cannot connect"};
-  send_text(fd, "GET " + path + " HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\n\r\n");
-  std::string text;
-  const auto deadline = Clock::now() + timeout;
-  Received r;
-  do {
-    r = receive_for(fd, std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()));
-    text += r.bytes;
-  } while (!r.closed && Clock::now() < deadline);
-  ::close(fd);
-  if (text.rfind("HTTP/1.1 ", 0) != 0) return {0, text};
-  return {std::atoi(text.c_str() + 9), text};
-}
-
-/// facewire_refusals_total{kind="`kind`"}, asked from `source`; -1 if absent.
-long refusals(int port, const std::string& kind, const std::string& source) {
-  const auto [status, text] = get_from(source, port, "/metrics");
-  const std::string key = "facewire_refusals_total{kind=\"" + kind + "\"} ";
-  const auto at = text.find(key);
-  if (status != 200 || at == std::string::npos) return -1;
-  return std::atol(text.c_str() + at + key.size());
-}
 
 // --- rooms -------------------------------------------------------------------
 
@@ -137,7 +114,7 @@ TEST(FairShares, FortyAddressesInFourNetworksCannotTakeEveryRoom) {
   EXPECT_EQ(welcomed, kBlocks * kRoomsPerBlock) << "each block holds its share, and no more";
   EXPECT_EQ(refused_by_share, kBlocks * kAddressesPerBlock * kRoomsTried - kBlocks * kRoomsPerBlock);
   EXPECT_TRUE(fresh->welcome) << "a fresh address in a fresh /24 still opens a room: " << outcome(*fresh);
-  EXPECT_EQ(refusals(server.http_port(), "room_share", loopback(41, 1)), refused_by_share);
+  EXPECT_EQ(refusal_count(server.http_port(), "room_share", loopback(41, 1)), refused_by_share);
 }
 
 // The last tenth of the rooms opens only for a network that holds none:
@@ -177,7 +154,7 @@ TEST(FairShares, TheLastRoomsWaitForNetworksThatHoldNone) {
 // --- seats held for nothing --------------------------------------------------
 
 /// Rooms /api/rooms lists, asked from `source`.
-std::string rooms_listed(int port, const std::string& source) { return get_from(source, port, "/api/rooms").second; }
+std::string rooms_listed(int port, const std::string& source) { return get_from(source, port, "/api/rooms").body; }
 
 // A squatter that pings but reads nothing is let go (here after 2 s), and
 // its room, which nobody reads, closes with it; a watcher that reads but
@@ -224,7 +201,7 @@ TEST(FairShares, ASeatWhoseClientNeitherSendsNorReadsIsLetGoAndAQuietWatcherStay
   EXPECT_FALSE(watcher->closed()) << "a quiet watcher who reads stays";
   EXPECT_FALSE(watcher->closing.has_value()) << outcome(*watcher);
   EXPECT_NE(rooms_listed(server.http_port(), loopback(10, 1)).find("watched"), std::string::npos);
-  EXPECT_GE(refusals(server.http_port(), "idle_person", loopback(10, 1)), 1);
+  EXPECT_GE(refusal_count(server.http_port(), "idle_person", loopback(10, 1)), 1);
 }
 
 // --- a crowd at a port's cap --------------------------------------------------
@@ -363,9 +340,9 @@ TEST(FairShares, HalfSentRequestsAtThePortsCapDoNotStopAPersonOnAFreshAddress) {
   int served = 0, joined = 0;
   std::string failures;
   for (int i = 0; i < 5; ++i) {
-    const auto [status, text] = get_from(loopback(40, 1 + i), server.http_port(), "/healthz");
-    if (status == 200) ++served;
-    else failures += "healthz " + std::to_string(status) + ": " + text.substr(0, 200) + "\n";
+    const auto healthz = get_from(loopback(40, 1 + i), server.http_port(), "/healthz");
+    if (healthz.status == 200) ++served;
+    else failures += "healthz " + std::to_string(healthz.status) + ": " + healthz.headers.substr(0, 200) + "\n";
     auto person = join_from(server, Transport::websocket, loopback(40, 1 + i), "person" + std::to_string(i));
     if (person->welcome) ++joined;
     else failures += "join: " + outcome(*person) + "\n";
@@ -380,7 +357,7 @@ TEST(FairShares, HalfSentRequestsAtThePortsCapDoNotStopAPersonOnAFreshAddress) {
   EXPECT_EQ(joined, 5) << failures;
   const std::string& answer = first_refusals.front().text;
   EXPECT_TRUE(answer.rfind("HTTP/1.1 503 ", 0) == 0 || answer.rfind("HTTP/1.1 429 ", 0) == 0) << answer;
-  EXPECT_GT(refusals(server.http_port(), "connection_evicted", loopback(41, 1)), 0)
+  EXPECT_GT(refusal_count(server.http_port(), "connection_evicted", loopback(41, 1)), 0)
       << "the person took the place of a connection that waited";
 }
 
@@ -424,9 +401,9 @@ TEST(FairShares, SilentTcpConnectionsAtThePortsCapDoNotStopAPersonJoining) {
     auto person = join_from(server, Transport::tcp, loopback(40, 10 + i), "tcp-person" + std::to_string(i));
     if (person->welcome) ++joined;
     else failures += outcome(*person) + "\n";
-    const auto [status, text] = get_from(loopback(40, 10 + i), server.http_port(), "/healthz");
-    if (status == 200) ++served;
-    else failures += "healthz " + std::to_string(status) + ": " + text.substr(0, 200) + "\n";
+    const auto healthz = get_from(loopback(40, 10 + i), server.http_port(), "/healthz");
+    if (healthz.status == 200) ++served;
+    else failures += "healthz " + std::to_string(healthz.status) + ": " + healthz.headers.substr(0, 200) + "\n";
   }
   const auto refused = crowd.refusals();
   ASSERT_FALSE(refused.empty());

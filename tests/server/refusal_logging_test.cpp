@@ -56,12 +56,7 @@ struct LoggedServer {
         std::count(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>(), '\n'));
   }
   /// facewire_refusals_total{kind="`kind`"}; -1 if absent.
-  long refusals(const std::string& kind) {
-    const auto reply = http_get(process.port(), "/metrics");
-    const std::string key = "facewire_refusals_total{kind=\"" + kind + "\"} ";
-    const auto at = reply.body.find(key);
-    return at == std::string::npos ? -1 : std::atol(reply.body.c_str() + at + key.size());
-  }
+  long refusals(const std::string& kind) const { return refusal_count(process.port(), kind); }
 
   static inline int counter = 0;
   std::filesystem::path data, log;

@@ -14,7 +14,6 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
-#include <regex>
 #include <string>
 #include <thread>
 #include <vector>
@@ -64,14 +63,6 @@ test::HttpReply health_from(const RunningServer& server, const std::string& from
   return exchange_from(from, server.http_port(),
                        "GET /healthz HTTP/1.1\r\nHost: 127.0.0.1\r\n" + forwarded_line(x_forwarded_for) +
                            "Connection: close\r\n\r\n");
-}
-
-long refusals(const RunningServer& server, const std::string& kind) {
-  const auto metrics = test::http_get(server.http_port(), "/metrics");
-  std::smatch match;
-  if (!std::regex_search(metrics.body, match, std::regex("facewire_refusals_total\\{kind=\"" + kind + "\"\\} (\\d+)")))
-    return -1;
-  return std::stol(match[1]);
 }
 
 /// Uploads from `from` naming `first` until its burst of 6 is spent, then
@@ -165,7 +156,7 @@ TEST(TrustedProxy, TheConnectionShareCountsClientsNotTheProxy) {
   EXPECT_NE(third.body.find("too many connections from your address"), std::string::npos) << third.body;
   EXPECT_NE(third.headers.find("Retry-After: "), std::string::npos) << third.headers;
   EXPECT_EQ(health_from(server, "127.0.0.1", "203.0.113.9").status, 200);
-  EXPECT_GE(refusals(server, "address_connection_limit"), 1);
+  EXPECT_GE(test::refusal_count(server.http_port(), "address_connection_limit"), 1);
   held.erase(held.begin());  // one of 203.0.113.1's leaves
   bool admitted = false;     // once the server has seen it go
   for (int i = 0; i < 50 && !admitted; ++i, std::this_thread::sleep_for(100ms))
@@ -190,7 +181,7 @@ TEST(TrustedProxy, AMalformedHeaderFromTheProxyCountsAsTheProxyAndIsCounted) {
   EXPECT_EQ(upload_after_another_clients_burst(server, "127.0.0.1", "not-an-address", "127.0.0.1"), 429)
       << "a malformed header's uploads were the proxy's own";
   EXPECT_EQ(upload_status(server, "127.0.0.1", "203.0.113.1"), 422) << "the clients behind it are not held up";
-  EXPECT_EQ(refusals(server, "bad_forwarded_header"), 7);
+  EXPECT_EQ(test::refusal_count(server.http_port(), "bad_forwarded_header"), 7);
 }
 
 TEST(TrustedProxy, TheEnvironmentAndTheConfigFileTakeRangesToo) {

@@ -100,12 +100,9 @@ inline HttpReply upload_from(const std::string& source, int port, const std::str
   return reply.value_or(HttpReply{});
 }
 
+/// facewire_refusals_total{kind="`kind`"}; -1 if absent.
 inline long refusals(const RunningServer& server, const std::string& kind) {
-  const auto metrics = test::http_get(server.http_port(), "/metrics");
-  std::smatch match;
-  if (!std::regex_search(metrics.body, match, std::regex("facewire_refusals_total\\{kind=\"" + kind + "\"\\} (\\d+)")))
-    return -1;
-  return std::stol(match[1]);
+  return refusal_count(server.http_port(), kind);
 }
 
 /// Open sockets, closed at the end.
