@@ -71,7 +71,7 @@ std::vector<std::filesystem::path> frame_files(const std::filesystem::path& dire
 model::RgbaImage read_png(const std::filesystem::path& path);
 
 /// Whether `image` shows a face where each of `count` room seats is
-/// (client/src/room_layout): most pixels of a small patch around every
+/// (client/view/room_layout): most pixels of a small patch around every
 /// face's centre differ from the renderer's background.
 bool shows_faces_at_every_seat(const model::RgbaImage& image, int count);
 

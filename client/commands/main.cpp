@@ -1,6 +1,7 @@
 // facewire-client: the thin client. Renders faces from compact parameters;
 // links only codec, avatar/model and avatar/render (and Asio for the network).
-// The commands live in fw_client_core; this file gives them the sockets.
+// The commands run the steps of the parts below; this file gives them the
+// sockets (client/net).
 #include <iostream>
 
 #include <CLI/CLI.hpp>

@@ -1,7 +1,7 @@
 #pragma once
 // Uploading one's face to the server before joining (PROTOCOL.md section 8,
-// POST /api/avatars) over HTTP: the AvatarUploader of facewire-client
-// (socket glue, so it lives in the executable, not in fw_client_core).
+// POST /api/avatars) over HTTP: the AvatarUploader (avatar_uploader.hpp)
+// of facewire-client (socket glue, so only the program links it). join's
 // own_avatar.hpp prepares what goes up. The session uploads the face again
 // to another server of the list that does not know it, on its own
 // io_context (async_upload_avatar).
@@ -14,7 +14,7 @@
 
 #include <boost/asio/io_context.hpp>
 
-#include "own_avatar.hpp"
+#include "avatar_uploader.hpp"
 
 namespace fw::client {
 

@@ -13,7 +13,7 @@
 
 namespace fw::client {
 
-/// How `join` reaches the server. fw_client_core opens no socket itself:
+/// How `join` reaches the server. No part below commands opens a socket:
 /// facewire-client's main.cpp passes its socket transport and HTTP upload.
 struct JoinNetwork {
   /// A transport to `url` on `io` for each connection attempt.

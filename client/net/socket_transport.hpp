@@ -2,8 +2,8 @@
 // The network under a RoomSession: a MessageTransport over a real socket,
 // WebSocket (Boost.Beast) or TCP with the protocol's length prefix
 // (codec/messages.hpp, TcpDeframer). The one piece of the join command that
-// opens connections to the room server; it lives in the facewire-client
-// executable, not in fw_client_core, so the library's tests never need a
+// opens connections to the room server; only the facewire-client
+// executable links it (client/net), so the other parts' tests never need a
 // socket.
 #include <memory>
 

@@ -3,47 +3,19 @@
 // to the server (PROTOCOL.md section 8, POST /api/avatars): a photo made
 // small for a slow link, or a package checked before it is sent; where the
 // upload goes; how long it may take. The HTTP exchange itself is an
-// AvatarUploader (avatar_upload.hpp in facewire-client); the answer's asset
-// id goes into hello.
+// AvatarUploader (transport's avatar_uploader.hpp; net's avatar_upload.hpp
+// in facewire-client); the answer's asset id goes into hello.
 #include <cstddef>
 #include <cstdint>
-#include <functional>
 #include <memory>
-#include <span>
 #include <string>
 #include <vector>
 
-#include <boost/asio/io_context.hpp>
-
+#include "avatar_uploader.hpp"
 #include "join_arguments.hpp"
 #include "server_url.hpp"
 
 namespace fw::client {
-
-struct UploadTarget {
-  std::string host;
-  std::string port;   ///< the server's HTTP port
-  std::string token;  ///< the join token, sent as a bearer token: a server with --auth-secret wants it
-};
-
-/// The server's answer to an upload.
-struct UploadAnswer {
-  std::string asset;  ///< the asset id, for hello
-  std::string key;    ///< the secret that lets this client wear the face, for hello
-  int http_status = 0;  ///< the answer's status, also when it refused; 0 when none came
-};
-
-/// Posts `body` to the target's /api/avatars within `timeout_s`; true and
-/// the answer, or false and what went wrong (the server's explanation).
-using AvatarUploader = std::function<bool(const UploadTarget& target, const std::string& content_type,
-                                          std::span<const std::uint8_t> body, int timeout_s, UploadAnswer& answer,
-                                          std::string& error)>;
-/// The same on `io` (the session's, while it runs): `done(ok, answer, error)`
-/// runs there when the upload is over.
-using AsyncAvatarUploader = std::function<void(
-    boost::asio::io_context& io, const UploadTarget& target, const std::string& content_type,
-    std::shared_ptr<const std::vector<std::uint8_t>> body, int timeout_s,
-    std::function<void(bool ok, const UploadAnswer& answer, const std::string& error)> done)>;
 
 /// What goes up: the downsized photo, the package as it was read, or both.
 struct OwnAvatar {
