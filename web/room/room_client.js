@@ -6,7 +6,7 @@
 // WebGL here: the page (room_page.js) reads the state and draws it, and the
 // socket is whatever `openSocket(url)` returns (a browser WebSocket, or a
 // test's stand-in with the same few members).
-import { RoomDecoder, readStreamHeader, writeResyncRequest } from '../codec/decoder.js';
+import { RoomDecoder, readStreamHeader, writeResyncRequest } from '../codec/codec.js';
 import { readMessage, sessionType } from '../protocol/session_read.js';
 import { CommandKind, MessageError, MessageType, PresenceChange, classify, messageErrorName } from '../protocol/session_types.js';
 import { writeMessage } from '../protocol/session_write.js';
@@ -20,7 +20,7 @@ const MAX_CHAT_LINES = 200;
 
 export class RoomClient {
   /**
-   * @param options.servers      ws:// or wss:// URLs (server_list.js): the first, then the next after a failure
+   * @param options.servers      ws:// or wss:// URLs (shared/server_list.js): the first, then the next after a failure
    * @param options.url          or one URL, or several comma-separated
    * @param options.room, options.name, options.asset, options.avatarKey, options.token   the hello's fields
    * @param options.maxBps       downstream budget, 0: the server's default
