@@ -3,7 +3,7 @@
 // frame goes to its own decoder, made at its first frame.
 import { MAX_ROOM_AVATARS } from './format.js';
 import { DecodeError } from './decode_error.js';
-import { Decoder } from './decoder.js';
+import { Decoder } from './avatar_decoder.js';
 import { readRoomFrame } from './room_frame.js';
 
 export class RoomDecoder {

@@ -6,7 +6,7 @@
 // WebGL here: the page (room_page.js) reads the state and draws it, and the
 // socket is whatever `openSocket(url)` returns (a browser WebSocket, or a
 // test's stand-in with the same few members).
-import { RoomDecoder, readStreamHeader, writeResyncRequest } from '../codec/codec.js';
+import { RoomDecoder, readStreamHeader, writeResyncRequest } from '../codec/decoder.js';
 import { readMessage, sessionType } from '../protocol/session_read.js';
 import { CommandKind, MessageError, MessageType, PresenceChange, classify, messageErrorName } from '../protocol/session_types.js';
 import { writeMessage } from '../protocol/session_write.js';

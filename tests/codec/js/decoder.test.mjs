@@ -1,4 +1,4 @@
-// The browser decoder (web/codec/codec.js) on the golden vectors
+// The browser decoder (web/codec/decoder.js) on the golden vectors
 // (tests/vectors/codec): it must reproduce exactly what the C++ decoder
 // wrote there, integer for integer, error code for error code.
 import { test } from 'node:test';
@@ -10,7 +10,7 @@ import { fileURLToPath } from 'node:url';
 import {
   CHANNEL_COUNT, Decoder, DecodeError, RoomDecoder, errorName, readResyncRequest, readRoomFrame,
   readStreamHeader, writeResyncRequest,
-} from '../../../web/codec/codec.js';
+} from '../../../web/codec/decoder.js';
 
 const here = dirname(fileURLToPath(import.meta.url));
 const vectorsDir = join(here, '..', '..', 'vectors', 'codec');
