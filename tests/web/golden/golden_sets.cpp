@@ -2,6 +2,7 @@
 // and the writer program and the C++ test pick it up.
 #include "golden_json.hpp"
 #include "mute_list_golden.hpp"
+#include "package_assembly_golden.hpp"
 #include "reconnect_policy_golden.hpp"
 #include "seat_frames_golden.hpp"
 
@@ -12,6 +13,7 @@ const std::vector<GoldenSet>& golden_sets() {
       {"reconnect_policy", reconnect_policy_golden},
       {"seat_frames", seat_frames_golden},
       {"mute_list", mute_list_golden},
+      {"package_assembly", package_assembly_golden},
   };
   return sets;
 }
