@@ -3,51 +3,21 @@
 // GLSL's layout. A port, not the same code (the renderer is not part of the
 // WebAssembly module), so tests/model/wasm checks it against matrices the
 // C++ wrote.
+import { mat4 } from '../shared/mat4.js';
 
 /** The point heads turn about (render::kNeckPivot): the top of the neck. */
 export const NECK_PIVOT = [0, -1.5, 0.2];
 /** Millimetres per model unit (model::kMillimetresPerUnit): head translation is in mm. */
 export const MILLIMETRES_PER_UNIT = 63;
 
-export const identity = () => new Float64Array([1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]);
-
-export function multiply(a, b) {
-  const out = new Float64Array(16);
-  for (let column = 0; column < 4; ++column) {
-    for (let row = 0; row < 4; ++row) {
-      let sum = 0;
-      for (let k = 0; k < 4; ++k) sum += a[k * 4 + row] * b[column * 4 + k];
-      out[column * 4 + row] = sum;
-    }
-  }
-  return out;
-}
+// Float64 throughout: the matrices are compared with the C++'s.
+export const identity = () => mat4.identity(Float64Array);
+export const multiply = (a, b) => mat4.multiply(a, b, Float64Array);
 
 // glm::translate(m, v) and glm::rotate(m, angle, axis) for a unit axis:
 // m times the translation or rotation.
-function translate(m, [x, y, z]) {
-  const t = identity();
-  t[12] = x;
-  t[13] = y;
-  t[14] = z;
-  return multiply(m, t);
-}
-
-function rotate(m, angle, [x, y, z]) {
-  const c = Math.cos(angle);
-  const s = Math.sin(angle);
-  const r = identity();
-  r[0] = c + (1 - c) * x * x;
-  r[1] = (1 - c) * x * y + s * z;
-  r[2] = (1 - c) * x * z - s * y;
-  r[4] = (1 - c) * y * x - s * z;
-  r[5] = c + (1 - c) * y * y;
-  r[6] = (1 - c) * y * z + s * x;
-  r[8] = (1 - c) * z * x + s * y;
-  r[9] = (1 - c) * z * y - s * x;
-  r[10] = c + (1 - c) * z * z;
-  return multiply(m, r);
-}
+const translate = (m, v) => multiply(m, mat4.translation(v, Float64Array));
+const rotate = (m, angle, axis) => multiply(m, mat4.rotation(angle, axis, Float64Array));
 
 /**
  * The head's model matrix for FaceParams `params` (yaw, pitch, roll about the

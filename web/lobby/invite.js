@@ -2,7 +2,7 @@
 // it): ?room=R&name=N&token=T. The token opens only that room, for that
 // name, so the lobby fills them in and keeps them. A community on several
 // servers adds &servers=wss://a/ws,wss://b/ws, which the lobby hands on to
-// the room page (room/server_list.js checks it).
+// the room page (shared/server_list.js checks it).
 
 /// { room, name, token, servers } from a query string such as location.search ('' where absent).
 export function readInvite(search) {

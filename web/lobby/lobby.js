@@ -2,7 +2,7 @@
 // uploaded with progress and prepared into an avatar, its preview and the
 // preparation's advice, the rooms, and Join, which opens the room page.
 // Each job lives in its own module; this one wires them to the page.
-import { startFacePreview } from '../face_preview.js';
+import { startFacePreview } from './face_preview.js';
 import { showAvatarPreview } from './avatar_preview.js';
 import { cameraAvailable, snapshot, startCamera } from './camera.js';
 import { deleteAvatar } from './delete_avatar.js';
@@ -12,7 +12,7 @@ import { displayNameProblem, roomNameProblem } from './names.js';
 import { fitPhotoForUpload } from './photo_size.js';
 import { fetchRooms, renderRooms } from './room_list.js';
 import { uploadPhoto } from './upload.js';
-import { parseServers } from '../room/server_list.js';
+import { parseServers } from '../shared/server_list.js';
 
 const ROOM_REFRESH_MS = 4000;
 const $ = (id) => document.getElementById(id);

@@ -2,6 +2,7 @@
 // far as a preview needs: the manifest and each member's bytes. It checks
 // the layout, not the checksums or the fit: the server validated the
 // package when it stored it.
+import { ByteReader } from '../shared/byte_reader.js';
 
 const MAGIC = 'FWAV';
 const HEADER_BYTES = 16;
@@ -15,8 +16,9 @@ export function readPackageMembers(bytes) {
     throw new Error('this is not an avatar package (no FWAV header)');
   }
   if (data[4] !== 1) throw new Error(`avatar package format ${data[4]}: this page reads format 1; reload the page`);
-  const view = new DataView(data.buffer, data.byteOffset, data.byteLength);
-  const manifestBytes = view.getUint32(8, true);
+  const header = new ByteReader(data);
+  header.take(8);  // magic, format version, flags, reserved
+  const manifestBytes = header.u32();
   if (manifestBytes > MAX_MANIFEST_BYTES || HEADER_BYTES + manifestBytes > data.length) {
     throw new Error('the avatar package is cut off in its manifest');
   }

@@ -1,18 +1,19 @@
 // Session message readers: a port of codec/src/messages_read.cpp, checked
 // against what the C++ readers say of the same bytes (tests/codec/protocol_js).
-// Each reader reads every field through a WireReader whose failure sticks,
+// Each reader reads every field through a ByteReader whose failure sticks,
 // keeps the first field error, and then checks once that nothing was cut
 // and nothing follows, exactly as the C++ readers do, so both give the same
 // error for the same bytes.
 import { Limits, MessageError as E, MessageType, PROTOCOL_VERSION, SESSION_BIT, LAST_MESSAGE_TYPE } from './session_types.js';
-import { WireReader, decodeUtf8, isCleanText } from './wire.js';
+import { ByteReader } from '../shared/byte_reader.js';
+import { decodeUtf8, isCleanText } from './wire.js';
 
 /** Why a failed reader failed, as the C++ failure_of() says. */
 const failureOf = (r) => (r.badNumber ? E.badNumber : E.truncated);
 
 class Fields {
   constructor(bytes) {
-    this.r = new WireReader(bytes);
+    this.r = new ByteReader(bytes);
     this.error = E.ok;
   }
   fail(why) {

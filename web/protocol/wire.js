@@ -1,102 +1,17 @@
-// Bytes on the wire (server/PROTOCOL.md, "Encoding"): a reader whose failure
-// sticks, as the C++ ByteReader's does, so a message is read field by field
-// and checked once at the end; a growing writer; strings as a varint length
-// and clean UTF-8.
+// Text on the wire (server/PROTOCOL.md, "Encoding"): strings as a varint
+// length and clean UTF-8, written by the shared byte writer
+// (web/shared/byte_writer.js) and read by the shared byte reader
+// (web/shared/byte_reader.js).
 
-export class WireReader {
-  constructor(bytes) {
-    this.bytes = bytes;
-    this.position = 0;
-    this.failed = false;
-    this.badNumber = false;  // failed on a number written wrongly, not on bytes running out
-  }
-  get remaining() { return this.bytes.length - this.position; }
-  u8() {
-    if (this.position >= this.bytes.length) {
-      this.failed = true;
-      return 0;
-    }
-    return this.bytes[this.position++];
-  }
-  u16() { return this.u8() | (this.u8() << 8); }
-  i16() {
-    const v = this.u16();
-    return v >= 0x8000 ? v - 0x10000 : v;
-  }
-  u32() {
-    let v = 0;
-    for (let i = 0; i < 4; ++i) v += this.u8() * 2 ** (8 * i);
-    return v;
-  }
-  /** A u64 as a BigInt: clocks in microseconds are Numbers in practice, but a
-   * reader must not round what it was sent. */
-  u64() {
-    const lo = this.u32();
-    return BigInt(lo) + (BigInt(this.u32()) << 32n);
-  }
-  /** Unsigned LEB128 of at most `maxBytes`; overlong forms and values past 32 bits fail. */
-  varint(maxBytes) {
-    let value = 0;
-    for (let i = 0; i < maxBytes && i < 5; ++i) {
-      const byte = this.u8();
-      if (this.failed) return 0;
-      const payload = byte & 0x7f;
-      if (i === 4 && payload > 0x0f) break;
-      value += payload * 2 ** (7 * i);
-      if ((byte & 0x80) === 0) {
-        if (i > 0 && byte === 0) break;  // overlong: every value has one encoding
-        return value;
-      }
-    }
-    this.failed = true;
-    this.badNumber = true;
-    return 0;
-  }
-  take(count) {
-    if (count > this.remaining) {
-      this.failed = true;
-      this.position = this.bytes.length;
-      return new Uint8Array(0);
-    }
-    const view = this.bytes.subarray(this.position, this.position + count);
-    this.position += count;
-    return view;
-  }
-}
+import { ByteWriter } from '../shared/byte_writer.js';
 
-export class WireWriter {
-  constructor() {
-    this.out = [];
-  }
-  u8(v) { this.out.push(v & 0xff); }
-  u16(v) {
-    this.u8(v);
-    this.u8(v >> 8);
-  }
-  i16(v) { this.u16(v < 0 ? v + 0x10000 : v); }
-  u32(v) {
-    for (let i = 0; i < 4; ++i) this.u8(Math.floor(v / 2 ** (8 * i)));
-  }
-  /** A BigInt or a whole Number. */
-  u64(v) {
-    const big = BigInt(v);
-    this.u32(Number(big & 0xffffffffn));
-    this.u32(Number(big >> 32n));
-  }
-  varint(v) {
-    while (v >= 0x80) {
-      this.u8((v & 0x7f) | 0x80);
-      v = Math.floor(v / 128);
-    }
-    this.u8(v);
-  }
-  bytes(b) { for (const x of b) this.out.push(x); }
+/** The session messages' writer: the shared byte writer and strings. */
+export class WireWriter extends ByteWriter {
   string(text) {
     const b = utf8.encode(text);
     this.varint(b.length);
     this.bytes(b);
   }
-  result() { return Uint8Array.from(this.out); }
 }
 
 const utf8 = new TextEncoder();

@@ -32,8 +32,9 @@ export class MuteList {
     return this.has(name);
   }
 
-  /** Whether avatar `id` named `name` is muted for the viewer `you` (never the viewer's own avatar). */
-  mutes(id, name, you) { return id !== you && this.has(name); }
+  /** Whether avatar `id` named `name` is muted for the viewer `you`: never the
+   * viewer's own avatar nor the server (0), as the native client's MuteList::mutes. */
+  mutes(id, name, you) { return id !== 0 && id !== you && this.has(name); }
 
   /**
    * The chat lines to show and how many of each muted name's are hidden.

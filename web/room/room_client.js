@@ -20,7 +20,7 @@ const MAX_CHAT_LINES = 200;
 
 export class RoomClient {
   /**
-   * @param options.servers      ws:// or wss:// URLs (server_list.js): the first, then the next after a failure
+   * @param options.servers      ws:// or wss:// URLs (shared/server_list.js): the first, then the next after a failure
    * @param options.url          or one URL, or several comma-separated
    * @param options.room, options.name, options.asset, options.avatarKey, options.token   the hello's fields
    * @param options.maxBps       downstream budget, 0: the server's default

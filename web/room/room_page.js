@@ -12,7 +12,7 @@ import { FaceRenderer } from './face_renderer.js';
 import { RoomClient } from './room_client.js';
 import { MuteList } from './mute_list.js';
 import { RoomView } from './room_view.js';
-import { parseServers } from './server_list.js';
+import { parseServers } from '../shared/server_list.js';
 
 const EXPRESSIONS = ['joy', 'sadness', 'anger', 'fear', 'surprise', 'disgust', 'cunning', 'teasing', 'blush'];
 const BUDGET_KEY = 'facewire.budget';

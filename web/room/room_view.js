@@ -6,7 +6,7 @@
 // are HTML laid over the canvas (room_page.js places them from `tiles`). A
 // face the viewer muted (mute_list.js) is drawn at rest: neutral, still and
 // looking straight ahead, whatever the stream says it does.
-import { mat4 } from '../mat4.js';
+import { mat4 } from '../shared/mat4.js';
 import { TURN_SHARE, aimAt, reaim, reaimAtViewer } from './gaze_reaim.js';
 import { decodeImage } from './face_renderer.js';
 import { NEUTRAL_FACE as NEUTRAL } from './mute_list.js';

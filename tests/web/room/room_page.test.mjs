@@ -147,7 +147,7 @@ test('pressing joy changes the presser\'s mouth and no other face\'s', { timeout
     self: await mouthSamples(page, await landmarks(page, 'self', [36, 45])),
     smiles: await page.evaluate(() => {
       const { client } = window.facewireRoom;
-      // au12_left, au12_right: channels 15 and 16 of web/codec/decoder.js.
+      // au12_left, au12_right: channels 15 and 16 of web/codec/channel_table.js.
       return Object.fromEntries([...client.avatars].filter(([id]) => id !== client.you)
         .map(([id, a]) => [a.info.name, Math.max(client.face(id)?.au[15] ?? 0, client.face(id)?.au[16] ?? 0)]));
     }),

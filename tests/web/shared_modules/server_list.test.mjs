@@ -1,10 +1,10 @@
-// The servers a room page takes from its address (web/room/server_list.js):
+// The servers a room page takes from its address (web/shared/server_list.js):
 // its own by default; a list of ws:// or wss:// addresses on its own host
 // or one under it; a clear reason for anything else.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 
-import { MAX_SERVERS, parseServers } from '../../../web/room/server_list.js';
+import { MAX_SERVERS, parseServers } from '../../../web/shared/server_list.js';
 
 const page = new URL('https://chat.example/room.html?room=r');
 const local = new URL('http://127.0.0.1:8080/room.html');

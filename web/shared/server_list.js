@@ -1,6 +1,6 @@
 // The room servers a page may use: by default its own, or the list in its
 // address (`servers=wss://a.example/ws,wss://b.example/ws`), the nodes of one
-// community, tried in turn when one fails (reconnect_policy.js). The page
+// community, tried in turn when one fails (room/reconnect_policy.js). The page
 // sends a server the person's name, the key of their face and their
 // invitation, so a list is taken only of ws:// or wss:// addresses on the
 // page's own host or a host under it: a link cannot send them elsewhere.

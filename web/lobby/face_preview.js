@@ -2,7 +2,7 @@
 // the native renderer uses: the asset (/generic_face.json) and the GLSL ES
 // 3.00 shaders (/shaders/face.vert, /shaders/face.frag). Textures are painted
 // here with the 2-D canvas, since the page has no photo.
-import { mat4 } from './mat4.js';
+import { mat4 } from '../shared/mat4.js';
 
 const LIPS = [48, 49, 50, 51, 52, 53, 54, 55, 56, 57, 58, 59];
 const EYES = [[36, 37, 38, 39, 40, 41], [42, 43, 44, 45, 46, 47]];
