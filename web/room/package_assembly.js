@@ -1,5 +1,5 @@
 // Avatar packages as they arrive in package chunks (PROTOCOL.md 5.7), as the
-// native client puts them together (client/src/package_assembler.cpp; the
+// native client puts them together (client/room/package_assembler.cpp; the
 // golden file tests/vectors/package_assembly holds this port to it): the
 // chunks of one package come in order and without gaps, so a package is a
 // buffer filled front to back. A chunk at offset 0 starts its package

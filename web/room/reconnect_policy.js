@@ -1,6 +1,6 @@
 // Whether, when and where to connect again after a connection ended
 // (PROTOCOL.md 5.11), as the native client decides it
-// (client/src/failover_policy.cpp, RoomSession::backoff; the golden file
+// (client/transport/failover_policy.cpp, RoomSession::backoff; the golden file
 // tests/vectors/reconnect_policy holds this port to it): a refusal that
 // will not change on any server (bad token, room full, bad name, another
 // protocol version) stops with its reason; an avatar being prepared again

@@ -40,7 +40,7 @@ nlohmann::json mute_list_golden() {
       cases.push_back({{"id", id}, {"name", name}, {"mutes", list.mutes(id, name, you)}});
   nlohmann::json out;
   out["about"] =
-      "client/src/mute_list.hpp (MuteList::mutes, still_face), written by tests/web/golden; "
+      "client/room/mute_list.hpp (MuteList::mutes, still_face), written by tests/web/golden; "
       "web/room/mute_list.js (MuteList.mutes, NEUTRAL_FACE) must give the same";
   out["muted"] = muted;
   out["you"] = you;

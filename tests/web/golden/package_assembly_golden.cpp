@@ -116,7 +116,7 @@ nlohmann::json package_assembly_golden() {
                      .add(13, kPreview, 4, 2, {3, 4}));
   nlohmann::json out;
   out["about"] =
-      "client/src/package_assembler.cpp (PackageAssembler::add, forget), written by tests/web/golden; "
+      "client/room/package_assembler.cpp (PackageAssembler::add, forget), written by tests/web/golden; "
       "web/room/package_assembly.js must complete and refuse the same chunks (refusals' words are its own)";
   out["max_assembled_bytes"] = client::kMaxAssembledBytes;
   nlohmann::json list = nlohmann::json::array();

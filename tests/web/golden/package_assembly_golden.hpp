@@ -1,6 +1,6 @@
 #pragma once
 // Golden file of packages put back together from their chunks
-// (client/src/package_assembler), which the browser's
+// (client/room/package_assembler), which the browser's
 // web/room/package_assembly.js ports: runs of chunks in order, interleaved,
 // restarted, with gaps, past their end, announced too large, and avatars
 // forgotten midway, with what each chunk completes or refuses.

@@ -23,7 +23,7 @@ const char* step_name(client::NextStep step) {
 nlohmann::json reconnect_policy_golden() {
   nlohmann::json out;
   out["about"] =
-      "client/src/failover_policy.cpp (after_closing, after_drop) and RoomSession::backoff, written by "
+      "client/transport/failover_policy.cpp (after_closing, after_drop) and RoomSession::backoff, written by "
       "tests/web/golden; web/room/reconnect_policy.js must decide the same (the browser never uploads a "
       "face from the room page: could_upload_here false)";
   // Every code a closing can carry that the protocol defines, and some it

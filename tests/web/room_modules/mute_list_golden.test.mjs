@@ -1,5 +1,5 @@
 // The browser's mute list (web/room/mute_list.js) against the native
-// client's (client/src/mute_list.hpp) as the C++ wrote it in
+// client's (client/room/mute_list.hpp) as the C++ wrote it in
 // tests/vectors/mute_list: the same verdict for every avatar id and name
 // (the viewer's own and the server's never muted; names compared exactly),
 // and the same still face for whom it mutes.

@@ -1,5 +1,5 @@
 // The browser's package assembly (web/room/package_assembly.js) against the
-// native client's (client/src/package_assembler.cpp) as the C++ wrote it in
+// native client's (client/room/package_assembler.cpp) as the C++ wrote it in
 // tests/vectors/package_assembly: every chunk completes the same package
 // (the same bytes), refuses the same way, or waits, run after run.
 import { test } from 'node:test';

@@ -1,5 +1,5 @@
 // The browser's reconnect policy (web/room/reconnect_policy.js) against the
-// native client's decisions (client/src/failover_policy.cpp,
+// native client's decisions (client/transport/failover_policy.cpp,
 // RoomSession::backoff) as the C++ wrote them in
 // tests/vectors/reconnect_policy: the same step for every close code and a
 // drop, and the same back-off, to the millisecond.
