@@ -2,6 +2,7 @@
 
 #include "demo_faces.hpp"
 #include "room.hpp"
+#include "room_members.hpp"
 #include "room_registry.hpp"
 
 namespace fw::server {
@@ -26,8 +27,7 @@ bool make_demo_avatars(ServerContext& context, std::string& error) {
 }
 
 const StoredAvatar& procedural_face_for(const ServerContext& context, const std::string& name) {
-  const auto& faces = context.demo_avatars;
-  return faces[std::hash<std::string>{}(name) % faces.size()];
+  return procedural_face_for(context.demo_avatars, name);
 }
 
 void open_demo_room(ServerContext& context, std::function<void()> seated) {
