@@ -34,7 +34,9 @@ class RoomBusRelay : public RoomBus {
     target().keep_member(room, member);
   }
   void forget_member(const std::string& room, std::uint32_t avatar) override { target().forget_member(room, avatar); }
-  void keep_state(const std::string& room, bridge::Bytes state) override { target().keep_state(room, std::move(state)); }
+  void keep_state(const std::string& room, bridge::Bytes state) override {
+    target().keep_state(room, std::move(state));
+  }
   void keep_chat(const std::string& room, bridge::Bytes chat_message) override {
     target().keep_chat(room, std::move(chat_message));
   }

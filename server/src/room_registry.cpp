@@ -61,7 +61,8 @@ std::shared_ptr<Room> RoomRegistry::find_or_create(const std::string& name, bool
 std::shared_ptr<Room> RoomRegistry::start_room(const std::string& name, bool persistent) {
   // In a cluster a room opens as a bridge; its owner (maybe this node) is
   // found or chosen by the bus.
-  auto room = std::make_shared<Room>(services_, *this, name, persistent, next_seed_++, services_.bus.role_of_new_room());
+  auto room =
+      std::make_shared<Room>(services_, *this, name, persistent, next_seed_++, services_.bus.role_of_new_room());
   rooms_.emplace(name, room);
   room->start();
   return room;

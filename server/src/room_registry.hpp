@@ -56,8 +56,9 @@ class RoomRegistry {
 
   /// The room called `name`, created (and started) if needed; null when the
   /// server already holds its maximum number of rooms, or has stopped. In a
-  /// cluster a new room is a bridge, and the bus is told to `place` it
-  /// (unless the bus itself asks, taking the room over).
+  /// cluster a new room is a bridge (RoomBus::role_of_new_room), and the
+  /// bus is told to `place` it (unless the bus itself asks, taking the room
+  /// over).
   std::shared_ptr<Room> find_or_create(const std::string& name, bool persistent = false, bool place = true);
   /// The room called `name` for a person from `address` (address_key()):
   /// created if needed, when that address may still create rooms
