@@ -72,7 +72,6 @@ ClusterNode::~ClusterNode() {
 }
 
 void ClusterNode::start() {
-  context_.bus = this;
   context_.room_bus->attach(*this);
   context_.cluster_up = false;
   context_.addresses->share_spending();
@@ -108,7 +107,6 @@ void ClusterNode::stop() {
   if (done->get_future().wait_for(std::chrono::seconds(2)) != std::future_status::ready)
     spdlog::warn("left the cluster without telling Redis: others take this node's rooms over when its leases end");
   context_.room_bus->detach();
-  context_.bus = nullptr;
 }
 
 void ClusterNode::connect() {

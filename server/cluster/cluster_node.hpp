@@ -45,8 +45,8 @@ class ClusterNode : public RoomBus {
   ClusterNode(ServerContext& context, boost::asio::any_io_executor executor, RedisAddress address, std::string node);
   ~ClusterNode() override;
 
-  /// Connects and starts the heartbeat; context.bus points here from now on,
-  /// and the rooms' bus (context.room_bus) forwards here until stop().
+  /// Connects and starts the heartbeat; the rooms' bus (context.room_bus)
+  /// forwards here from now on until stop().
   void start();
   /// Gives up this node's rooms (their leases go, so others take them over
   /// at once) and leaves the cluster. Blocking; call once rooms stopped.

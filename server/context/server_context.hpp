@@ -19,7 +19,6 @@
 namespace fw::server {
 
 class RoomRegistry;
-class RoomBus;
 class RoomBusRelay;
 class SessionRegistry;
 
@@ -37,8 +36,6 @@ struct ServerContext {
   SessionRegistry* sessions = nullptr;  ///< the client sessions open now
   /// The bus every room holds (room_bus_relay.hpp): a cluster node attaches itself to it.
   RoomBusRelay* room_bus = nullptr;
-  /// The cluster this node is part of (--redis); null in one process.
-  RoomBus* bus = nullptr;
   /// Procedural faces for clients that join without a package (and the lobby).
   std::vector<StoredAvatar> demo_avatars;
   std::atomic<bool> ready{false};     ///< /readyz: listening and the demo room seated

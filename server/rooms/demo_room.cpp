@@ -32,7 +32,8 @@ const StoredAvatar& procedural_face_for(const ServerContext& context, const std:
 
 void open_demo_room(ServerContext& context, std::function<void()> seated) {
   auto lobby = context.rooms->find_or_create("lobby", /*persistent=*/true);
-  if (context.bus) return seated();  // its owner seats the residents
+  // Opened as a bridge (a cluster), the lobby gets its residents from its owner.
+  if (lobby->role() == RoomRoleKind::bridge) return seated();
   seat_lobby_residents(context, lobby);
   lobby->then(std::move(seated));
 }
