@@ -7,7 +7,7 @@
 #include "durable_file.hpp"
 #include "fw/model/file_io.hpp"
 #include "preview_package.hpp"
-#include "room_connection.hpp"  // share
+#include "shared_bytes.hpp"
 #include "server_keys.hpp"
 
 namespace fw::server {

@@ -31,14 +31,13 @@
 
 #include "durable_file.hpp"
 #include "metrics.hpp"
+#include "shared_bytes.hpp"
 
 namespace fw::model {
 struct AvatarPackage;
 }
 
 namespace fw::server {
-
-using SharedBytes = std::shared_ptr<const std::vector<std::uint8_t>>;  // as in room_connection.hpp
 
 struct StoredAvatar {
   std::string asset;    ///< the avatar's id: 32 lowercase hex digits

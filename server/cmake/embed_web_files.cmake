@@ -2,7 +2,7 @@
 #                    [GENERATED_DIRECTORY dir GENERATED_FILES path... GENERATED_BY target])
 # Compiles every file the browser loads from `dir` (web/: .html .js .mjs .css
 # .json .wasm, in any folder below it) into `target`, and generates the table
-# of them (server/src/web_files.hpp) that the static files are served from,
+# of them (server/net/web_files.hpp) that the static files are served from,
 # each at its path below `dir`. The glob is checked again at every build
 # (CONFIGURE_DEPENDS), so a file added to web/ is served after the next build
 # without anyone editing a list. Other files there (READMEs) are not served.

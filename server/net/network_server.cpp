@@ -4,6 +4,7 @@
 
 #include <iostream>
 #include <memory>
+#include <set>
 #include <string>
 #include <thread>
 #include <vector>
@@ -159,8 +160,10 @@ int run_network_server(const ServerConfig& config) {
   net::io_context ioc(config.io_threads);
   PhotoWorker photo_worker(config.landmark_model, config.photo_threads, config.abuse.photo_queue);
   PhotoPreparation photos(core.context(), photo_worker);
-  AvatarRepreparation repreparation(core.context(), photo_worker);
-  AvatarSweeper sweeper(core.context());  // --avatar-retention-days
+  AvatarRepreparation repreparation(*core.context().store, photo_worker);
+  std::set<std::string> own_faces;
+  for (const StoredAvatar& face : core.context().demo_avatars) own_faces.insert(face.asset);
+  AvatarSweeper sweeper(*core.context().store, std::move(own_faces), config.avatar_retention_days);
   Listeners listeners;
   if (!open_listeners(ioc, core.context(), photos, listeners, descriptors, error)) return cannot_start(error);
   std::unique_ptr<ClusterNode> cluster;

@@ -21,7 +21,7 @@ void prepare_again(AvatarStore& store, PhotoWorker& worker, const std::string& a
 
 }  // namespace
 
-AvatarRepreparation::AvatarRepreparation(ServerContext& context, PhotoWorker& worker) : store_(*context.store) {
+AvatarRepreparation::AvatarRepreparation(AvatarStore& store, PhotoWorker& worker) : store_(store) {
   // The jobs hold the store and the worker, not this object: both outlive
   // every job (the worker joins its jobs before it goes, the store after it).
   store_.set_repreparer([&store = store_, &worker](const std::string& asset, std::vector<std::uint8_t> photo) {

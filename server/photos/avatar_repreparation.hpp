@@ -4,7 +4,7 @@
 // photo worker, and stored under the same id (avatar_store.hpp). The store
 // hands them over when they are first asked for; meanwhile it answers that
 // they are being prepared. Installed on the store for this object's life.
-#include "server_context.hpp"
+#include "avatar_store.hpp"
 
 namespace fw::server {
 
@@ -12,7 +12,7 @@ class PhotoWorker;
 
 class AvatarRepreparation {
  public:
-  AvatarRepreparation(ServerContext& context, PhotoWorker& worker);
+  AvatarRepreparation(AvatarStore& store, PhotoWorker& worker);
   /// The store hands over no more avatars; those handed over still finish.
   ~AvatarRepreparation();
   AvatarRepreparation(const AvatarRepreparation&) = delete;

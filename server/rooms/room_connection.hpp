@@ -9,10 +9,9 @@
 #include <vector>
 
 #include "fw/codec/messages.hpp"
+#include "shared_bytes.hpp"
 
 namespace fw::server {
-
-using SharedBytes = std::shared_ptr<const std::vector<std::uint8_t>>;
 
 class RoomConnection {
  public:
@@ -32,10 +31,6 @@ class RoomConnection {
   /// the peer sends after reading the welcome can count as sent before it.
   virtual void joined(std::uint32_t avatar, SharedBytes welcome) = 0;
 };
-
-inline SharedBytes share(std::vector<std::uint8_t>&& bytes) {
-  return std::make_shared<const std::vector<std::uint8_t>>(std::move(bytes));
-}
 
 template <class Message>
 SharedBytes encode_shared(const Message& message) {

@@ -1,4 +1,4 @@
-// server/src/simulate_command.cpp and render_scene_command.cpp: the commands
+// server/commands/simulate_command.cpp and render_scene_command.cpp: the commands
 // run as a person runs them, on real scenes. The physics face is tested in
 // tests/physics; here it is off, so these tests measure the commands.
 #include "simulate_command.hpp"

@@ -125,7 +125,7 @@ pid_t FanoutServers::node_pid(int i) const { return nodes_.at(static_cast<std::s
 double FanoutServers::redis_cpu_seconds() const { return redis_ ? redis_->cpu_seconds() : 0.0; }
 
 std::string FanoutServers::owner_of(const std::string& room) const {
-  // The key's name is the cluster's (server/src/cluster_keys.hpp, room_owner).
+  // The key's name is the cluster's (server/cluster/cluster_keys.hpp, room_owner).
   return redis_ ? redis_get(redis_->port(), "fw:room:" + room + ":owner") : std::string();
 }
 

@@ -1,5 +1,5 @@
 // Fuzzes the readers of what cluster nodes say to each other over Redis
-// (server/src/bridge_message.hpp, cluster_limits.hpp): a room's news down,
+// (server/rooms/bridge_message.hpp, cluster_limits.hpp): a room's news down,
 // a bridging node's requests up, a member record, a room's moods, and the
 // limits news. The first input byte picks the reader. Whatever the bytes:
 // no crash and no read outside them, and what reads writes back to bytes

@@ -1,4 +1,4 @@
-// Fuzzes check_join_token (server/src/join_token.hpp), which stands between
+// Fuzzes check_join_token (server/identity/join_token.hpp), which stands between
 // anyone who can reach the server and its rooms when --auth-secret is set.
 // The token is the input's own text, a payload of the input's signed here
 // with its secret (so that the fuzzer reaches the payload's reader, past a

@@ -99,7 +99,7 @@ TEST_F(Repreparation, AnOutOfDateAvatarIsServedAgainUnderTheSameIdAfterARestart)
   std::filesystem::copy_file(file(asset, ".fwa"), file(asset, ".fwa.partial-4242"));
 
   InMemoryServer server(InMemoryServer::test_config(), data_);
-  AvatarRepreparation repreparation(server.context(), *worker_);
+  AvatarRepreparation repreparation(*server.context().store, *worker_);
   const auto early = join_wearing(server, asset);
   ASSERT_TRUE(early->closing.has_value()) << "nobody can be shown an avatar of another generic face";
   EXPECT_EQ(early->closing->code, CloseCode::avatar_being_prepared);
@@ -137,7 +137,7 @@ TEST_F(Repreparation, APhotoThatNoLongerMakesAnAvatarIsReportedAndRefused) {
   ASSERT_TRUE(model::write_file_atomically(file(asset, ".photo"), std::span(photo).first(photo.size() / 2), error));
 
   InMemoryServer server(InMemoryServer::test_config(), data_);
-  AvatarRepreparation repreparation(server.context(), *worker_);
+  AvatarRepreparation repreparation(*server.context().store, *worker_);
   EXPECT_EQ(server.context().store->lookup(asset).status, AvatarStatus::being_prepared);
   ASSERT_TRUE(test::eventually(
       [&] { return server.context().store->lookup(asset).status != AvatarStatus::being_prepared; }, 60s));

@@ -1,13 +1,16 @@
 #include "avatar_retention.hpp"
 
-#include <set>
-
 #include <spdlog/spdlog.h>
 
 namespace fw::server {
 
-AvatarSweeper::AvatarSweeper(ServerContext& context, std::chrono::seconds interval)
-    : context_(context), retention_(context.config.avatar_retention_days), interval_(interval) {
+AvatarSweeper::AvatarSweeper(AvatarStore& store, std::set<std::string> own_faces, std::uint32_t retention_days,
+                             std::chrono::seconds interval)
+    : store_(store),
+      own_faces_(std::move(own_faces)),
+      retention_days_(retention_days),
+      retention_(retention_days),
+      interval_(interval) {
   if (!retention_.forever()) thread_ = std::thread([this] { run(); });
 }
 
@@ -33,12 +36,10 @@ void AvatarSweeper::run() {
 void AvatarSweeper::sweep() {
   const auto cutoff = retention_.cutoff(AvatarRetention::FileTime::clock::now());
   if (!cutoff) return;
-  std::set<std::string> own_faces;
-  for (const StoredAvatar& face : context_.demo_avatars) own_faces.insert(face.asset);
-  const auto removed = context_.store->remove_unused_since(*cutoff, own_faces);
+  const auto removed = store_.remove_unused_since(*cutoff, own_faces_);
   if (!removed.empty())
     spdlog::info("deleted {} avatar(s) with their photos, unused for {} days (--avatar-retention-days)",
-                 removed.size(), context_.config.avatar_retention_days);
+                 removed.size(), retention_days_);
 }
 
 }  // namespace fw::server

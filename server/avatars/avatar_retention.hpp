@@ -11,9 +11,11 @@
 #include <filesystem>
 #include <mutex>
 #include <optional>
+#include <set>
+#include <string>
 #include <thread>
 
-#include "server_context.hpp"
+#include "avatar_store.hpp"
 
 namespace fw::server {
 
@@ -37,10 +39,12 @@ class AvatarRetention {
 };
 
 /// Sweeps the store at start and then every `interval` on a thread of its
-/// own (file deletions only; nothing waits for it), until destroyed.
+/// own (file deletions only; nothing waits for it), until destroyed. Never
+/// sweeps `own_faces`, the server's own (the demo faces).
 class AvatarSweeper {
  public:
-  AvatarSweeper(ServerContext& context, std::chrono::seconds interval = std::chrono::hours(1));
+  AvatarSweeper(AvatarStore& store, std::set<std::string> own_faces, std::uint32_t retention_days,
+                std::chrono::seconds interval = std::chrono::hours(1));
   ~AvatarSweeper();
   AvatarSweeper(const AvatarSweeper&) = delete;
   AvatarSweeper& operator=(const AvatarSweeper&) = delete;
@@ -49,7 +53,9 @@ class AvatarSweeper {
   void run();
   void sweep();
 
-  ServerContext& context_;
+  AvatarStore& store_;
+  const std::set<std::string> own_faces_;
+  const std::uint32_t retention_days_;
   AvatarRetention retention_;
   std::chrono::seconds interval_;
   std::mutex mutex_;

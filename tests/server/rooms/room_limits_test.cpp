@@ -3,7 +3,7 @@
 // after a quiet period, so a lobby's ids never run out; persons who neither
 // send nor read let go, and a room left without persons closed; joins, new
 // rooms, seats and chat lines limited per address and per room.
-// tests/server/address_rate_limits_test.cpp does the same over sockets.
+// tests/server/net/address_rate_limits_test.cpp does the same over sockets.
 #include <chrono>
 #include <thread>
 

@@ -1,4 +1,4 @@
-// server/src/room_simulation.cpp with the physics face on: its level of
+// server/simulation/room_simulation.cpp with the physics face on: its level of
 // detail under load. (Commands and events without physics are tested in
 // tests/behavior/simulate_command_test.cpp.)
 #include "room_simulation.hpp"
