@@ -11,7 +11,9 @@
 #include "cluster_message_check.hpp"
 #include "demo_room.hpp"
 #include "room.hpp"
+#include "room_bus_relay.hpp"
 #include "room_registry.hpp"
+#include "session_registry.hpp"
 
 namespace fw::server {
 
@@ -70,7 +72,7 @@ ClusterNode::~ClusterNode() {
 }
 
 void ClusterNode::start() {
-  context_.bus = this;
+  context_.room_bus->attach(*this);
   context_.cluster_up = false;
   context_.addresses->share_spending();
   // A token taken or let go here is news for every node at once.
@@ -104,7 +106,7 @@ void ClusterNode::stop() {
   // The I/O loop may already be stopped: then nothing can be said to Redis.
   if (done->get_future().wait_for(std::chrono::seconds(2)) != std::future_status::ready)
     spdlog::warn("left the cluster without telling Redis: others take this node's rooms over when its leases end");
-  context_.bus = nullptr;
+  context_.room_bus->detach();
 }
 
 void ClusterNode::connect() {
@@ -203,7 +205,7 @@ void ClusterNode::report_alive() {
   std::size_t avatars = 0;
   for (const auto& name : owned_)
     if (auto room = context_.rooms->find(name)) avatars += room->avatar_count();
-  const double load = static_cast<double>(context_.rooms->session_count()) + 0.1 * static_cast<double>(avatars);
+  const double load = static_cast<double>(context_.sessions->count()) + 0.1 * static_cast<double>(avatars);
   commands_->command({"SET", keys::node_alive(node_), std::to_string(load), "PX", std::to_string(kAliveMs)});
   commands_->command({"SADD", keys::kNodes, node_});
 }

@@ -3,11 +3,11 @@
 //
 // Rooms are owned by one node, which simulates them; ownership is a lease
 // in Redis that the owner renews twice a second. A node that holds clients
-// of a room it does not own bridges them over pub/sub (room_bridge.cpp).
+// of a room it does not own bridges them over pub/sub (bridged_room.hpp).
 // Every half second each node reports that it lives and its load, renews
 // its leases (and gives up a room another node took meanwhile), tells its
 // rooms which nodes died, and takes over any room whose owner's lease ran
-// out, restoring it from the owner's record (room_takeover.cpp). New rooms
+// out, restoring it from the owner's record (owned_room_cluster.cpp). New rooms
 // go to the least-loaded live node.
 //
 // Without Redis a node keeps serving the rooms it owns and opens new ones
@@ -45,13 +45,16 @@ class ClusterNode : public RoomBus {
   ClusterNode(ServerContext& context, boost::asio::any_io_executor executor, RedisAddress address, std::string node);
   ~ClusterNode() override;
 
-  /// Connects and starts the heartbeat; context.bus points here from now on.
+  /// Connects and starts the heartbeat; the rooms' bus (context.room_bus)
+  /// forwards here from now on until stop().
   void start();
   /// Gives up this node's rooms (their leases go, so others take them over
   /// at once) and leaves the cluster. Blocking; call once rooms stopped.
   void stop();
 
   // RoomBus
+  /// A room opened here is a bridge until the node finds or places its owner.
+  RoomRoleKind role_of_new_room() const override { return RoomRoleKind::bridge; }
   const std::string& node() const override { return node_; }
   void room_opened(const std::string& room) override;
   void send_down(const std::string& room, bridge::Bytes message) override;

@@ -19,7 +19,8 @@
 namespace fw::server {
 
 class RoomRegistry;
-class RoomBus;
+class RoomBusRelay;
+class SessionRegistry;
 
 struct ServerContext {
   ServerConfig config;
@@ -31,9 +32,10 @@ struct ServerContext {
   AbuseLog abuse;                      ///< refusals by kind, for the log and /metrics
   TokenHolders tokens;                 ///< which connection holds each join token
   std::string server_key;              ///< signs avatar keys (DATA/server.key)
-  RoomRegistry* rooms = nullptr;
-  /// The cluster this node is part of (--redis); null in one process.
-  RoomBus* bus = nullptr;
+  RoomRegistry* rooms = nullptr;       ///< made once the avatar store is open
+  SessionRegistry* sessions = nullptr;  ///< the client sessions open now
+  /// The bus every room holds (room_bus_relay.hpp): a cluster node attaches itself to it.
+  RoomBusRelay* room_bus = nullptr;
   /// Procedural faces for clients that join without a package (and the lobby).
   std::vector<StoredAvatar> demo_avatars;
   std::atomic<bool> ready{false};     ///< /readyz: listening and the demo room seated

@@ -14,6 +14,7 @@
 #include "peer_address.hpp"
 #include "room.hpp"
 #include "room_registry.hpp"
+#include "session_registry.hpp"
 #include "server_keys.hpp"
 #include "server_limits.hpp"
 
@@ -42,7 +43,7 @@ void ClientSession::start() {
   if (state_ == State::closed) return;  // it gave its place up before it started (give_up_place)
   context_.metrics.connections.fetch_add(1);
   counted_ = true;
-  context_.rooms->add_session(shared_from_this());
+  context_.sessions->add(shared_from_this());
   opened_ = last_heard_ = last_refill_ = last_sent_ = read_progress_ = std::chrono::steady_clock::now();
   on_clock();
   start_reading();
@@ -165,7 +166,7 @@ void ClientSession::on_transport_closed() {
   }
   clock_.cancel();
   if (!held_token_.empty()) context_.tokens.release(held_token_, this);
-  context_.rooms->remove_session(this);
+  context_.sessions->remove(this);
 }
 
 void ClientSession::protocol_error(CloseCode code, const std::string& what, Abuse kind) {

@@ -6,13 +6,14 @@
 namespace fw::server {
 
 ServerCore::ServerCore(const ServerConfig& config)
-    : workers_(static_cast<std::size_t>(config.workers)), rooms_(context_) {
+    : workers_(static_cast<std::size_t>(config.workers)) {
   context_.config = config;
   addresses_ = std::make_unique<AddressLimits>(config.abuse);
   context_.addresses = addresses_.get();
   context_.physics_lod.set_enabled(config.physics && config.physics_lod);
   context_.workers = &workers_;
-  context_.rooms = &rooms_;
+  context_.sessions = &sessions_;
+  context_.room_bus = &bus_;
 }
 
 ServerCore::~ServerCore() { stop(); }
@@ -26,7 +27,12 @@ bool ServerCore::open(std::string& error) {
   context_.store = store_.get();
   context_.server_key = load_or_create_server_key(context_.config.data, error);
   if (context_.server_key.empty()) return false;
-  return make_demo_avatars(context_, error);
+  if (!make_demo_avatars(context_, error)) return false;
+  const RoomServices services{context_.config, context_.metrics, context_.physics_lod, context_.abuse, workers_,
+                              *store_, context_.demo_avatars, bus_, context_.draining};
+  rooms_ = std::make_unique<RoomRegistry>(services, *addresses_);
+  context_.rooms = rooms_.get();
+  return true;
 }
 
 void ServerCore::open_demo_room() {
@@ -39,15 +45,15 @@ void ServerCore::open_demo_room() {
 
 void ServerCore::start_draining() {
   context_.draining = true;
-  rooms_.close_all_sessions();
+  sessions_.close_all();
 }
 
-bool ServerCore::drained() const { return rooms_.session_count() == 0; }
+bool ServerCore::drained() const { return sessions_.count() == 0; }
 
 void ServerCore::stop() {
   if (stopped_) return;
   stopped_ = true;
-  rooms_.close_all_rooms();
+  if (rooms_) rooms_->close_all_rooms();
   // Closed rooms stop their timers, so the pool runs out of work.
   workers_.join();
 }

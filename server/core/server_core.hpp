@@ -10,9 +10,11 @@
 #include <boost/asio/thread_pool.hpp>
 
 #include "avatar_store.hpp"
+#include "room_bus_relay.hpp"
 #include "room_registry.hpp"
 #include "server_config.hpp"
 #include "server_context.hpp"
+#include "session_registry.hpp"
 
 namespace fw::server {
 
@@ -24,8 +26,9 @@ class ServerCore {
   ServerCore(const ServerCore&) = delete;
   ServerCore& operator=(const ServerCore&) = delete;
 
-  /// Opens the avatar store (config.data) and stores the demo faces; false
-  /// and `error`, for the person starting the server, if either fails.
+  /// Opens the avatar store (config.data) and stores the demo faces, then
+  /// makes the rooms' registry; false and `error`, for the person starting
+  /// the server, if either fails.
   bool open(std::string& error);
   /// Opens the demo room when the configuration asks for one, and marks the
   /// server ready (/readyz) once its faces are seated.
@@ -39,14 +42,18 @@ class ServerCore {
   void stop();
 
   ServerContext& context() { return context_; }
-  RoomRegistry& rooms() { return rooms_; }
+  /// Once open() succeeded.
+  RoomRegistry& rooms() { return *rooms_; }
+  SessionRegistry& sessions() { return sessions_; }
 
  private:
   ServerContext context_;
   std::unique_ptr<AvatarStore> store_;
   std::unique_ptr<AddressLimits> addresses_;
   boost::asio::thread_pool workers_;
-  RoomRegistry rooms_;
+  RoomBusRelay bus_;
+  SessionRegistry sessions_;
+  std::unique_ptr<RoomRegistry> rooms_;
   bool stopped_ = false;
 };
 

@@ -16,7 +16,7 @@ DrainOnSignal::DrainOnSignal(boost::asio::io_context& ioc, ServerCore& core, std
 }
 
 void DrainOnSignal::on_signal(int signal) {
-  spdlog::info("signal {}: draining {} connection(s)", signal, core_.rooms().session_count());
+  spdlog::info("signal {}: draining {} connection(s)", signal, core_.sessions().count());
   stop_accepting_();
   deadline_ = std::chrono::steady_clock::now() + drain_time_;
   core_.start_draining();

@@ -2,6 +2,7 @@
 
 #include "demo_faces.hpp"
 #include "room.hpp"
+#include "room_members.hpp"
 #include "room_registry.hpp"
 
 namespace fw::server {
@@ -26,13 +27,13 @@ bool make_demo_avatars(ServerContext& context, std::string& error) {
 }
 
 const StoredAvatar& procedural_face_for(const ServerContext& context, const std::string& name) {
-  const auto& faces = context.demo_avatars;
-  return faces[std::hash<std::string>{}(name) % faces.size()];
+  return procedural_face_for(context.demo_avatars, name);
 }
 
 void open_demo_room(ServerContext& context, std::function<void()> seated) {
   auto lobby = context.rooms->find_or_create("lobby", /*persistent=*/true);
-  if (context.bus) return seated();  // its owner seats the residents
+  // Opened as a bridge (a cluster), the lobby gets its residents from its owner.
+  if (lobby->role() == RoomRoleKind::bridge) return seated();
   seat_lobby_residents(context, lobby);
   lobby->then(std::move(seated));
 }

@@ -1,8 +1,10 @@
 #pragma once
 // How a room reaches the other nodes of a cluster (cluster_node.hpp), seen
-// from the room: null in one process, where every room is its own node's.
-// Calls return at once (the bus queues them for Redis) and may come from
-// any room's strand.
+// from the room. Every room has one, given when it is made: in one process
+// it is LocalRoomBus (local_room_bus.hpp), where every room is this node's
+// and there is nobody to tell; so room code never asks whether there is a
+// cluster, it tells the bus and the bus knows. Calls return at once (the
+// cluster's bus queues them for Redis) and may come from any room's strand.
 #include <cstdint>
 #include <string>
 
@@ -10,9 +12,16 @@
 
 namespace fw::server {
 
+/// What a room does on this node: simulates it (the owner), or relays the
+/// owner on another node to its people here (a bridge).
+enum class RoomRoleKind { owner, bridge };
+
 class RoomBus {
  public:
   virtual ~RoomBus() = default;
+  /// What a room opened here for a joiner starts as: in a cluster a bridge,
+  /// whose owner the bus finds or places (room_opened); alone, the owner.
+  virtual RoomRoleKind role_of_new_room() const = 0;
   /// A room was opened here for a joiner (in the bridge role): the bus
   /// finds or places its owner (perhaps this node, then it takes it over).
   virtual void room_opened(const std::string& room) = 0;

@@ -2,10 +2,8 @@
 
 #include <cmath>
 
-#include "client_session.hpp"
 #include "peer_address.hpp"
 #include "room.hpp"
-#include "room_bus.hpp"
 
 namespace fw::server {
 
@@ -44,7 +42,8 @@ std::string share_refusal_text(RoomShareRefusal why, const RoomShareLimits& limi
 
 }  // namespace
 
-RoomRegistry::RoomRegistry(ServerContext& context) : context_(context) {}
+RoomRegistry::RoomRegistry(const RoomServices& services, AddressLimits& addresses)
+    : services_(services), addresses_(addresses), shares_(room_shares_of(services.config)) {}
 RoomRegistry::~RoomRegistry() = default;
 
 std::shared_ptr<Room> RoomRegistry::find_or_create(const std::string& name, bool persistent, bool place) {
@@ -52,18 +51,18 @@ std::shared_ptr<Room> RoomRegistry::find_or_create(const std::string& name, bool
   {
     std::lock_guard lock(mutex_);
     if (auto it = rooms_.find(name); it != rooms_.end()) return it->second;
-    if (closed_ || rooms_.size() >= context_.config.max_rooms) return nullptr;
+    if (closed_ || rooms_.size() >= services_.config.max_rooms) return nullptr;
     room = start_room(name, persistent);
   }
-  if (context_.bus && place) context_.bus->room_opened(name);
+  if (place) services_.bus.room_opened(name);
   return room;
 }
 
 std::shared_ptr<Room> RoomRegistry::start_room(const std::string& name, bool persistent) {
   // In a cluster a room opens as a bridge; its owner (maybe this node) is
   // found or chosen by the bus.
-  auto room = std::make_shared<Room>(context_, name, persistent, next_seed_++,
-                                     context_.bus ? RoomRole::bridge : RoomRole::owner);
+  auto room =
+      std::make_shared<Room>(services_, *this, name, persistent, next_seed_++, services_.bus.role_of_new_room());
   rooms_.emplace(name, room);
   room->start();
   return room;
@@ -86,25 +85,24 @@ RoomOpening RoomRegistry::open_for(const std::string& name, const std::string& a
   std::unique_lock lock(mutex_);
   if (auto it = rooms_.find(name); it != rooms_.end()) return RoomOpening::opened(it->second);
   if (closed_) return RoomOpening::refused(codec::CloseCode::shutting_down, "the server is shutting down; try again soon");
-  if (rooms_.size() >= context_.config.max_rooms)
+  if (rooms_.size() >= services_.config.max_rooms)
     return RoomOpening::refused(codec::CloseCode::server_full, "the server holds its maximum number of rooms; try later");
-  if (const auto wait = context_.addresses->take(AddressRate::room_creation, address)) {
+  if (const auto wait = addresses_.take(AddressRate::room_creation, address)) {
     return RoomOpening::refused(codec::CloseCode::rate_limited,
                                 "too many new rooms from your address; join one that exists, or try again in " +
                                     std::to_string(static_cast<long>(std::ceil(*wait))) + " s",
                                 Abuse::room_creation);
   }
-  if (!shares_) shares_.emplace(room_shares_of(context_.config));
   const std::string block = address_group(address);
-  if (const auto why = shares_->may_open(address, block, rooms_.size(), context_.config.max_rooms);
+  if (const auto why = shares_.may_open(address, block, rooms_.size(), services_.config.max_rooms);
       why != RoomShareRefusal::none)
     return RoomOpening::refused(
         why == RoomShareRefusal::reserve ? codec::CloseCode::server_full : codec::CloseCode::rate_limited,
-        share_refusal_text(why, shares_->limits()), Abuse::room_share);
+        share_refusal_text(why, shares_.limits()), Abuse::room_share);
   auto room = start_room(name, false);
-  shares_->opened(name, address, block);
+  shares_.opened(name, address, block);
   lock.unlock();
-  if (context_.bus) context_.bus->room_opened(name);
+  services_.bus.room_opened(name);
   return RoomOpening::opened(room);
 }
 
@@ -114,7 +112,7 @@ void RoomRegistry::remove_if_empty(const std::shared_ptr<Room>& room) {
   auto it = rooms_.find(room->name());
   if (it == rooms_.end() || it->second != room) return;
   rooms_.erase(it);
-  if (shares_) shares_->closed(room->name());
+  shares_.closed(room->name());
   room->close();
 }
 
@@ -125,40 +123,13 @@ std::vector<RoomSummary> RoomRegistry::list() const {
   return out;
 }
 
-void RoomRegistry::add_session(const std::shared_ptr<ClientSession>& session) {
-  std::lock_guard lock(mutex_);
-  sessions_.emplace(session.get(), session);
-}
-
-void RoomRegistry::remove_session(const ClientSession* session) {
-  std::lock_guard lock(mutex_);
-  sessions_.erase(session);
-}
-
-std::size_t RoomRegistry::session_count() const {
-  std::lock_guard lock(mutex_);
-  return sessions_.size();
-}
-
-void RoomRegistry::close_all_sessions() {
-  std::vector<std::shared_ptr<ClientSession>> open;
-  {
-    std::lock_guard lock(mutex_);
-    for (auto& [key, weak] : sessions_)
-      if (auto session = weak.lock()) open.push_back(std::move(session));
-  }
-  for (auto& session : open)
-    session->close(codec::CloseCode::shutting_down, "the server is shutting down; reconnect in a moment");
-}
-
 void RoomRegistry::close_all_rooms() {
   std::map<std::string, std::shared_ptr<Room>> rooms;
   {
     std::lock_guard lock(mutex_);
     closed_ = true;
     rooms.swap(rooms_);
-    if (shares_)
-      for (const auto& [name, room] : rooms) shares_->closed(name);
+    for (const auto& [name, room] : rooms) shares_.closed(name);
   }
   for (auto& [name, room] : rooms) room->close();
 }

@@ -1,7 +1,9 @@
 #pragma once
 // All rooms by name: created on first join (up to the room limit), removed
 // when their last person leaves (except persistent ones, like the lobby).
-// Also the set of open sessions, so that a drain can tell each to leave.
+// Each room is made with the services it uses (RoomServices) and starts in
+// the role the bus gives a new room. The sessions open on the server are
+// SessionRegistry's (session_registry.hpp).
 #include <map>
 #include <memory>
 #include <mutex>
@@ -10,13 +12,14 @@
 #include <vector>
 
 #include "fw/codec/messages.hpp"
+#include "abuse_log.hpp"
+#include "address_limits.hpp"
+#include "room_services.hpp"
 #include "room_shares.hpp"
-#include "server_context.hpp"
 
 namespace fw::server {
 
 class Room;
-class ClientSession;
 
 /// A room for a hello, or why there is none.
 struct RoomOpening {
@@ -47,13 +50,15 @@ struct RoomSummary {
 
 class RoomRegistry {
  public:
-  explicit RoomRegistry(ServerContext& context);
+  /// `addresses`: how many rooms each address may still open.
+  RoomRegistry(const RoomServices& services, AddressLimits& addresses);
   ~RoomRegistry();
 
   /// The room called `name`, created (and started) if needed; null when the
   /// server already holds its maximum number of rooms, or has stopped. In a
-  /// cluster a new room is a bridge, and the bus is told to `place` it
-  /// (unless the bus itself asks, taking the room over).
+  /// cluster a new room is a bridge (RoomBus::role_of_new_room), and the
+  /// bus is told to `place` it (unless the bus itself asks, taking the room
+  /// over).
   std::shared_ptr<Room> find_or_create(const std::string& name, bool persistent = false, bool place = true);
   /// The room called `name` for a person from `address` (address_key()):
   /// created if needed, when that address may still create rooms
@@ -69,11 +74,6 @@ class RoomRegistry {
   void remove_if_empty(const std::shared_ptr<Room>& room);
   std::vector<RoomSummary> list() const;
 
-  void add_session(const std::shared_ptr<ClientSession>& session);
-  void remove_session(const ClientSession* session);
-  std::size_t session_count() const;
-  /// Tells every open session that the server shuts down.
-  void close_all_sessions();
   /// Stops every room; no room opens after this.
   void close_all_rooms();
 
@@ -81,13 +81,12 @@ class RoomRegistry {
   /// Makes and starts a room; the caller holds mutex_.
   std::shared_ptr<Room> start_room(const std::string& name, bool persistent);
 
-  ServerContext& context_;
+  RoomServices services_;
+  AddressLimits& addresses_;
   mutable std::mutex mutex_;
   std::map<std::string, std::shared_ptr<Room>> rooms_;
-  std::map<const ClientSession*, std::weak_ptr<ClientSession>> sessions_;
-  /// Who opened the rooms open_for() opened; made on first use, since the
-  /// context's configuration is filled after the registry is made.
-  std::optional<RoomShares> shares_;
+  /// Who opened the rooms open_for() opened.
+  RoomShares shares_;
   std::uint64_t next_seed_ = 1;
   bool closed_ = false;  ///< close_all_rooms() ran: the worker pool is to run out of work
 };

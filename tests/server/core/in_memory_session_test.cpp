@@ -72,12 +72,12 @@ TEST(InMemorySession, HangingUpLeavesTheRoomAndTheRegistry) {
   auto ann = server.join("r", "Ann");
   auto bob = server.join("r", "Bob");
   ASSERT_TRUE(ann->welcome && bob->welcome);
-  EXPECT_EQ(server.core().rooms().session_count(), 2u);
+  EXPECT_EQ(server.core().sessions().count(), 2u);
   bob->session().hang_up();
   EXPECT_TRUE(eventually([&] { return bob->session().gone(); }));
   ASSERT_TRUE(ann->read_until([&] { return ann->presence.size() >= 2; }));
   EXPECT_EQ(ann->presence.back().change, codec::Presence::Change::left);
-  EXPECT_EQ(server.core().rooms().session_count(), 1u);
+  EXPECT_EQ(server.core().sessions().count(), 1u);
   EXPECT_FALSE(bob->session().shut_down()) << "the peer ended it, not the server";
 }
 

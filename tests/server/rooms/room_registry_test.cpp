@@ -1,6 +1,6 @@
 // RoomRegistry: rooms made on first join up to the room limit, removed when
 // their last person leaves (unless persistent), closed for good at the end;
-// room names; the open sessions a drain tells to leave.
+// room names.
 #include "room_registry.hpp"
 
 #include <gtest/gtest.h>
@@ -72,23 +72,6 @@ TEST(RoomRegistry, OpensNoRoomOnceClosed) {
   rooms.close_all_rooms();
   EXPECT_TRUE(rooms.list().empty());
   EXPECT_EQ(rooms.find_or_create("b"), nullptr);
-}
-
-TEST(RoomRegistry, TellsEveryOpenSessionToLeave) {
-  InMemoryServer server;
-  auto ann = server.join("a", "Ann");
-  auto bob = server.join("b", "Bob");
-  auto greeting = server.connect();
-  ASSERT_TRUE(ann->welcome && bob->welcome);
-  EXPECT_TRUE(eventually([&] { return server.core().rooms().session_count() == 3; }));
-  server.core().rooms().close_all_sessions();
-  for (auto* peer : {ann.get(), bob.get(), greeting.get()}) {
-    ASSERT_TRUE(peer->read_until_closed());
-    peer->read();
-    ASSERT_TRUE(peer->closing);
-    EXPECT_EQ(peer->closing->code, CloseCode::shutting_down);
-  }
-  EXPECT_EQ(server.core().rooms().session_count(), 0u);
 }
 
 }  // namespace

@@ -1,0 +1,259 @@
+// A room's roles behind Room, without sockets and without Redis: the owner
+// (OwnedRoom) seats and simulates and tells its bus what it keeps; a bridge
+// (BridgedRoom) relays its people to an owner elsewhere and becomes the
+// owner when that one dies, its people keeping their seats. The bus is a
+// recording one; the local bus and the relay rooms hold are checked too.
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "in_memory_server.hpp"
+#include "room.hpp"
+#include "room_bus_relay.hpp"
+#include "room_registry.hpp"
+
+namespace fw::server {
+namespace {
+
+using test::eventually;
+using test::InMemoryServer;
+
+/// A bus that writes down what rooms tell it, as the other nodes would read it.
+class RecordingBus : public RoomBus {
+ public:
+  explicit RecordingBus(RoomRoleKind new_rooms) : new_rooms_(new_rooms) {}
+
+  RoomRoleKind role_of_new_room() const override { return new_rooms_; }
+  void room_opened(const std::string& room) override { note(opened_, room); }
+  const std::string& node() const override { return node_; }
+  void send_down(const std::string&, bridge::Bytes message) override {
+    auto down = bridge::decode_down(message.data(), message.size());
+    ASSERT_TRUE(down);
+    std::lock_guard lock(mutex_);
+    downs_.push_back(std::move(*down));
+  }
+  void send_up(const std::string&, bridge::Bytes message) override {
+    auto up = bridge::decode_up(message.data(), message.size());
+    ASSERT_TRUE(up);
+    std::lock_guard lock(mutex_);
+    ups_.push_back(std::move(*up));
+  }
+  void keep_member(const std::string&, const bridge::MemberRecord& member) override {
+    note(kept_, std::to_string(member.info.id));
+  }
+  void forget_member(const std::string&, std::uint32_t avatar) override { note(forgotten_, std::to_string(avatar)); }
+  void keep_state(const std::string&, bridge::Bytes) override {}
+  void keep_chat(const std::string&, bridge::Bytes) override { note(chats_kept_, "line"); }
+  void room_closed(const std::string& room) override { note(closed_, room); }
+
+  std::vector<bridge::Up> ups() const { return copy(ups_); }
+  std::vector<bridge::Down> downs() const { return copy(downs_); }
+  std::vector<std::string> opened() const { return copy(opened_); }
+  std::vector<std::string> kept() const { return copy(kept_); }
+  std::vector<std::string> forgotten() const { return copy(forgotten_); }
+  std::size_t chats_kept() const { return copy(chats_kept_).size(); }
+  std::vector<std::string> closed() const { return copy(closed_); }
+  /// The last up message of `kind`, if any.
+  std::optional<bridge::Up> last_up(bridge::UpKind kind) const {
+    std::optional<bridge::Up> found;
+    for (const auto& up : ups())
+      if (up.kind == kind) found = up;
+    return found;
+  }
+  bool sent_down(bridge::DownKind kind) const {
+    for (const auto& down : downs())
+      if (down.kind == kind) return true;
+    return false;
+  }
+
+ private:
+  void note(std::vector<std::string>& list, const std::string& what) {
+    std::lock_guard lock(mutex_);
+    list.push_back(what);
+  }
+  template <class T>
+  std::vector<T> copy(const std::vector<T>& list) const {
+    std::lock_guard lock(mutex_);
+    return list;
+  }
+
+  RoomRoleKind new_rooms_;
+  std::string node_ = "here";
+  mutable std::mutex mutex_;
+  std::vector<bridge::Up> ups_;
+  std::vector<bridge::Down> downs_;
+  std::vector<std::string> opened_, kept_, forgotten_, chats_kept_, closed_;
+};
+
+/// A person's connection as a room sees it, writing down its welcome and its close.
+class RecordingConnection : public RoomConnection {
+ public:
+  void deliver(SharedBytes message) override { written_ += message->size(); }
+  std::size_t queued_bytes() const override { return 0; }
+  std::uint64_t bytes_written() const override { return written_.load(); }
+  std::size_t framing_bytes(std::size_t) const override { return 0; }
+  void close(codec::CloseCode code, std::string) override { closed_with_ = static_cast<int>(code); }
+  void joined(std::uint32_t avatar, SharedBytes welcome) override {
+    written_ += welcome->size();
+    avatar_ = avatar;
+  }
+  std::uint32_t avatar() const { return avatar_.load(); }
+  bool closed() const { return closed_with_.load() >= 0; }
+
+ private:
+  std::atomic<std::uint64_t> written_{0};
+  std::atomic<std::uint32_t> avatar_{0};
+  std::atomic<int> closed_with_{-1};
+};
+
+/// Rooms made by a registry of their own, over `bus`, with the services of an in-memory server.
+class RoomsOver {
+ public:
+  explicit RoomsOver(RoomBus& bus)
+      : services_{context().config, context().metrics, context().physics_lod, context().abuse, *context().workers,
+                  *context().store, context().demo_avatars, bus, context().draining},
+        registry_(services_, *context().addresses) {}
+  ~RoomsOver() {
+    // The rooms hold the registry and the bus: they go first.
+    registry_.close_all_rooms();
+    for (const auto& room : made_) EXPECT_TRUE(eventually([&] { return room.expired(); }));
+  }
+
+  std::shared_ptr<Room> open(const std::string& name) {
+    auto room = registry_.find_or_create(name);
+    made_.push_back(room);
+    return room;
+  }
+  JoinRequest person(const std::string& name, std::shared_ptr<RecordingConnection> connection) {
+    JoinRequest request;
+    request.name = name;
+    request.avatar = context().demo_avatars[0];
+    request.connection = std::move(connection);
+    request.resume = name + "-resume";
+    request.address = "192.0.2.1";
+    return request;
+  }
+  RoomRegistry& registry() { return registry_; }
+  const StoredAvatar& face() { return context().demo_avatars[0]; }
+
+ private:
+  ServerContext& context() { return server_.context(); }
+
+  InMemoryServer server_;
+  RoomServices services_;
+  RoomRegistry registry_;
+  std::vector<std::weak_ptr<Room>> made_;
+};
+
+TEST(RoomRoles, AnOwnerSeatsAPersonAndTellsItsBusWhatItKeepsAndForgets) {
+  RecordingBus bus(RoomRoleKind::owner);
+  RoomsOver rooms(bus);
+  auto room = rooms.open("r");
+  ASSERT_TRUE(room);
+  EXPECT_EQ(room->role(), RoomRoleKind::owner);
+  EXPECT_EQ(bus.opened(), std::vector<std::string>{"r"});
+  auto ann = std::make_shared<RecordingConnection>();
+  room->join(rooms.person("Ann", ann));
+  ASSERT_TRUE(eventually([&] { return ann->avatar() != 0; }));
+  const std::string id = std::to_string(ann->avatar());
+  EXPECT_TRUE(eventually([&] { return bus.kept() == std::vector<std::string>{id}; }));
+  EXPECT_TRUE(bus.sent_down(bridge::DownKind::joined));
+  EXPECT_EQ(room->person_count(), 1u);
+  room->chat(ann->avatar(), "hello");
+  EXPECT_TRUE(eventually([&] { return bus.chats_kept() == 1; }));
+  room->leave(ann->avatar());
+  EXPECT_TRUE(eventually([&] { return bus.forgotten() == std::vector<std::string>{id}; }));
+  EXPECT_TRUE(eventually([&] { return bus.closed() == std::vector<std::string>{"r"}; })) << "nobody keeps it open";
+  EXPECT_TRUE(eventually([&] { return rooms.registry().find("r") == nullptr; }));
+  EXPECT_FALSE(ann->closed()) << "a person who left is not thrown out";
+}
+
+TEST(RoomRoles, ABridgeRelaysItsPersonToTheOwnerAndTakesTheRoomOverWhenTheOwnerDies) {
+  RecordingBus bus(RoomRoleKind::bridge);
+  RoomsOver rooms(bus);
+  auto room = rooms.open("r");
+  ASSERT_TRUE(room);
+  EXPECT_EQ(room->role(), RoomRoleKind::bridge);
+  auto ann = std::make_shared<RecordingConnection>();
+  room->join(rooms.person("Ann", ann));
+  // No roster yet: the join waits, and the owner is asked for it.
+  ASSERT_TRUE(eventually([&] { return bus.last_up(bridge::UpKind::sync).has_value(); }));
+  EXPECT_FALSE(bus.last_up(bridge::UpKind::join));
+  bridge::Down roster = bridge::down_roster();
+  roster.owner = "there";
+  room->on_down(roster);
+  ASSERT_TRUE(eventually([&] { return bus.last_up(bridge::UpKind::join).has_value(); }));
+  const bridge::Up join = *bus.last_up(bridge::UpKind::join);
+  EXPECT_EQ(join.name, "Ann");
+  EXPECT_EQ(join.node, "here");
+  EXPECT_EQ(ann->avatar(), 0u) << "seated by the owner's answer only";
+
+  bridge::MemberRecord record;
+  record.info.id = 7;
+  record.info.name = "Ann";
+  record.info.asset = rooms.face().asset;
+  record.info.person = true;
+  record.node = "here";
+  record.address = "192.0.2.1";
+  record.order = 1;
+  bridge::Down joined = bridge::down_joined(join.join_ref, record);
+  joined.owner = "there";
+  room->on_down(joined);
+  ASSERT_TRUE(eventually([&] { return ann->avatar() == 7; }));
+  EXPECT_EQ(room->person_count(), 1u);
+  room->chat(7, "hi");
+  ASSERT_TRUE(eventually([&] { return bus.last_up(bridge::UpKind::chat).has_value(); }));
+  EXPECT_EQ(bus.last_up(bridge::UpKind::chat)->text, "hi");
+  EXPECT_EQ(bus.chats_kept(), 0u) << "a bridge keeps no record";
+
+  // The owner died: this node takes the room over from its record.
+  room->take_over({record}, std::nullopt, {"here"});
+  ASSERT_TRUE(eventually([&] { return room->role() == RoomRoleKind::owner; }));
+  EXPECT_TRUE(eventually([&] { return bus.sent_down(bridge::DownKind::roster); })) << "the bridges learn the new owner";
+  room->chat(7, "still here");
+  EXPECT_TRUE(eventually([&] { return bus.chats_kept() == 1; })) << "Ann's seat is the owner's now";
+  EXPECT_FALSE(ann->closed()) << "Ann keeps her connection through the takeover";
+  EXPECT_EQ(room->person_count(), 1u);
+}
+
+TEST(RoomRoles, AnOwnerThatStepsDownAsksItsPeopleBackAndBridges) {
+  RecordingBus bus(RoomRoleKind::owner);
+  RoomsOver rooms(bus);
+  auto room = rooms.open("r");
+  auto ann = std::make_shared<RecordingConnection>();
+  room->join(rooms.person("Ann", ann));
+  ASSERT_TRUE(eventually([&] { return ann->avatar() != 0; }));
+  room->step_down();
+  EXPECT_TRUE(eventually([&] { return ann->closed(); }));
+  EXPECT_TRUE(eventually([&] { return room->role() == RoomRoleKind::bridge; }));
+  EXPECT_EQ(room->person_count(), 0u);
+}
+
+TEST(RoomBuses, ARoomAloneIsOwnedHereAndTheRelayForwardsToAnAttachedCluster) {
+  LocalRoomBus local;
+  EXPECT_EQ(local.role_of_new_room(), RoomRoleKind::owner);
+  EXPECT_EQ(local.node(), "");
+
+  RoomBusRelay relay;
+  EXPECT_EQ(relay.role_of_new_room(), RoomRoleKind::owner);
+  relay.send_up("r", bridge::encode(bridge::up_sync("here")));  // nobody to tell: dropped
+  RecordingBus cluster(RoomRoleKind::bridge);
+  relay.attach(cluster);
+  EXPECT_EQ(relay.role_of_new_room(), RoomRoleKind::bridge);
+  EXPECT_EQ(relay.node(), "here");
+  relay.send_up("r", bridge::encode(bridge::up_leave("here", 3)));
+  relay.room_closed("r");
+  ASSERT_EQ(cluster.ups().size(), 1u);
+  EXPECT_EQ(cluster.ups()[0].kind, bridge::UpKind::leave);
+  EXPECT_EQ(cluster.closed(), std::vector<std::string>{"r"});
+  relay.detach();
+  relay.room_closed("s");
+  EXPECT_EQ(relay.role_of_new_room(), RoomRoleKind::owner);
+  EXPECT_EQ(cluster.closed(), std::vector<std::string>{"r"}) << "detached: nothing more reaches the cluster";
+}
+
+}  // namespace
+}  // namespace fw::server
