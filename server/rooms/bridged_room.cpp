@@ -20,11 +20,7 @@ BridgedRoom::BridgedRoom(Room& room)
 
 void BridgedRoom::send_up(const bridge::Up& message) { services_.bus.send_up(name_, bridge::encode(message)); }
 
-void BridgedRoom::close() {
-  for (auto& [id, member] : members_)
-    if (member.stream) member.stream->connection()->close(codec::CloseCode::shutting_down, "the room closed");
-  members_.clear();
-}
+void BridgedRoom::close() { close_every_member(members_); }
 
 RoomHandover BridgedRoom::hand_over() {
   RoomHandover handover;

@@ -43,11 +43,7 @@ OwnedRoom::OwnedRoom(Room& room)
       counts_(room.counts()), chat_rate_(services_.config.abuse.room_chat, TokenBucket::Clock::now()),
       join_rate_(services_.config.abuse.room_joins, TokenBucket::Clock::now()) {}
 
-void OwnedRoom::close() {
-  for (auto& [id, member] : members_)
-    if (member.stream) member.stream->connection()->close(codec::CloseCode::shutting_down, "the room closed");
-  members_.clear();
-}
+void OwnedRoom::close() { close_every_member(members_); }
 
 RoomHandover OwnedRoom::hand_over() {
   RoomHandover handover;

@@ -92,6 +92,15 @@ void tell_left(Members& members, std::uint32_t avatar, bool person) {
   }
 }
 
+/// The room closes: every member's connection is closed and the members
+/// forgotten.
+template <class Members>
+void close_every_member(Members& members) {
+  for (auto& [id, member] : members)
+    if (member.stream) member.stream->connection()->close(codec::CloseCode::shutting_down, "the room closed");
+  members.clear();
+}
+
 /// The log line of a face replaced (replace_deleted_face).
 void log_face_replaced(const std::string& room, const std::string& name, const std::string& asset);
 
