@@ -1,6 +1,6 @@
 #pragma once
 // FaceParams as JavaScript hands them over: 47 floats in the codec's channel
-// order (codec/FORMAT.md, "Channels"; web/codec/decoder.js's dequantise):
+// order (codec/FORMAT.md, "Channels"; web/codec/quantiser.js's dequantise):
 // the 29 AU channels, head yaw, pitch, roll, translation x, y, z (mm), left
 // eye yaw, pitch, right eye yaw, pitch, lid left, right, 5 blush, pallor.
 // web/engine/face_params_floats.js writes them.
