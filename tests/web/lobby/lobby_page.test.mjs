@@ -6,6 +6,7 @@ import { mkdirSync } from 'node:fs';
 import { join } from 'node:path';
 
 import { openWeb } from '../support/harness.mjs';
+import { readPng } from '../support/png_pixels.mjs';
 
 let web;
 before(async () => { web = await openWeb(); });
@@ -30,6 +31,20 @@ test('the lobby loads and draws the generic face until there is a photo', { time
   assert.equal(await page.locator('input[type=file][accept="image/*"]').count(), 1);
   await keepScreenshot(page, 'lobby-desktop');
   assert.deepEqual(web.pageErrors, []);
+  await page.context().close();
+});
+
+test('the generic face is drawn: its canvas shows skin', { timeout: 60000 }, async () => {
+  const page = await web.page();
+  await page.goto(web.server.url);
+  await page.waitForFunction(() => Number(document.getElementById('face').dataset.frames) >= 2);
+  const { width, height, channels, data } = readPng(await page.locator('#face').screenshot());
+  // The canvas is dark blue-grey; only the rendered face is warm and light.
+  let skin = 0;
+  for (let i = 0; i < data.length; i += channels) {
+    skin += data[i] > 150 && data[i] > data[i + 2] + 40 && data[i + 1] > 90 ? 1 : 0;
+  }
+  assert.ok(skin > 0.2 * width * height, `skin covers ${skin} of ${width}x${height} pixels; the face fills about half of it`);
   await page.context().close();
 });
 

@@ -11,8 +11,8 @@ import { createInterface } from 'node:readline';
 
 export const CHROMIUM = '/usr/bin/chromium';
 
-// As tests/support/headless_browser.hpp: SwiftShader for WebGL2, and
-// nothing that reaches for the network.
+// SwiftShader for WebGL2 (no GPU), and nothing that reaches for the network:
+// the test machines have none, and Chromium would otherwise keep trying.
 const CHROMIUM_ARGS = [
   '--no-sandbox', '--no-first-run', '--disable-quic', '--disable-background-networking',
   '--disable-component-update', '--disable-sync', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
