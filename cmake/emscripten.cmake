@@ -21,6 +21,10 @@ endif()
 # Emscripten's JavaScript optimiser passes need acorn, which Debian keeps in
 # its node module directory rather than emscripten's.
 set(FW_EM_ENV ${CMAKE_COMMAND} -E env NODE_PATH=/usr/share/nodejs)
+# em++ compiles through the compiler cache too, when the host compiler does:
+# every fresh build tree (CI's clone, the plain-build check) would otherwise
+# compile the module's sources again, about a minute of one core each time.
+set(FW_EM_LAUNCHER ${CMAKE_CXX_COMPILER_LAUNCHER})
 # -O2 rather than -O3: the module is small, and binaryen's extra passes would
 # only lengthen the link.
 set(FW_EM_FLAGS -std=c++20 -O2 -fexceptions -DNDEBUG
@@ -49,7 +53,7 @@ function(fw_wasm_module)
     set(object ${object_dir}/${object_name}.o)
     add_custom_command(
       OUTPUT ${object}
-      COMMAND ${FW_EM_ENV} ${FW_EMXX} ${FW_EM_FLAGS} ${ARG_COMPILE_OPTIONS} ${include_flags}
+      COMMAND ${FW_EM_ENV} ${FW_EM_LAUNCHER} ${FW_EMXX} ${FW_EM_FLAGS} ${ARG_COMPILE_OPTIONS} ${include_flags}
               -MD -MF ${object}.d -c ${source_abs} -o ${object}
       DEPENDS ${source_abs}
       DEPFILE ${object}.d

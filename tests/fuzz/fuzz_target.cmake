@@ -9,7 +9,7 @@
 # coverage instrumentation, then linked. They must need nothing but
 # the C++ standard library, the INCLUDES and the LINK flags; AFTER names
 # targets that generate any of the sources. A ctest test (labels `fuzz` and
-# `slow`) runs it for SECONDS (default 10) from the seed corpus in
+# `slow`) runs it for SECONDS (default 5) from the seed corpus in
 # tests/fuzz/corpus/NAME (if there is one) plus the SEEDS files, and fails on
 # any crash, leak or sanitizer report; `make fuzz` runs every target for as
 # long as you ask (tests/fuzz/run_fuzzers.sh).
@@ -39,7 +39,7 @@ function(fw_fuzz_target)
     return()
   endif()
   if(NOT ARG_SECONDS)
-    set(ARG_SECONDS 10)
+    set(ARG_SECONDS 5)
   endif()
   set(output ${CMAKE_BINARY_DIR}/fuzz/${ARG_NAME})
   # One object per source for all targets: the codec and the asset reader
