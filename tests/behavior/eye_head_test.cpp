@@ -60,6 +60,26 @@ TEST_P(GazeStep, SixtyDegreeStepLandsFastWithHeadShareAndVorHolds) {
   EXPECT_GT(c.head().yaw_rad - head_start, head_share * goal + 10 * kDeg);
 }
 
+// While the head finishes a large shift, the VOR holds the gaze: the eyes
+// make the one saccade and no train of small corrective ones (a fixation
+// check that paired this tick's head with last tick's eye saw the head's own
+// motion as a gaze error and jumped after it every other frame).
+TEST_P(GazeStep, ALargeShiftIsOneSaccadeWithoutCorrectiveSteps) {
+  EyeHeadController c({GetParam(), true, true});
+  c.look_at(target_at(0));
+  for (int i = 0; i < 60; ++i) c.step(kDt);
+  for (const float goal : {40 * kDeg, -30 * kDeg, 60 * kDeg}) {
+    c.look_at(target_at(goal));
+    int saccades = 0;
+    for (int i = 0; i < 60; ++i) {
+      c.step(kDt);
+      saccades += c.saccade_started_rad() > 0 ? 1 : 0;
+    }
+    EXPECT_EQ(saccades, 1) << "a shift to " << goal / kDeg << " deg";
+    EXPECT_LT(std::abs(c.gaze().yaw_rad - c.target_direction().yaw_rad), 2 * kDeg);
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Seeds, GazeStep, ::testing::Values(1u, 2u, 3u, 99u));
 
 TEST(Vergence, EyesTurnInOnNearTargets) {

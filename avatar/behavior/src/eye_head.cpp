@@ -56,8 +56,8 @@ glm::vec3 EyeHeadController::eye_position_seat() const { return head_to_seat(hea
 
 YawPitch EyeHeadController::target_direction() const { return direction_angles(target_ - eye_position_seat()); }
 
-void EyeHeadController::start_saccade(YawPitch target) {
-  saccade_from_ = gaze();
+void EyeHeadController::start_saccade(YawPitch from, YawPitch target) {
+  saccade_from_ = from;
   saccade_to_ = target;
   const float amplitude = std::hypot(target.yaw_rad - saccade_from_.yaw_rad, target.pitch_rad - saccade_from_.pitch_rad);
   saccade_duration_s_ = saccade_duration_s(amplitude);
@@ -74,6 +74,13 @@ void EyeHeadController::start_saccade(YawPitch target) {
 void EyeHeadController::step(double dt_s) {
   time_s_ += dt_s;
   saccade_started_rad_ = 0;
+  // Where the eyes point in space before the head moves this tick. Between
+  // saccades the vestibulo-ocular reflex counter-rotates the eyes against the
+  // head continuously, so this direction, not this tick's head plus last
+  // tick's eyes, is the gaze to check against the target: the latter read
+  // the head's own motion as an error and fired small corrective saccades
+  // every other frame while the head finished a large shift.
+  const YawPitch held = gaze();
   if (options_.head_noise) {
     const auto t = static_cast<float>(time_s_);
     const auto seed = static_cast<std::uint32_t>(options_.seed);
@@ -100,9 +107,8 @@ void EyeHeadController::step(double dt_s) {
       fixation_.reset();
     }
   } else {
-    const YawPitch now = gaze();
-    if (std::hypot(target.yaw_rad - now.yaw_rad, target.pitch_rad - now.pitch_rad) > kSaccadeThresholdRad) {
-      start_saccade(target);
+    if (std::hypot(target.yaw_rad - held.yaw_rad, target.pitch_rad - held.pitch_rad) > kSaccadeThresholdRad) {
+      start_saccade(held, target);
       saccade_t_s_ = dt_s;
       const float s = minimum_jerk(saccade_t_s_ / saccade_duration_s_);
       eye_ = clamp_to_orbit({saccade_from_.yaw_rad + (saccade_to_.yaw_rad - saccade_from_.yaw_rad) * s - h.yaw_rad,

@@ -60,7 +60,7 @@ class EyeHeadController {
   void write(codec::FaceParams& params) const;
 
  private:
-  void start_saccade(YawPitch target);
+  void start_saccade(YawPitch from, YawPitch target);
 
   EyeHeadOptions options_;
   FixationMovements fixation_;
