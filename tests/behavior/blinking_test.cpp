@@ -1,6 +1,8 @@
 #include "fw/behavior/blinking.hpp"
 
+#include <algorithm>
 #include <cstdio>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -47,6 +49,39 @@ TEST(Blinking, ABlinkClosesTheLidFullyAndReopens) {
   }
   EXPECT_EQ(most, 1.0f);
   EXPECT_TRUE(reopened);
+}
+
+// Blinks are not all alike: their durations spread over the human range
+// (100-400 ms, about 200 ms typical; blinking.hpp has the sources), and the
+// lid is measured closed-to-open, as a viewer sees it at 30 Hz.
+TEST(Blinking, DurationsVaryWithinTheHumanRange) {
+  Blinking b(11);
+  std::vector<double> durations;
+  std::vector<double> seen;  // ticks with the lid moving, per blink, at 30 Hz
+  int ticks_in_blink = 0;
+  for (int i = 0; i < 30 * 900; ++i) {
+    b.step(1.0 / 30, 0);
+    if (b.started()) durations.push_back(b.duration_s());
+    if (b.closure() > 0) {
+      ++ticks_in_blink;
+    } else if (ticks_in_blink > 0) {
+      seen.push_back(ticks_in_blink / 30.0);
+      ticks_in_blink = 0;
+    }
+  }
+  ASSERT_GE(durations.size(), 100u);
+  std::sort(durations.begin(), durations.end());
+  const double median = durations[durations.size() / 2];
+  const double p10 = durations[durations.size() / 10], p90 = durations[durations.size() * 9 / 10];
+  std::printf("%zu blinks: 10th percentile %.0f ms, median %.0f ms, 90th %.0f ms\n", durations.size(), p10 * 1000,
+              median * 1000, p90 * 1000);
+  EXPECT_GE(durations.front(), 0.1);
+  EXPECT_LE(durations.back(), 0.4);
+  EXPECT_NEAR(median, 0.2, 0.03);
+  EXPECT_GT(p90 - p10, 0.08) << "durations hardly vary";
+  // What a viewer sees lasts as long as the blink, to a tick.
+  std::sort(seen.begin(), seen.end());
+  EXPECT_NEAR(seen[seen.size() / 2], median, 1.5 / 30);
 }
 
 TEST(Blinking, LidsFollowTheEyesDown) {
