@@ -32,5 +32,13 @@ TEST(ChatAppraisal, BoundedForAnyInput) {
   }
 }
 
+TEST(ChatAppraisal, EmbarrassmentIsTold) {
+  for (const char* line : {"oops, wrong room", "Whoops!", "my bad", "this is so embarrassing", "I'm blushing",
+                           "awkward...", "ok :$", "\xF0\x9F\x98\xB3"})
+    EXPECT_TRUE(embarrassing_chat(line)) << line;
+  for (const char* line : {"hello there", "great :)", "loopsided", "my badge", ""})
+    EXPECT_FALSE(embarrassing_chat(line)) << line;
+}
+
 }  // namespace
 }  // namespace fw::behavior

@@ -19,14 +19,5 @@ TEST(EmotionState, ExpressionsRiseAndEndMoodDecays) {
   EXPECT_NEAR(s.point()[0], 0.4f, 0.01f);  // one half-life
 }
 
-TEST(EmotionState, FollowingTracksAGoal) {
-  EmotionState s;
-  for (int i = 0; i < 60; ++i) {
-    s.follow({0, 0, 0, 0, 0.9f, 0}, 1.0 / 30, 0.3);
-    s.step(1.0 / 30, true);
-  }
-  EXPECT_NEAR(s.point()[4], 0.9f, 0.02f);
-}
-
 }  // namespace
 }  // namespace fw::behavior

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "fw/behavior/spontaneous_display.hpp"
+
 namespace fw::behavior {
 namespace {
 
@@ -84,21 +86,22 @@ void ActionSelection::search(Intent& intent, const std::vector<PerceivedFace>& s
   intent.look_seat_mm = search_point_;
 }
 
-void ActionSelection::schedule_expression(Intent& intent, double dt_s, bool performing) {
-  (void)dt_s;
+void ActionSelection::schedule_expression(Intent& intent, bool performing, const EmotionPoint& felt) {
   if (performing || now_s_ < hold_expression_until_s_) {
     next_expression_s_ = std::max(next_expression_s_, now_s_ + uniform(0.4, 1.2));
     return;
   }
   if (now_s_ < next_expression_s_) return;
-  // A random primary at a random magnitude and duration (the expressive routine).
-  intent.perform = static_cast<Primary>(static_cast<std::size_t>(uniform(0, kPrimaryCount - 1e-9)));
-  intent.perform_envelope = envelope_for(uniform(1.2, 3.0), static_cast<float>(uniform(0.5, 1.0)),
-                                         static_cast<float>(uniform(0.2, 0.9)));
-  next_expression_s_ = now_s_ + intent.perform_envelope.length_s() + uniform(0.4, 1.2);
+  // The expressive routine shows what the face feels, or a social smile
+  // (spontaneous_display.hpp), now and then.
+  const Display display = spontaneous_display(felt, rng_);
+  intent.perform = display.primary;
+  intent.perform_envelope = display.envelope;
+  next_expression_s_ = now_s_ + display.envelope.length_s() + next_display_after_s(rng_);
 }
 
-void ActionSelection::lead(Intent& intent, const std::vector<PerceivedFace>& seen, bool performing) {
+void ActionSelection::lead(Intent& intent, const std::vector<PerceivedFace>& seen, bool performing,
+                           const EmotionPoint& felt) {
   if (seen.empty()) {
     partner_.reset();
     intent.routine = Routine::visual_search;
@@ -139,7 +142,7 @@ void ActionSelection::lead(Intent& intent, const std::vector<PerceivedFace>& see
   last_attended_.emplace_back(*partner_, now_s_);
   intent.routine = seen.size() > 1 ? Routine::interactive : Routine::expressive;
   intent.attend = partner_;
-  schedule_expression(intent, 0, performing);
+  schedule_expression(intent, performing, felt);
 }
 
 void ActionSelection::follow(Intent& intent, const std::vector<PerceivedFace>& seen) {
@@ -196,7 +199,8 @@ void ActionSelection::follow(Intent& intent, const std::vector<PerceivedFace>& s
   }
 }
 
-Intent ActionSelection::step(double dt_s, const std::vector<PerceivedFace>& seen, YawPitch gaze, bool performing) {
+Intent ActionSelection::step(double dt_s, const std::vector<PerceivedFace>& seen, YawPitch gaze, bool performing,
+                             const EmotionPoint& felt) {
   now_s_ += dt_s;
   gaze_ = gaze;
   Intent intent;
@@ -211,7 +215,7 @@ Intent ActionSelection::step(double dt_s, const std::vector<PerceivedFace>& seen
       search(intent, seen, override_->face);
     }
   } else if (leader_) {
-    lead(intent, seen, performing);
+    lead(intent, seen, performing, felt);
   } else {
     follow(intent, seen);
   }

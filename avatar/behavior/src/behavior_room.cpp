@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cctype>
 #include <cmath>
 #include <map>
 #include <utility>
@@ -13,13 +14,21 @@
 #include "fw/behavior/emotion_state.hpp"
 #include "fw/behavior/eye_head.hpp"
 #include "fw/behavior/facs_track.hpp"
+#include "fw/behavior/mimicry.hpp"
 #include "fw/behavior/vascular_episode.hpp"
 
 namespace fw::behavior {
 namespace {
 
-constexpr double kMimicTimeConstantS = 0.3;
 constexpr double kChatAttentionS = 2.5;
+/// Whoever is named in a line looks at its writer longer: being addressed
+/// calls for an answer (a look now; words are the person's).
+constexpr double kNamedAttentionS = 4.0;
+/// How much of a chat line's appraisal colours the room's mood, and how
+/// fast the room forgets it: a conversation's tone outlasts a single line's
+/// expression (mood half-life 4 s) but not by minutes.
+constexpr float kRoomMoodShare = 0.5f;
+constexpr double kRoomMoodHalfLifeS = 30.0;
 constexpr double kMaxCommandS = 600;
 constexpr double kShortestBlushS = 6.0;  ///< a commanded blush rises, holds and fades in no less
 
@@ -28,6 +37,21 @@ std::uint64_t mix(std::uint64_t x) {  // splitmix64: one independent stream per 
   x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
   x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
   return x ^ (x >> 31);
+}
+
+// Whether `text` names `name` (ASCII case ignored, as a whole word: "ann"
+// in "Hi Ann!" but not in "annoying").
+bool names(std::string_view text, std::string_view name) {
+  if (name.empty() || name.size() > text.size()) return false;
+  const auto lower = [](char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); };
+  const auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || (c & 0x80) != 0; };
+  for (std::size_t at = 0; at + name.size() <= text.size(); ++at) {
+    bool same = true;
+    for (std::size_t i = 0; i < name.size() && same; ++i) same = lower(text[at + i]) == lower(name[i]);
+    const bool alone = (at == 0 || !word(text[at - 1])) && (at + name.size() == text.size() || !word(text[at + name.size()]));
+    if (same && alone) return true;
+  }
+  return false;
 }
 
 }  // namespace
@@ -43,6 +67,7 @@ struct BehaviorRoom::Impl {
     std::size_t seat = 0;
     ActionSelection mind;
     EmotionState emotion;
+    Mimicry mimic;
     EyeHeadController eyes;
     Blinking blink;
     VascularState vascular;
@@ -57,6 +82,7 @@ struct BehaviorRoom::Impl {
 
   BehaviorRoomOptions options;
   std::vector<Face> faces;  ///< in join order
+  EmotionPoint room_mood{};  ///< the tone of the room's chat (kRoomMoodShare of each line), decaying
   std::vector<Seat> seats;
   std::uint32_t tick = 0;
   std::uint64_t joins = 0;
@@ -109,23 +135,30 @@ struct BehaviorRoom::Impl {
     const glm::vec3 dir_seat = direction_from_angles(f.eyes.gaze());
     s.gaze_direction_room = glm::normalize(seat_to_room(s.seat, dir_seat) - s.seat.origin_mm);
     s.head_yaw_rad = head.yaw_rad;
-    s.emotion = f.emotion.point();
+    s.emotion = shown_emotion(f);
     s.emotion_template = classify(s.emotion);
+  }
+
+  // What the face shows and others perceive: its own emotion, and what it
+  // takes on from the face it mimics.
+  static EmotionPoint shown_emotion(const Face& f) {
+    EmotionPoint point = f.emotion.point();
+    for (std::size_t k = 0; k < kPrimaryCount; ++k) point[k] = std::max(point[k], f.mimic.point()[k]);
+    return point;
   }
 
   void step_face(Face& f, const std::vector<FaceSnapshot>& room) {
     const double dt_s = dt();
     const std::vector<PerceivedFace> seen = perceive(f.snapshot, room);
-    const Intent intent = f.mind.step(dt_s, seen, f.eyes.gaze(), f.emotion.performing());
+    EmotionPoint felt = f.emotion.mood();
+    for (std::size_t k = 0; k < kPrimaryCount; ++k) felt[k] = std::max(felt[k], room_mood[k]);
+    const Intent intent = f.mind.step(dt_s, seen, f.eyes.gaze(), f.emotion.performing(), felt);
     if (intent.perform) f.emotion.express(*intent.perform, intent.perform_envelope);
-    bool mimicking = false;
-    for (const PerceivedFace& p : seen) {
-      if (intent.mimic && p.id == *intent.mimic) {
-        f.emotion.follow(p.emotion, dt_s, kMimicTimeConstantS);
-        mimicking = true;
-      }
-    }
-    f.emotion.step(dt_s, mimicking);
+    std::optional<EmotionPoint> mimicked;
+    for (const PerceivedFace& p : seen)
+      if (intent.mimic && p.id == *intent.mimic) mimicked = p.emotion;
+    f.mimic.step(dt_s, mimicked);
+    f.emotion.step(dt_s);
 
     glm::vec3 target = intent.look_seat_mm;
     if (intent.attend) {
@@ -135,8 +168,10 @@ struct BehaviorRoom::Impl {
     f.eyes.look_at(target);
     f.eyes.step(dt_s);
     f.blink.step(dt_s, f.eyes.saccade_started_rad());
-    const EmotionPoint point = f.emotion.point();
-    if (auto started = f.vascular.step(dt_s, attending_count(f.id, room), point[static_cast<std::size_t>(Primary::fear)],
+    const EmotionPoint point = shown_emotion(f);
+    const int others = static_cast<int>(faces.size()) - 1;
+    if (auto started = f.vascular.step(dt_s, attending_count(f.id, room), others,
+                                       point[static_cast<std::size_t>(Primary::fear)],
                                        point[static_cast<std::size_t>(Primary::surprise)]))
       event(f.id, *started);
 
@@ -174,6 +209,7 @@ struct BehaviorRoom::Impl {
     std::vector<FaceSnapshot> room;
     room.reserve(faces.size());
     for (const Face& f : faces) room.push_back(f.snapshot);
+    room_mood = decay_toward_neutral(room_mood, dt(), kRoomMoodHalfLifeS);
     for (Face& f : faces) step_face(f, room);
     for (Face& f : faces) refresh_snapshot(f);
     // Who looks at whom, from the gaze just computed.
@@ -309,11 +345,19 @@ void BehaviorRoom::chat(FaceId face, std::string_view text) {
   if (!f) return;
   const EmotionPoint delta = appraise_chat(text);
   f->emotion.nudge(delta);
+  EmotionPoint share{};
+  for (std::size_t k = 0; k < kPrimaryCount; ++k) share[k] = kRoomMoodShare * delta[k];
+  impl_->room_mood = clamp_to_cube([&] {
+    EmotionPoint sum = impl_->room_mood;
+    for (std::size_t k = 0; k < kPrimaryCount; ++k) sum[k] += share[k];
+    return sum;
+  }());
+  if (embarrassing_chat(text)) f->vascular.embarrass();
   const auto strongest = std::max_element(delta.begin(), delta.end());
   if (*strongest >= 0.3f)
     f->emotion.express(static_cast<Primary>(strongest - delta.begin()), envelope_for(2.0, *strongest, 0.5f));
   for (Impl::Face& other : impl_->faces)
-    if (other.id != face) other.mind.draw_attention(face, kChatAttentionS);
+    if (other.id != face) other.mind.draw_attention(face, names(text, other.name) ? kNamedAttentionS : kChatAttentionS);
   impl_->event(face, std::string("chat (") + label(classify(delta)) + ")");
 }
 

@@ -30,26 +30,53 @@ constexpr Cue kCues[] = {
     {"yuck", Primary::disgust, 0.45f, true}, {"gross", Primary::disgust, 0.4f, true}, {"ew", Primary::disgust, 0.35f, true},
 };
 
+// What a writer says when embarrassed at their own slip or at attention
+// (apologies for a blunder, "awkward", the flushed-face emoji): the social
+// predicaments that bring on a blush (Leary et al. 1992, "Social blushing").
+struct EmbarrassmentCue {
+  std::string_view text;
+  bool word;
+};
+constexpr EmbarrassmentCue kEmbarrassmentCues[] = {
+    {"oops", true},  {"whoops", true},    {"my bad", true}, {"embarrass", false}, {"blush", false},
+    {"awkward", true}, {":$", false}, {"\xF0\x9F\x98\xB3", false} /* flushed face */,
+    {"\xF0\x9F\x99\x88", false} /* see-no-evil monkey */,
+};
+
 bool word_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '\''; }
+
+// The first 4096 bytes of `text`, lower-cased (ASCII; other bytes as they are).
+std::string lowered(std::string_view text) {
+  std::string lower(text.substr(0, std::min<std::size_t>(text.size(), 4096)));
+  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return lower;
+}
+
+// Whether `lower` holds `cue`, standing alone when `word`.
+bool has_cue(const std::string& lower, std::string_view cue, bool word) {
+  for (std::size_t at = lower.find(cue); at != std::string::npos; at = lower.find(cue, at + 1)) {
+    const bool alone = at == 0 || !word_char(lower[at - 1]);
+    const std::size_t end = at + cue.size();
+    const bool alone_after = end >= lower.size() || !word_char(lower[end]);
+    if (!word || (alone && alone_after)) return true;
+  }
+  return false;
+}
 
 }  // namespace
 
+bool embarrassing_chat(std::string_view text) {
+  const std::string lower = lowered(text);
+  return std::any_of(std::begin(kEmbarrassmentCues), std::end(kEmbarrassmentCues),
+                     [&](const EmbarrassmentCue& cue) { return has_cue(lower, cue.text, cue.word); });
+}
+
 EmotionPoint appraise_chat(std::string_view text) {
-  text = text.substr(0, std::min<std::size_t>(text.size(), 4096));
-  std::string lower(text);
-  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string lower = lowered(text);
   EmotionPoint delta{};
   auto add = [&](Primary p, float w) { delta[static_cast<std::size_t>(p)] += w; };
-  for (const Cue& cue : kCues) {
-    for (std::size_t at = lower.find(cue.text); at != std::string::npos; at = lower.find(cue.text, at + 1)) {
-      const bool alone = at == 0 || !word_char(lower[at - 1]);
-      const std::size_t end = at + cue.text.size();
-      const bool alone_after = end >= lower.size() || !word_char(lower[end]);
-      if (cue.word && !(alone && alone_after)) continue;
-      add(cue.primary, cue.weight);
-      break;  // a cue counts once per line
-    }
-  }
+  for (const Cue& cue : kCues)
+    if (has_cue(lower, cue.text, cue.word)) add(cue.primary, cue.weight);  // a cue counts once per line
   const auto marks = [&](char m) { return static_cast<float>(std::count(lower.begin(), lower.end(), m)); };
   // Exclamations raise arousal (surprise), questions a little curiosity.
   add(Primary::surprise, 0.12f * std::min(3.0f, marks('!')) + 0.06f * std::min(2.0f, marks('?')));

@@ -1,7 +1,6 @@
 #include "fw/behavior/emotion_state.hpp"
 
 #include <algorithm>
-#include <cmath>
 
 namespace fw::behavior {
 
@@ -16,18 +15,12 @@ void EmotionState::nudge(const EmotionPoint& delta) {
   mood_ = clamp_to_cube(mood_);
 }
 
-void EmotionState::follow(const EmotionPoint& goal, double dt_s, double tau_s) {
-  const float k = static_cast<float>(1 - std::exp(-dt_s / tau_s));
-  for (std::size_t i = 0; i < kPrimaryCount; ++i) mood_[i] += (goal[i] - mood_[i]) * k;
-  mood_ = clamp_to_cube(mood_);
-}
-
 void EmotionState::clear_expressions() { active_.clear(); }
 
-void EmotionState::step(double dt_s, bool hold_mood) {
+void EmotionState::step(double dt_s) {
   for (Active& a : active_) a.t_s += dt_s;
   std::erase_if(active_, [](const Active& a) { return a.t_s >= a.envelope.length_s(); });
-  if (!hold_mood) mood_ = decay_toward_neutral(mood_, dt_s, kMoodHalfLifeS);
+  mood_ = decay_toward_neutral(mood_, dt_s, kMoodHalfLifeS);
 }
 
 EmotionPoint EmotionState::point() const {

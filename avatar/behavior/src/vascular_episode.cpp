@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cmath>
 #include <map>
+#include <utility>
 
 #include "fw/script/grammar_sources.hpp"
 #include "fw/script/parser.hpp"
@@ -83,21 +84,27 @@ bool VascularState::blushing() const {
   return std::any_of(episodes_.begin(), episodes_.end(), [](const Episode& e) { return e.emotion.name == "blushing"; });
 }
 
-std::optional<std::string> VascularState::step(double dt_s, int attending, float fear, float surprise) {
+void VascularState::embarrass() { embarrassed_ = true; }
+
+std::optional<std::string> VascularState::step(double dt_s, int attending, int others, float fear, float surprise) {
   for (Episode& e : episodes_) e.t_s += dt_s;
   std::erase_if(episodes_, [](const Episode& e) { return e.t_s >= e.span_s; });
   since_pallor_s_ += dt_s;
-  if (!blushing()) since_blush_s_ += dt_s;
-  stared_s_ = attending > 0 ? stared_s_ + dt_s : 0;
+  since_blush_s_ += dt_s;
+  const bool spotlit = attending >= kSpotlightFaces && 2 * attending >= others;
+  spotlight_s_ = spotlit ? spotlight_s_ + dt_s : 0;
 
   for (Episode& e : episodes_) {
     // A growing audience deepens a blush already under way.
     if (e.emotion.name == "blushing") e.gain = std::max(e.gain, audience_gain(attending));
   }
-  if (!blushing() && stared_s_ >= kStareToBlushS && since_blush_s_ >= kBlushRefractoryS) {
+  const bool embarrassed = std::exchange(embarrassed_, false);
+  if (!blushing() && since_blush_s_ >= kBlushRefractoryS && (embarrassed || spotlight_s_ >= kSpotlightS)) {
     start(builtin_vascular_emotion("blushing"), blush_span_s(attending), audience_gain(attending));
     since_blush_s_ = 0;
-    return std::string("blush start (") + std::to_string(attending) + " attending)";
+    spotlight_s_ = 0;
+    return std::string("blush start (") + (embarrassed ? "embarrassed, " : "centre of attention, ") +
+           std::to_string(attending) + " attending)";
   }
   if ((fear >= kPallorFear || surprise >= kShockSurprise) && since_pallor_s_ >= kPallorRefractoryS) {
     start(builtin_vascular_emotion("pallor"), 8.0, std::max(fear, surprise));

@@ -67,8 +67,11 @@ class ActionSelection {
   void draw_attention(FaceId writer, double seconds);
 
   /// Decides this tick. `seen`: the faces perceived; `gaze`: where the eyes
-  /// point now (seat frame); `performing`: an expression is under way.
-  Intent step(double dt_s, const std::vector<PerceivedFace>& seen, YawPitch gaze, bool performing);
+  /// point now (seat frame); `performing`: an expression is under way;
+  /// `felt`: what the face feels (its mood and the room's), which its
+  /// displays show.
+  Intent step(double dt_s, const std::vector<PerceivedFace>& seen, YawPitch gaze, bool performing,
+              const EmotionPoint& felt);
 
   Routine routine() const { return routine_; }
   std::optional<FaceId> attending() const { return attending_; }
@@ -77,9 +80,9 @@ class ActionSelection {
   const PerceivedFace* find(const std::vector<PerceivedFace>& seen, std::optional<FaceId> id) const;
   bool clear_of(YawPitch candidate, const PerceivedFace* avoided) const;
   void search(Intent& intent, const std::vector<PerceivedFace>& seen, std::optional<FaceId> avoid);
-  void lead(Intent& intent, const std::vector<PerceivedFace>& seen, bool performing);
+  void lead(Intent& intent, const std::vector<PerceivedFace>& seen, bool performing, const EmotionPoint& felt);
   void follow(Intent& intent, const std::vector<PerceivedFace>& seen);
-  void schedule_expression(Intent& intent, double dt_s, bool performing);
+  void schedule_expression(Intent& intent, bool performing, const EmotionPoint& felt);
   double uniform(double lo, double hi);
 
   std::mt19937_64 rng_;

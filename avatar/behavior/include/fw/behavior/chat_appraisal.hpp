@@ -12,4 +12,8 @@ namespace fw::behavior {
 /// ignored; only the first 4096 bytes are read.
 EmotionPoint appraise_chat(std::string_view text);
 
+/// Whether `text` says its writer is embarrassed (an apology for a slip,
+/// "awkward", a flushed face): a cause of blushing. Same reading as above.
+bool embarrassing_chat(std::string_view text);
+
 }  // namespace fw::behavior

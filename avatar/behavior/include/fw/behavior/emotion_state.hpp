@@ -18,14 +18,12 @@ class EmotionState {
   void express(Primary primary, const ExpressionEnvelope& envelope);
   /// Adds `delta` to the mood (an appraisal); the cube bounds it.
   void nudge(const EmotionPoint& delta);
-  /// Moves the mood toward `goal` with time constant `tau_s` (mimicry).
-  void follow(const EmotionPoint& goal, double dt_s, double tau_s);
   /// Ends every performed expression (a person's command takes over).
   void clear_expressions();
   /// Back to neutral at once: no mood, no expression.
   void reset() { mood_ = {}; active_.clear(); }
-  /// Advances time: envelopes run, the mood decays unless `hold_mood`.
-  void step(double dt_s, bool hold_mood = false);
+  /// Advances time: envelopes run, the mood decays.
+  void step(double dt_s);
 
   /// The point shown and perceived.
   EmotionPoint point() const;
