@@ -3,9 +3,13 @@
 #include <atomic>
 #include <csignal>
 #include <iostream>
+#include <memory>
+
+#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
+#include "chat_feeder.hpp"
 #include "frame_outputs.hpp"
 #include "join_arguments.hpp"
 #include "join_loop.hpp"
@@ -66,6 +70,21 @@ SessionNetwork session_network(const JoinArgs& args, const JoinPlan& plan, const
   return session;
 }
 
+// --chat: the person's lines go to the session as they come (standard
+// input) or at their times (a script).
+std::unique_ptr<ChatFeeder> start_chat(const JoinPlan& plan, RoomState& state, SessionThread& session) {
+  const auto say = [&session](std::string line) { session.say(std::move(line)); };
+  if (plan.chat_from_stdin)
+    return std::make_unique<ChatFeeder>(STDIN_FILENO, say, [](const std::string& message) {
+      std::cerr << "facewire-client join: " << message << "\n";
+    });
+  if (plan.chat_script.empty()) return nullptr;
+  return std::make_unique<ChatFeeder>(plan.chat_script, [&state] {
+    std::lock_guard lock(state.mutex);
+    return state.stats.joined_at();
+  }, say);
+}
+
 // The session runs on its own thread while the render loop runs here; the
 // session is stopped before the summary is made.
 JoinOutcome play_room(const JoinArgs& args, const JoinPlan& plan, const JoinNetwork& network,
@@ -75,7 +94,9 @@ JoinOutcome play_room(const JoinArgs& args, const JoinPlan& plan, const JoinNetw
   for (const ServerUrl& server : plan.servers) options.servers.push_back(server.text);
   options.first_server = uploaded.server;
   SessionThread session(std::move(options), state, session_network(args, plan, network, uploaded));
+  const std::unique_ptr<ChatFeeder> chat = start_chat(plan, state, session);
   JoinOutcome outcome = JoinLoop(args, state, view, outputs, std::cerr).run(g_interrupted);
+  if (chat) chat->stop();
   session.stop();
   return outcome;
 }
@@ -157,6 +178,10 @@ void add_join_command(CLI::App& app, JoinNetwork network) {
   cmd->add_option("--max-kbps", args->max_kbps, "downstream budget in kbit/s (the server's default if unset)")
       ->check(CLI::Range(0.001, 100000.0));
   cmd->add_option("--say", args->say, "a chat line to send once joined (repeatable)");
+  cmd->add_option("--chat", args->chat,
+                  "chat while joined: - sends each line typed on standard input; a FILE sends its lines at their "
+                  "times (a line 'SECONDS TEXT' that many seconds after joining, a line of text alone 2 s after "
+                  "the one before; # starts a comment)");
   cmd->add_option("--mute", args->mute,
                   "a display name to mute for yourself alone: their chat lines are not printed and their face is "
                   "drawn still and neutral; everyone of that name (repeatable; they are not told)");

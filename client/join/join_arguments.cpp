@@ -79,9 +79,19 @@ bool parse_frame_size(const std::string& text, int& width, int& height) {
   }
 }
 
+// --chat: standard input, or a script read now so that a mistake in it is
+// said before joining.
+bool plan_chat(const JoinArgs& args, JoinPlan& plan, std::string& error) {
+  plan.chat_from_stdin = args.chat == "-";
+  if (args.chat.empty() || plan.chat_from_stdin) return true;
+  if (read_chat_script(args.chat, plan.chat_script, error)) return true;
+  error = "--chat " + error;
+  return false;
+}
+
 bool plan_join(const JoinArgs& args, JoinPlan& plan, std::string& error) {
   return parse_server_list(args.url, plan.servers, error) && check_session_fields(args, error) &&
-         plan_rendering(args, plan.render, error);
+         plan_rendering(args, plan.render, error) && plan_chat(args, plan, error);
 }
 
 bool wants_timestamps(const JoinArgs& args) {

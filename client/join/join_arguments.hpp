@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "fw/render/face_renderer.hpp"
+#include "chat_script.hpp"
 #include "room_session.hpp"
 #include "server_list.hpp"
 
@@ -20,6 +21,7 @@ struct JoinArgs {
   double seconds = 0;
   double max_kbps = 0;
   std::vector<std::string> say;
+  std::string chat;  ///< --chat: a file of timed chat lines (chat_script.hpp), or "-" for standard input
   std::vector<std::string> mute;  ///< display names muted for this person alone (--mute, repeatable)
   std::string emote;
   bool json = false, quiet = false;
@@ -34,6 +36,8 @@ struct JoinArgs {
 struct JoinPlan {
   std::vector<ServerUrl> servers;  ///< in the order given: the first that answers is used
   render::RendererOptions render;  ///< frame size and anti-aliasing
+  std::vector<ScriptedLine> chat_script;  ///< --chat FILE, read
+  bool chat_from_stdin = false;           ///< --chat -
 };
 
 /// Checks what CLI11 does not (the server URLs, room and display name,

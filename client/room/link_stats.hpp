@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <deque>
 #include <map>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -30,6 +31,10 @@ class LinkStats {
   void reconnected() { ++reconnects_; }
   /// The first welcome: per-avatar times in the summary count from here.
   void joined(Clock::time_point when);
+  /// The first welcome, if there was one.
+  std::optional<Clock::time_point> joined_at() const {
+    return joined_ == Clock::time_point{} ? std::nullopt : std::optional(joined_);
+  }
   /// A package of the avatar arrived whole (`full` false: the preview).
   void package(std::uint32_t avatar, bool full, Clock::time_point when);
   void decode_error() { ++decode_errors_; }

@@ -379,6 +379,11 @@ void RoomSession::chat(const std::string& text) {
   send_message(chat);
 }
 
+void RoomSession::say(const std::string& text) {
+  if (greeted_) chat(text);
+  else options_.say.push_back(text);
+}
+
 void RoomSession::set_rate(std::uint32_t max_bps) {
   options_.max_bps = max_bps;
   send_message(codec::SetRate{max_bps});

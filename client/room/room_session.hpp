@@ -92,6 +92,9 @@ class RoomSession {
   void stop();
   /// Sends a chat line (from the io thread).
   void chat(const std::string& text);
+  /// A line the person typed (from the io thread): sent now when in the
+  /// room, else with the first welcome, after the --say lines.
+  void say(const std::string& text);
   /// Asks for a new downstream budget in bit/s (0: the server's default),
   /// now and in the hello of every later connection (from the io thread).
   void set_rate(std::uint32_t max_bps);

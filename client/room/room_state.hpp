@@ -40,6 +40,7 @@ struct RoomEventRecord {
   std::string kind;  ///< "chat", "joined", "left"
   std::string name;
   std::string text;  ///< chat only
+  std::chrono::steady_clock::time_point at{};  ///< when it was recorded
 };
 
 class RoomState {
@@ -69,6 +70,7 @@ class RoomState {
   using PackageBytes = std::shared_ptr<const std::vector<std::uint8_t>>;
 
   void record(RoomEventRecord event) {
+    event.at = Clock::now();
     events.push_back(std::move(event));
     if (events.size() > kMaxEvents) events.pop_front();
   }

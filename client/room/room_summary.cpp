@@ -12,8 +12,13 @@ nlohmann::json room_summary(const RoomState& state, std::chrono::steady_clock::t
   for (const auto& [id, avatar] : state.avatars) packages += avatar.package ? 1 : 0;
   summary["avatars_with_package"] = packages;
   nlohmann::json events = nlohmann::json::array();
-  for (const RoomEventRecord& event : state.events)
-    events.push_back({{"kind", event.kind}, {"name", event.name}, {"text", event.text}});
+  const auto joined = state.stats.joined_at();
+  for (const RoomEventRecord& event : state.events) {
+    nlohmann::json entry = {{"kind", event.kind}, {"name", event.name}, {"text", event.text}};
+    // Seconds after the first welcome (negative: before it).
+    if (joined) entry["at_s"] = std::chrono::duration<double>(event.at - *joined).count();
+    events.push_back(std::move(entry));
+  }
   summary["events"] = events;
   if (!state.mutes.empty()) {
     // Whom the person muted, and how many of their lines were not shown.

@@ -33,6 +33,10 @@ SessionOptions SessionThread::with_uploads(SessionOptions options, const Session
 
 SessionThread::~SessionThread() { stop(); }
 
+void SessionThread::say(std::string line) {
+  boost::asio::post(io_, [this, line = std::move(line)] { session_.say(line); });
+}
+
 void SessionThread::stop() {
   if (!thread_.joinable()) return;
   boost::asio::post(io_, [this] { session_.stop(); });

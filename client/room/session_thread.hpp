@@ -37,6 +37,10 @@ class SessionThread {
   SessionThread(const SessionThread&) = delete;
   SessionThread& operator=(const SessionThread&) = delete;
 
+  /// Hands a chat line the person typed to the session (RoomSession::say);
+  /// from any thread.
+  void say(std::string line);
+
   /// Closes the session's connection, gives its handlers a moment, then
   /// stops the io_context and joins the thread. Calls after the first do nothing.
   void stop();

@@ -1,5 +1,6 @@
 // A real server and real clients on loopback: three people in a room see
 // and hear one another, come and go, and a dropped link heals itself.
+#include <fstream>
 #include <thread>
 
 #include <gtest/gtest.h>
@@ -112,6 +113,39 @@ TEST(Room, AClientComesBackAfterItsLinkDrops) {
   const auto frames = frame_files(dir);
   ASSERT_FALSE(frames.empty());
   EXPECT_TRUE(shows_faces_at_every_seat(read_png(frames.back()), 2)) << "after the drop dave sees both faces again";
+  std::filesystem::remove_all(dir);
+}
+
+// A person at a terminal talks: lines typed on standard input and a file of
+// timed lines go out while the client is in the room, and the others get
+// them at their times.
+TEST(Room, NativeClientsChatWhileJoined) {
+  RoomServer server;
+  ASSERT_GT(server.http_port(), 0) << "facewire-server did not start";
+  const auto dir = fresh_directory("chat-lines");
+  const auto script = dir / "script.txt";
+  const auto typed = dir / "typed.txt";
+  std::ofstream(script) << "# two lines two seconds apart\n1 first scripted line\n3 second scripted line\n";
+  std::ofstream(typed) << "typed before joining\nand another\n";
+  ClientRun listener("listener", server.ws_url() + " --room talk --name listener --seconds 12 -q");
+  ASSERT_TRUE(server.wait_for_room("talk", 1, 30)) << "the listener never got in";
+  ClientRun writer("writer", server.ws_url() + " --room talk --name writer --seconds 6 -q --chat " + script.string());
+  ClientRun typist("typist", server.ws_url() + " --room talk --name typist --seconds 5 -q --chat - <" + typed.string());
+  writer.wait();
+  typist.wait();
+  listener.wait();
+  for (const ClientRun* run : {&listener, &writer, &typist}) ASSERT_EQ(run->status(), 0) << run->transcript();
+  const auto& heard = listener.summary();
+  const auto at = [&](const std::string& name, const std::string& text) {
+    const int i = find_event(heard, "chat", name, 0, text);
+    return i < 0 ? -1.0 : heard.at("events")[static_cast<std::size_t>(i)].value("at_s", -1.0);
+  };
+  const double first = at("writer", "first scripted line"), second = at("writer", "second scripted line");
+  ASSERT_GE(first, 0) << listener.transcript();
+  ASSERT_GE(second, 0) << listener.transcript();
+  EXPECT_NEAR(second - first, 2.0, 0.5) << "the script's times";
+  EXPECT_GE(at("typist", "typed before joining"), 0) << listener.transcript();
+  EXPECT_GE(at("typist", "and another"), 0) << listener.transcript();
   std::filesystem::remove_all(dir);
 }
 
