@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <utility>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -32,6 +33,7 @@ struct RenderSceneArgs {
   int every = 1;
   double from_s = 0;
   double to_s = 1e9;
+  std::string face;  ///< --face: one avatar alone (its index or name), "" for the whole room
 };
 
 bool parse_size(const std::string& text, int& width, int& height) {
@@ -118,19 +120,61 @@ Cast cast_for(const behavior::Scene& scene, int width, int height) {
   return cast;
 }
 
-/// Every avatar present at tick `t`, shaped and placed in its seat.
-model::RgbaImage render_tick(Cast& cast, const behavior::Scene& scene, std::size_t t, const render::Camera& camera) {
+/// --face: the index of the avatar its value names (a number below the
+/// avatar count, or a name in the scene), or a failure that lists them.
+std::size_t chosen_face(const behavior::Scene& scene, const std::string& face) {
+  std::size_t index = 0;
+  const auto [end, ec] = std::from_chars(face.data(), face.data() + face.size(), index);
+  if (ec == std::errc() && end == face.data() + face.size() && index < scene.avatars.size()) return index;
+  for (std::size_t i = 0; i < scene.avatars.size(); ++i)
+    if (scene.avatars[i].name == face) return i;
+  std::string names;
+  for (std::size_t i = 0; i < scene.avatars.size(); ++i)
+    names += (i ? ", " : "") + std::to_string(i) + " " + scene.avatars[i].name;
+  fail_command("render-scene", "--face " + face + " is not an avatar of the scene; give its number or name (" + names + ")");
+}
+
+/// Avatar `i` at tick `t`, shaped, for a draw at `place`.
+render::FaceDraw shaped(Cast& cast, const behavior::Scene& scene, std::size_t i, std::size_t t, const glm::mat4& place) {
+  const codec::FaceParams& params = scene.avatars[i].ticks[t];
+  const model::FaceShape shape = model::reconstruct_face(cast.appearances[i].avatar, params);
+  cast.renderer->set_face_shape(cast.ids[i], shape.positions, shape.uvs);
+  return render::face_draw(cast.ids[i], params, place);
+}
+
+/// Where a face rendered alone is put: turned so that the camera sits where
+/// its head points on average over ticks [first, last). Its head and eyes
+/// then move as in the room, toward partners the picture does not show,
+/// and the face is seen from the front rather than in the profile its
+/// seat would give whenever it attends someone beside it.
+glm::mat4 facing_the_camera(const behavior::SceneAvatar& avatar, std::size_t first, std::size_t last) {
+  double yaw = 0;
+  std::size_t ticks = 0;
+  for (std::size_t t = first; t < last && t < avatar.ticks.size(); ++t)
+    if (avatar.present(t)) {
+      yaw += avatar.ticks[t].head_yaw_rad;
+      ++ticks;
+    }
+  const auto mean = static_cast<float>(ticks ? yaw / static_cast<double>(ticks) : 0.0);
+  return glm::rotate(glm::mat4(1.0f), -mean, glm::vec3(0, 1, 0));
+}
+
+/// Every avatar present at tick `t`, shaped and placed in its seat; or,
+/// with `alone`, that avatar only, placed by `alone_place`.
+model::RgbaImage render_tick(Cast& cast, const behavior::Scene& scene, std::size_t t, const render::Camera& camera,
+                             std::optional<std::size_t> alone, const glm::mat4& alone_place) {
   std::vector<render::FaceDraw> draws;
+  if (alone) {
+    if (scene.avatars[*alone].present(t)) draws.push_back(shaped(cast, scene, *alone, t, alone_place));
+    return cast.renderer->render(draws, camera);
+  }
   for (std::size_t i = 0; i < scene.avatars.size(); ++i) {
     const behavior::SceneAvatar& a = scene.avatars[i];
     if (!a.present(t)) continue;
-    const codec::FaceParams& params = a.ticks[t];
-    const model::FaceShape shape = model::reconstruct_face(cast.appearances[i].avatar, params);
-    cast.renderer->set_face_shape(cast.ids[i], shape.positions, shape.uvs);
     // The seat, as behavior::seat_layout.hpp defines it for the renderer.
     const glm::mat4 place = glm::rotate(glm::translate(glm::mat4(1.0f), a.seat->origin_mm / model::kMillimetresPerUnit),
                                         a.seat->facing_yaw_rad, glm::vec3(0, 1, 0));
-    draws.push_back(render::face_draw(cast.ids[i], params, place));
+    draws.push_back(shaped(cast, scene, i, t, place));
   }
   return cast.renderer->render(draws, camera);
 }
@@ -171,15 +215,25 @@ void run(const RenderSceneArgs& args) {
   const auto [width, height] = frame_size(args);
   const behavior::Scene scene = seated_scene(args.scene);
   Cast cast = cast_for(scene, width, height);
-  const render::Camera camera = frame_seats(scene, static_cast<float>(width) / static_cast<float>(height));
+  const float aspect = static_cast<float>(width) / static_cast<float>(height);
   const int fps = std::max(1, static_cast<int>(std::lround(static_cast<double>(scene.fps) / args.every)));
   FrameOutput output(args, width, height, fps);
   const auto first = static_cast<std::size_t>(std::max(0.0, args.from_s) * scene.fps);
   const auto last = std::min(scene.tick_count(), static_cast<std::size_t>(std::min(args.to_s, 1e7) * scene.fps));
+  std::optional<std::size_t> alone;
+  glm::mat4 alone_place(1.0f);
+  render::Camera camera = frame_seats(scene, aspect);
+  if (!args.face.empty()) {
+    alone = chosen_face(scene, args.face);
+    alone_place = facing_the_camera(scene.avatars[*alone], first, last);
+    camera = render::Camera::portrait(aspect);
+    camera.position.z *= 1.15f;  // room for the head's sway and turns around the neck
+  }
   for (std::size_t t = first; t < last; t += static_cast<std::size_t>(args.every))
-    output.write(render_tick(cast, scene, t, camera));
-  std::cerr << "facewire-server render-scene: " << output.frames() << " frames of " << scene.avatars.size()
-            << " faces at " << fps << " fps\n";
+    output.write(render_tick(cast, scene, t, camera, alone, alone_place));
+  std::cerr << "facewire-server render-scene: " << output.frames() << " frames of "
+            << (alone ? "'" + scene.avatars[*alone].name + "' alone" : std::to_string(scene.avatars.size()) + " faces")
+            << " at " << fps << " fps\n";
 }
 
 }  // namespace
@@ -194,6 +248,8 @@ void add_render_scene_command(CLI::App& app) {
   cmd->add_option("--every", args->every, "render every Nth tick")->check(CLI::Range(1, 1000))->capture_default_str();
   cmd->add_option("--from", args->from_s, "start at this second")->check(CLI::NonNegativeNumber);
   cmd->add_option("--to", args->to_s, "stop at this second")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--face", args->face,
+                  "render one avatar alone, facing the camera: its number (0 = the first to join) or name");
   cmd->callback([args] { run(*args); });
 }
 

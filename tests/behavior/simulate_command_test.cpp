@@ -7,11 +7,15 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+
+#include <glm/geometric.hpp>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "fw/behavior/scene_file.hpp"
+#include "fw/render/image_codec.hpp"
 #include "render_scene_command.hpp"
 #include "room_simulation.hpp"
 #include "run_command.hpp"
@@ -92,6 +96,55 @@ TEST(RenderSceneCommand, WritesAY4mVideoOfTheScene) {
   EXPECT_NE(bad.output.find("--out DIR"), std::string::npos) << bad.output;
   std::filesystem::remove(path);
   std::filesystem::remove(video);
+}
+
+// --face K: one avatar alone, facing the camera, large in the frame; each
+// avatar in its own look; a face the scene does not have is named.
+TEST(RenderSceneCommand, RendersOneFaceAloneFacingTheCamera) {
+  const std::string path = temp_path("alone.fws");
+  ASSERT_EQ(test::run_command(server() + " simulate --no-physics --avatars 3 --seconds 1 --join-interval 0 -o " + path +
+                              " >/dev/null").status, 0);
+  const auto centre_colour = [&](const std::string& face, double& share) {
+    const std::string dir = temp_path("alone-" + face);
+    const auto r = test::run_command(server() + " render-scene " + path + " --face " + face +
+                                     " --out " + dir + " --size 160x120 --from 0.9 2>&1");
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("alone"), std::string::npos) << r.output;
+    std::ifstream file(dir + "/frame_000000.png", std::ios::binary);
+    const std::vector<std::uint8_t> bytes{std::istreambuf_iterator<char>(file), {}};
+    model::RgbaImage image;
+    std::string error;
+    EXPECT_TRUE(render::decode_image(bytes, 4096, image, error)) << error;
+    // The middle third of the frame: how much of it is face (not the
+    // renderer's background, as in a corner), and its mean colour.
+    const auto colour = [&](int x, int y) {
+      const std::uint8_t* p = image.at(x, y);
+      return glm::dvec3(p[0], p[1], p[2]) / 255.0;
+    };
+    glm::dvec3 sum{};
+    int face_pixels = 0, all = 0;
+    const glm::dvec3 background = image.width > 0 ? colour(1, 1) : glm::dvec3{};
+    for (int y = image.height / 3; y < 2 * image.height / 3; ++y)
+      for (int x = image.width / 3; x < 2 * image.width / 3; ++x, ++all) {
+        const glm::dvec3 c = colour(x, y);
+        if (glm::length(c - background) > 0.1) {
+          ++face_pixels;
+          sum += c;
+        }
+      }
+    share = all ? static_cast<double>(face_pixels) / all : 0;
+    std::filesystem::remove_all(dir);
+    return face_pixels ? sum / static_cast<double>(face_pixels) : glm::dvec3{};
+  };
+  double share0 = 0, share2 = 0;
+  const glm::dvec3 first = centre_colour("0", share0), third = centre_colour("avatar-3", share2);
+  EXPECT_GT(share0, 0.9) << "the face fills the middle of the frame";
+  EXPECT_GT(share2, 0.9);
+  EXPECT_GT(glm::length(first - third), 0.03) << "two avatars, two looks";
+  const auto bad = test::run_command(server() + " render-scene " + path + " --face 7 --out " + temp_path("none") + " 2>&1");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.output.find("0 avatar-1, 1 avatar-2, 2 avatar-3"), std::string::npos) << bad.output;
+  std::filesystem::remove(path);
 }
 
 }  // namespace
