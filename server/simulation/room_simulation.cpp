@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "fw/behavior/behavior_room.hpp"
+#include "fw/behavior/plateau_motion.hpp"
 #include "fw/model/generic_face.hpp"
 #include "fw/physics/face_simulation.hpp"
 #include "fw/physics/tissue_model.hpp"
@@ -236,16 +237,20 @@ void RoomSimulation::tick() {
   State& s = *state_;
   s.room.tick();
   s.physics_faces = s.kinematic_faces = 0;
+  const double now_s = s.room.tick_index() * s.room.dt_s();
   for (auto& [id, a] : s.avatars) {
     a.face = s.room.face(id);
+    const std::uint64_t seed = s.options.seed ^ id;
     if (!s.options.physics) {
       a.physics.resting = true;  // no physics face to step
-      continue;
+    } else {
+      const bool allowed = s.physics_share >= 1.0 || physics_rank(seed) < s.physics_share;
+      a.face.au = step_action_units(a.physics, a.face.au, s.room.dt_s(), seed, s.options, allowed);
+      ++(allowed ? s.physics_faces : s.kinematic_faces);
     }
-    const std::uint64_t seed = s.options.seed ^ id;
-    const bool allowed = s.physics_share >= 1.0 || physics_rank(seed) < s.physics_share;
-    a.face.au = step_action_units(a.physics, a.face.au, s.room.dt_s(), seed, s.options, allowed);
-    ++(allowed ? s.physics_faces : s.kinematic_faces);
+    // After the physics face, so that its tissue may rest on a held
+    // expression while the expression still wavers (plateau_motion.hpp).
+    behavior::add_plateau_motion(a.face.au, now_s, static_cast<std::uint32_t>(seed));
   }
   s.collect_events(true);
 }

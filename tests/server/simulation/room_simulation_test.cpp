@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <set>
 #include <string>
 #include <vector>
@@ -57,6 +58,27 @@ TEST(RoomSimulationLevelOfDetail, WithoutPhysicsFacesStillFollowTheirTargets) {
     rested = room.resting(b);
   }
   EXPECT_TRUE(rested);
+}
+
+// A held smile: the physics face comes to rest on it and costs nothing,
+// yet the smile on the face still wavers (never frozen on its plateau).
+TEST(RoomSimulationPlateau, AHeldExpressionLivesWhileTheTissueRests) {
+  RoomSimulation room = room_with_physics();
+  const AvatarId a = room.add_avatar({"a", true});
+  ASSERT_EQ(room.command(a, ExpressCommand{"joy", 0.8f, 20}), "");
+  for (int i = 0; i < 4 * 30; ++i) room.tick();  // onto the plateau
+  int resting = 0;
+  float lo = 1, hi = 0;
+  for (int i = 0; i < 6 * 30; ++i) {
+    room.tick();
+    resting += room.resting(a) ? 1 : 0;
+    lo = std::min(lo, smile(room.face(a)));
+    hi = std::max(hi, smile(room.face(a)));
+  }
+  std::printf("tissue resting %d of 180 ticks; the smile between %.3f and %.3f\n", resting, lo, hi);
+  EXPECT_GT(resting, 90) << "the physics face should rest on a held expression";
+  EXPECT_GT(hi - lo, 0.02f) << "the smile is frozen";
+  EXPECT_GT(lo, 0.4f);
 }
 
 TEST(RoomSimulationLevelOfDetail, ASharePicksTheSameFacesEveryTick) {
