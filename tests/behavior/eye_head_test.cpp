@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -81,6 +82,37 @@ TEST_P(GazeStep, ALargeShiftIsOneSaccadeWithoutCorrectiveSteps) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Seeds, GazeStep, ::testing::Values(1u, 2u, 3u, 99u));
+
+// The head turns with a bell-shaped velocity: slow, fast, slow, its peak in
+// the middle half of the movement, not in its first frame as a first-order
+// lag would have it.
+TEST(HeadMovement, VelocityIsBellShaped) {
+  EyeHeadController c({4, false, false});
+  c.look_at(target_at(0));
+  for (int i = 0; i < 30; ++i) c.step(kDt);
+  for (const float goal : {25 * kDeg, -20 * kDeg, 50 * kDeg, 0.0f}) {
+    c.look_at(target_at(goal));
+    std::vector<float> yaw{c.head().yaw_rad};
+    for (int i = 0; i < 45; ++i) {
+      c.step(kDt);
+      yaw.push_back(c.head().yaw_rad);
+    }
+    // The move: from the first tick the head turns until it has covered
+    // 98 % of its way.
+    const float total = yaw.back() - yaw.front();
+    ASSERT_GT(std::abs(total), 10 * kDeg) << goal / kDeg;
+    std::size_t end = 1;
+    while (end < yaw.size() && std::abs(yaw[end] - yaw.front()) < 0.98f * std::abs(total)) ++end;
+    std::size_t peak = 1;
+    for (std::size_t i = 1; i <= end && i < yaw.size(); ++i)
+      if (std::abs(yaw[i] - yaw[i - 1]) > std::abs(yaw[peak] - yaw[peak - 1])) peak = i;
+    const double at = static_cast<double>(peak) / static_cast<double>(end);
+    std::printf("head move of %.0f deg over %zu ticks, peak velocity at %.0f %% of it\n", total / kDeg, end, at * 100);
+    EXPECT_GE(at, 0.25) << goal / kDeg;
+    EXPECT_LE(at, 0.75) << goal / kDeg;
+    EXPECT_NEAR(head_movement_duration_s(std::abs(total)), 0.15 + 0.005 * std::abs(total) / kDeg, 1e-6);
+  }
+}
 
 TEST(Vergence, EyesTurnInOnNearTargets) {
   EyeHeadController c({5, false, false});

@@ -35,6 +35,8 @@ float head_goal_offset(float e, float free_rad, float share) {
 
 double saccade_duration_s(float amplitude_rad) { return 0.021 + 0.0022 * std::abs(amplitude_rad) / kDeg; }
 
+double head_movement_duration_s(float amplitude_rad) { return 0.15 + 0.005 * std::abs(amplitude_rad) / kDeg; }
+
 EyeHeadController::EyeHeadController(const EyeHeadOptions& options)
     : options_(options), fixation_(options.seed ^ 0x5ACCADEull) {}
 
@@ -69,6 +71,11 @@ void EyeHeadController::start_saccade(YawPitch from, YawPitch target) {
   head_goal_.pitch_rad = head_.pitch_rad + head_goal_offset(target.pitch_rad - head_.pitch_rad, 0.1f, 0.6f);
   head_goal_.yaw_rad = std::clamp(head_goal_.yaw_rad, -1.1f, 1.1f);
   head_goal_.pitch_rad = std::clamp(head_goal_.pitch_rad, -0.6f, 0.6f);
+  // A new goal mid-movement starts a new movement from where the head is.
+  head_from_ = head_;
+  head_t_s_ = 0;
+  head_duration_s_ = head_movement_duration_s(
+      std::hypot(head_goal_.yaw_rad - head_.yaw_rad, head_goal_.pitch_rad - head_.pitch_rad));
 }
 
 void EyeHeadController::step(double dt_s) {
@@ -90,9 +97,10 @@ void EyeHeadController::step(double dt_s) {
     head_noise_.translation_mm = {3.0f * gradient_noise(0.2f * t, seed + 3), 2.0f * gradient_noise(0.25f * t, seed + 4),
                                   3.0f * gradient_noise(0.15f * t, seed + 5)};
   }
-  const float k_head = static_cast<float>(1 - std::exp(-dt_s / kHeadTimeConstantS));
-  head_.yaw_rad += (head_goal_.yaw_rad - head_.yaw_rad) * k_head;
-  head_.pitch_rad += (head_goal_.pitch_rad - head_.pitch_rad) * k_head;
+  head_t_s_ += dt_s;
+  const float s_head = head_duration_s_ > 0 ? minimum_jerk(head_t_s_ / head_duration_s_) : 1.0f;
+  head_.yaw_rad = head_from_.yaw_rad + (head_goal_.yaw_rad - head_from_.yaw_rad) * s_head;
+  head_.pitch_rad = head_from_.pitch_rad + (head_goal_.pitch_rad - head_from_.pitch_rad) * s_head;
   const HeadPose h = head();
   const YawPitch target = target_direction();
 
@@ -102,7 +110,13 @@ void EyeHeadController::step(double dt_s) {
     const YawPitch g{saccade_from_.yaw_rad + (saccade_to_.yaw_rad - saccade_from_.yaw_rad) * s,
                      saccade_from_.pitch_rad + (saccade_to_.pitch_rad - saccade_from_.pitch_rad) * s};
     eye_ = clamp_to_orbit({g.yaw_rad - h.yaw_rad, g.pitch_rad - h.pitch_rad});
-    if (saccade_t_s_ >= saccade_duration_s_) {
+    // A shift beyond the eyes' range ends when the head has carried gaze
+    // the rest of the way, the eye waiting at its limit: one gaze shift,
+    // not a saccade and then a corrective one (at most kHeadWaitS longer).
+    const float left = std::hypot(saccade_to_.yaw_rad - h.yaw_rad - eye_.yaw_rad,
+                                  saccade_to_.pitch_rad - h.pitch_rad - eye_.pitch_rad);
+    if (saccade_t_s_ >= saccade_duration_s_ &&
+        (left <= kSaccadeThresholdRad || saccade_t_s_ >= saccade_duration_s_ + kHeadWaitS)) {
       saccade_active_ = false;
       fixation_.reset();
     }

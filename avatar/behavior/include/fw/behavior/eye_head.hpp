@@ -1,8 +1,10 @@
 #pragma once
 // Eye-head coordination ("Behavioral Animation of Faces", section 5 and its
 // Figure 8). A gaze shift is a saccade whose duration and peak speed grow with
-// its amplitude (the main sequence); the head, far heavier, moves with a
-// slower exponential and carries part of a large shift; once gaze is on the
+// its amplitude (the main sequence); the head, far heavier, moves more slowly,
+// with the bell-shaped velocity of a minimum-jerk movement lasting a few
+// hundred milliseconds (head_movement_duration_s), and carries part of a
+// large shift; once gaze is on the
 // target the vestibulo-ocular reflex counter-rotates the eyes so gaze stays
 // put while the head finishes. Both eyes converge on near targets, fixation
 // drifts and trembles, and low-level Perlin noise keeps the head from
@@ -27,14 +29,24 @@ struct EyeHeadOptions {
 /// `amplitude_rad` (Carpenter: about 21 ms + 2.2 ms per degree).
 double saccade_duration_s(float amplitude_rad);
 
+/// How long the head takes to turn `amplitude_rad`: 150 ms plus 5 ms per
+/// degree, so a 45-degree turn lasts about 0.4 s. Head movements
+/// in gaze shifts last several hundred milliseconds, growing with their
+/// size, with a single-peaked (bell-shaped) velocity (Zangemeister & Stark
+/// 1982, "Types of gaze movement", Exp. Neurology 77; Freedman 2008,
+/// "Coordination of the eyes and head during visual orienting", Exp. Brain
+/// Research 190).
+double head_movement_duration_s(float amplitude_rad);
+
 class EyeHeadController {
  public:
   static constexpr float kOculomotorRangeRad = 0.8f;   ///< eye in orbit, ~46 degrees
   static constexpr float kSaccadeThresholdRad = 0.026f;  ///< smaller errors are left to fixation (1.5 deg)
   static constexpr float kHeadFreeRad = 0.14f;          ///< the eyes alone take the first 8 degrees
   static constexpr float kHeadShare = 0.9f;             ///< of the rest, the head's final share
-  static constexpr double kHeadTimeConstantS = 0.3;     ///< the head's exponential
   static constexpr double kVergenceTimeConstantS = 0.15;
+  /// The longest a gaze shift beyond the eyes' range waits for the head.
+  static constexpr double kHeadWaitS = 0.4;
 
   explicit EyeHeadController(const EyeHeadOptions& options);
 
@@ -66,8 +78,10 @@ class EyeHeadController {
   FixationMovements fixation_;
   glm::vec3 target_{0.0f, 0.0f, 1000.0f};
   double time_s_ = 0;
-  // Head: kinematic part toward its goal, plus noise.
-  YawPitch head_{}, head_goal_{};
+  // Head: kinematic part moving from `head_from_` to its goal along a
+  // minimum-jerk profile, plus noise.
+  YawPitch head_{}, head_from_{}, head_goal_{};
+  double head_t_s_ = 0, head_duration_s_ = 0;
   HeadPose head_noise_{};
   // Eye in orbit, cyclopean.
   YawPitch eye_{};
