@@ -206,17 +206,21 @@ TEST(BehaviorRoomMood, AFriendlyRoomShowsNoNegativeEmotionAndBlushesRarely) {
   }
 }
 
-// Named in a line, a face looks at its writer for longer than the others do.
-TEST(BehaviorRoomChat, TheFaceNamedLooksAtTheWriterLonger) {
+// Named in a line, a face looks at its writer through it and a moment after.
+TEST(BehaviorRoomChat, TheFaceNamedLooksAtTheWriterThroughTheLine) {
   BehaviorRoom room = make_room(7, 3);
   room.add(1, "Ann");
   room.add(2, "Bob");
   room.add(3, "Cy");
   run(room, 5);
   room.chat(3, "what do you think, ann?");
-  run(room, 3.2);
-  EXPECT_EQ(room.attending(1), 3u) << "Ann was asked";
-  EXPECT_NE(room.attending(2), 3u) << "Bob's look at the writer has ended";
+  const double line = estimated_speech_s("what do you think, ann?");
+  int looking = 0, ticks = 0;
+  for (; ticks * room.dt_s() < line + 1.0; ++ticks) {
+    room.tick();
+    looking += room.attending(1) == 3u ? 1 : 0;
+  }
+  EXPECT_EQ(looking, ticks) << "Ann was asked";
 }
 
 TEST(BehaviorRoomCommands, BadCommandsSayWhatWasWrong) {
@@ -277,19 +281,34 @@ TEST(BehaviorRoomCommands, CunningTeasingAndBlushAreExpressionsToo) {
   EXPECT_GE(cheeks, 0.3f);
 }
 
-TEST(BehaviorRoomChat, OthersLookAtTheWriterWhoseEmotionMoves) {
-  BehaviorRoom room = make_room(6, 0);
-  for (FaceId id : {1u, 2u, 3u}) room.add(id, "face" + std::to_string(id));
+// A line is said: the listeners turn to the speaker each after a human
+// latency of their own (not in unison), and the line moves the writer.
+TEST(BehaviorRoomChat, ListenersTurnToTheSpeakerNotInUnison) {
+  BehaviorRoom room = make_room(6, 6);
+  for (FaceId id = 1; id <= 6; ++id) room.add(id, "face" + std::to_string(id));
   run(room, 5);
-  room.chat(3, "hahaha that is great :)");
-  run(room, 1.0);
-  EXPECT_EQ(room.attending(1), 3u);
-  EXPECT_EQ(room.attending(2), 3u);
-  EXPECT_EQ(room.snapshot(1).looking_at, 3u);
-  EXPECT_GT(room.snapshot(3).emotion[static_cast<std::size_t>(Primary::joy)], 0.4f);
+  room.chat(6, "hahaha that is great, really great :)");
+  EXPECT_TRUE(room.speaking(6));
+  std::map<FaceId, int> turned;  // the tick each listener first attends the speaker
+  for (int i = 1; i <= 30; ++i) {
+    room.tick();
+    for (FaceId id = 1; id <= 5; ++id)
+      if (!turned.count(id) && room.attending(id) == 6u) turned[id] = i;
+  }
+  std::set<int> ticks;
+  for (const auto& [id, tick] : turned) {
+    ticks.insert(tick);
+    EXPECT_GE(tick * room.dt_s(), 0.1) << "face " << id << " turned before a human could";
+    EXPECT_LE(tick * room.dt_s(), 0.45) << "face " << id;
+  }
+  EXPECT_EQ(turned.size(), 5u) << "every listener turns to the speaker";
+  EXPECT_GE(ticks.size(), 2u) << "the listeners turned in unison";
+  EXPECT_GT(room.snapshot(6).emotion[static_cast<std::size_t>(Primary::joy)], 0.4f);
   bool logged = false;
-  for (const BehaviorEvent& e : room.take_events()) logged |= e.face == 3 && e.what == "chat (joy)";
+  for (const BehaviorEvent& e : room.take_events()) logged |= e.face == 6 && e.what == "chat (joy)";
   EXPECT_TRUE(logged);
+  run(room, estimated_speech_s("hahaha that is great, really great :)"));
+  EXPECT_FALSE(room.speaking(6)) << "the line ends";
 }
 
 TEST(BehaviorRoomBlink, RateInTheRoomIsTenToThirtyAMinute) {

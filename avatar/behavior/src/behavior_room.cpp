@@ -13,6 +13,8 @@
 #include "fw/behavior/chat_appraisal.hpp"
 #include "fw/behavior/emotion_state.hpp"
 #include "fw/behavior/eye_head.hpp"
+#include "fw/behavior/conversation_gaze.hpp"
+#include "fw/behavior/face_scan.hpp"
 #include "fw/behavior/facs_track.hpp"
 #include "fw/behavior/mimicry.hpp"
 #include "fw/behavior/vascular_episode.hpp"
@@ -20,10 +22,13 @@
 namespace fw::behavior {
 namespace {
 
-constexpr double kChatAttentionS = 2.5;
-/// Whoever is named in a line looks at its writer longer: being addressed
-/// calls for an answer (a look now; words are the person's).
-constexpr double kNamedAttentionS = 4.0;
+/// Whoever is named in a line looks at its writer through it and a moment
+/// after: being addressed calls for an answer (a look now; words are the
+/// person's).
+constexpr double kNamedAttentionAfterS = 1.5;
+/// A line's length when the caller has no speech track for it: English at
+/// about 2.5 words a second (150 words a minute), within 0.8-15 s.
+constexpr double kWordsPerSecond = 2.5, kShortestLineS = 0.8, kLongestLineS = 15.0;
 /// How much of a chat line's appraisal colours the room's mood, and how
 /// fast the room forgets it: a conversation's tone outlasts a single line's
 /// expression (mood half-life 4 s) but not by minutes.
@@ -60,7 +65,8 @@ struct BehaviorRoom::Impl {
   struct Face {
     Face(FaceId face_id, std::string face_name, std::uint64_t seed, const BehaviorRoomOptions& o)
         : id(face_id), name(std::move(face_name)), mind(mix(seed + 1)),
-          eyes({mix(seed + 2), o.micro_movements, o.head_noise}), blink(mix(seed + 3)) {}
+          eyes({mix(seed + 2), o.micro_movements, o.head_noise}), blink(mix(seed + 3)), talk(mix(seed + 4)),
+          scan(mix(seed + 5)) {}
     FaceId id;
     std::string name;
     std::uint64_t joined = 0;  ///< join order: the earliest present leads
@@ -73,6 +79,13 @@ struct BehaviorRoom::Impl {
     VascularState vascular;
     std::optional<AuTrack> facs;
     double facs_t_s = 0;
+    ConversationGaze talk;
+    FaceScan scan;
+    // The line being said: since when (room time), how long, and its mouth.
+    std::optional<double> speech_start_s;
+    double speech_length_s = 0;
+    std::optional<AuTrack> speech_mouth;
+    std::optional<FaceId> attending;  ///< whom the eyes are sent to this tick (routine or conversation)
     FaceSnapshot snapshot;
     codec::FaceParams params;
     Routine shown_routine = Routine::visual_search;
@@ -89,6 +102,7 @@ struct BehaviorRoom::Impl {
   std::vector<BehaviorEvent> events;
 
   double dt() const { return 1.0 / options.tick_hz; }
+  double now_s() const { return tick * dt(); }
 
   Face* find(FaceId id) {
     for (Face& f : faces)
@@ -137,6 +151,7 @@ struct BehaviorRoom::Impl {
     s.head_yaw_rad = head.yaw_rad;
     s.emotion = shown_emotion(f);
     s.emotion_template = classify(s.emotion);
+    s.speaking_since_s = f.speech_start_s;
   }
 
   // What the face shows and others perceive: its own emotion, and what it
@@ -147,12 +162,68 @@ struct BehaviorRoom::Impl {
     return point;
   }
 
+  // While anyone speaks, conversation decides where the face looks
+  // (conversation_gaze.hpp); its routine still decides what it shows.
+  void converse(Face& f, const std::vector<FaceSnapshot>& room, const std::vector<PerceivedFace>& seen,
+                Intent& intent) {
+    ConversationScene scene;
+    scene.now_s = now_s();
+    if (f.speech_start_s) {
+      scene.my_start_s = f.speech_start_s;
+      scene.my_length_s = f.speech_length_s;
+    }
+    for (const FaceSnapshot& s : room)
+      if (s.id != f.id && s.speaking_since_s && (!scene.speaker || *s.speaking_since_s >= scene.speaker_start_s)) {
+        scene.speaker = s.id;
+        scene.speaker_start_s = *s.speaking_since_s;
+      }
+    const std::optional<ConversationLook> look = f.talk.step(scene, seen);
+    if (!look) return;
+    if (look->attend) {
+      intent.attend = look->attend;
+      if (intent.routine == Routine::visual_search) intent.routine = Routine::attentive;
+    } else {
+      intent.attend.reset();
+      intent.routine = Routine::visual_search;
+      YawPitch from{};
+      for (const FaceSnapshot& s : room)
+        if (look->away_from && s.id == *look->away_from)
+          from = direction_angles(room_to_seat(f.snapshot.seat, s.eye_mid_room_mm) - f.eyes.eye_position_seat());
+      const YawPitch away{from.yaw_rad + look->away_offset.yaw_rad, from.pitch_rad + look->away_offset.pitch_rad};
+      intent.look_seat_mm = f.eyes.eye_position_seat() + 1500.0f * direction_from_angles(away);
+    }
+    // Mimicry needs the mimicked face in view of the eyes, not just in mind.
+    if (intent.mimic && intent.attend != intent.mimic) intent.mimic.reset();
+  }
+
+  // The line being said: its track moves the jaw and lips (articulation
+  // wins there over the expression; the rest of the face keeps it); it
+  // ends on time.
+  void speak_tick(Face& f, codec::FaceParams& p) {
+    if (!f.speech_start_s) return;
+    const double t = now_s() - *f.speech_start_s;
+    if (t >= f.speech_length_s) {
+      f.speech_start_s.reset();
+      f.speech_mouth.reset();
+      return;
+    }
+    if (!f.speech_mouth) return;
+    const AuTargets mouth = f.speech_mouth->at(t);
+    for (const int au : {10, 17, 20, 23, 24, 25, 26, 27})
+      for (const codec::AuSide side : {codec::AuSide::both, codec::AuSide::left, codec::AuSide::right}) {
+        const int c = codec::au_channel(au, side);
+        if (c >= 0) p.au[static_cast<std::size_t>(c)] = mouth[static_cast<std::size_t>(c)];
+      }
+  }
+
   void step_face(Face& f, const std::vector<FaceSnapshot>& room) {
     const double dt_s = dt();
     const std::vector<PerceivedFace> seen = perceive(f.snapshot, room);
     EmotionPoint felt = f.emotion.mood();
     for (std::size_t k = 0; k < kPrimaryCount; ++k) felt[k] = std::max(felt[k], room_mood[k]);
-    const Intent intent = f.mind.step(dt_s, seen, f.eyes.gaze(), f.emotion.performing(), felt);
+    Intent intent = f.mind.step(dt_s, seen, f.eyes.gaze(), f.emotion.performing(), felt);
+    if (!f.mind.commanded()) converse(f, room, seen, intent);
+    f.attending = intent.attend;
     if (intent.perform) f.emotion.express(*intent.perform, intent.perform_envelope);
     std::optional<EmotionPoint> mimicked;
     for (const PerceivedFace& p : seen)
@@ -161,10 +232,13 @@ struct BehaviorRoom::Impl {
     f.emotion.step(dt_s);
 
     glm::vec3 target = intent.look_seat_mm;
-    if (intent.attend) {
-      for (const FaceSnapshot& s : room)
-        if (s.id == *intent.attend) target = room_to_seat(f.snapshot.seat, s.eye_mid_room_mm);
-    }
+    const FaceSnapshot* attended = nullptr;
+    for (const FaceSnapshot& s : room)
+      if (intent.attend && s.id == *intent.attend) attended = &s;
+    const FacePoint point_on_face =
+        f.scan.step(now_s(), attended ? std::optional(attended->id) : std::nullopt,
+                    attended && attended->speaking_since_s.has_value());
+    if (attended) target = room_to_seat(f.snapshot.seat, face_point_room(*attended, point_on_face));
     f.eyes.look_at(target);
     f.eyes.step(dt_s);
     f.blink.step(dt_s, f.eyes.saccade_started_rad());
@@ -184,6 +258,7 @@ struct BehaviorRoom::Impl {
       p.au = f.facs->at(f.facs_t_s);
       if (f.facs_t_s >= f.facs->length_s()) f.facs.reset();
     }
+    speak_tick(f, p);
     f.eyes.write(p);
     const float pitch_lids = lid_follows_pitch(f.eyes.eye().pitch_rad);
     p.lid_left = p.lid_right = std::max(f.blink.closure(), std::min(1.0f, expression_lids + pitch_lids));
@@ -340,7 +415,19 @@ std::string BehaviorRoom::facs(FaceId face, std::string_view sentence) {
   return {};
 }
 
-void BehaviorRoom::chat(FaceId face, std::string_view text) {
+// How long `text` takes to say without a speech track: by its words.
+double estimated_speech_s(std::string_view text) {
+  std::size_t words = 0;
+  bool in_word = false;
+  for (const char c : text) {
+    const bool letter = std::isalnum(static_cast<unsigned char>(c)) != 0 || (c & 0x80) != 0;
+    words += letter && !in_word ? 1 : 0;
+    in_word = letter;
+  }
+  return std::clamp(static_cast<double>(words) / kWordsPerSecond, kShortestLineS, kLongestLineS);
+}
+
+void BehaviorRoom::chat(FaceId face, std::string_view text, const AuTrack* mouth) {
   Impl::Face* f = impl_->find(face);
   if (!f) return;
   const EmotionPoint delta = appraise_chat(text);
@@ -356,10 +443,16 @@ void BehaviorRoom::chat(FaceId face, std::string_view text) {
   const auto strongest = std::max_element(delta.begin(), delta.end());
   if (*strongest >= 0.3f)
     f->emotion.express(static_cast<Primary>(strongest - delta.begin()), envelope_for(2.0, *strongest, 0.5f));
+  f->speech_start_s = impl_->now_s();
+  f->speech_length_s = mouth ? mouth->length_s() : estimated_speech_s(text);
+  if (mouth) f->speech_mouth = *mouth;
+  else f->speech_mouth.reset();
   for (Impl::Face& other : impl_->faces)
-    if (other.id != face) other.mind.draw_attention(face, names(text, other.name) ? kNamedAttentionS : kChatAttentionS);
+    if (other.id != face && names(text, other.name)) other.mind.draw_attention(face, f->speech_length_s + kNamedAttentionAfterS);
   impl_->event(face, std::string("chat (") + label(classify(delta)) + ")");
 }
+
+bool BehaviorRoom::speaking(FaceId face) const { return impl_->get(face).speech_start_s.has_value(); }
 
 void BehaviorRoom::tick() { impl_->step(); }
 std::uint32_t BehaviorRoom::tick_index() const { return impl_->tick; }
@@ -367,7 +460,7 @@ double BehaviorRoom::dt_s() const { return impl_->dt(); }
 const codec::FaceParams& BehaviorRoom::face(FaceId id) const { return impl_->get(id).params; }
 const FaceSnapshot& BehaviorRoom::snapshot(FaceId id) const { return impl_->get(id).snapshot; }
 Routine BehaviorRoom::routine(FaceId id) const { return impl_->get(id).mind.routine(); }
-std::optional<FaceId> BehaviorRoom::attending(FaceId id) const { return impl_->get(id).mind.attending(); }
+std::optional<FaceId> BehaviorRoom::attending(FaceId id) const { return impl_->get(id).attending; }
 EmotionPoint BehaviorRoom::mood(FaceId face) const { return impl_->get(face).emotion.mood(); }
 
 void BehaviorRoom::set_mood(FaceId face, const EmotionPoint& mood) {

@@ -23,6 +23,7 @@ std::vector<PerceivedFace> perceive(const FaceSnapshot& self, const std::vector<
     p.looks_at_me = other.looking_at == self.id;
     p.emotion = other.emotion;
     p.emotion_template = other.emotion_template;
+    p.speaking_since_s = other.speaking_since_s;
     seen.push_back(p);
   }
   std::sort(seen.begin(), seen.end(), [](const PerceivedFace& a, const PerceivedFace& b) {
@@ -35,12 +36,17 @@ std::optional<FaceId> face_on_gaze(FaceId self, glm::vec3 origin, glm::vec3 dire
                                    const std::vector<FaceSnapshot>& room) {
   std::optional<FaceId> best;
   float best_angle = kAttendConeRad;
+  const auto angle_to = [&](glm::vec3 point) {
+    const glm::vec3 to = point - origin;
+    const float len = glm::length(to);
+    if (len <= 0) return 10.0f;
+    return std::acos(std::clamp(glm::dot(to / len, glm::normalize(direction)), -1.0f, 1.0f));
+  };
   for (const FaceSnapshot& other : room) {
     if (other.id == self) continue;
-    const glm::vec3 to = other.eye_mid_room_mm - origin;
-    const float len = glm::length(to);
-    if (len <= 0) continue;
-    const float angle = std::acos(std::clamp(glm::dot(to / len, glm::normalize(direction)), -1.0f, 1.0f));
+    // Gaze on the eyes or on the mouth rests on the face: eyes scan between
+    // them (face_scan.hpp), and a near face's mouth lies beyond the cone.
+    const float angle = std::min(angle_to(other.eye_mid_room_mm), angle_to(other.mouth_room_mm));
     if (angle <= best_angle) {
       best_angle = angle;
       best = other.id;

@@ -74,6 +74,9 @@ class ActionSelection {
               const EmotionPoint& felt);
 
   Routine routine() const { return routine_; }
+  /// Whether a person's command (look at, snub) is in force: it wins over
+  /// conversation too.
+  bool commanded() const { return override_.has_value() && override_->until_s > now_s_; }
   std::optional<FaceId> attending() const { return attending_; }
 
  private:

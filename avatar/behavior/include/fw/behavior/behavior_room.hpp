@@ -14,11 +14,16 @@
 
 #include "fw/behavior/action_selection.hpp"
 #include "fw/behavior/emotion_space.hpp"
+#include "fw/behavior/facs_track.hpp"
 #include "fw/behavior/perception.hpp"
 #include "fw/behavior/seat_layout.hpp"
 #include "fw/codec/face_params.hpp"
 
 namespace fw::behavior {
+
+/// How long `text` takes to say when there is no speech track for it: by
+/// its words, at about 2.5 a second, 0.8 to 15 s.
+double estimated_speech_s(std::string_view text);
 
 struct BehaviorRoomOptions {
   std::uint64_t seed = 1;
@@ -62,8 +67,14 @@ class BehaviorRoom {
   /// mood given back: a room restored on another server keeps its moods.
   EmotionPoint mood(FaceId face) const;
   void set_mood(FaceId face, const EmotionPoint& mood);
-  /// A chat line: the others look at the writer, the text nudges the writer.
-  void chat(FaceId face, std::string_view text);
+  /// A chat line: the writer says it, which the others' gaze follows
+  /// (conversation_gaze.hpp), and the text nudges the writer's mood.
+  /// `mouth`: the line's lip-sync track, whose jaw and lip channels the
+  /// face shows while it speaks; without one the face speaks for as long
+  /// as the line would take (estimated_speech_s) with a still mouth.
+  void chat(FaceId face, std::string_view text, const AuTrack* mouth = nullptr);
+  /// Whether the face is saying a line now.
+  bool speaking(FaceId face) const;
 
   void tick();
   std::uint32_t tick_index() const;

@@ -27,6 +27,7 @@ struct FaceSnapshot {
   std::optional<FaceId> looking_at;                 ///< the face its gaze rests on
   EmotionPoint emotion{};
   EmotionTemplate emotion_template;
+  std::optional<double> speaking_since_s;  ///< the room time its line began, while it speaks
 };
 
 /// A face another one perceives.
@@ -40,6 +41,7 @@ struct PerceivedFace {
   bool looks_at_me = false;
   EmotionPoint emotion{};
   EmotionTemplate emotion_template;
+  std::optional<double> speaking_since_s;  ///< heard: the room time its line began, while it speaks
 };
 
 /// Half the horizontal field of view, about the head's direction.
@@ -50,8 +52,8 @@ inline constexpr float kAttendConeRad = 0.14f;  ///< 8 degrees
 /// The faces `self` perceives in `room` (itself excluded), nearest first.
 std::vector<PerceivedFace> perceive(const FaceSnapshot& self, const std::vector<FaceSnapshot>& room);
 
-/// The face whose eyes lie nearest `gaze` (origin, unit direction) within
-/// kAttendConeRad, if any; `self` is never one.
+/// The face whose eyes or mouth lie nearest `gaze` (origin, unit direction)
+/// within kAttendConeRad, if any; `self` is never one.
 std::optional<FaceId> face_on_gaze(FaceId self, glm::vec3 origin, glm::vec3 direction,
                                    const std::vector<FaceSnapshot>& room);
 

@@ -1,0 +1,96 @@
+#pragma once
+// Where a face looks while someone speaks: the gaze of conversation, as
+// people do it, in place of the routines while a line is being said.
+//
+// - A listener looks at the speaker most of the utterance, about 75 %, in
+//   glances of about 3 s with short looks away (Argyle & Cook 1976, "Gaze
+//   and Mutual Gaze"; Argyle & Ingham 1972: mean glance 2.95 s).
+// - The speaker looks at its listeners less, about 41 %, in shorter glances
+//   and longer looks away (Argyle & Cook 1976); it looks away as a long
+//   utterance begins, in over 70 % of them, and at a listener as it ends
+//   (Kendon 1967, "Some functions of gaze-direction in social
+//   interaction", Acta Psychologica 26).
+// - Mutual gaze comes of the two: episodes of a second or two (Argyle &
+//   Ingham 1972: mean mutual glance 1.18 s; Rogers et al. 2018: ~2.2 s).
+// - A listener turns to a new speaker with a human latency, a saccade's
+//   200 ms or so (Carpenter 1988, "Movements of the Eyes"), each listener
+//   drawing its own, so that they do not move in unison.
+#include <cstdint>
+#include <optional>
+#include <random>
+#include <vector>
+
+#include "fw/behavior/perception.hpp"
+
+namespace fw::behavior {
+
+/// What a face knows of the conversation this tick.
+struct ConversationScene {
+  double now_s = 0;
+  /// This face's own utterance, if it speaks: when it began and how long it lasts.
+  std::optional<double> my_start_s, my_length_s;
+  /// The speaker this face listens to (the one who began last), if any
+  /// other face speaks, and when that utterance began.
+  std::optional<FaceId> speaker;
+  double speaker_start_s = 0;
+};
+
+/// What conversation asks of the eyes: a face, or a look away from it.
+struct ConversationLook {
+  std::optional<FaceId> attend;  ///< none: look away from `away_from`
+  std::optional<FaceId> away_from;
+  /// Where a look away goes, from `away_from`'s direction: 10-25 degrees
+  /// to one side and 10-20 down, below the ring of faces (speakers look
+  /// away mostly downward; a look away is a short shift, not a search).
+  YawPitch away_offset{};
+};
+
+class ConversationGaze {
+ public:
+  // Listener: glance at the speaker, look away (log-normal, medians).
+  static constexpr double kListenGlanceS = 2.8, kListenAwayS = 0.9;
+  // Speaker: glance at a listener, look away.
+  static constexpr double kSpeakGlanceS = 2.4, kSpeakAwayS = 3.2;
+  static constexpr double kSpread = 0.4;  ///< sigma of log(duration)
+  /// A long utterance, and how often it begins with the speaker looking away.
+  static constexpr double kLongUtteranceS = 2.0, kStartAwayShare = 0.8;
+  /// The last part of an utterance, in which the speaker looks at a listener.
+  static constexpr double kEndLookS = 1.0;
+  /// Reaction to a new speaker: mean and sigma of the latency, and its bounds.
+  static constexpr double kLatencyS = 0.2, kLatencySpreadS = 0.05, kLatencyMinS = 0.12, kLatencyMaxS = 0.4;
+  /// After the speaker stops, a listener keeps looking a moment, then the
+  /// routines take over again.
+  static constexpr double kAfterS = 0.8;
+  /// A listener whose glance would end while the speaker looks at it holds
+  /// on up to this much longer.
+  static constexpr double kHoldMutualS = 2.5;
+
+  explicit ConversationGaze(std::uint64_t seed);
+
+  /// Decides this tick; none when conversation asks nothing (nobody
+  /// speaks, or not yet: the latency), so that the routines decide.
+  std::optional<ConversationLook> step(const ConversationScene& scene, const std::vector<PerceivedFace>& seen);
+
+ private:
+  double lognormal(double median);
+  void draw_away_offset();
+  std::optional<ConversationLook> listen(const ConversationScene& scene, const std::vector<PerceivedFace>& seen);
+  std::optional<ConversationLook> speak(const ConversationScene& scene, const std::vector<PerceivedFace>& seen);
+  std::optional<FaceId> next_listener(const std::vector<PerceivedFace>& seen);
+
+  std::mt19937_64 rng_;
+  // Listening: to whom, since when it reacts, and the glance/away phase.
+  std::optional<FaceId> listening_to_;
+  double listen_start_s_ = -1, react_at_s_ = 0;
+  bool looking_ = true;
+  double phase_until_s_ = 0;
+  double after_until_s_ = -1;  ///< the speaker stopped: keep looking until then
+  // Speaking: the utterance this face is in, its phase, its listener.
+  double speech_start_s_ = -1;
+  bool speaker_looking_ = false;
+  double speaker_phase_until_s_ = 0;
+  std::optional<FaceId> listener_;
+  YawPitch away_offset_{};
+};
+
+}  // namespace fw::behavior
