@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "fw/speech/phoneme_timing.hpp"
+#include "generic_mouth.hpp"
 
 namespace fw::speech {
 namespace {
@@ -100,6 +101,27 @@ TEST(Visemes, TargetsUseOnlyTheJawAndLips) {
   EXPECT_GT(viseme_targets(Viseme::open_vowel)[jaw], viseme_targets(Viseme::mid_vowel)[jaw]);
   EXPECT_GT(viseme_targets(Viseme::mid_vowel)[jaw], viseme_targets(Viseme::close_front_vowel)[jaw]);
   EXPECT_EQ(viseme_targets(Viseme::bilabial)[jaw], 0.0f);
+}
+
+TEST(Visemes, TheyPartTheFacesLipsAsMuchAsASpeakers) {
+  // The inner-lip gap on the generic face, against a speaker's at a
+  // conversational level: 10-15 mm for /a/, half that for mid vowels, a
+  // few millimetres for close vowels and the tongue consonants, none for
+  // p b m.
+  const test::GenericMouth mouth;
+  auto gap = [&](Viseme v) { return mouth.gap_mm(viseme_targets(v)); };
+  EXPECT_NEAR(gap(Viseme::open_vowel), 11.0f, 1.5f);
+  EXPECT_NEAR(gap(Viseme::mid_vowel), 8.0f, 1.0f);
+  EXPECT_NEAR(gap(Viseme::open_rounded_vowel), 7.0f, 1.0f);
+  EXPECT_NEAR(gap(Viseme::close_front_vowel), 6.0f, 1.0f);
+  EXPECT_NEAR(gap(Viseme::close_rounded_vowel), 6.0f, 1.0f);
+  for (Viseme v : {Viseme::dental, Viseme::alveolar, Viseme::postalveolar, Viseme::velar, Viseme::rhotic,
+                   Viseme::labiodental}) {
+    EXPECT_GE(gap(v), gap(Viseme::rest)) << int(v);
+    EXPECT_LE(gap(v), 3.5f) << int(v);
+  }
+  EXPECT_EQ(gap(Viseme::bilabial), 0.0f);
+  EXPECT_NEAR(gap(Viseme::rest), 1.0f, 0.1f);
 }
 
 }  // namespace

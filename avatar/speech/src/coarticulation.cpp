@@ -17,16 +17,17 @@ constexpr std::array<Dominance, kVisemeCount> kDominance = {{
     {1.0f, 30.0f, 30.0f},   // velar
     {0.3f, 30.0f, 30.0f},   // glottal: the neighbouring vowel's mouth
     {1.0f, 30.0f, 30.0f},   // rhotic
-    {1.0f, 25.0f, 30.0f},   // open vowel
+    {1.0f, 25.0f, 30.0f},   // open vowel: vowels carry across consonants (Ohman, JASA 39, 1966)
     {1.0f, 25.0f, 30.0f},   // mid vowel
     {1.0f, 25.0f, 30.0f},   // close front vowel
     {1.0f, 25.0f, 30.0f},   // open rounded vowel
     {1.0f, 25.0f, 30.0f},   // close rounded vowel
 }};
 
-// exp(-rate * |tau|) is below 1e-6 of alpha beyond 14 / rate; the slowest
-// rate is 10 per second.
-constexpr double kReachS = 1.4;
+// Beyond this a dominance is below kNegligible: alpha exp(-rate |tau|) with
+// alpha at most 8 and rates of at least 15 per second is below 1e-6 past
+// ln(8e6) / 15 = 1.06 s.
+constexpr double kReachS = 1.1;
 constexpr float kNegligible = 1e-6f;
 
 }  // namespace

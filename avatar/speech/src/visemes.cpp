@@ -78,13 +78,15 @@ std::optional<PhonemeVisemes> visemes_of(std::string_view espeak_phoneme) {
 
 const AuTargets& viseme_targets(Viseme viseme) {
   // Intensities chosen on the generic face (avatar/model's action-unit
-  // basis, where 0.1 unit is 6.3 mm): an open vowel parts the inner lips by
-  // about 12 mm, a mid vowel 8, a close one 4-5, near what a speaker's lips
-  // open at a conversational level (10-15 mm for /a/). AU 25 and 26 open the
-  // mouth; 24 presses the lips (bilabial closure: below the face's resting
-  // slit); 23 and a little 17 narrow and push them forward (rounding: the
-  // face has no AU 18 pucker); 20 and lightly 12 spread them for /i/;
-  // 10 raises the upper lip off the teeth for f and v, 17 lifts the lower.
+  // basis, where 0.1 unit is 6.3 mm) for the gap between the inner lips: an
+  // open vowel parts them by 11 mm, a mid vowel 8, a close one 6, the
+  // tongue consonants 2-3 (the jaw nearly closed), near a speaker's lips at
+  // a conversational level (10-15 mm for /a/); the resting face has a 1 mm
+  // slit. AU 25 and 26 open the mouth; 24 presses the lips (bilabial
+  // closure: they overlap); 23 and a little 17 narrow and push them forward
+  // (rounding: the face has no AU 18 pucker); 20 and lightly 12 spread them
+  // for /i/; 10 raises the upper lip off the teeth for f and v, 17 lifts the
+  // lower one to them. tests/speech measures these gaps on the face.
   static const std::array<AuTargets, kVisemeCount> table = {
       targets({}),                                                  // rest
       targets({{24, 0.8f}, {23, 0.2f}}),                            // bilabial

@@ -12,17 +12,20 @@
 // dominance-weighted mean of the targets:
 //   F(t) = sum_s D_s(t) T_s / sum_s D_s(t).
 // We use c = 1 and one dominance per segment for all the lip and jaw units
-// (the paper has one per articulator parameter). Strongly dominant
-// segments resist their neighbours: the bilabials and labiodentals, whose
-// lips must really close or touch the teeth, have alpha 6-8 against the
-// vowels' 1, so at their centre they reach about 90 % of their target
-// between two open vowels; the tongue consonants (t, k, n, s) leave the
-// lips to the vowels around them (alpha 0.5-0.8), as the paper's lip
-// rounding anticipated across consonants does; h (alpha 0.15) shows the
-// vowel it precedes. The rates (10-45 per second: a dominance halves in
-// 15-70 ms) are ours, chosen so that a syllable's vowel opens the mouth
-// and its consonants close it at ordinary speech rates; the paper fits them
-// per speaker and segment.
+// (the paper has one per articulator parameter). The constants are ours
+// (src/coarticulation.cpp; the paper fits them per speaker and segment),
+// chosen on espeak-ng's speech so that each syllable's vowel opens the
+// mouth and its consonants close it again:
+// - bilabials and labiodentals, whose lips must really close or touch the
+//   teeth, are strongly dominant (alpha 8 and 6 against the vowels' 1), so
+//   between two open vowels they reach about 90 % of their target at their
+//   centre; their dominance falls fast (rates 50 before, 80 per second after:
+//   the lips part quickly at the release);
+// - the other consonants weigh about as much as the vowels (alpha 1-1.5,
+//   rate 30 per second), so the jaw rises for them while they take on
+//   part of the neighbouring vowels' rounding; h (alpha 0.3) shows the vowel it precedes;
+// - vowels spread further (rates 25 and 30 per second: a dominance halves
+//   in about 25 ms), and a pause (alpha 1.5, rate 15) brings the mouth to rest.
 #include <span>
 
 #include "fw/speech/au_targets.hpp"
