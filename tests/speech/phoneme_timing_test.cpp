@@ -53,6 +53,7 @@ TEST(PhonemeTiming, OtherLanguagesHaveTheirOwnPhonemes) {
   EXPECT_TRUE(has_ts);
   EXPECT_FALSE(timed("Bonjour tout le monde.", "fr").phonemes.empty());
   EXPECT_FALSE(timed("Buenos días.", "es").phonemes.empty());
+  EXPECT_FALSE(timed("Hello.", "EN-US").phonemes.empty());  // as the voice files spell it, or not
 }
 
 TEST(PhonemeTiming, AnUnknownLanguageIsRefusedByName) {
