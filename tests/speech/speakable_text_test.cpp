@@ -21,8 +21,10 @@ TEST(SpeakableText, EmojiAndWordlessPunctuationBecomeSpaces) {
   const std::string family = "\xF0\x9F\x91\xA8\xE2\x80\x8D\xF0\x9F\x91\xA9\xEF\xB8\x8F";
   EXPECT_EQ(speakable_text(family), std::string(family.size(), ' '));
   EXPECT_FALSE(has_speech(speakable_text(family + " :) \xF0\x9F\x91\x8D\xF0\x9F\x8F\xBD")));
-  // An emoji inside a word leaves the word.
-  EXPECT_EQ(speakable_text("cool\xF0\x9F\x98\x8E!"), "cool    !");
+  // An emoji inside a word leaves the word; what it parted from the word
+  // goes if it is no word itself.
+  EXPECT_EQ(speakable_text("cool\xF0\x9F\x98\x8E!"), "cool     ");
+  EXPECT_EQ(speakable_text("a\xF0\x9F\x98\x8E" "b"), "a    b");
 }
 
 TEST(SpeakableText, InvalidBytesAndControlsBecomeSpaces) {

@@ -36,17 +36,23 @@ void for_each_code_point(std::string_view text, Visit&& visit) {
 
 std::string speakable_text(std::string_view text) {
   std::string out(text);
-  // Words first, on the line as written: runs of non-space code points; one
-  // without a letter or a digit (":-)", "!!!", "^_^", an emoji alone) is
-  // punctuation espeak-ng would name aloud. "cool😎!" keeps its "!".
+  // What is never read, first: so that a second pass finds nothing more to
+  // remove, a word is judged as espeak-ng would see it.
+  for_each_code_point(text, [&](UChar32 c, std::size_t begin, std::size_t end) {
+    if (c < 0 || u_iscntrl(c) || is_emoji(c)) blank(out, begin, end);
+  });
+  // Then words: runs of non-space code points; one without a letter or a
+  // digit (":-)", "!!!", "^_^", the "!" an emoji parted from its word) is
+  // punctuation espeak-ng would name aloud.
   std::size_t word_begin = 0;
   bool in_word = false, word_has_alnum = false;
   auto end_word = [&](std::size_t at) {
     if (in_word && !word_has_alnum) blank(out, word_begin, at);
     in_word = false;
   };
-  for_each_code_point(text, [&](UChar32 c, std::size_t begin, std::size_t) {
-    if (c >= 0 && u_isUWhiteSpace(c)) {
+  const std::string blanked = out;
+  for_each_code_point(blanked, [&](UChar32 c, std::size_t begin, std::size_t) {
+    if (u_isUWhiteSpace(c)) {
       end_word(begin);
       return;
     }
@@ -55,13 +61,9 @@ std::string speakable_text(std::string_view text) {
       word_has_alnum = false;
       word_begin = begin;
     }
-    if (c >= 0 && u_isalnum(c)) word_has_alnum = true;
+    if (u_isalnum(c)) word_has_alnum = true;
   });
   end_word(out.size());
-  // Then what is never read, inside words too.
-  for_each_code_point(text, [&](UChar32 c, std::size_t begin, std::size_t end) {
-    if (c < 0 || u_iscntrl(c) || is_emoji(c)) blank(out, begin, end);
-  });
   return out;
 }
 

@@ -13,7 +13,8 @@ namespace fw::speech {
 
 /// `text` (UTF-8, possibly invalid) with emoji, emoji modifiers and joiners,
 /// invalid bytes and control characters, and words without a letter or a
-/// digit, each byte replaced by a space. Always `text.size()` bytes long.
+/// digit (once the emoji are gone), each byte replaced by a space. Always
+/// `text.size()` bytes long, and its own speakable text.
 std::string speakable_text(std::string_view text);
 
 /// Whether `text` has anything to say: a letter or a digit.
