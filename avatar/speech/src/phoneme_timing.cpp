@@ -36,10 +36,24 @@ void fade_out(std::vector<std::int16_t>& samples, int sample_rate_hz) {
   }
 }
 
+// Cuts speech longer than `max_ms` at cut_point(): the audio (faded out),
+// and how much of the text was said. Returns where, in milliseconds.
+int cut(SynthesisEvents& events, int max_ms, std::string_view speakable, PhonemeTiming& out) {
+  const Cut at = cut_point(events, max_ms);
+  out.truncated = true;
+  out.spoken_bytes = byte_offset_of_code_point(speakable, at.first_unspoken_code_point);
+  // Up to the end of the last spoken word, not the spaces after it.
+  while (out.spoken_bytes > 0 && speakable[out.spoken_bytes - 1] == ' ') --out.spoken_bytes;
+  const auto samples = static_cast<std::size_t>(static_cast<double>(at.at_ms) * events.sample_rate_hz / 1000.0);
+  events.samples.resize(std::min(events.samples.size(), samples));
+  fade_out(events.samples, events.sample_rate_hz);
+  return at.at_ms;
+}
+
 // Speakers open their mouths before the first sound (the mouth moves 100-300 ms
 // ahead of the voice: Chandrasekaran et al., "The natural statistics of
-// audiovisual speech", PLoS Comput. Biol. 5(7), 2009); espeak-ng's audio
-// starts with it. A short silence in front leaves a face that time.
+// audiovisual speech", PLoS Comput. Biol. 5(7), 2009), where espeak-ng's
+// audio starts with the sound. A short silence in front leaves a face that time.
 void lead_with_silence(PhonemeTiming& timing) {
   const auto lead_samples = static_cast<std::size_t>(PhonemeTiming::kLeadS * timing.sample_rate_hz);
   const double lead_s = static_cast<double>(lead_samples) / timing.sample_rate_hz;
@@ -72,27 +86,15 @@ bool time_phonemes(std::string_view text, std::string_view language, const Speec
   if (to_say.empty() || !says_something) return true;
 
   const int max_ms = static_cast<int>(limits.max_seconds * 1000.0);
-  const int audio_ms = static_cast<int>(1000.0 * static_cast<double>(events.samples.size()) / events.sample_rate_hz);
+  const auto audio_ms = static_cast<int>(1000.0 * static_cast<double>(events.samples.size()) / events.sample_rate_hz);
   int end_ms = audio_ms;
   out.spoken_bytes = text.size();
-  if (audio_ms > max_ms) {
-    const Cut cut = cut_point(events, max_ms);
-    end_ms = cut.at_ms;
-    out.truncated = true;
-    out.spoken_bytes = byte_offset_of_code_point(speakable, cut.first_unspoken_code_point);
-    // Up to the end of the last spoken word, not the spaces after it.
-    while (out.spoken_bytes > 0 && speakable[out.spoken_bytes - 1] == ' ') --out.spoken_bytes;
-    events.samples.resize(std::min(events.samples.size(),
-                                   static_cast<std::size_t>(static_cast<double>(end_ms) * events.sample_rate_hz / 1000.0)));
-    fade_out(events.samples, events.sample_rate_hz);
-  }
-  // The samples end within a millisecond of end_ms: the last phoneme ends with them.
+  if (audio_ms > max_ms) end_ms = cut(events, max_ms, speakable, out);
   const double end_s = static_cast<double>(events.samples.size()) / events.sample_rate_hz;
-  for (std::size_t i = 0; i < events.phonemes.size(); ++i) {
-    const auto& p = events.phonemes[i];
-    if (p.start_ms >= end_ms) break;
-    const int next_ms = i + 1 < events.phonemes.size() ? events.phonemes[i + 1].start_ms : end_ms;
-    out.phonemes.push_back({p.name, std::min(p.start_ms / 1000.0, end_s), std::min(next_ms / 1000.0, end_s)});
+  for (std::size_t i = 0; i < events.phonemes.size() && events.phonemes[i].start_ms < end_ms; ++i) {
+    const double next_s = i + 1 < events.phonemes.size() ? events.phonemes[i + 1].start_ms / 1000.0 : end_s;
+    out.phonemes.push_back(
+        {events.phonemes[i].name, std::min(events.phonemes[i].start_ms / 1000.0, end_s), std::min(next_s, end_s)});
   }
   out.samples = std::move(events.samples);
   lead_with_silence(out);
