@@ -106,7 +106,9 @@ TEST(SpeechTrack, TheMouthOpensWithTheVoice) {
   const test::GenericMouth mouth;
   for (const auto& [language, text] : kSentences) {
     const Spoken s = speak(text, language);
-    const std::vector<double> gaps = mouth_opening(mouth, s.track);
+    // Over the audio only, not the track's closing time after it.
+    std::vector<double> gaps = mouth_opening(mouth, s.track);
+    gaps.resize(std::min(gaps.size(), static_cast<std::size_t>(s.timing.length_s() * kSampleHz)));
     const double r = correlation(gaps, loudness(s.timing, gaps.size()));
     std::printf("r = %.3f  [%s] %s\n", r, language, text);
     EXPECT_GE(r, 0.5) << text;
@@ -116,13 +118,44 @@ TEST(SpeechTrack, TheMouthOpensWithTheVoice) {
 TEST(SpeechTrack, TheMouthIsStillBeforeAndAfterTheLine) {
   const Spoken s = speak("Nice to meet you.");
   ASSERT_FALSE(s.track.empty());
-  EXPECT_NEAR(s.track.length_s(), s.timing.length_s(), SpeechTrack::kKeyStepS);
+  EXPECT_NEAR(s.track.length_s(), s.timing.length_s() + SpeechTrack::kCloseS, SpeechTrack::kKeyStepS);
   for (double t : {-1.0, -0.01, 0.0, s.track.length_s(), s.track.length_s() + 0.01, 100.0})
     EXPECT_EQ(s.track.at(t), AuTargets{}) << t;
+  // No jump from rest into the track or out of it: the lead and the
+  // closing time bring the mouth to rest before the zeros at either end.
+  const auto& keys = s.track.keys;
+  for (std::size_t c = 0; c < codec::kAuChannelCount; ++c) {
+    EXPECT_LT(keys[1][c], 0.01f) << c;
+    EXPECT_LT(keys[keys.size() - 2][c], 0.01f) << c;
+  }
   const test::GenericMouth mouth;
   double widest = 0;
   for (double g : mouth_opening(mouth, s.track)) widest = std::max(widest, g);
   EXPECT_GT(widest, 6.0);  // it did speak: a vowel opens 6 mm and more
+}
+
+TEST(SpeechTrack, DiphthongsGlideAndSilentPhonemesHaveNoSegment) {
+  const std::vector<TimedPhoneme> phonemes = {
+      {"_", 0.0, 0.1}, {"b", 0.1, 0.16}, {"aI", 0.16, 0.36}, {"(en)", 0.36, 0.36}, {"t", 0.36, 0.36}};
+  const std::vector<VisemeSegment> segments = viseme_segments(phonemes);
+  ASSERT_EQ(segments.size(), 4u);
+  EXPECT_EQ(segments[0].viseme, Viseme::rest);
+  EXPECT_EQ(segments[1].viseme, Viseme::bilabial);
+  EXPECT_EQ(segments[2].viseme, Viseme::open_vowel);
+  EXPECT_EQ(segments[3].viseme, Viseme::close_front_vowel);
+  EXPECT_DOUBLE_EQ(segments[2].end_s, 0.26);
+  EXPECT_DOUBLE_EQ(segments[3].start_s, 0.26);
+}
+
+TEST(SpeechTrack, KeysAreInterpolated) {
+  SpeechTrack track;
+  AuTargets open{};
+  open[5] = 1.0f;
+  track.keys = {AuTargets{}, open, AuTargets{}};
+  EXPECT_DOUBLE_EQ(track.length_s(), 2 * SpeechTrack::kKeyStepS);
+  EXPECT_FLOAT_EQ(track.at(0.25 * SpeechTrack::kKeyStepS)[5], 0.25f);
+  EXPECT_FLOAT_EQ(track.at(SpeechTrack::kKeyStepS)[5], 1.0f);
+  EXPECT_FLOAT_EQ(track.at(1.5 * SpeechTrack::kKeyStepS)[5], 0.5f);
 }
 
 TEST(SpeechTrack, BilabialsCloseTheLipsAtTheirTime) {
@@ -168,7 +201,7 @@ TEST(SpeechTrack, ALongLineSaysItWasCut) {
   const std::string text = "One two three four five six seven eight nine ten eleven twelve.";
   const Spoken s = speak(text, "en", limits);
   EXPECT_TRUE(s.track.truncated);
-  EXPECT_LE(s.track.length_s(), PhonemeTiming::kLeadS + 2.0 + SpeechTrack::kKeyStepS);
+  EXPECT_LE(s.track.length_s(), PhonemeTiming::kLeadS + 2.0 + SpeechTrack::kCloseS + SpeechTrack::kKeyStepS);
   EXPECT_GT(s.track.spoken_bytes, 0u);
   EXPECT_LT(s.track.spoken_bytes, text.size());
   EXPECT_EQ(s.track.at(s.track.length_s()), AuTargets{});

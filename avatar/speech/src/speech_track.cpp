@@ -44,15 +44,15 @@ SpeechTrack speech_track(const PhonemeTiming& timing) {
   if (timing.phonemes.empty()) return track;
   std::vector<VisemeSegment> segments = viseme_segments(timing.phonemes);
   // Silence around the line: the mouth comes from rest and returns to it.
-  const double end_s = timing.length_s();
+  const double end_s = timing.length_s() + SpeechTrack::kCloseS;
   segments.insert(segments.begin(), {Viseme::rest, -0.2, segments.empty() ? 0.0 : segments.front().start_s});
   segments.push_back({Viseme::rest, segments.back().end_s, end_s + 0.2});
   const auto key_count = static_cast<std::size_t>(std::ceil(end_s / SpeechTrack::kKeyStepS)) + 1;
   track.keys.reserve(key_count);
   for (std::size_t k = 0; k < key_count; ++k)
     track.keys.push_back(coarticulate(segments, static_cast<double>(k) * SpeechTrack::kKeyStepS));
-  // The ends are exactly still; the blend is nearly so there (a pause
-  // dominates), so the step is below what a face shows.
+  // The ends are exactly still; the blend is all but still there (the
+  // lead and kCloseS of rest), so no step shows.
   track.keys.front() = AuTargets{};
   track.keys.back() = AuTargets{};
   return track;

@@ -20,6 +20,10 @@ struct SpeechTrack {
   /// makes at its default rate is about 3 ms, a syllable 200 ms; 10 ms keeps
   /// a closure's 50-100 ms well sampled at 100 keys a second.
   static constexpr double kKeyStepS = 0.01;
+  /// The track goes on this long after the audio: the mouth closes after
+  /// the last sound, as the lead lets it open before the first
+  /// (PhonemeTiming::kLeadS).
+  static constexpr double kCloseS = 0.15;
 
   std::vector<AuTargets> keys;  ///< at 0, kKeyStepS, ...; the first and last are all zeros
   bool truncated = false;       ///< the line was cut at SpeechLimits::max_seconds
@@ -37,7 +41,8 @@ struct SpeechTrack {
 /// in two halves (its glide), phonemes without a mouth shape left out.
 std::vector<VisemeSegment> viseme_segments(std::span<const TimedPhoneme> phonemes);
 
-/// The track of `timing`, as long as its audio (empty if it has no phonemes).
+/// The track of `timing`, kCloseS longer than its audio (empty if it has
+/// no phonemes).
 SpeechTrack speech_track(const PhonemeTiming& timing);
 
 }  // namespace fw::speech
