@@ -31,14 +31,15 @@ constexpr double kSampleHz = 100;
 
 std::vector<double> mouth_opening(const test::GenericMouth& mouth, const SpeechTrack& track) {
   std::vector<double> gaps;
-  for (double t = 0; t <= track.length_s(); t += 1 / kSampleHz) gaps.push_back(mouth.gap_mm(track.at(t)));
+  const auto count = static_cast<std::size_t>(track.length_s() * kSampleHz) + 1;
+  for (std::size_t k = 0; k < count; ++k) gaps.push_back(mouth.gap_mm(track.at(static_cast<double>(k) / kSampleHz)));
   return gaps;
 }
 
 // The loudness of the audio: RMS over a 50 ms window around each of the
-// same instants (Chandrasekaran et al., "The natural statistics of
-// audiovisual speech", PLoS Comput. Biol. 5(7), 2009, compare mouth area
-// with the wide-band envelope the same way).
+// same instants. (Chandrasekaran et al., "The natural statistics of
+// audiovisual speech", PLoS Comput. Biol. 5(7), 2009, found the area of
+// real speakers' mouths to follow the speech envelope at 2-7 Hz.)
 std::vector<double> loudness(const PhonemeTiming& timing, std::size_t count) {
   std::vector<double> rms;
   const auto half = static_cast<std::ptrdiff_t>(0.025 * timing.sample_rate_hz);
