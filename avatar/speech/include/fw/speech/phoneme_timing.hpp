@@ -6,8 +6,12 @@
 // minute), so mouth and voice agree by construction.
 //
 // Limits: at most kMaxTextBytes of text (a chat line, codec::kMaxChatBytes);
-// at most max_seconds of speech (after the lead): a longer line is cut where the last word
-// that starts in time begins, and says how much of the text was spoken.
+// at most max_seconds of speech (after the lead): a longer line is cut
+// where the last word that starts in time begins, and says how much of the
+// text was spoken.
+// espeak-ng's output depends slightly on what it said before (its wave
+// generator keeps state between syntheses): a line said again has the same
+// phonemes, their times within a few milliseconds, and other samples.
 // Thread-safe: any thread may call; espeak-ng runs one synthesis at a time
 // (src/espeak_engine.hpp), so concurrent calls wait for each other.
 #include <cstddef>

@@ -16,9 +16,9 @@
 namespace fw::speech {
 
 struct SpeechTrack {
-  /// Keys are this far apart: a tenth of the shortest phoneme espeak-ng
-  /// makes at its default rate is about 3 ms, a syllable 200 ms; 10 ms keeps
-  /// a closure's 50-100 ms well sampled at 100 keys a second.
+  /// Keys are this far apart: espeak-ng's phonemes last 20 ms and more at
+  /// its default rate, a lip closure 50-100 ms; 100 keys a second follow
+  /// both, and a face drawn at up to 60 frames a second sees no steps.
   static constexpr double kKeyStepS = 0.01;
   /// The track goes on this long after the audio: the mouth closes after
   /// the last sound, as the lead lets it open before the first
