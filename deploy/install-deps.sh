@@ -30,6 +30,7 @@ build_packages=(
   libgtest-dev libgmock-dev googletest
   libhiredis-dev                              # Redis client (cluster mode)
   libcgal-dev                                 # constrained triangulation in the face generator
+  libespeak-ng-dev                            # speech timing and audio for lip-sync (avatar/speech)
   emscripten                                  # avatar/model to WebAssembly for the browser (web/engine)
 )
 # What the test suites run besides ctest.
