@@ -314,8 +314,11 @@ void OwnedRoom::tick(std::chrono::steady_clock::time_point due) {
   services_.metrics.kinematic_faces.fetch_add(static_cast<std::int64_t>(kinematic) -
                                               static_cast<std::int64_t>(counts_.kinematic_faces));
   counts_.kinematic_faces = kinematic;
-  for (const RoomEvent& event : simulation_.take_events())
+  for (const RoomEvent& event : simulation_.take_events()) {
     spdlog::debug("room {}: tick {} avatar {}: {}", name_, event.tick, event.avatar, event.what);
+    const auto writer = members_.find(event.avatar);
+    if (!event.tell.empty() && writer != members_.end()) notice(writer->second, event.tell);
+  }
   faces_.clear();
   for (const auto& [id, member] : members_) faces_.push_back({id, &simulation_.face(id)});
   const std::uint64_t now_us = monotonic_us();

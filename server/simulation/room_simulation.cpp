@@ -9,7 +9,9 @@
 #include <utility>
 
 #include "fw/behavior/behavior_room.hpp"
+#include "fw/behavior/articulation.hpp"
 #include "fw/behavior/plateau_motion.hpp"
+#include "spoken_lines.hpp"
 #include "fw/model/generic_face.hpp"
 #include "fw/physics/face_simulation.hpp"
 #include "fw/physics/tissue_model.hpp"
@@ -145,6 +147,7 @@ struct RoomSimulation::State {
   behavior::BehaviorRoom room;
   std::map<AvatarId, Avatar> avatars;
   std::vector<RoomEvent> events;
+  SpokenLines lines{options.speech_language};
   double physics_share = 1;
   std::size_t physics_faces = 0, kinematic_faces = 0;
 
@@ -207,6 +210,7 @@ bool RoomSimulation::has_free_id() const {
 void RoomSimulation::remove_avatar(AvatarId avatar) {
   if (state_->avatars.erase(avatar) == 0) return;
   state_->room.remove(avatar);
+  state_->lines.forget(avatar);
   state_->ids.give_back(avatar, state_->room.tick_index());
   state_->collect_events();
 }
@@ -229,12 +233,35 @@ std::string RoomSimulation::command(AvatarId avatar, const AvatarCommand& comman
 }
 
 void RoomSimulation::chat(AvatarId avatar, std::string_view text) {
-  state_->room.chat(avatar, text);
-  state_->collect_events();
+  State& s = *state_;
+  if (!s.room.contains(avatar)) return;
+  if (!s.lines.add(avatar, std::string(text)))
+    s.events.push_back({s.room.tick_index(), avatar,
+                        "speech: a line not said (" + std::to_string(SpokenLines::kMaxWaiting) + " lines wait)",
+                        "your line is shown but not said: " + std::to_string(SpokenLines::kMaxWaiting) +
+                            " of your lines are still waiting to be said"});
+  say_waiting_lines();
+}
+
+void RoomSimulation::say_waiting_lines() {
+  State& s = *state_;
+  for (const AvatarId avatar : s.lines.with_lines()) {
+    std::optional<LineToSay> line = s.lines.next(avatar, s.room.speaking(avatar));
+    if (!line) continue;
+    s.room.chat(avatar, line->text, line->mouth ? &*line->mouth : nullptr);
+    if (!line->note.empty())
+      s.events.push_back({s.room.tick_index(), avatar, "speech: " + line->note, "your line was " + line->note});
+  }
+  s.collect_events();
+}
+
+bool RoomSimulation::speaking(AvatarId avatar) const {
+  return state_->room.contains(avatar) && state_->room.speaking(avatar);
 }
 
 void RoomSimulation::tick() {
   State& s = *state_;
+  say_waiting_lines();
   s.room.tick();
   s.physics_faces = s.kinematic_faces = 0;
   const double now_s = s.room.tick_index() * s.room.dt_s();
@@ -248,6 +275,10 @@ void RoomSimulation::tick() {
       a.face.au = step_action_units(a.physics, a.face.au, s.room.dt_s(), seed, s.options, allowed);
       ++(allowed ? s.physics_faces : s.kinematic_faces);
     }
+    // Speech moves jaw and lips at syllable rate (4-5 a second); the
+    // tissue's response would smooth that to half, so the track's
+    // articulation is shown as it is (articulation.hpp).
+    if (const auto& mouth = s.room.articulation(id)) behavior::articulate(a.face.au, *mouth);
     // After the physics face, so that its tissue may rest on a held
     // expression while the expression still wavers (plateau_motion.hpp).
     behavior::add_plateau_motion(a.face.au, now_s, static_cast<std::uint32_t>(seed));

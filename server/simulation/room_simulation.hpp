@@ -37,6 +37,9 @@ struct RoomSimulationOptions {
   /// left (avatar_ids.hpp). Tests shrink both.
   AvatarId id_space = codec::kMaxAvatarIdValue + 1;
   std::uint64_t id_quiet_ticks = 60 * 30;
+  /// The language chat lines are said in (an espeak-ng language: en, de,
+  /// fr, es, ...; spoken_lines.hpp).
+  std::string speech_language = "en";
 };
 
 struct AvatarSetup {
@@ -72,6 +75,9 @@ struct RoomEvent {
   std::uint32_t tick = 0;
   AvatarId avatar = 0;
   std::string what;         ///< e.g. "behavior attentive -> mimicking", "blush start", "chat"
+  /// What the avatar's person should be told (a line said in part, or not
+  /// said), "" for events that are only logged.
+  std::string tell = {};
 };
 
 class RoomSimulation {
@@ -100,9 +106,12 @@ class RoomSimulation {
   /// unknown emotion, a target not in the room, a FACS sentence that does
   /// not parse: the message says what was wrong).
   std::string command(AvatarId avatar, const AvatarCommand& command);
-  /// A chat line from `avatar`: the others look at the writer, the text
-  /// nudges the writer's emotion.
+  /// A chat line from `avatar`: the avatar says it (with lip sync, after
+  /// the lines it is still saying; spoken_lines.hpp), the others' gaze
+  /// follows the speaker, the text nudges the writer's emotion.
   void chat(AvatarId avatar, std::string_view text);
+  /// Whether the avatar is saying a line now.
+  bool speaking(AvatarId avatar) const;
 
   /// Level of detail under load: the share (0 .. 1) of the room's faces that
   /// run the physics face from the next tick on. The others follow their
@@ -121,6 +130,11 @@ class RoomSimulation {
 
   /// Advances every avatar by one tick.
   void tick();
+ private:
+  /// Starts the waiting line of every avatar that is not speaking.
+  void say_waiting_lines();
+
+ public:
   std::uint32_t tick_index() const;
 
   /// The avatar's face after the last tick.

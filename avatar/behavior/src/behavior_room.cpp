@@ -9,6 +9,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "fw/behavior/articulation.hpp"
 #include "fw/behavior/blinking.hpp"
 #include "fw/behavior/chat_appraisal.hpp"
 #include "fw/behavior/emotion_state.hpp"
@@ -86,6 +87,7 @@ struct BehaviorRoom::Impl {
     double speech_length_s = 0;
     std::optional<AuTrack> speech_mouth;
     std::optional<FaceId> attending;  ///< whom the eyes are sent to this tick (routine or conversation)
+    std::optional<AuTargets> articulation;  ///< the speech track's jaw and lips this tick
     FaceSnapshot snapshot;
     codec::FaceParams params;
     Routine shown_routine = Routine::visual_search;
@@ -200,6 +202,7 @@ struct BehaviorRoom::Impl {
   // wins there over the expression; the rest of the face keeps it); it
   // ends on time.
   void speak_tick(Face& f, codec::FaceParams& p) {
+    f.articulation.reset();
     if (!f.speech_start_s) return;
     const double t = now_s() - *f.speech_start_s;
     if (t >= f.speech_length_s) {
@@ -208,12 +211,8 @@ struct BehaviorRoom::Impl {
       return;
     }
     if (!f.speech_mouth) return;
-    const AuTargets mouth = f.speech_mouth->at(t);
-    for (const int au : {10, 17, 20, 23, 24, 25, 26, 27})
-      for (const codec::AuSide side : {codec::AuSide::both, codec::AuSide::left, codec::AuSide::right}) {
-        const int c = codec::au_channel(au, side);
-        if (c >= 0) p.au[static_cast<std::size_t>(c)] = mouth[static_cast<std::size_t>(c)];
-      }
+    f.articulation = f.speech_mouth->at(t);
+    articulate(p.au, *f.articulation);
   }
 
   void step_face(Face& f, const std::vector<FaceSnapshot>& room) {
@@ -453,6 +452,7 @@ void BehaviorRoom::chat(FaceId face, std::string_view text, const AuTrack* mouth
 }
 
 bool BehaviorRoom::speaking(FaceId face) const { return impl_->get(face).speech_start_s.has_value(); }
+const std::optional<AuTargets>& BehaviorRoom::articulation(FaceId face) const { return impl_->get(face).articulation; }
 
 void BehaviorRoom::tick() { impl_->step(); }
 std::uint32_t BehaviorRoom::tick_index() const { return impl_->tick; }

@@ -323,5 +323,22 @@ TEST(RoomLimits, ChatOverTheRoomsRateIsDroppedAndItsWriterTold) {
   EXPECT_EQ(server.context().abuse.count(Abuse::chat_rate), 1u);
 }
 
+// A line longer than a face may take to say (15 s) is said in part, and
+// its writer told; lines written faster than they are said wait, a few at
+// most, and the writer of one more is told it is shown but not said.
+TEST(RoomLimits, SpeechLongerThanTheLimitIsSaidInPartAndItsWriterTold) {
+  InMemoryServer server(InMemoryServer::test_config());
+  auto a = join_from(server, "10.0.0.1", "talk", "A");
+  auto reader = join_from(server, "10.0.0.2", "talk", "Reader");
+  ASSERT_TRUE(a->welcome && reader->welcome);
+  std::string long_line;
+  while (long_line.size() + 12 < codec::kMaxChatBytes) long_line += "one more word ";
+  a->send(codec::Chat{0, long_line});
+  EXPECT_TRUE(a->read_until([&] { return told(*a, "your line was said in part"); }));
+  for (int i = 0; i < 4; ++i) a->send(codec::Chat{0, "and then"});
+  EXPECT_TRUE(a->read_until([&] { return told(*a, "your line is shown but not said"); }));
+  EXPECT_TRUE(reader->read_until([&] { return lines_from_people(*reader) >= 5; })) << "every line is shown";
+}
+
 }  // namespace
 }  // namespace fw::server

@@ -81,6 +81,77 @@ TEST(RoomSimulationPlateau, AHeldExpressionLivesWhileTheTissueRests) {
   EXPECT_GT(lo, 0.4f);
 }
 
+// Lips apart plus jaw drop: how open the mouth is.
+float mouth_open(const codec::FaceParams& face) { return face.au_intensity(25) + face.au_intensity(26); }
+
+// A chat line is said: the writer's mouth opens and closes several times a
+// second while it speaks, and is still before and after.
+TEST(RoomSimulationSpeech, AChatLineIsSpokenWithTheMouth) {
+  RoomSimulation room = room_with_physics();
+  const AvatarId a = room.add_avatar({"a", true});
+  room.add_avatar({"b", true});
+  for (int i = 0; i < 60; ++i) room.tick();
+  float before = 0;
+  for (int i = 0; i < 30; ++i) {
+    room.tick();
+    before = std::max(before, mouth_open(room.face(a)));
+  }
+  room.chat(a, "hello there, it is a lovely morning for a walk by the river");
+  std::vector<float> opening;
+  for (int i = 0; i < 30 * 8 && (opening.empty() || room.speaking(a)); ++i) {
+    room.tick();
+    if (room.speaking(a)) opening.push_back(mouth_open(room.face(a)));
+  }
+  ASSERT_GT(opening.size(), 60u) << "the line was not said for long";
+  // Open-close cycles: each opening that rises at least 0.1 above the
+  // closing before it and falls 0.1 after (a syllable seen at 30 Hz).
+  const float lo = *std::min_element(opening.begin(), opening.end());
+  const float hi = *std::max_element(opening.begin(), opening.end());
+  int cycles = 0;
+  bool rising = true;
+  float low = opening.front(), high = opening.front();
+  for (const float v : opening) {
+    if (rising) {
+      low = std::min(low, v);
+      if (v >= low + 0.1f) rising = false, high = v;
+    } else {
+      high = std::max(high, v);
+      if (v <= high - 0.1f) rising = true, low = v, ++cycles;
+    }
+  }
+  const double per_second = cycles / (static_cast<double>(opening.size()) / 30.0);
+  std::printf("mouth before %.2f; while speaking %.2f .. %.2f, %.1f openings a second over %.1f s\n", before, lo, hi,
+              per_second, opening.size() / 30.0);
+  EXPECT_LT(before, 0.05f) << "the mouth moved before the line";
+  EXPECT_GT(hi - lo, 0.3f) << "the mouth hardly moves";
+  EXPECT_GE(per_second, 3.5);  // syllables: about 4-5 a second (Greenberg 1999)
+  EXPECT_LE(per_second, 6.0);
+  for (int i = 0; i < 15; ++i) room.tick();
+  EXPECT_LT(mouth_open(room.face(a)), 0.05f) << "the mouth is still after the line";
+}
+
+// Lines written while the avatar speaks wait their turn, a few at most.
+TEST(RoomSimulationSpeech, LinesWaitTheirTurnAndTooManyAreNotSaid) {
+  RoomSimulation room = room_with_physics();
+  const AvatarId a = room.add_avatar({"a", true});
+  room.tick();
+  room.chat(a, "the first line, said at once");
+  for (int i = 0; i < 4; ++i) room.chat(a, "and one more");
+  bool refused = false;
+  for (const RoomEvent& e : room.take_events()) refused |= e.what.find("speech: a line not said") != std::string::npos;
+  EXPECT_TRUE(refused) << "five lines at once: the fifth waits behind three";
+  // The four said lines follow one another.
+  int starts = 0;
+  bool was = false;
+  for (int i = 0; i < 30 * 20; ++i) {
+    room.tick();
+    const bool now = room.speaking(a);
+    starts += now && !was ? 1 : 0;
+    was = now;
+  }
+  EXPECT_EQ(starts, 4);
+}
+
 TEST(RoomSimulationLevelOfDetail, ASharePicksTheSameFacesEveryTick) {
   RoomSimulation room = room_with_physics();
   for (int i = 0; i < 16; ++i) room.add_avatar({face_name(i), false});

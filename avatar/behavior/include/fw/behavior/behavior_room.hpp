@@ -75,6 +75,10 @@ class BehaviorRoom {
   void chat(FaceId face, std::string_view text, const AuTrack* mouth = nullptr);
   /// Whether the face is saying a line now.
   bool speaking(FaceId face) const;
+  /// The jaw and lip targets its speech track sets this tick (articulation.hpp),
+  /// if it says a line with one: a physics face downstream, too slow for
+  /// syllables, shows these channels as they are.
+  const std::optional<AuTargets>& articulation(FaceId face) const;
 
   void tick();
   std::uint32_t tick_index() const;
