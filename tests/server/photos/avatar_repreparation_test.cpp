@@ -114,7 +114,7 @@ TEST_F(Repreparation, AnOutOfDateAvatarIsServedAgainUnderTheSameIdAfterARestart)
 
   const auto current = file_bytes(file(asset, ".fwa"));
   EXPECT_NE(current, older);
-  EXPECT_EQ(server.core().store()->lookup(asset).avatar->full, current);
+  EXPECT_EQ(*server.core().store().lookup(asset).avatar->full, current);
   model::AvatarPackage package;
   std::string error;
   EXPECT_TRUE(model::parse_avatar_package(current, package, error)) << error;
