@@ -26,7 +26,8 @@ void ClusterNode::share_limits() {
   news.spent = services_.addresses.take_spending();
   // Past a burst, spending says nothing more (a bucket holds no more), and
   // the others refuse a report of more than an address can spend.
-  for (auto& spent : news.spent) spent.tokens = std::min(spent.tokens, rate_of(services_.config.abuse, spent.rate).burst);
+  for (auto& spent : news.spent)
+    spent.tokens = std::min(spent.tokens, rate_of(services_.config.abuse, spent.rate).burst);
   news.connections = services_.addresses.connection_counts();
   news.tokens = services_.tokens.held_here();
   commands_->command({"PUBLISH", keys::kLimitsChannel, encode_limits(news)});

@@ -127,7 +127,8 @@ std::optional<Response> respond_to_api(const ApiServices& services, const Reques
       services.abuse.note(Abuse::unauthorized, "metrics", "a request for /metrics without the operator's secret");
       return refusal;
     }
-    Response response = plain(http::status::ok, request, services.metrics.render(services.physics_lod.share(), services.abuse));
+    Response response =
+        plain(http::status::ok, request, services.metrics.render(services.physics_lod.share(), services.abuse));
     response.set(http::field::content_type, "text/plain; version=0.0.4; charset=utf-8");
     return response;
   }

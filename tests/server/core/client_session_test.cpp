@@ -132,7 +132,8 @@ TEST(ClientSession, RoomNamesAreLettersDigitsAndFewMarks) {
       << "a hello past the codec's limit is malformed";
   auto longest = server.join(std::string(codec::kMaxRoomNameBytes, 'a'), "Ann");
   EXPECT_TRUE(longest->welcome);
-  EXPECT_EQ(server.core().metrics().rejected_joins.load(), 1u) << "the bad name; the malformed hello is a protocol error";
+  EXPECT_EQ(server.core().metrics().rejected_joins.load(), 1u)
+      << "the bad name; the malformed hello is a protocol error";
 }
 
 TEST(ClientSession, DisplayNamesAreOneTo32Bytes) {
