@@ -59,24 +59,25 @@ std::string text(const bridge::Bytes& bytes) { return {bytes.begin(), bytes.end(
 
 }  // namespace
 
-ClusterNode::ClusterNode(ServerContext& context, net::any_io_executor executor, RedisAddress address, std::string node)
-    : context_(context), strand_(net::make_strand(executor)), address_(address), node_(std::move(node)),
+ClusterNode::ClusterNode(const ClusterServices& services, net::any_io_executor executor, RedisAddress address,
+                         std::string node)
+    : services_(services), strand_(net::make_strand(executor)), address_(address), node_(std::move(node)),
       timer_(strand_), avatars_(address, std::chrono::milliseconds(2000)) {
   adopt_server_key();
   keep_avatars_in_redis();
 }
 
 ClusterNode::~ClusterNode() {
-  context_.store->set_replica({});
-  context_.tokens.on_news({});
+  services_.store.set_replica({});
+  services_.tokens.on_news({});
 }
 
 void ClusterNode::start() {
-  context_.room_bus->attach(*this);
-  context_.cluster_up = false;
-  context_.addresses->share_spending();
+  services_.room_bus.attach(*this);
+  services_.state.cluster_up = false;
+  services_.addresses.share_spending();
   // A token taken or let go here is news for every node at once.
-  context_.tokens.on_news([this](const TokenNews& news) {
+  services_.tokens.on_news([this](const TokenNews& news) {
     LimitsNews limits;
     limits.node = node_;
     limits.tokens = {news};
@@ -106,7 +107,7 @@ void ClusterNode::stop() {
   // The I/O loop may already be stopped: then nothing can be said to Redis.
   if (done->get_future().wait_for(std::chrono::seconds(2)) != std::future_status::ready)
     spdlog::warn("left the cluster without telling Redis: others take this node's rooms over when its leases end");
-  context_.room_bus->detach();
+  services_.room_bus.detach();
 }
 
 void ClusterNode::connect() {
@@ -154,10 +155,10 @@ void ClusterNode::on_connected() {
   renew_leases();
   for (const auto& name : owned_) {
     commands_->command({"SADD", keys::kRooms, name});
-    if (auto room = context_.rooms->find(name)) room->keep_all();
+    if (auto room = services_.rooms.find(name)) room->keep_all();
   }
   for (const auto& name : bridged_)
-    if (auto room = context_.rooms->find(name)) room->ask_roster();
+    if (auto room = services_.rooms.find(name)) room->ask_roster();
   reshare_avatars();
   watch_nodes();
   for (const auto& room : std::exchange(unplaced_, {})) place(room);
@@ -167,7 +168,7 @@ void ClusterNode::lost(const std::string& why) {
   if (!up_) return;
   up_ = false;
   waiting_since_ = Clock::now();
-  context_.cluster_up = false;
+  services_.state.cluster_up = false;
   spdlog::warn("cluster: lost Redis ({}); serving the rooms owned here, not ready until it is back", why);
   if (commands_) commands_->close();
   if (subscriber_) subscriber_->close();
@@ -204,8 +205,8 @@ void ClusterNode::report_alive() {
   // Load: people connected here, and faces simulated here (a tenth each).
   std::size_t avatars = 0;
   for (const auto& name : owned_)
-    if (auto room = context_.rooms->find(name)) avatars += room->avatar_count();
-  const double load = static_cast<double>(context_.sessions->count()) + 0.1 * static_cast<double>(avatars);
+    if (auto room = services_.rooms.find(name)) avatars += room->avatar_count();
+  const double load = static_cast<double>(services_.sessions.count()) + 0.1 * static_cast<double>(avatars);
   commands_->command({"SET", keys::node_alive(node_), std::to_string(load), "PX", std::to_string(kAliveMs)});
   commands_->command({"SADD", keys::kNodes, node_});
 }
@@ -220,7 +221,7 @@ void ClusterNode::renew_leases() {
           spdlog::warn("cluster: room {} has another owner now; bridging to it", name);
           owned_.erase(name);
           if (subscriber_) subscriber_->unsubscribe({keys::room_up(name)});
-          if (auto room = context_.rooms->find(name)) room->step_down();
+          if (auto room = services_.rooms.find(name)) room->step_down();
           bridge(name);
         });
   }
@@ -255,17 +256,17 @@ void ClusterNode::watch_nodes() {
       for (const auto& back : live)
         if (!live_.count(back))
           for (const auto& name : owned_)
-            if (auto room = context_.rooms->find(name)) room->node_back(back);
+            if (auto room = services_.rooms.find(name)) room->node_back(back);
       for (const auto& gone : live_)
         if (!live.count(gone)) {
           spdlog::warn("cluster: node {} stopped answering; its people in rooms owned here are away", gone);
-          context_.addresses->set_remote_connections(gone, {});
+          services_.addresses.set_remote_connections(gone, {});
           for (const auto& name : owned_)
-            if (auto room = context_.rooms->find(name)) room->node_gone(gone);
+            if (auto room = services_.rooms.find(name)) room->node_gone(gone);
         }
       live_ = std::move(live);
       // Knowing the others and their loads, it can place rooms: ready.
-      if (up_) context_.cluster_up = true;
+      if (up_) services_.state.cluster_up = true;
     });
   });
 }
@@ -334,7 +335,7 @@ void ClusterNode::acquire(const std::string& room) {
                      [this, room](const RedisReply* taken) {
                        if (!taken || !taken->is_status("OK") || !commands_) {
                          acquiring_.erase(room);
-                         if (taken && context_.rooms->find(room)) bridge(room);  // another node was first
+                         if (taken && services_.rooms.find(room)) bridge(room);  // another node was first
                          return;
                        }
                        commands_->command({"HGETALL", keys::room_members(room)}, [this, room](const RedisReply* members) {
@@ -350,8 +351,8 @@ void ClusterNode::acquire(const std::string& room) {
 
 void ClusterNode::restore(const std::string& name, const RedisReply& members, const RedisReply& state) {
   acquiring_.erase(name);
-  const bool lobby = name == "lobby" && context_.config.demo_room;
-  auto room = context_.rooms->find_or_create(name, lobby, /*place=*/false);
+  const bool lobby = name == "lobby" && services_.config.demo_room;
+  auto room = services_.rooms.find_or_create(name, lobby, /*place=*/false);
   if (!room) return;
   owned_.insert(name);
   if (bridged_.erase(name) && subscriber_) subscriber_->unsubscribe({keys::room_down(name)});
@@ -377,7 +378,7 @@ void ClusterNode::restore(const std::string& name, const RedisReply& members, co
   const bool fresh = records.empty();
   spdlog::info("cluster: node {} owns room {} now ({} members restored)", node_, name, records.size());
   room->take_over(std::move(records), std::move(moods), live_);
-  if (lobby && fresh) seat_lobby_residents(context_, room);
+  if (lobby && fresh) seat_lobby_residents(services_.lobby_faces, room);
 }
 
 void ClusterNode::own_unplaced() {
@@ -385,12 +386,12 @@ void ClusterNode::own_unplaced() {
 }
 
 void ClusterNode::own_locally(const std::string& name) {
-  auto room = context_.rooms->find(name);
+  auto room = services_.rooms.find(name);
   if (!room || owned_.count(name)) return;
   owned_.insert(name);
   spdlog::warn("cluster: Redis is away; room {} is owned here for now", name);
   room->take_over({}, std::nullopt, {});
-  if (name == "lobby" && context_.config.demo_room) seat_lobby_residents(context_, room);
+  if (name == "lobby" && services_.config.demo_room) seat_lobby_residents(services_.lobby_faces, room);
 }
 
 void ClusterNode::bridge(const std::string& room) {
@@ -412,7 +413,7 @@ void ClusterNode::on_message(std::string_view channel_view, std::string_view pay
   }
   const auto target = keys::parse_room_channel(channel);
   if (target.room.empty()) return;
-  if (!context_.rooms->find(target.room)) return;
+  if (!services_.rooms.find(target.room)) return;
   if (target.down) {
     auto message = bridge::decode_down(data, payload.size());
     if (!message) return refuse("unknown", "room " + target.room + ": a down message this build cannot read");
@@ -476,7 +477,7 @@ void ClusterNode::room_closed(const std::string& room) {
       return;
     }
     // A node that drains leaves its rooms' records for whoever takes them over.
-    if (context_.draining.load() || !owned_.erase(room)) return;
+    if (services_.state.draining.load() || !owned_.erase(room)) return;
     if (!up_ || !commands_) return;
     subscriber_->unsubscribe({keys::room_up(room)});
     commands_->command({"DEL", keys::room_members(room), keys::room_state(room), keys::room_chat(room)});

@@ -34,7 +34,7 @@
 #include "redis_blocking.hpp"
 #include "redis_connection.hpp"
 #include "room_bus.hpp"
-#include "server_context.hpp"
+#include "cluster_services.hpp"
 
 namespace fw::server {
 
@@ -42,10 +42,11 @@ class ClusterNode : public RoomBus {
  public:
   /// `executor`: the node's I/O loop. Takes the cluster's server key (or
   /// gives it this node's) before it returns, when Redis answers in time.
-  ClusterNode(ServerContext& context, boost::asio::any_io_executor executor, RedisAddress address, std::string node);
+  ClusterNode(const ClusterServices& services, boost::asio::any_io_executor executor, RedisAddress address,
+              std::string node);
   ~ClusterNode() override;
 
-  /// Connects and starts the heartbeat; the rooms' bus (context.room_bus)
+  /// Connects and starts the heartbeat; the rooms' bus (services.room_bus)
   /// forwards here from now on until stop().
   void start();
   /// Gives up this node's rooms (their leases go, so others take them over
@@ -113,7 +114,7 @@ class ClusterNode : public RoomBus {
   /// Another node deleted the avatar `payload` names: this node drops its copy.
   void forget_deleted_avatar(std::string_view payload);
 
-  ServerContext& context_;
+  const ClusterServices services_;
   boost::asio::strand<boost::asio::any_io_executor> strand_;
   RedisAddress address_;
   std::string node_;

@@ -26,7 +26,7 @@ std::vector<std::string> expiry_of(const ServerConfig& config, const std::string
 void ClusterNode::keep_avatars_in_redis() {
   // Blocking calls, from the threads that store and look up avatars (never
   // the I/O loop): an upload is answered once its avatar is in Redis.
-  context_.store->set_replica(AvatarReplica{
+  services_.store.set_replica(AvatarReplica{
       .share =
           [this](const std::string& asset, std::span<const std::uint8_t> package, std::span<const std::uint8_t> photo) {
             const auto reply = avatars_.command({"HSET", keys::avatar(asset), "package",
@@ -34,7 +34,7 @@ void ClusterNode::keep_avatars_in_redis() {
                                                  std::string(photo.begin(), photo.end())});
             if (reply && !reply->is_error()) {
               avatars_.command({"SADD", keys::kAvatars, asset});
-              avatars_.command(expiry_of(context_.config, asset));
+              avatars_.command(expiry_of(services_.config, asset));
             } else {
               spdlog::warn("avatar {} is kept on this node only until Redis is back", asset);
             }
@@ -49,7 +49,7 @@ void ClusterNode::keep_avatars_in_redis() {
             spdlog::info("avatar {} fetched from the cluster", asset);
             return true;
           },
-      .touch = [this](const std::string& asset) { avatars_.command(expiry_of(context_.config, asset)); },
+      .touch = [this](const std::string& asset) { avatars_.command(expiry_of(services_.config, asset)); },
       .remove =
           [this](const std::string& asset) {
             // The mark first: a node that misses the message finds it when it comes back.
@@ -66,13 +66,13 @@ void ClusterNode::keep_avatars_in_redis() {
 
 void ClusterNode::adopt_server_key() {
   // Avatar keys must open a face on every node: the first node's key is the cluster's.
-  if (!avatars_.command({"SET", keys::kServerKey, context_.server_key, "NX"})) {
+  if (!avatars_.command({"SET", keys::kServerKey, services_.server_key, "NX"})) {
     spdlog::warn("Redis at {} does not answer: this node signs avatar keys with its own key until it does",
                  to_string(address_));
     return;
   }
   const auto key = avatars_.command({"GET", keys::kServerKey});
-  if (key && key->type == RedisReply::Type::string && !key->text.empty()) context_.server_key = key->text;
+  if (key && key->type == RedisReply::Type::string && !key->text.empty()) services_.server_key = key->text;
 }
 
 void ClusterNode::forget_deleted_avatar(std::string_view payload) {
@@ -81,32 +81,32 @@ void ClusterNode::forget_deleted_avatar(std::string_view payload) {
   // On a worker: files are removed, and rooms told, off the node's strand.
   // The node that deleted it hears its own message too: by then it has
   // nothing left to drop.
-  net::post(*context_.workers, [this, asset] {
-    context_.store->forget(asset);
-    replace_deleted_avatar_in_rooms(context_, asset);
+  net::post(services_.workers, [this, asset] {
+    services_.store.forget(asset);
+    replace_deleted_avatar_in_rooms(services_.rooms, asset);
   });
 }
 
 void ClusterNode::reshare_avatars() {
   // On a worker: the blocking connection may wait for Redis.
-  net::post(*context_.workers, [this] {
+  net::post(services_.workers, [this] {
     std::size_t shared = 0;
-    for (const std::string& asset : context_.store->stored_assets()) {
+    for (const std::string& asset : services_.store.stored_assets()) {
       // Deleted on another node while this one could not hear it.
       const auto deleted = avatars_.command({"SISMEMBER", keys::kDeletedAvatars, asset});
       if (deleted && deleted->integer == 1) {
-        context_.store->forget(asset);
-        replace_deleted_avatar_in_rooms(context_, asset);
+        services_.store.forget(asset);
+        replace_deleted_avatar_in_rooms(services_.rooms, asset);
         continue;
       }
       const auto known = avatars_.command({"SISMEMBER", keys::kAvatars, asset});
       if (!known || known->integer == 1) continue;
       std::vector<std::uint8_t> package, photo;
-      if (!context_.store->read_files(asset, package, photo)) continue;
+      if (!services_.store.read_files(asset, package, photo)) continue;
       avatars_.command({"HSET", keys::avatar(asset), "package", std::string(package.begin(), package.end()), "photo",
                         std::string(photo.begin(), photo.end())});
       avatars_.command({"SADD", keys::kAvatars, asset});
-      avatars_.command(expiry_of(context_.config, asset));
+      avatars_.command(expiry_of(services_.config, asset));
       ++shared;
     }
     if (shared) spdlog::info("cluster: shared {} avatar(s) Redis did not have", shared);

@@ -28,14 +28,14 @@ constexpr auto kLeaseReread = std::chrono::milliseconds(100);
 }  // namespace
 
 void ClusterNode::refuse(std::string_view sender, std::string_view why) {
-  context_.abuse.note(Abuse::cluster_message, "node " + printable(sender, cluster_check::kMaxNodeNameBytes), why);
+  services_.abuse.note(Abuse::cluster_message, "node " + printable(sender, cluster_check::kMaxNodeNameBytes), why);
 }
 
 void ClusterNode::on_down(const std::string& room, bridge::Down message) {
   if (message.owner == node_) return;  // its own news, from before it took the room
   if (auto why = cluster_check::refusal_of(message)) return refuse(message.owner, "room " + room + ": " + *why);
   auto deliver = [this, room](bridge::Down& news) {
-    if (auto target = context_.rooms->find(room)) target->on_down(std::move(news));
+    if (auto target = services_.rooms.find(room)) target->on_down(std::move(news));
   };
   const auto held = held_down_.find(room);
   const auto lease = leases_.find(room);
@@ -74,7 +74,7 @@ void ClusterNode::on_down(const std::string& room, bridge::Down message) {
     // A new owner, whose first news (its roster) may have been refused
     // before its lease was read: its roster is asked for again.
     if (from_holder && known && before != lease.holder)
-      if (auto target = context_.rooms->find(room)) target->ask_roster();
+      if (auto target = services_.rooms.find(room)) target->ask_roster();
   });
 }
 
@@ -83,7 +83,7 @@ void ClusterNode::on_up(const std::string& room, bridge::Up message) {
   if (auto why = cluster_check::refusal_of(message)) return refuse(message.node, "room " + room + ": " + *why);
   const std::string node = message.node;
   when_alive(node, "room " + room + ": a request", [this, room, message = std::move(message)]() mutable {
-    if (auto target = context_.rooms->find(room)) target->on_up(std::move(message));
+    if (auto target = services_.rooms.find(room)) target->on_up(std::move(message));
   });
 }
 
@@ -91,7 +91,7 @@ void ClusterNode::on_limits(std::string_view payload) {
   auto news = decode_limits(payload);
   if (!news) return refuse("unknown", "limits news this build cannot read");
   if (news->node == node_) return;
-  if (auto why = cluster_check::refusal_of(*news, context_.config.abuse)) return refuse(news->node, *why);
+  if (auto why = cluster_check::refusal_of(*news, services_.config.abuse)) return refuse(news->node, *why);
   const std::string node = news->node;
   when_alive(node, "limits news", [this, news = std::move(*news)]() mutable { apply_limits(std::move(news)); });
 }

@@ -23,26 +23,27 @@ void ClusterNode::share_limits() {
   LimitsNews news;
   news.node = node_;
   news.beat = true;
-  news.spent = context_.addresses->take_spending();
+  news.spent = services_.addresses.take_spending();
   // Past a burst, spending says nothing more (a bucket holds no more), and
   // the others refuse a report of more than an address can spend.
-  for (auto& spent : news.spent) spent.tokens = std::min(spent.tokens, rate_of(context_.config.abuse, spent.rate).burst);
-  news.connections = context_.addresses->connection_counts();
-  news.tokens = context_.tokens.held_here();
+  for (auto& spent : news.spent)
+    spent.tokens = std::min(spent.tokens, rate_of(services_.config.abuse, spent.rate).burst);
+  news.connections = services_.addresses.connection_counts();
+  news.tokens = services_.tokens.held_here();
   commands_->command({"PUBLISH", keys::kLimitsChannel, encode_limits(news)});
 }
 
 void ClusterNode::apply_limits(LimitsNews news) {
   const auto now = std::chrono::steady_clock::now();
   for (const auto& spent : news.spent)
-    context_.addresses->charge(spent.rate, spent.key, spent.tokens, now, kRemoteNewsLife);
+    services_.addresses.charge(spent.rate, spent.key, spent.tokens, now, kRemoteNewsLife);
   if (news.beat)
-    context_.addresses->set_remote_connections(news.node, std::move(news.connections), now, now + kRemoteNewsLife);
+    services_.addresses.set_remote_connections(news.node, std::move(news.connections), now, now + kRemoteNewsLife);
   // A hold lasts a few beats unless told again (a node that dies stops telling).
   for (const auto& token : news.tokens) {
-    context_.tokens.remote_news(news.node, token, now + kRemoteNewsLife);
+    services_.tokens.remote_news(news.node, token, now + kRemoteNewsLife);
     if (token.taken_from != node_) continue;
-    if (auto holder = context_.tokens.give_way(token.token_hash))
+    if (auto holder = services_.tokens.give_way(token.token_hash))
       holder->close(codec::CloseCode::unauthorized, "replaced by your newer connection");
   }
 }

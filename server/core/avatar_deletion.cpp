@@ -8,18 +8,18 @@
 
 namespace fw::server {
 
-AvatarDeletion delete_avatar(ServerContext& context, const std::string& asset, std::string_view key) {
-  const AvatarStatus status = context.store->lookup(asset).status;
+AvatarDeletion delete_avatar(const AvatarDeletionServices& services, const std::string& asset, std::string_view key) {
+  const AvatarStatus status = services.store.lookup(asset).status;
   if (status == AvatarStatus::unknown || status == AvatarStatus::deleted) return AvatarDeletion::unknown;
   // Their keys were handed to anyone who uploaded their bytes before ids
   // were random; and every server makes them again at its start anyway.
-  if (std::any_of(context.demo_avatars.begin(), context.demo_avatars.end(),
+  if (std::any_of(services.own_faces.begin(), services.own_faces.end(),
                   [&](const StoredAvatar& face) { return face.asset == asset; }))
     return AvatarDeletion::server_face;
   if (key.empty()) return AvatarDeletion::no_key;
-  if (!avatar_key_matches(context.server_key, asset, key)) return AvatarDeletion::wrong_key;
-  context.store->remove(asset);
-  replace_deleted_avatar_in_rooms(context, asset);
+  if (!avatar_key_matches(services.server_key, asset, key)) return AvatarDeletion::wrong_key;
+  services.store.remove(asset);
+  replace_deleted_avatar_in_rooms(services.rooms, asset);
   return AvatarDeletion::deleted;
 }
 
@@ -39,9 +39,8 @@ std::string deletion_message(AvatarDeletion outcome, const std::string& asset) {
   return {};
 }
 
-void replace_deleted_avatar_in_rooms(ServerContext& context, const std::string& asset) {
-  if (!context.rooms) return;
-  for (const auto& room : context.rooms->all()) room->replace_deleted_avatar(asset);
+void replace_deleted_avatar_in_rooms(RoomRegistry& rooms, const std::string& asset) {
+  for (const auto& room : rooms.all()) room->replace_deleted_avatar(asset);
 }
 
 }  // namespace fw::server

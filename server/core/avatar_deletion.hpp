@@ -5,10 +5,22 @@
 // node deleted one (cluster_node_avatars.cpp).
 #include <string>
 #include <string_view>
+#include <vector>
 
-#include "server_context.hpp"
+#include "avatar_store.hpp"
 
 namespace fw::server {
+
+class RoomRegistry;
+
+/// What deciding a deletion reads, and what it changes.
+struct AvatarDeletionServices {
+  AvatarStore& store;
+  RoomRegistry& rooms;  ///< whoever wears the avatar here is shown another face
+  /// The server's own faces: nobody's to delete; one replaces the avatar deleted.
+  const std::vector<StoredAvatar>& own_faces;
+  const std::string& server_key;  ///< signs avatar keys (server_keys.hpp)
+};
 
 enum class AvatarDeletion {
   deleted,      ///< gone here and from the cluster's copy; its wearers wear procedural faces
@@ -20,7 +32,7 @@ enum class AvatarDeletion {
 
 /// Deletes the avatar `asset` (package, preview, photo) if `key` is its
 /// key (server_keys.hpp: the one its upload answered).
-AvatarDeletion delete_avatar(ServerContext& context, const std::string& asset, std::string_view key);
+AvatarDeletion delete_avatar(const AvatarDeletionServices& services, const std::string& asset, std::string_view key);
 
 /// What the person who asked is told: what happened, or what was wrong
 /// and what to do.
@@ -28,6 +40,6 @@ std::string deletion_message(AvatarDeletion outcome, const std::string& asset);
 
 /// The avatar `asset` is gone (deleted here, or on another node): whoever
 /// wears it in this node's rooms is shown with a procedural face from now on.
-void replace_deleted_avatar_in_rooms(ServerContext& context, const std::string& asset);
+void replace_deleted_avatar_in_rooms(RoomRegistry& rooms, const std::string& asset);
 
 }  // namespace fw::server

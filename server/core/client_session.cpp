@@ -7,7 +7,7 @@
 #include <boost/asio/post.hpp>
 #include <spdlog/spdlog.h>
 
-#include "demo_room.hpp"
+#include "room_members.hpp"
 #include "display_name.hpp"
 #include "join_token.hpp"
 #include "monotonic_clock.hpp"
@@ -31,19 +31,19 @@ std::string wait_text(double seconds) { return std::to_string(static_cast<long>(
 
 }  // namespace
 
-ClientSession::ClientSession(ServerContext& context, net::any_io_executor executor, std::string peer)
-    : context_(context), executor_(std::move(executor)), peer_(std::move(peer)), clock_(executor_),
+ClientSession::ClientSession(const SessionServices& services, net::any_io_executor executor, std::string peer)
+    : services_(services), executor_(std::move(executor)), peer_(std::move(peer)), clock_(executor_),
       message_tokens_(limits::kMessageBurst), byte_tokens_(limits::kUpstreamByteBurst), chat_tokens_(limits::kChatBurst) {}
 
 ClientSession::~ClientSession() {
-  if (counted_) context_.metrics.connections.fetch_sub(1);
+  if (counted_) services_.metrics.connections.fetch_sub(1);
 }
 
 void ClientSession::start() {
   if (state_ == State::closed) return;  // it gave its place up before it started (give_up_place)
-  context_.metrics.connections.fetch_add(1);
+  services_.metrics.connections.fetch_add(1);
   counted_ = true;
-  context_.sessions->add(shared_from_this());
+  services_.sessions.add(shared_from_this());
   opened_ = last_heard_ = last_refill_ = last_sent_ = read_progress_ = std::chrono::steady_clock::now();
   on_clock();
   start_reading();
@@ -67,7 +67,7 @@ void ClientSession::do_deliver(SharedBytes message) {
     // Room frames and packages stop long before this; only a peer that
     // reads nothing while the room chats gets here. Its memory is bounded.
     queued_bytes_.fetch_sub(message->size(), std::memory_order_relaxed);
-    context_.abuse.note(Abuse::not_reading, peer_, std::to_string(queued_bytes_.load()) + " bytes waiting; closed");
+    services_.abuse.note(Abuse::not_reading, peer_, std::to_string(queued_bytes_.load()) + " bytes waiting; closed");
     state_ = State::closed;
     shutdown_transport(CloseCode::rate_limited, "the connection does not read what the server sends", true);
     return;
@@ -102,7 +102,7 @@ void ClientSession::on_write_done(bool ok, std::size_t bytes) {
     return;
   }
   bytes_written_.fetch_add(bytes, std::memory_order_relaxed);
-  context_.metrics.bytes_sent.fetch_add(bytes, std::memory_order_relaxed);
+  services_.metrics.bytes_sent.fetch_add(bytes, std::memory_order_relaxed);
   // A write completes when the kernel takes the bytes, not the peer: where
   // the socket can tell, the clock samples it instead (sample_read_progress).
   if (!socket_known_) read_progress_ = std::chrono::steady_clock::now();
@@ -150,7 +150,7 @@ void ClientSession::give_up_place() {
 
 void ClientSession::on_transport_error(CloseCode code, const std::string& reason) {
   if (code == CloseCode::protocol_error || code == CloseCode::message_too_large)
-    context_.metrics.protocol_errors.fetch_add(1);
+    services_.metrics.protocol_errors.fetch_add(1);
   do_close(code, reason);
 }
 
@@ -165,12 +165,12 @@ void ClientSession::on_transport_closed() {
     room_.reset();
   }
   clock_.cancel();
-  if (!held_token_.empty()) context_.tokens.release(held_token_, this);
-  context_.sessions->remove(this);
+  if (!held_token_.empty()) services_.tokens.release(held_token_, this);
+  services_.sessions.remove(this);
 }
 
 void ClientSession::protocol_error(CloseCode code, const std::string& what, Abuse kind) {
-  context_.abuse.note(kind, peer_, what);
+  services_.abuse.note(kind, peer_, what);
   quick_close_ = true;
   on_transport_error(code, what);
 }
@@ -184,14 +184,14 @@ bool ClientSession::take_token(double& tokens, double cost) {
 }
 
 void ClientSession::note_received(std::size_t bytes) {
-  context_.metrics.bytes_received.fetch_add(bytes, std::memory_order_relaxed);
+  services_.metrics.bytes_received.fetch_add(bytes, std::memory_order_relaxed);
 }
 
 bool ClientSession::note_control_frame(std::size_t bytes) {
   if (state_ == State::closing || state_ == State::closed) return false;
   refill_tokens(std::chrono::steady_clock::now());
   if (take_token(message_tokens_, 1) && take_token(byte_tokens_, static_cast<double>(bytes))) return true;
-  context_.abuse.note(Abuse::message_rate, peer_, "WebSocket pings over the message rate");
+  services_.abuse.note(Abuse::message_rate, peer_, "WebSocket pings over the message rate");
   quick_close_ = true;
   on_transport_error(CloseCode::rate_limited, "too many messages (WebSocket pings count); at most 50 a second");
   return false;
@@ -249,7 +249,7 @@ void ClientSession::handle_hello(std::span<const std::uint8_t> message) {
     return refuse(refusal->first, refusal->second,
                   refusal->first == CloseCode::unauthorized ? std::optional(Abuse::unauthorized) : std::nullopt);
   // Held by the address, so that leaving and joining again does not refill it.
-  if (const auto wait = context_.addresses->take(AddressRate::join, address_key(peer_)))
+  if (const auto wait = services_.addresses.take(AddressRate::join, address_key(peer_)))
     return refuse(CloseCode::rate_limited, "too many joins from your address; try again in " + wait_text(*wait),
                   Abuse::join_rate);
   if (hello.avatar.empty() && !hello.avatar_key.empty())
@@ -266,14 +266,14 @@ void ClientSession::handle_hello(std::span<const std::uint8_t> message) {
     case AvatarStatus::being_prepared: return refuse(CloseCode::avatar_being_prepared, avatar.message);
     default: return refuse(CloseCode::bad_request, avatar.message);
   }
-  if (!hello.avatar.empty() && !avatar_key_matches(context_.server_key, hello.avatar, hello.avatar_key))
+  if (!hello.avatar.empty() && !avatar_key_matches(services_.server_key, hello.avatar, hello.avatar_key))
     return refuse(CloseCode::unauthorized,
                   hello.avatar_key.empty()
                       ? "a face is worn with the key its upload answered (avatar_key); upload your photo to get yours"
                       : "that is not the key of this face: only who uploaded it may wear it",
                   Abuse::face_not_yours);
   if (!claim_token(hello)) return;
-  RoomOpening opening = context_.rooms->open_for(hello.room, address_key(peer_));
+  RoomOpening opening = services_.rooms.open_for(hello.room, address_key(peer_));
   if (!opening.room) return refuse(opening.code, opening.refusal, opening.abuse);
   room_ = std::move(opening.room);
   state_ = State::joining;
@@ -291,8 +291,8 @@ void ClientSession::handle_hello(std::span<const std::uint8_t> message) {
 }
 
 bool ClientSession::claim_token(const codec::Hello& hello) {
-  if (context_.config.auth_secret.empty()) return true;
-  const TokenClaim claim = context_.tokens.claim(hello.token, shared_from_this(), hello.resume, resume_key_);
+  if (services_.config.auth_secret.empty()) return true;
+  const TokenClaim claim = services_.tokens.claim(hello.token, shared_from_this(), hello.resume, resume_key_);
   if (!claim.granted) {
     refuse(CloseCode::unauthorized,
            "this invitation is in use by someone connected now; each person needs their own (ask the host)",
@@ -307,25 +307,25 @@ bool ClientSession::claim_token(const codec::Hello& hello) {
 }
 
 std::optional<std::pair<CloseCode, std::string>> ClientSession::refusal_of(const codec::Hello& hello) const {
-  if (context_.draining.load()) return {{CloseCode::shutting_down, "the server is shutting down; try again soon"}};
+  if (services_.draining.load()) return {{CloseCode::shutting_down, "the server is shutting down; try again soon"}};
   if (!is_valid_room_name(hello.room))
     return {{CloseCode::bad_request, "room names are 1 to 64 characters of A-Z a-z 0-9 _ - ."}};
-  if (context_.config.auth_secret.empty()) return std::nullopt;
+  if (services_.config.auth_secret.empty()) return std::nullopt;
   const auto now =
       std::chrono::duration_cast<std::chrono::seconds>(std::chrono::system_clock::now().time_since_epoch()).count();
-  std::string why = check_join_token(hello.token, context_.config.auth_secret, hello.room, hello.name, now);
+  std::string why = check_join_token(hello.token, services_.config.auth_secret, hello.room, hello.name, now);
   if (!why.empty()) return {{CloseCode::unauthorized, std::move(why)}};
   return std::nullopt;
 }
 
 AvatarLookup ClientSession::avatar_for(const codec::Hello& hello) const {
-  if (!hello.avatar.empty()) return context_.store->lookup(hello.avatar);
+  if (!hello.avatar.empty()) return services_.store.lookup(hello.avatar);
   // No package: a procedural face, chosen by the name so it stays the same.
-  return {AvatarStatus::found, procedural_face_for(context_, hello.name), {}};
+  return {AvatarStatus::found, procedural_face_for(services_.procedural_faces, hello.name), {}};
 }
 
 StreamSettings ClientSession::stream_settings_for(const codec::Hello& hello) const {
-  const auto& config = context_.config;
+  const auto& config = services_.config;
   StreamSettings stream;
   stream.tick_hz = config.tick_hz;
   stream.budget_bps = std::min(hello.max_bps == 0 ? config.default_client_bps : hello.max_bps, config.max_client_bps);
@@ -351,8 +351,8 @@ Abuse refusal_kind(CloseCode code) {
 }  // namespace
 
 void ClientSession::refuse(CloseCode code, const std::string& why, std::optional<Abuse> kind) {
-  context_.metrics.rejected_joins.fetch_add(1);
-  context_.abuse.note(kind.value_or(refusal_kind(code)), peer_, "hello refused: " + why);
+  services_.metrics.rejected_joins.fetch_add(1);
+  services_.abuse.note(kind.value_or(refusal_kind(code)), peer_, "hello refused: " + why);
   do_close(code, why);
 }
 
@@ -419,8 +419,8 @@ void ClientSession::handle_chat(std::span<const std::uint8_t> message) {
   // a line from the server, as a chat window shows a line that did not go.
   // The connection stays: whoever shares the address (a household, an
   // office behind one NAT) may be the one who chats, not this person.
-  if (const auto wait = context_.addresses->take(AddressRate::chat, address_key(peer_))) {
-    context_.abuse.note(Abuse::chat_rate, peer_, "chat over its address's rate");
+  if (const auto wait = services_.addresses.take(AddressRate::chat, address_key(peer_))) {
+    services_.abuse.note(Abuse::chat_rate, peer_, "chat over its address's rate");
     auto notice = encode_shared(codec::Chat{0, "not sent: too many chat lines from your address; try again in " +
                                                    wait_text(*wait)});
     queued_bytes_.fetch_add(notice->size(), std::memory_order_relaxed);  // as deliver() does
@@ -465,7 +465,7 @@ std::string seconds_text(std::chrono::milliseconds time) {
 std::chrono::milliseconds ClientSession::clock_period() const {
   // A quarter of the shortest time-out, so that each is kept within a
   // quarter of itself; never more often than every 10 ms.
-  const auto& t = context_.config.timeouts;
+  const auto& t = services_.config.timeouts;
   const auto shortest = std::min({t.handshake, t.idle, t.close, t.idle_person});
   return std::clamp<std::chrono::milliseconds>(shortest / 4, std::chrono::milliseconds(10), std::chrono::seconds(1));
 }
@@ -485,15 +485,15 @@ void ClientSession::sample_read_progress(std::chrono::steady_clock::time_point n
 
 void ClientSession::on_clock() {
   const auto now = std::chrono::steady_clock::now();
-  const auto& timeouts = context_.config.timeouts;
+  const auto& timeouts = services_.config.timeouts;
   if (state_ == State::joined) sample_read_progress(now);
   if (state_ == State::greeting && now - opened_ > timeouts.handshake) {
-    context_.metrics.rejected_joins.fetch_add(1);
-    context_.abuse.note(Abuse::handshake_timeout, peer_, "no hello within " + seconds_text(timeouts.handshake));
+    services_.metrics.rejected_joins.fetch_add(1);
+    services_.abuse.note(Abuse::handshake_timeout, peer_, "no hello within " + seconds_text(timeouts.handshake));
     quick_close_ = true;
     do_close(CloseCode::handshake_timeout, "no hello within " + seconds_text(timeouts.handshake) + " of connecting");
   } else if (state_ == State::joined && now - last_heard_ > timeouts.idle) {
-    context_.abuse.note(Abuse::idle_timeout, peer_, "nothing heard for " + seconds_text(timeouts.idle));
+    services_.abuse.note(Abuse::idle_timeout, peer_, "nothing heard for " + seconds_text(timeouts.idle));
     quick_close_ = true;
     do_close(CloseCode::idle_timeout,
              "nothing heard for " + seconds_text(timeouts.idle) + "; send a ping at least every " +
@@ -504,7 +504,7 @@ void ClientSession::on_clock() {
     // (in our queue, or in the socket past what the peer's buffer holds):
     // nobody is there, or someone holds a seat, and a room, for nothing. A
     // quiet viewer reads, so stays.
-    context_.abuse.note(Abuse::idle_person, peer_, "neither sent nor read; let go");
+    services_.abuse.note(Abuse::idle_person, peer_, "neither sent nor read; let go");
     quick_close_ = true;
     do_close(CloseCode::idle_timeout, "let go: you neither sent nor read anything for " +
                                           seconds_text(timeouts.idle_person) + "; the seat is for someone who is here");

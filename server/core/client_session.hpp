@@ -20,7 +20,7 @@
 #include "abuse_log.hpp"
 #include "room_connection.hpp"
 #include "server_keys.hpp"
-#include "server_context.hpp"
+#include "session_services.hpp"
 #include "socket_queue.hpp"
 #include "subscriber_stream.hpp"
 
@@ -30,7 +30,7 @@ class Room;
 
 class ClientSession : public RoomConnection, public std::enable_shared_from_this<ClientSession> {
  public:
-  ClientSession(ServerContext& context, boost::asio::any_io_executor executor, std::string peer);
+  ClientSession(const SessionServices& services, boost::asio::any_io_executor executor, std::string peer);
   ~ClientSession() override;
 
   void deliver(SharedBytes message) override;
@@ -80,7 +80,7 @@ class ClientSession : public RoomConnection, public std::enable_shared_from_this
   /// A refused join from a well-behaved client is closed the ordinary way.
   bool closing_quickly() const { return quick_close_; }
 
-  ServerContext& context_;
+  const SessionServices services_;  ///< a copy of the references: nothing a session holds dangles
   boost::asio::any_io_executor executor_;
   std::string peer_;
 

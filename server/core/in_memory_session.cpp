@@ -6,8 +6,8 @@ namespace fw::server {
 
 namespace net = boost::asio;
 
-InMemorySession::InMemorySession(ServerContext& context, net::any_io_executor executor, std::string peer)
-    : ClientSession(context, std::move(executor), std::move(peer)) {}
+InMemorySession::InMemorySession(const SessionServices& services, net::any_io_executor executor, std::string peer)
+    : ClientSession(services, std::move(executor), std::move(peer)) {}
 
 std::shared_ptr<InMemorySession> InMemorySession::self() {
   return std::static_pointer_cast<InMemorySession>(shared_from_this());

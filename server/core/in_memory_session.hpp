@@ -24,7 +24,8 @@ namespace fw::server {
 
 class InMemorySession : public ClientSession {
  public:
-  InMemorySession(ServerContext& context, boost::asio::any_io_executor executor, std::string peer = "in-memory");
+  InMemorySession(const SessionServices& services, boost::asio::any_io_executor executor,
+                  std::string peer = "in-memory");
 
   /// The peer is connected: the session starts its clock and takes messages.
   void run();

@@ -5,46 +5,49 @@
 
 namespace fw::server {
 
-ServerCore::ServerCore(const ServerConfig& config)
-    : workers_(static_cast<std::size_t>(config.workers)) {
-  context_.config = config;
-  addresses_ = std::make_unique<AddressLimits>(config.abuse);
-  context_.addresses = addresses_.get();
-  context_.physics_lod.set_enabled(config.physics && config.physics_lod);
-  context_.workers = &workers_;
-  context_.sessions = &sessions_;
-  context_.room_bus = &bus_;
+std::unique_ptr<ServerCore> ServerCore::open(const ServerConfig& config, std::string& error) {
+  auto metrics = std::make_unique<Metrics>();
+  auto store = std::make_unique<AvatarStore>(config.data, *metrics, error);
+  if (!error.empty()) {
+    error += " (choose another directory with --data DIR)";
+    return nullptr;
+  }
+  std::string server_key = load_or_create_server_key(config.data, error);
+  if (server_key.empty()) return nullptr;
+  auto demo_avatars = make_demo_avatars(config, *store, error);
+  if (!demo_avatars) return nullptr;
+  return std::unique_ptr<ServerCore>(
+      new ServerCore(config, std::move(metrics), std::move(store), std::move(server_key), std::move(*demo_avatars)));
 }
+
+ServerCore::ServerCore(const ServerConfig& config, std::unique_ptr<Metrics> metrics, std::unique_ptr<AvatarStore> store,
+                       std::string server_key, std::vector<StoredAvatar> demo_avatars)
+    : config_(config),
+      metrics_(std::move(metrics)),
+      physics_lod_(config_.physics && config_.physics_lod),
+      addresses_(config_.abuse),
+      store_(std::move(store)),
+      server_key_(std::move(server_key)),
+      demo_avatars_(std::move(demo_avatars)),
+      workers_(static_cast<std::size_t>(config_.workers)),
+      rooms_(RoomServices{config_, *metrics_, physics_lod_, abuse_, workers_, *store_, demo_avatars_, bus_,
+                          state_.draining},
+             addresses_),
+      session_services_{config_, *metrics_, abuse_,         tokens_,     addresses_,     *store_,
+                        rooms_,  sessions_, demo_avatars_, server_key_, state_.draining} {}
 
 ServerCore::~ServerCore() { stop(); }
 
-bool ServerCore::open(std::string& error) {
-  store_ = std::make_unique<AvatarStore>(context_.config.data, context_.metrics, error);
-  if (!error.empty()) {
-    error += " (choose another directory with --data DIR)";
-    return false;
-  }
-  context_.store = store_.get();
-  context_.server_key = load_or_create_server_key(context_.config.data, error);
-  if (context_.server_key.empty()) return false;
-  if (!make_demo_avatars(context_, error)) return false;
-  const RoomServices services{context_.config, context_.metrics, context_.physics_lod, context_.abuse, workers_,
-                              *store_, context_.demo_avatars, bus_, context_.draining};
-  rooms_ = std::make_unique<RoomRegistry>(services, *addresses_);
-  context_.rooms = rooms_.get();
-  return true;
-}
-
 void ServerCore::open_demo_room() {
-  if (!context_.config.demo_room) {
-    context_.ready = true;
+  if (!config_.demo_room) {
+    state_.ready = true;
     return;
   }
-  fw::server::open_demo_room(context_, [this] { context_.ready = true; });
+  fw::server::open_demo_room(rooms_, demo_avatars_, [this] { state_.ready = true; });
 }
 
 void ServerCore::start_draining() {
-  context_.draining = true;
+  state_.draining = true;
   sessions_.close_all();
 }
 
@@ -53,7 +56,7 @@ bool ServerCore::drained() const { return sessions_.count() == 0; }
 void ServerCore::stop() {
   if (stopped_) return;
   stopped_ = true;
-  if (rooms_) rooms_->close_all_rooms();
+  rooms_.close_all_rooms();
   // Closed rooms stop their timers, so the pool runs out of work.
   workers_.join();
 }

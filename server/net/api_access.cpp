@@ -47,12 +47,12 @@ std::string request_token(const Request& request) {
   return question == std::string_view::npos ? std::string() : query_value(target.substr(question + 1), "token");
 }
 
-std::optional<ApiAccess> api_access(ServerContext& context, const Request& request, Response& refusal) {
-  if (context.config.auth_secret.empty()) return ApiAccess{};
+std::optional<ApiAccess> api_access(const ServerConfig& config, const Request& request, Response& refusal) {
+  if (config.auth_secret.empty()) return ApiAccess{};
   const auto now =
       std::chrono::duration_cast<std::chrono::seconds>(std::chrono::system_clock::now().time_since_epoch()).count();
   std::string why;
-  auto claims = verify_join_token(request_token(request), context.config.auth_secret, now, why);
+  auto claims = verify_join_token(request_token(request), config.auth_secret, now, why);
   if (!claims) {
     refusal = unauthorized(request, why + " (send it as 'Authorization: Bearer TOKEN' or ?token=TOKEN)");
     return std::nullopt;
@@ -60,10 +60,10 @@ std::optional<ApiAccess> api_access(ServerContext& context, const Request& reque
   return ApiAccess{false, std::move(claims)};
 }
 
-bool operator_access(ServerContext& context, const Request& request, Response& refusal) {
-  const std::string& secret = context.config.metrics_secret;
+bool operator_access(const ServerConfig& config, const Request& request, Response& refusal) {
+  const std::string& secret = config.metrics_secret;
   if (secret.empty()) {
-    if (context.config.auth_secret.empty()) return true;
+    if (config.auth_secret.empty()) return true;
     refusal = error_response(http::status::forbidden, request.version(),
                              "metrics are closed on a server with --auth-secret; start it with --metrics-secret S "
                              "and send 'Authorization: Bearer S'");

@@ -10,7 +10,7 @@
 
 #include "http_responses.hpp"
 #include "join_token.hpp"
-#include "server_context.hpp"
+#include "server_config.hpp"
 
 namespace fw::server {
 
@@ -26,9 +26,11 @@ struct ApiAccess {
 
 /// The access `request` has to uploads and the room list, or the 401
 /// answer (in `refusal`) that says what is missing.
-std::optional<ApiAccess> api_access(ServerContext& context, const Request& request, Response& refusal);
+/// `config`: its auth secret.
+std::optional<ApiAccess> api_access(const ServerConfig& config, const Request& request, Response& refusal);
 
 /// Whether `request` may read /metrics; else `refusal` says why.
-bool operator_access(ServerContext& context, const Request& request, Response& refusal);
+/// `config`: its metrics and auth secrets.
+bool operator_access(const ServerConfig& config, const Request& request, Response& refusal);
 
 }  // namespace fw::server

@@ -45,19 +45,18 @@ ForwardingHeaders forwarding_headers(const http::fields& fields) {
 
 }  // namespace
 
-HttpSession::HttpSession(ServerContext& context, PhotoPreparation& photos, net::ip::tcp::socket&& socket,
-                         ConnectionTicket ticket)
-    : context_(context), photos_(photos), stream_(std::move(socket)),
+HttpSession::HttpSession(const HttpServices& services, net::ip::tcp::socket&& socket, ConnectionTicket ticket)
+    : services_(services), stream_(std::move(socket)),
       buffer_(limits::kMaxHeaderBytes + limits::kMaxBodyBytes), ticket_(std::move(ticket)),
       pace_timer_(stream_.get_executor()) {
   beast::error_code ec;
   socket_peer_ = stream_.socket().remote_endpoint(ec).address();
-  via_proxy_ = context_.config.trusted_proxies.contains(socket_peer_);
+  via_proxy_ = services_.config.trusted_proxies.contains(socket_peer_);
   peer_address_ = socket_peer_.to_string();
-  context_.metrics.http_connections.fetch_add(1);
+  services_.metrics.http_connections.fetch_add(1);
 }
 
-HttpSession::~HttpSession() { context_.metrics.http_connections.fetch_sub(1); }
+HttpSession::~HttpSession() { services_.metrics.http_connections.fetch_sub(1); }
 
 void HttpSession::run() {
   // When the port is full, a connection still waiting for a whole header
@@ -81,7 +80,7 @@ void HttpSession::do_read() {
   // The body's limit depends on the target: the header is read under the
   // larger one (Beast checks Content-Length while parsing it), on_header
   // then holds other requests to theirs.
-  parser_->body_limit(std::max<std::uint64_t>(limits::kMaxBodyBytes, context_.config.max_upload_bytes));
+  parser_->body_limit(std::max<std::uint64_t>(limits::kMaxBodyBytes, services_.config.max_upload_bytes));
   if (via_proxy_) {
     // A proxy's connection between requests is nobody's: the next request
     // may be another client's (a proxy reuses its connections to us).
@@ -116,7 +115,7 @@ void HttpSession::read_header() {
 }
 
 void HttpSession::note_bad_request(unsigned status, const std::string& what) {
-  context_.abuse.note(Abuse::http_bad_request, peer_address_, std::to_string(status) + ": " + what);
+  services_.abuse.note(Abuse::http_bad_request, peer_address_, std::to_string(status) + ": " + what);
 }
 
 bool HttpSession::answer_read_error(beast::error_code ec) {
@@ -125,7 +124,7 @@ bool HttpSession::answer_read_error(beast::error_code ec) {
     // The peer left or went quiet: nothing to linger for. Quiet past a
     // deadline while a request was under way is a slow request (slowloris).
     if (ec == beast::error::timeout && reading_ != Reading::idle)
-      context_.abuse.note(Abuse::handshake_timeout, peer_address_,
+      services_.abuse.note(Abuse::handshake_timeout, peer_address_,
                           reading_ == Reading::header ? "no whole request header within " +
                                                             std::to_string(limits::kHeaderTimeout.count()) + " s"
                                                       : std::string("the request body did not arrive in time"));
@@ -145,7 +144,7 @@ bool HttpSession::answer_read_error(beast::error_code ec) {
     note_bad_request(413, "request body too large");
     send(error_response(http::status::payload_too_large, 11,
                         "the request body is too large: uploads (POST /api/avatars) take at most " +
-                            std::to_string(context_.config.max_upload_bytes / 1024) +
+                            std::to_string(services_.config.max_upload_bytes / 1024) +
                             " KiB, so send a smaller photo (about 30 KB is plenty); other requests 64 KiB"));
     return true;
   }
@@ -160,14 +159,14 @@ bool HttpSession::answer_read_error(beast::error_code ec) {
 bool HttpSession::take_forwarded_client() {
   if (!via_proxy_) return true;
   const ClientAddress client =
-      client_address(context_.config.trusted_proxies, socket_peer_, forwarding_headers(parser_->get()));
+      client_address(services_.config.trusted_proxies, socket_peer_, forwarding_headers(parser_->get()));
   peer_address_ = client.address.to_string();
   if (client.source == ClientAddress::Source::malformed)
-    context_.abuse.note(Abuse::bad_forwarded_header, peer_address_,
+    services_.abuse.note(Abuse::bad_forwarded_header, peer_address_,
                         "from a trusted proxy: " + client.problem + "; counted as the proxy's own request");
-  if (ticket_.count_against(*context_.addresses, address_key(client.address))) return true;
-  const std::size_t per_address = context_.addresses->limits().connections_per_address;
-  context_.abuse.note(Abuse::address_connection_limit, peer_address_,
+  if (ticket_.count_against(services_.addresses, address_key(client.address))) return true;
+  const std::size_t per_address = services_.addresses.limits().connections_per_address;
+  services_.abuse.note(Abuse::address_connection_limit, peer_address_,
                       "request through a proxy refused: the address holds " + std::to_string(per_address) +
                           " connections already");
   Response refusal = error_response(http::status::too_many_requests, parser_->get().version(),
@@ -190,12 +189,12 @@ void HttpSession::on_header(beast::error_code ec, std::size_t) {
     // With --auth-secret, only who holds an invitation may upload (the
     // browser sends the invite link's token).
     Response refusal;
-    if (!api_access(context_, header, refusal)) {
-      context_.abuse.note(Abuse::unauthorized, peer_address_, "an upload without a valid token");
+    if (!api_access(services_.config, header, refusal)) {
+      services_.abuse.note(Abuse::unauthorized, peer_address_, "an upload without a valid token");
       return send(std::move(refusal));
     }
   }
-  const std::size_t limit = upload_ ? context_.config.max_upload_bytes : limits::kMaxBodyBytes;
+  const std::size_t limit = upload_ ? services_.config.max_upload_bytes : limits::kMaxBodyBytes;
   if (parser_->content_length() && *parser_->content_length() > limit)
     return (void)answer_read_error(http::error::body_limit);
   parser_->body_limit(limit);  // for chunked bodies
@@ -204,8 +203,8 @@ void HttpSession::on_header(beast::error_code ec, std::size_t) {
   // the bytes it declares (or the largest upload when chunked) would fit
   // in memory beside what is in flight, and the photo queue.
   if (upload_)
-    if (auto refusal = photos_.admit(header.version(), parser_->content_length().value_or(limit), peer_address_,
-                                     upload_bytes_))
+    if (auto refusal = services_.photos.admit(header.version(), parser_->content_length().value_or(limit),
+                                              peer_address_, upload_bytes_))
       return send(std::move(*refusal));
   reading_ = Reading::body;
   if (upload_) return start_upload_body();
@@ -217,7 +216,7 @@ void HttpSession::start_upload_body() {
   // An empty body (Content-Length: 0) is whole with its header: nothing to
   // wait for, and a read would wait for bytes that never come.
   if (parser_->is_done()) return on_read({}, 0);
-  const std::size_t pace = context_.config.min_upload_bytes_per_second;
+  const std::size_t pace = services_.config.min_upload_bytes_per_second;
   upload_pace_.emplace(pace, limits::kUploadPaceWindow, UploadPace::Clock::now());
   pace_missed_ = false;
   // The pace decides; the deadline is only a backstop, past what a body of
@@ -226,7 +225,7 @@ void HttpSession::start_upload_body() {
   if (pace == 0) {
     stream_.expires_after(limits::kUploadTimeout);
   } else {
-    const auto longest = std::chrono::seconds(context_.config.max_upload_bytes / pace + 1);
+    const auto longest = std::chrono::seconds(services_.config.max_upload_bytes / pace + 1);
     stream_.expires_after(2 * limits::kUploadPaceWindow + longest);
   }
   read_upload_bytes();
@@ -261,7 +260,7 @@ void HttpSession::on_upload_bytes(beast::error_code ec, std::size_t) {
     if (share != UploadShare::granted) {
       pace_timer_.cancel();
       upload_bytes_.release();
-      return send(photos_.share_refusal(share, parser_->get().version(), received, peer_address_));
+      return send(services_.photos.share_refusal(share, parser_->get().version(), received, peer_address_));
     }
     upload_pace_->record(now, received);
     // Bytes that came as the pace timer fired still count: a body they
@@ -282,9 +281,9 @@ void HttpSession::on_upload_bytes(beast::error_code ec, std::size_t) {
 void HttpSession::refuse_slow_upload() {
   pace_timer_.cancel();
   upload_bytes_.release();
-  const std::size_t pace = context_.config.min_upload_bytes_per_second;
+  const std::size_t pace = services_.config.min_upload_bytes_per_second;
   const auto window = limits::kUploadPaceWindow.count();
-  context_.abuse.note(Abuse::upload_too_slow, peer_address_,
+  services_.abuse.note(Abuse::upload_too_slow, peer_address_,
                       "an upload's body came slower than " + std::to_string(pace) + " bytes a second over " +
                           std::to_string(window) + " s, after " +
                           std::to_string(parser_->get().body().size()) + " bytes");
@@ -305,13 +304,14 @@ void HttpSession::on_read(beast::error_code ec, std::size_t) {
       note_bad_request(404, "a WebSocket upgrade to " + loggable_target(request));
       return send(error_response(http::status::not_found, request.version(), "the room protocol is at /ws"));
     }
-    auto session = std::make_shared<WebSocketSession>(context_, std::move(stream_), peer_address_, std::move(ticket_));
+    auto session =
+        std::make_shared<WebSocketSession>(services_.sessions, std::move(stream_), peer_address_, std::move(ticket_));
     session->run(std::move(request));
     return;  // this HttpSession ends here; the connection lives on in the WebSocket session
   }
   if (upload_) {
     auto self = shared_from_this();
-    photos_.upload(std::move(request), peer_address_, [self](Response response) {
+    services_.photos.upload(std::move(request), peer_address_, [self](Response response) {
       net::post(self->stream_.get_executor(), [self, response = std::move(response)]() mutable {
         self->upload_bytes_.release();  // answered: its body is no longer held
         self->send(std::move(response));
@@ -322,7 +322,7 @@ void HttpSession::on_read(beast::error_code ec, std::size_t) {
   std::optional<Response> response;
   if (request.method() == http::verb::get || request.method() == http::verb::head ||
       request.method() == http::verb::delete_)
-    response = respond_to_api(context_, request);
+    response = respond_to_api(services_.api, request);
   if (!response) response = respond_to(request);
   note_if_refused(*response, request);
   send(std::move(*response));

@@ -13,21 +13,38 @@
 #include <boost/beast/core.hpp>
 #include <boost/beast/http.hpp>
 
+#include "abuse_log.hpp"
+#include "address_limits.hpp"
 #include "connection_admission.hpp"
-#include "server_context.hpp"
+#include "metrics.hpp"
+#include "server_config.hpp"
 #include "upload_pace.hpp"
 #include "upload_reservation.hpp"
 
 namespace fw::server {
 
 class PhotoPreparation;
+struct ApiServices;
+struct SessionServices;
+
+/// What an HTTP connection uses of the server, made once with the
+/// listeners (network_server.cpp); each session keeps a copy of these
+/// references.
+struct HttpServices {
+  const ServerConfig& config;  ///< body limits, upload pace, trusted proxies
+  Metrics& metrics;            ///< HTTP connections open
+  AbuseLog& abuse;             ///< refusals by kind, for the log and /metrics
+  AddressLimits& addresses;    ///< connections per forwarded client
+  PhotoPreparation& photos;    ///< takes the uploads
+  const ApiServices& api;      ///< answers the API's requests (rest_api.hpp)
+  const SessionServices& sessions;  ///< what an upgraded connection's session is made with
+};
 
 class HttpSession : public std::enable_shared_from_this<HttpSession> {
  public:
   /// `ticket` counts the connection until it closes (or, upgraded, until
-  /// the WebSocket closes); `photos` takes the uploads.
-  HttpSession(ServerContext& context, PhotoPreparation& photos, boost::asio::ip::tcp::socket&& socket,
-              ConnectionTicket ticket);
+  /// the WebSocket closes).
+  HttpSession(const HttpServices& services, boost::asio::ip::tcp::socket&& socket, ConnectionTicket ticket);
   ~HttpSession();
   void run();
 
@@ -62,8 +79,7 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
   void do_close();
   void linger();
 
-  ServerContext& context_;
-  PhotoPreparation& photos_;
+  const HttpServices services_;
   boost::beast::tcp_stream stream_;
   boost::beast::flat_buffer buffer_;
   std::optional<boost::beast::http::request_parser<boost::beast::http::string_body>> parser_;

@@ -13,11 +13,11 @@ namespace fw::server {
 namespace net = boost::asio;
 namespace beast = boost::beast;
 
-Listener::Listener(ServerContext& context, net::io_context& ioc, const net::ip::tcp::endpoint& endpoint,
-                   SessionFactory factory, Refusal refusal, ConnectionShareLimits shares, beast::error_code& ec,
-                   const TrustedProxies* proxies)
-    : context_(context), ioc_(ioc), acceptor_(net::make_strand(ioc)), pause_(acceptor_.get_executor()),
-      factory_(std::move(factory)), refusal_(std::move(refusal)), admission_(*context.addresses, shares),
+Listener::Listener(AbuseLog& abuse, AddressLimits& addresses, net::io_context& ioc,
+                   const net::ip::tcp::endpoint& endpoint, SessionFactory factory, Refusal refusal,
+                   ConnectionShareLimits shares, beast::error_code& ec, const TrustedProxies* proxies)
+    : abuse_(abuse), ioc_(ioc), acceptor_(net::make_strand(ioc)), pause_(acceptor_.get_executor()),
+      factory_(std::move(factory)), refusal_(std::move(refusal)), admission_(addresses, shares),
       proxies_(proxies) {
   if (acceptor_.open(endpoint.protocol(), ec)) return;
   if (acceptor_.set_option(net::socket_base::reuse_address(true), ec)) return;
@@ -74,18 +74,18 @@ bool Listener::admit(net::ip::tcp::socket socket, bool must_evict) {
     const std::string again = "; told to try again in " + std::to_string(admission.retry_after.count()) + " s";
     switch (admission.refusal) {
       case Abuse::address_connection_limit:
-        context_.abuse.note(admission.refusal, peer,
+        abuse_.note(admission.refusal, peer,
                             "connection refused: the address holds " + std::to_string(admission_.per_address()) +
                                 " already" + again);
         break;
       case Abuse::block_connection_limit:
-        context_.abuse.note(admission.refusal, peer,
+        abuse_.note(admission.refusal, peer,
                             "connection refused: its network holds " + std::to_string(admission_.per_block()) +
                                 " on this port already" + again);
         break;
       case Abuse::descriptors_exhausted: break;  // counted and logged by the caller, at most once a second
       default:
-        context_.abuse.note(admission.refusal, peer,
+        abuse_.note(admission.refusal, peer,
                             "connection refused: " + std::to_string(admission_.open()) + " of " +
                                 std::to_string(admission_.max_total()) +
                                 " connections open on this port, none of them a waiting one from a larger "
@@ -94,7 +94,7 @@ bool Listener::admit(net::ip::tcp::socket socket, bool must_evict) {
     return false;
   }
   if (!admission.evicted.empty())
-    context_.abuse.note(Abuse::connection_evicted, admission.evicted,
+    abuse_.note(Abuse::connection_evicted, admission.evicted,
                         std::string(must_evict ? "no file descriptor left" : "the port is full") +
                             ": a connection that had sent nothing useful yet gave its place to " + peer);
   factory_(std::move(socket), std::move(*admission.ticket));
@@ -139,11 +139,11 @@ void Listener::on_descriptors_exhausted(const beast::error_code& ec) {
   exhaustion_refusals_unlogged_ += counted;
   const auto now = std::chrono::steady_clock::now();
   if (now - exhaustion_logged_ < std::chrono::seconds(1)) {
-    context_.abuse.count_quietly(Abuse::descriptors_exhausted, counted);
+    abuse_.count_quietly(Abuse::descriptors_exhausted, counted);
   } else {
     exhaustion_logged_ = now;
-    context_.abuse.count_quietly(Abuse::descriptors_exhausted, counted - 1);  // note() counts the last
-    context_.abuse.note(Abuse::descriptors_exhausted, peer,
+    abuse_.count_quietly(Abuse::descriptors_exhausted, counted - 1);  // note() counts the last
+    abuse_.note(Abuse::descriptors_exhausted, peer,
                         "accept: " + ec.message() + "; " + std::to_string(exhaustion_refusals_unlogged_) +
                             " connection(s) refused since the last line" +
                             (reserve_.held() ? "" : " (no descriptor in reserve)") + "; accepting again every " +

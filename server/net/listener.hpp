@@ -23,9 +23,10 @@
 #include <boost/asio/steady_timer.hpp>
 #include <boost/beast/core/error.hpp>
 
+#include "abuse_log.hpp"
+#include "address_limits.hpp"
 #include "connection_admission.hpp"
 #include "descriptor_reserve.hpp"
-#include "server_context.hpp"
 #include "trusted_proxies.hpp"
 
 namespace fw::server {
@@ -43,10 +44,11 @@ class Listener : public std::enable_shared_from_this<Listener> {
   /// `proxies`: peers whose sessions read the client's address from their
   /// requests (the HTTP port's), exempt from the per-address share at accept;
   /// null where nothing forwards addresses (the TCP port).
-  /// `shares`: the port's places (ConnectionShares).
-  Listener(ServerContext& context, boost::asio::io_context& ioc, const boost::asio::ip::tcp::endpoint& endpoint,
-           SessionFactory factory, Refusal refusal, ConnectionShareLimits shares, boost::beast::error_code& ec,
-           const TrustedProxies* proxies = nullptr);
+  /// `shares`: the port's places (ConnectionShares). `abuse` counts and logs
+  /// the refusals; `addresses` holds each address's connections.
+  Listener(AbuseLog& abuse, AddressLimits& addresses, boost::asio::io_context& ioc,
+           const boost::asio::ip::tcp::endpoint& endpoint, SessionFactory factory, Refusal refusal,
+           ConnectionShareLimits shares, boost::beast::error_code& ec, const TrustedProxies* proxies = nullptr);
   void run();
   void stop();
   /// The bound address, with the real port when 0 was asked for.
@@ -70,7 +72,7 @@ class Listener : public std::enable_shared_from_this<Listener> {
   /// Accepts again after `delay` (a failed accept() would fail again at once).
   void accept_after(std::chrono::milliseconds delay);
 
-  ServerContext& context_;
+  AbuseLog& abuse_;
   boost::asio::io_context& ioc_;
   boost::asio::ip::tcp::acceptor acceptor_;
   boost::asio::steady_timer pause_;

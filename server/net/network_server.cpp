@@ -23,6 +23,7 @@
 #include "listener.hpp"
 #include "photo_preparation.hpp"
 #include "photo_worker.hpp"
+#include "rest_api.hpp"
 #include "server_core.hpp"
 #include "server_limits.hpp"
 #include "tcp_session.hpp"
@@ -54,7 +55,7 @@ int cannot_start(const std::string& why) {
 
 /// A listener on `address` (the value of `flag`), accepting; null and `error` if it cannot listen.
 /// `proxies`: whose connections its sessions count by the client they forward (Listener).
-std::shared_ptr<Listener> listen(net::io_context& ioc, ServerContext& context, const std::string& flag,
+std::shared_ptr<Listener> listen(net::io_context& ioc, const HttpServices& services, const std::string& flag,
                                  const std::string& address, Listener::SessionFactory factory,
                                  Listener::Refusal refusal, ConnectionShareLimits shares, std::string& error,
                                  const TrustedProxies* proxies = nullptr) {
@@ -65,8 +66,8 @@ std::shared_ptr<Listener> listen(net::io_context& ioc, ServerContext& context, c
   }
   boost::beast::error_code ec;
   auto listener =
-      std::make_shared<Listener>(context, ioc, *endpoint, std::move(factory), std::move(refusal), shares, ec,
-                                 proxies);
+      std::make_shared<Listener>(services.abuse, services.addresses, ioc, *endpoint, std::move(factory),
+                                 std::move(refusal), shares, ec, proxies);
   if (ec) {
     error = "cannot listen on " + address + ": " + ec.message() +
             " (is another server using the port? choose another with " + flag + " ADDR:PORT)";
@@ -90,27 +91,30 @@ struct Listeners {
   }
 };
 
-bool open_listeners(net::io_context& ioc, ServerContext& context, PhotoPreparation& photos, Listeners& listeners,
+/// `services`: what each HTTP session is made with; a TCP session is made
+/// with its `sessions`.
+bool open_listeners(net::io_context& ioc, const HttpServices& services, Listeners& listeners,
                     unsigned long descriptors, std::string& error) {
-  const ConnectionShareLimits shares = port_shares(context.config, descriptors);
-  if (shares.max_total < context.config.max_connections)
+  const ServerConfig& config = services.config;
+  const ConnectionShareLimits shares = port_shares(config, descriptors);
+  if (shares.max_total < config.max_connections)
     spdlog::info("open files limited to {}: {} connections at most on each port (ulimit -n)", descriptors,
                  shares.max_total);
   // Each session keeps its connection's ticket until the connection closes.
-  const auto http_session = [&context, &photos](net::ip::tcp::socket&& socket, ConnectionTicket&& ticket) {
-    std::make_shared<HttpSession>(context, photos, std::move(socket), std::move(ticket))->run();
+  const auto http_session = [&services](net::ip::tcp::socket&& socket, ConnectionTicket&& ticket) {
+    std::make_shared<HttpSession>(services, std::move(socket), std::move(ticket))->run();
   };
-  const auto tcp_session = [&context](net::ip::tcp::socket&& socket, ConnectionTicket&& ticket) {
+  const auto tcp_session = [&sessions = services.sessions](net::ip::tcp::socket&& socket, ConnectionTicket&& ticket) {
     boost::system::error_code ec;
     std::string peer = socket.remote_endpoint(ec).address().to_string();
-    std::make_shared<TcpSession>(context, std::move(socket), std::move(peer), std::move(ticket))->run();
+    std::make_shared<TcpSession>(sessions, std::move(socket), std::move(peer), std::move(ticket))->run();
   };
   // Only HTTP requests name a forwarded client; the TCP port has no headers.
-  listeners.http = listen(ioc, context, "--http", context.config.http, http_session, http_refusal, shares, error,
-                          &context.config.trusted_proxies);
+  listeners.http =
+      listen(ioc, services, "--http", config.http, http_session, http_refusal, shares, error, &config.trusted_proxies);
   if (!listeners.http) return false;
-  if (context.config.tcp.empty()) return true;
-  listeners.tcp = listen(ioc, context, "--tcp", context.config.tcp, tcp_session, tcp_refusal, shares, error);
+  if (config.tcp.empty()) return true;
+  listeners.tcp = listen(ioc, services, "--tcp", config.tcp, tcp_session, tcp_refusal, shares, error);
   return listeners.tcp != nullptr;
 }
 
@@ -141,6 +145,23 @@ std::string node_name(const ServerConfig& config, unsigned short http_port) {
   return std::string(host) + ":" + std::to_string(http_port);
 }
 
+// What each part above the core receives of it, made once here.
+
+ApiServices api_services(ServerCore& core) {
+  return {core.config(), core.metrics(),      core.physics_lod(), core.abuse(), core.store(),
+          core.rooms(),  core.demo_avatars(), core.server_key(),  core.state()};
+}
+
+UploadServices upload_services(ServerCore& core) {
+  return {core.config(), core.metrics(), core.abuse(), core.addresses(), core.store(), core.server_key(),
+          core.state().draining};
+}
+
+ClusterServices cluster_services(ServerCore& core) {
+  return {core.config(),       core.abuse(),   core.addresses(), core.tokens(), core.store(),    core.server_key(),
+          core.demo_avatars(), core.workers(), core.room_bus(),  core.rooms(),  core.sessions(), core.state()};
+}
+
 /// Runs `ioc` on `threads` threads, this one included, until it stops.
 void run_io_threads(net::io_context& ioc, int threads) {
   std::vector<std::thread> others;
@@ -154,18 +175,21 @@ void run_io_threads(net::io_context& ioc, int threads) {
 int run_network_server(const ServerConfig& config) {
   // Each connection takes a descriptor; the soft limit is often far below what the operator allows.
   const unsigned long descriptors = raise_descriptor_limit(kDescriptorsWanted);
-  ServerCore core(config);
   std::string error;
-  if (!core.open(error)) return cannot_start(error);
+  const std::unique_ptr<ServerCore> core = ServerCore::open(config, error);
+  if (!core) return cannot_start(error);
+  const ApiServices api = api_services(*core);
   net::io_context ioc(config.io_threads);
   PhotoWorker photo_worker(config.landmark_model, config.photo_threads, config.abuse.photo_queue);
-  PhotoPreparation photos(core.context(), photo_worker);
-  AvatarRepreparation repreparation(*core.context().store, photo_worker);
+  PhotoPreparation photos(upload_services(*core), photo_worker);
+  AvatarRepreparation repreparation(core->store(), photo_worker);
   std::set<std::string> own_faces;
-  for (const StoredAvatar& face : core.context().demo_avatars) own_faces.insert(face.asset);
-  AvatarSweeper sweeper(*core.context().store, std::move(own_faces), config.avatar_retention_days);
+  for (const StoredAvatar& face : core->demo_avatars()) own_faces.insert(face.asset);
+  AvatarSweeper sweeper(core->store(), std::move(own_faces), config.avatar_retention_days);
+  const HttpServices http{core->config(), core->metrics(), core->abuse(), core->addresses(), photos, api,
+                          core->session_services()};
   Listeners listeners;
-  if (!open_listeners(ioc, core.context(), photos, listeners, descriptors, error)) return cannot_start(error);
+  if (!open_listeners(ioc, http, listeners, descriptors, error)) return cannot_start(error);
   std::unique_ptr<ClusterNode> cluster;
   if (!config.redis.empty()) {
     // Before the loop runs (no request is served yet): the cluster's server
@@ -179,17 +203,17 @@ int run_network_server(const ServerConfig& config) {
     if (!address.username.empty() && address.password.empty())
       return cannot_start("--redis names a user but no password: add it to the URL (USER:PASSWORD@) or give "
                           "--redis-password-file");
-    cluster = std::make_unique<ClusterNode>(core.context(), ioc.get_executor(), address,
+    cluster = std::make_unique<ClusterNode>(cluster_services(*core), ioc.get_executor(), address,
                                             node_name(config, listeners.http->local_endpoint().port()));
     cluster->start();
   }
   announce(listeners);
-  core.open_demo_room();  // ready (/readyz) once listening and the lobby is seated
+  core->open_demo_room();  // ready (/readyz) once listening and the lobby is seated
   log_ready(config);
   const auto drain_time = std::chrono::milliseconds(static_cast<long>(config.drain_seconds * 1000));
-  DrainOnSignal drain(ioc, core, drain_time, [&listeners] { listeners.stop_room_port(); });
+  DrainOnSignal drain(ioc, *core, drain_time, [&listeners] { listeners.stop_room_port(); });
   run_io_threads(ioc, config.io_threads);
-  core.stop();
+  core->stop();
   if (cluster) {
     // The loop ran out: a short one of its own tells Redis this node leaves.
     ioc.restart();

@@ -18,7 +18,8 @@ namespace fw::server {
 
 namespace http = boost::beast::http;
 
-PhotoPreparation::PhotoPreparation(ServerContext& context, PhotoWorker& worker) : context_(context), worker_(worker) {}
+PhotoPreparation::PhotoPreparation(const UploadServices& services, PhotoWorker& worker)
+    : services_(services), worker_(worker) {}
 
 namespace {
 
@@ -36,17 +37,17 @@ Response try_again_later(http::status status, unsigned version, const std::strin
 
 std::optional<Response> PhotoPreparation::admit(unsigned version, std::uint64_t body_bytes,
                                                 const std::string& peer_address, UploadReservation& reservation) {
-  if (context_.draining.load())
+  if (services_.draining.load())
     return error_response(http::status::service_unavailable, version,
                           "the server is shutting down; upload again in a moment");
   const std::string key = address_key(peer_address);
   // A full queue first: an upload refused for it costs no token of the rate.
   if (worker_.full_for(key)) return queue_full(version, peer_address);
-  if (const auto wait = context_.addresses->take(AddressRate::upload, key)) {
+  if (const auto wait = services_.addresses.take(AddressRate::upload, key)) {
     // Rounded up, so that an uploader who waits as told is not refused again.
     const int seconds = std::max(1, static_cast<int>(std::ceil(*wait)));
-    const int per_minute = static_cast<int>(std::lround(context_.addresses->limits().uploads.per_second * 60));
-    context_.abuse.note(Abuse::upload_rate, peer_address, "over " + std::to_string(per_minute) + " uploads a minute");
+    const int per_minute = static_cast<int>(std::lround(services_.addresses.limits().uploads.per_second * 60));
+    services_.abuse.note(Abuse::upload_rate, peer_address, "over " + std::to_string(per_minute) + " uploads a minute");
     return try_again_later(http::status::too_many_requests, version,
                            "at most " + std::to_string(per_minute) + " uploads a minute from one address",
                            seconds);
@@ -55,9 +56,9 @@ std::optional<Response> PhotoPreparation::admit(unsigned version, std::uint64_t 
   // fit; only what arrives is counted (HttpSession grows the reservation),
   // so an upload that promises much and sends little holds little.
   const auto bytes = static_cast<std::size_t>(body_bytes);
-  const UploadShare share = context_.addresses->upload_fits(key, bytes);
+  const UploadShare share = services_.addresses.upload_fits(key, bytes);
   if (share == UploadShare::granted) {
-    reservation = UploadReservation(*context_.addresses, key);
+    reservation = UploadReservation(services_.addresses, key);
     return std::nullopt;
   }
   return share_refusal(share, version, bytes, peer_address);
@@ -69,14 +70,14 @@ Response PhotoPreparation::share_refusal(UploadShare share, unsigned version, st
   // body stops coming at the pace the server asks.
   const int seconds = static_cast<int>(limits::kUploadTimeout.count());
   if (share == UploadShare::address_full) {
-    context_.abuse.note(Abuse::upload_bytes, peer_address,
+    services_.abuse.note(Abuse::upload_bytes, peer_address,
                         "another " + std::to_string(bytes / 1024) +
                             " KiB would take its uploads in flight past its share");
     return try_again_later(http::status::too_many_requests, version,
                            "your other uploads are still being received or prepared; send one photo at a time",
                            seconds);
   }
-  context_.abuse.note(Abuse::upload_bytes, peer_address, "the server's uploads in flight are at their limit");
+  services_.abuse.note(Abuse::upload_bytes, peer_address, "the server's uploads in flight are at their limit");
   return try_again_later(http::status::service_unavailable, version,
                          "the server is receiving as many uploads as it can", seconds);
 }
@@ -86,22 +87,22 @@ Response PhotoPreparation::queue_full(unsigned version, const std::string& peer_
   if (!worker_.full()) {
     // Room in the queue, but not for this network block: its addresses
     // together hold their share of the places.
-    context_.abuse.note(Abuse::photo_queue_full, peer_address,
+    services_.abuse.note(Abuse::photo_queue_full, peer_address,
                         "photos waiting from its network " + address_group(peer_address) + " are at their share");
     return try_again_later(http::status::service_unavailable, version,
                            "the server has as many photos waiting from your network (" +
                                address_group(peer_address) + ") as it takes from one",
                            seconds);
   }
-  context_.abuse.note(Abuse::photo_queue_full, peer_address,
+  services_.abuse.note(Abuse::photo_queue_full, peer_address,
                       "photos waiting to be prepared are at the limit of " +
-                          std::to_string(context_.addresses->limits().photo_queue));
+                          std::to_string(services_.addresses.limits().photo_queue));
   return try_again_later(http::status::service_unavailable, version,
                          "the server has as many photos waiting to be prepared as it takes", seconds);
 }
 
 void PhotoPreparation::upload(Request request, std::string peer_address, std::function<void(Response)> done) {
-  if (context_.draining.load())
+  if (services_.draining.load())
     return done(error_response(http::status::service_unavailable, request.version(),
                                "the server is shutting down; upload again in a moment"));
   // A photo whose header declares too many pixels is refused here, on the
@@ -128,10 +129,10 @@ std::optional<Response> PhotoPreparation::refuse_oversized_photo(const Request& 
     photo = parts["photo"].data;
   }
   photo::PrepError prep_error;
-  if (photo::AvatarPreparer::check_photo(photo, prep_error, context_.config.max_photo_pixels) ||
+  if (photo::AvatarPreparer::check_photo(photo, prep_error, services_.config.max_photo_pixels) ||
       prep_error.code != photo::PrepErrorCode::too_many_pixels)
     return std::nullopt;  // other faults are answered by handle(), with the same check
-  context_.abuse.note(Abuse::photo_too_large, peer_address, "refused from its header: " + prep_error.message);
+  services_.abuse.note(Abuse::photo_too_large, peer_address, "refused from its header: " + prep_error.message);
   return error_response(http::status::payload_too_large, request.version(), prep_error.message);
 }
 
@@ -151,7 +152,7 @@ Response prep_refusal(const Request& request, const photo::PrepError& prep_error
 std::optional<Response> PhotoPreparation::prepare_photo(const Request& request, std::span<const std::uint8_t> photo,
                                                         Upload& upload) {
   photo::PrepError prep_error;
-  if (!photo::AvatarPreparer::check_photo(photo, prep_error, context_.config.max_photo_pixels))
+  if (!photo::AvatarPreparer::check_photo(photo, prep_error, services_.config.max_photo_pixels))
     return prep_refusal(request, prep_error);
   photo::AvatarPreparer* preparer = worker_.preparer(prep_error);
   if (!preparer)
@@ -208,7 +209,7 @@ std::optional<Response> PhotoPreparation::read_multipart_upload(const Request& r
   if (photo.content_type != "image/jpeg" && photo.content_type != "image/png")
     return refuse(http::status::unsupported_media_type, "the part 'photo' must be image/jpeg or image/png");
   photo::PrepError prep_error;
-  if (!photo::AvatarPreparer::check_photo(photo.data, prep_error, context_.config.max_photo_pixels))
+  if (!photo::AvatarPreparer::check_photo(photo.data, prep_error, services_.config.max_photo_pixels))
     return prep_refusal(request, prep_error);
   upload.photo = photo.data;
   return std::nullopt;
@@ -238,18 +239,18 @@ Response PhotoPreparation::handle(const Request& request) {
   }
   if (refusal) return *refusal;
   std::string why;
-  const auto stored = context_.store->put(upload.package, upload.photo, why);
+  const auto stored = services_.store.put(upload.package, upload.photo, why);
   if (!stored) return error(http::status::unprocessable_entity, "the package is not valid: " + why);
-  context_.metrics.uploads.fetch_add(1);
+  services_.metrics.uploads.fetch_add(1);
   // One line an upload, which many addresses can make: held to the
   // connection log's rate (AbuseLog::event).
-  context_.abuse.event("upload", "stored avatar " + stored->asset + " (" + std::to_string(stored->full->size()) +
+  services_.abuse.event("upload", "stored avatar " + stored->asset + " (" + std::to_string(stored->full->size()) +
                                      " bytes, preview " + std::to_string(stored->preview->size()) + " bytes" +
                                      (upload.photo.empty() ? "" : ", with its photo") + ")");
   // The key is what lets its holder wear the face (PROTOCOL.md 8.1): it
   // goes to the uploader alone, never to the room.
   const nlohmann::json answer = {{"asset", stored->asset},
-                                 {"key", avatar_key(context_.server_key, stored->asset)},
+                                 {"key", avatar_key(services_.server_key, stored->asset)},
                                  {"package", "/api/packages/" + stored->asset},
                                  {"bytes", stored->full->size()},
                                  {"preview_bytes", stored->preview->size()},

@@ -13,17 +13,35 @@
 #include <string>
 #include <vector>
 
+#include <atomic>
+
+#include "abuse_log.hpp"
+#include "address_limits.hpp"
+#include "avatar_store.hpp"
 #include "http_responses.hpp"
-#include "server_context.hpp"
+#include "metrics.hpp"
+#include "server_config.hpp"
 #include "upload_reservation.hpp"
 
 namespace fw::server {
 
 class PhotoWorker;
 
+/// What an upload uses of the server besides the photo worker, made once
+/// with the listeners (network_server.cpp).
+struct UploadServices {
+  const ServerConfig& config;  ///< the largest photo
+  Metrics& metrics;            ///< uploads stored
+  AbuseLog& abuse;             ///< refusals by kind, for the log and /metrics
+  AddressLimits& addresses;    ///< uploads per address, bytes in flight, the photo queue's shares
+  AvatarStore& store;          ///< where an upload is stored
+  const std::string& server_key;  ///< signs the key an upload is answered with
+  const std::atomic<bool>& draining;  ///< SIGTERM: no new uploads
+};
+
 class PhotoPreparation {
  public:
-  PhotoPreparation(ServerContext& context, PhotoWorker& worker);
+  PhotoPreparation(const UploadServices& services, PhotoWorker& worker);
 
   /// Decides from an upload's header alone, before its body is read,
   /// whether the body may come: nullopt, and `reservation` ready to count
@@ -66,7 +84,7 @@ class PhotoPreparation {
   /// of it; Retry-After when it likely has room.
   Response queue_full(unsigned version, const std::string& peer_address);
 
-  ServerContext& context_;
+  const UploadServices services_;
   PhotoWorker& worker_;
 };
 

@@ -42,8 +42,9 @@ Response avatar_refusal(const Request& request, const AvatarLookup& lookup, cons
 /// GET /api/packages/ID[?quality=preview]: the avatar's current package. Its
 /// ETag is the package's content hash: the id stays when the server prepares
 /// the avatar again, so caches revalidate.
-Response package_response(ServerContext& context, const Request& request, const std::string& asset, bool preview) {
-  const AvatarLookup lookup = context.store->lookup(asset);
+Response package_response(const ApiServices& services, const Request& request, const std::string& asset,
+                          bool preview) {
+  const AvatarLookup lookup = services.store.lookup(asset);
   if (!lookup.avatar) return avatar_refusal(request, lookup, asset);
   const StoredAvatar& avatar = *lookup.avatar;
   const auto& bytes = preview ? *avatar.preview : *avatar.full;
@@ -68,9 +69,10 @@ Response package_response(ServerContext& context, const Request& request, const 
 /// DELETE /api/avatars/ID with the avatar's key in X-Avatar-Key. Not behind
 /// a join token: the key alone proves the upload, and a person must be able
 /// to delete their photo after their invitation expired.
-Response deletion_response(ServerContext& context, const Request& request, const std::string& asset) {
+Response deletion_response(const ApiServices& services, const Request& request, const std::string& asset) {
   const std::string_view key(request["X-Avatar-Key"].data(), request["X-Avatar-Key"].size());
-  const AvatarDeletion outcome = delete_avatar(context, asset, key);
+  const AvatarDeletion outcome =
+      delete_avatar({services.store, services.rooms, services.own_faces, services.server_key}, asset, key);
   const std::string message = deletion_message(outcome, asset);
   switch (outcome) {
     case AvatarDeletion::deleted: {
@@ -83,7 +85,7 @@ Response deletion_response(ServerContext& context, const Request& request, const
     case AvatarDeletion::unknown: return plain(http::status::not_found, request, message + "\n");
     case AvatarDeletion::no_key:
     case AvatarDeletion::wrong_key:
-      context.abuse.note(Abuse::face_not_yours, "api", "a deletion of avatar " + asset.substr(0, 64) +
+      services.abuse.note(Abuse::face_not_yours, "api", "a deletion of avatar " + asset.substr(0, 64) +
                                                            (outcome == AvatarDeletion::no_key ? " without a key" : " with another key"));
       [[fallthrough]];
     default: return plain(http::status::forbidden, request, message + "\n");
@@ -102,38 +104,40 @@ Response json_response(http::status status, unsigned version, bool keep_alive, s
   return response;
 }
 
-std::optional<Response> respond_to_api(ServerContext& context, const Request& request) {
+std::optional<Response> respond_to_api(const ApiServices& services, const Request& request) {
   const std::string_view target(request.target().data(), request.target().size());
   const std::string_view path = target.substr(0, target.find('?'));
   const std::string_view query = target.find('?') == std::string_view::npos ? "" : target.substr(target.find('?') + 1);
   if (request.method() == http::verb::delete_) {
     constexpr std::string_view kAvatars = "/api/avatars/";
     if (path.substr(0, kAvatars.size()) != kAvatars) return std::nullopt;
-    return deletion_response(context, request, std::string(path.substr(kAvatars.size())));
+    return deletion_response(services, request, std::string(path.substr(kAvatars.size())));
   }
   if (path == "/readyz") {
     // A cluster node without Redis serves its own rooms, but a balancer
     // should send newcomers to nodes that can reach every room.
-    const bool clustered = context.cluster_up.load();
-    if (context.ready.load() && !context.draining.load() && clustered) return plain(http::status::ok, request, "ready\n");
+    const ServerState& state = services.state;
+    const bool clustered = state.cluster_up.load();
+    if (state.ready.load() && !state.draining.load() && clustered) return plain(http::status::ok, request, "ready\n");
     return plain(http::status::service_unavailable, request,
-                 context.draining.load() ? "draining\n" : !context.ready.load() ? "starting\n" : "no Redis\n");
+                 state.draining.load() ? "draining\n" : !state.ready.load() ? "starting\n" : "no Redis\n");
   }
   if (path == "/metrics") {
-    if (Response refusal; !operator_access(context, request, refusal)) {
-      context.abuse.note(Abuse::unauthorized, "metrics", "a request for /metrics without the operator's secret");
+    if (Response refusal; !operator_access(services.config, request, refusal)) {
+      services.abuse.note(Abuse::unauthorized, "metrics", "a request for /metrics without the operator's secret");
       return refusal;
     }
-    Response response = plain(http::status::ok, request, context.metrics.render(context.physics_lod.share(), context.abuse));
+    Response response =
+        plain(http::status::ok, request, services.metrics.render(services.physics_lod.share(), services.abuse));
     response.set(http::field::content_type, "text/plain; version=0.0.4; charset=utf-8");
     return response;
   }
   if (path == "/api/rooms") {
     Response refusal;
-    const auto access = api_access(context, request, refusal);
+    const auto access = api_access(services.config, request, refusal);
     if (!access) return refusal;
     nlohmann::json rooms = nlohmann::json::array();
-    for (const RoomSummary& room : context.rooms->list())
+    for (const RoomSummary& room : services.rooms.list())
       // A token opens one room: a holder sees that room alone, not which
       // other rooms exist or who is in them.
       if (access->open || room.name == access->claims->room) rooms.push_back({{"name", room.name}, {"avatars", room.avatars}, {"persons", room.persons}});
@@ -142,7 +146,7 @@ std::optional<Response> respond_to_api(ServerContext& context, const Request& re
   }
   constexpr std::string_view kPackages = "/api/packages/";
   if (path.substr(0, kPackages.size()) == kPackages)
-    return package_response(context, request, std::string(path.substr(kPackages.size())), query == "quality=preview");
+    return package_response(services, request, std::string(path.substr(kPackages.size())), query == "quality=preview");
   return std::nullopt;
 }
 

@@ -12,8 +12,9 @@ namespace fw::server {
 namespace net = boost::asio;
 using codec::CloseCode;
 
-TcpSession::TcpSession(ServerContext& context, net::ip::tcp::socket&& socket, std::string peer, ConnectionTicket ticket)
-    : ClientSession(context, socket.get_executor(), std::move(peer)), ticket_(std::move(ticket)),
+TcpSession::TcpSession(const SessionServices& services, net::ip::tcp::socket&& socket, std::string peer,
+                       ConnectionTicket ticket)
+    : ClientSession(services, socket.get_executor(), std::move(peer)), ticket_(std::move(ticket)),
       socket_(std::move(socket)), linger_(executor_) {}
 
 std::size_t TcpSession::framing_bytes(std::size_t message_bytes) const {
@@ -23,7 +24,7 @@ std::size_t TcpSession::framing_bytes(std::size_t message_bytes) const {
 void TcpSession::run() {
   // Until its hello the connection may give its place up to a newcomer
   // when the port is full (ConnectionShares).
-  ticket_.waiting(std::chrono::steady_clock::now() + context_.config.timeouts.handshake);
+  ticket_.waiting(std::chrono::steady_clock::now() + services_.config.timeouts.handshake);
   ticket_.on_evict([weak = weak_from_this()] {
     if (auto session = weak.lock()) session->give_up_place();
   });
@@ -64,7 +65,7 @@ void TcpSession::on_read(boost::system::error_code ec, std::size_t bytes) {
       if (status == codec::TcpDeframer::Status::need_more) break;
       if (status == codec::TcpDeframer::Status::error) {
         const bool too_large = deframer_.error() == codec::MessageError::too_large;
-        context_.abuse.note(Abuse::protocol_violation, peer_,
+        services_.abuse.note(Abuse::protocol_violation, peer_,
                             too_large ? "TCP: a message over 8 KiB" : "TCP: a malformed length prefix");
         on_transport_error(too_large ? CloseCode::message_too_large : CloseCode::protocol_error,
                            too_large ? "a message over 8 KiB" : "a malformed length prefix");

@@ -15,7 +15,8 @@ namespace fw::server {
 
 class TcpSession : public ClientSession {
  public:
-  TcpSession(ServerContext& context, boost::asio::ip::tcp::socket&& socket, std::string peer, ConnectionTicket ticket);
+  TcpSession(const SessionServices& services, boost::asio::ip::tcp::socket&& socket, std::string peer,
+             ConnectionTicket ticket);
   void run();
   std::size_t framing_bytes(std::size_t message_bytes) const override;
 

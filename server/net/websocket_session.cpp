@@ -34,9 +34,9 @@ websocket::close_code close_code_for(CloseCode code) {
 
 }  // namespace
 
-WebSocketSession::WebSocketSession(ServerContext& context, beast::tcp_stream&& stream, std::string peer,
+WebSocketSession::WebSocketSession(const SessionServices& services, beast::tcp_stream&& stream, std::string peer,
                                    ConnectionTicket ticket)
-    : ClientSession(context, stream.get_executor(), std::move(peer)), ticket_(std::move(ticket)),
+    : ClientSession(services, stream.get_executor(), std::move(peer)), ticket_(std::move(ticket)),
       ws_(std::move(stream)), linger_(ws_.get_executor()) {}
 
 std::size_t WebSocketSession::framing_bytes(std::size_t message_bytes) const {
@@ -49,7 +49,7 @@ void WebSocketSession::run(beast::http::request<beast::http::string_body> reques
   beast::get_lowest_layer(ws_).socket().set_option(
       boost::asio::socket_base::send_buffer_size(limits::kSocketSendBufferBytes), ignored);  // as TcpSession
   websocket::stream_base::timeout timeout{};
-  timeout.handshake_timeout = context_.config.timeouts.handshake;
+  timeout.handshake_timeout = services_.config.timeouts.handshake;
   timeout.idle_timeout = websocket::stream_base::none();  // the session's idle clock decides
   timeout.keep_alive_pings = false;
   ws_.set_option(timeout);
@@ -68,7 +68,7 @@ void WebSocketSession::run(beast::http::request<beast::http::string_body> reques
   auto self = std::static_pointer_cast<WebSocketSession>(shared_from_this());
   // Until its hello the connection may give its place up to a newcomer
   // when the port is full (ConnectionShares).
-  ticket_.waiting(std::chrono::steady_clock::now() + context_.config.timeouts.handshake);
+  ticket_.waiting(std::chrono::steady_clock::now() + services_.config.timeouts.handshake);
   ticket_.on_evict([weak = std::weak_ptr<WebSocketSession>(self)] {
     if (auto session = weak.lock()) session->give_up_place();
   });
@@ -77,7 +77,7 @@ void WebSocketSession::run(beast::http::request<beast::http::string_body> reques
       // Beast answered a bad upgrade request with 400 itself.
       if (ec != beast::error::timeout && ec != boost::asio::error::connection_reset && ec != boost::asio::error::eof &&
           ec != boost::asio::error::broken_pipe)
-        self->context_.abuse.note(Abuse::http_bad_request, self->peer_, "400: WebSocket upgrade: " + ec.message());
+        self->services_.abuse.note(Abuse::http_bad_request, self->peer_, "400: WebSocket upgrade: " + ec.message());
       return;
     }
     self->start();
@@ -99,7 +99,7 @@ void WebSocketSession::on_read(beast::error_code ec, std::size_t bytes) {
   if (ec == websocket::error::message_too_big) {
     // Beast has answered with close code 1009 already; the closing message
     // cannot follow on a closed stream, so this only counts and logs it.
-    context_.abuse.note(Abuse::protocol_violation, peer_, "a WebSocket message over 8 KiB");
+    services_.abuse.note(Abuse::protocol_violation, peer_, "a WebSocket message over 8 KiB");
     on_transport_error(CloseCode::message_too_large, "a message over 8 KiB");
     return on_transport_closed();
   }
@@ -109,7 +109,7 @@ void WebSocketSession::on_read(beast::error_code ec, std::size_t bytes) {
   }
   note_received(bytes);
   if (!ws_.got_binary()) {
-    context_.abuse.note(Abuse::protocol_violation, peer_, "a WebSocket text message");
+    services_.abuse.note(Abuse::protocol_violation, peer_, "a WebSocket text message");
     on_transport_error(CloseCode::protocol_error, "a text message; the protocol sends binary messages only");
   } else {
     const auto data = buffer_.cdata();
@@ -126,7 +126,7 @@ void WebSocketSession::note_violation(const beast::error_code& ec) {
   // close... (its "closed" is the peer's orderly close, not a violation).
   if (ec.category() != websocket::make_error_code(websocket::error::closed).category()) return;
   if (ec == websocket::error::closed) return;
-  context_.abuse.note(Abuse::protocol_violation, peer_, "WebSocket: " + ec.message());
+  services_.abuse.note(Abuse::protocol_violation, peer_, "WebSocket: " + ec.message());
 }
 
 void WebSocketSession::start_write(const SharedBytes& message) {

@@ -16,7 +16,7 @@ namespace fw::server {
 
 class WebSocketSession : public ClientSession {
  public:
-  WebSocketSession(ServerContext& context, boost::beast::tcp_stream&& stream, std::string peer,
+  WebSocketSession(const SessionServices& services, boost::beast::tcp_stream&& stream, std::string peer,
                    ConnectionTicket ticket);
   /// Answers the upgrade request, then runs the protocol.
   void run(boost::beast::http::request<boost::beast::http::string_body> request);

@@ -5,30 +5,32 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
-#include "server_context.hpp"
+#include "avatar_store.hpp"
+#include "server_config.hpp"
 
 namespace fw::server {
 
 class Room;
+class RoomRegistry;
 
 inline constexpr std::uint32_t kLobbyAvatars = 3;
 
-/// Fills context.demo_avatars with config.demo_faces faces (stored in the
-/// avatar store like uploads).
-bool make_demo_avatars(ServerContext& context, std::string& error);
-/// The procedural face of a person who wears no uploaded avatar, chosen by
-/// their name so that it stays the same; also the face shown in place of
-/// an avatar its uploader deleted. One of context.demo_avatars.
-const StoredAvatar& procedural_face_for(const ServerContext& context, const std::string& name);
+/// config.demo_faces faces, stored in `store` like uploads (and found there
+/// again at the next start); nullopt and `error`, for the person starting
+/// the server, when the configuration asks for too few or one is refused.
+std::optional<std::vector<StoredAvatar>> make_demo_avatars(const ServerConfig& config, AvatarStore& store,
+                                                           std::string& error);
 
-/// Opens "lobby" (persistent) with its three avatars; `seated` runs once
-/// they sit in it.
+/// Opens "lobby" (persistent) in `rooms` with its three avatars, the first
+/// three of `faces`; `seated` runs once they sit in it.
 /// In a cluster the lobby opens as a bridge, and its three avatars are
 /// seated by the node that first owns it (seat_lobby_residents).
-void open_demo_room(ServerContext& context, std::function<void()> seated);
-/// Seats the lobby's three avatars in `lobby`.
-void seat_lobby_residents(ServerContext& context, const std::shared_ptr<Room>& lobby);
+void open_demo_room(RoomRegistry& rooms, const std::vector<StoredAvatar>& faces, std::function<void()> seated);
+/// Seats the lobby's three avatars, wearing the first three of `faces`, in `lobby`.
+void seat_lobby_residents(const std::vector<StoredAvatar>& faces, const std::shared_ptr<Room>& lobby);
 
 }  // namespace fw::server

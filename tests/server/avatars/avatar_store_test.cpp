@@ -15,7 +15,7 @@
 #include "avatar_deletion.hpp"
 #include "avatar_retention.hpp"
 #include "demo_faces.hpp"
-#include "demo_room.hpp"
+#include "room_members.hpp"
 #include "fw/model/avatar_package.hpp"
 #include "file_bytes.hpp"
 #include "in_memory_server.hpp"
@@ -195,22 +195,28 @@ TEST(AvatarKeys, IdsAreRandomAndEachKeyOpensItsOwnAvatarOnly) {
   EXPECT_TRUE(avatar_key_matches(server_key, legacy, avatar_key(server_key, legacy)));
 }
 
+/// What a deletion on `core` decides with, as the REST API makes it.
+AvatarDeletionServices deletion_in(ServerCore& core) {
+  return {core.store(), core.rooms(), core.demo_avatars(), core.server_key()};
+}
+
 TEST(AvatarDeletionDecision, OnlyTheRightKeyDeletesAndNeverTheServersFaces) {
   InMemoryServer server;
-  auto& context = server.context();
+  ServerCore& core = server.core();
+  const AvatarDeletionServices deletion = deletion_in(core);
   std::string error;
-  const auto stored = context.store->put(make_demo_package(4), error);
+  const auto stored = core.store().put(make_demo_package(4), error);
   ASSERT_TRUE(stored) << error;
-  const std::string key = avatar_key(context.server_key, stored->asset);
-  const std::string face = context.demo_avatars.at(0).asset;
-  EXPECT_EQ(delete_avatar(context, face, avatar_key(context.server_key, face)), AvatarDeletion::server_face);
-  EXPECT_EQ(delete_avatar(context, stored->asset, ""), AvatarDeletion::no_key);
-  EXPECT_EQ(delete_avatar(context, stored->asset, avatar_key(context.server_key, face)), AvatarDeletion::wrong_key);
-  EXPECT_EQ(context.store->lookup(stored->asset).status, AvatarStatus::found);
-  EXPECT_EQ(delete_avatar(context, "not-an-id", key), AvatarDeletion::unknown);
-  EXPECT_EQ(delete_avatar(context, stored->asset, key), AvatarDeletion::deleted);
-  EXPECT_EQ(delete_avatar(context, stored->asset, key), AvatarDeletion::unknown);
-  EXPECT_EQ(context.store->lookup(face).status, AvatarStatus::found);
+  const std::string key = avatar_key(core.server_key(), stored->asset);
+  const std::string face = core.demo_avatars().at(0).asset;
+  EXPECT_EQ(delete_avatar(deletion, face, avatar_key(core.server_key(), face)), AvatarDeletion::server_face);
+  EXPECT_EQ(delete_avatar(deletion, stored->asset, ""), AvatarDeletion::no_key);
+  EXPECT_EQ(delete_avatar(deletion, stored->asset, avatar_key(core.server_key(), face)), AvatarDeletion::wrong_key);
+  EXPECT_EQ(core.store().lookup(stored->asset).status, AvatarStatus::found);
+  EXPECT_EQ(delete_avatar(deletion, "not-an-id", key), AvatarDeletion::unknown);
+  EXPECT_EQ(delete_avatar(deletion, stored->asset, key), AvatarDeletion::deleted);
+  EXPECT_EQ(delete_avatar(deletion, stored->asset, key), AvatarDeletion::unknown);
+  EXPECT_EQ(core.store().lookup(face).status, AvatarStatus::found);
   for (const auto outcome : {AvatarDeletion::unknown, AvatarDeletion::no_key, AvatarDeletion::wrong_key,
                              AvatarDeletion::server_face})
     EXPECT_FALSE(deletion_message(outcome, stored->asset).empty());
@@ -218,9 +224,9 @@ TEST(AvatarDeletionDecision, OnlyTheRightKeyDeletesAndNeverTheServersFaces) {
 
 TEST(AvatarDeletionDecision, WhoWoreADeletedAvatarIsShownWithTheProceduralFaceOfTheirName) {
   InMemoryServer server(InMemoryServer::test_config(3));
-  auto& context = server.context();
+  ServerCore& core = server.core();
   std::string error;
-  const auto stored = context.store->put(make_demo_package(5), error);
+  const auto stored = core.store().put(make_demo_package(5), error);
   ASSERT_TRUE(stored) << error;
   test::HelloOptions wearing;
   wearing.avatar = stored->asset;
@@ -233,9 +239,9 @@ TEST(AvatarDeletionDecision, WhoWoreADeletedAvatarIsShownWithTheProceduralFaceOf
   ASSERT_TRUE(bo->read_until([&] { return bo->packages[full].complete(); }));
   EXPECT_EQ(bo->packages[full].bytes, *stored->full);
 
-  EXPECT_EQ(delete_avatar(context, stored->asset, avatar_key(context.server_key, stored->asset)),
+  EXPECT_EQ(delete_avatar(deletion_in(core), stored->asset, avatar_key(core.server_key(), stored->asset)),
             AvatarDeletion::deleted);
-  const StoredAvatar& procedural = procedural_face_for(context, "Ann");
+  const StoredAvatar& procedural = procedural_face_for(core.demo_avatars(), "Ann");
   EXPECT_TRUE(bo->read_until([&] { return bo->packages[full].complete() && bo->packages[full].bytes == *procedural.full; }))
       << "Bo still sees the deleted face";
   EXPECT_TRUE(bo->errors.empty()) << bo->errors.front();
@@ -283,10 +289,10 @@ TEST_F(StoreDirectory, AnOutOfDateAvatarWithoutItsPhotoIsRefusedWithTheAdviceToU
   InMemoryServer server(InMemoryServer::test_config(), data_);
   const std::string reason = refused_hello(server);
   EXPECT_NE(reason.find("upload your photo again"), std::string::npos) << reason;
-  EXPECT_EQ(server.context().metrics.outdated_avatars.load(), 1u);
-  EXPECT_EQ(server.context().metrics.repreparations_started.load(), 0u);
+  EXPECT_EQ(server.core().metrics().outdated_avatars.load(), 1u);
+  EXPECT_EQ(server.core().metrics().repreparations_started.load(), 0u);
   EXPECT_EQ(refused_hello(server), reason) << "the same answer again";
-  EXPECT_EQ(server.context().metrics.outdated_avatars.load(), 1u) << "counted once";
+  EXPECT_EQ(server.core().metrics().outdated_avatars.load(), 1u) << "counted once";
 }
 
 TEST_F(StoreDirectory, AnOutOfDateAvatarIsRefusedWhereNobodyCanPrepareItAgain) {
@@ -310,8 +316,8 @@ TEST_F(StoreDirectory, ACorruptPackageIsRefusedAsCorrupt) {
   InMemoryServer server(InMemoryServer::test_config(), data_);
   const std::string reason = refused_hello(server);
   EXPECT_NE(reason.find("damaged"), std::string::npos) << reason;
-  EXPECT_EQ(server.context().metrics.damaged_avatars.load(), 1u);
-  EXPECT_EQ(server.context().metrics.repreparations_started.load(), 0u) << "damage is not an old version";
+  EXPECT_EQ(server.core().metrics().damaged_avatars.load(), 1u);
+  EXPECT_EQ(server.core().metrics().repreparations_started.load(), 0u) << "damage is not an old version";
 }
 
 TEST_F(StoreDirectory, TheSameFaceOfTheServersOwnRepairsADamagedOne) {

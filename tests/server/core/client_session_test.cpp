@@ -104,7 +104,7 @@ TEST(ClientSession, AFirstMessageThatIsNoHelloIsAProtocolError) {
   peer->send(codec::Chat{0, "hi"});
   EXPECT_EQ(closed_with(*peer), CloseCode::protocol_error);
   EXPECT_NE(peer->closing->reason.find("the first message must be a hello"), std::string::npos);
-  EXPECT_EQ(server.context().metrics.protocol_errors.load(), 1u);
+  EXPECT_EQ(server.core().metrics().protocol_errors.load(), 1u);
 }
 
 TEST(ClientSession, AnotherProtocolVersionIsRefusedNamingOurs) {
@@ -132,7 +132,8 @@ TEST(ClientSession, RoomNamesAreLettersDigitsAndFewMarks) {
       << "a hello past the codec's limit is malformed";
   auto longest = server.join(std::string(codec::kMaxRoomNameBytes, 'a'), "Ann");
   EXPECT_TRUE(longest->welcome);
-  EXPECT_EQ(server.context().metrics.rejected_joins.load(), 1u) << "the bad name; the malformed hello is a protocol error";
+  EXPECT_EQ(server.core().metrics().rejected_joins.load(), 1u)
+      << "the bad name; the malformed hello is a protocol error";
 }
 
 TEST(ClientSession, DisplayNamesAreOneTo32Bytes) {
@@ -161,7 +162,7 @@ TEST(ClientSession, AnAvatarKeyWithoutItsAvatarIsRefusedNotIgnored) {
   ASSERT_TRUE(peer->closing);
   EXPECT_EQ(peer->closing->code, CloseCode::bad_request);
   EXPECT_NE(peer->closing->reason.find("without the avatar"), std::string::npos) << peer->closing->reason;
-  EXPECT_EQ(server.context().abuse.count(Abuse::bad_hello), 1u);
+  EXPECT_EQ(server.core().abuse().count(Abuse::bad_hello), 1u);
 }
 
 TEST(ClientSession, EveryRefusalAndClosingForALimitIsCountedByKind) {
@@ -169,18 +170,18 @@ TEST(ClientSession, EveryRefusalAndClosingForALimitIsCountedByKind) {
   auto garbage = server.connect();
   garbage->send(codec::Chat{0, "hi"});
   EXPECT_EQ(closed_with(*garbage), CloseCode::protocol_error);
-  EXPECT_EQ(server.context().abuse.count(Abuse::protocol_violation), 1u);
+  EXPECT_EQ(server.core().abuse().count(Abuse::protocol_violation), 1u);
   EXPECT_EQ(closing_for(server, oversized_hello("no room!", "Ann")), CloseCode::bad_request);
-  EXPECT_EQ(server.context().abuse.count(Abuse::bad_hello), 1u);
+  EXPECT_EQ(server.core().abuse().count(Abuse::bad_hello), 1u);
   auto chatter = server.join("r", "Ann");
   ASSERT_TRUE(chatter->welcome);
   for (int i = 0; i < 20; ++i) chatter->send(codec::Chat{0, "spam"});
   EXPECT_EQ(closed_with(*chatter), CloseCode::rate_limited);
-  EXPECT_EQ(server.context().abuse.count(Abuse::chat_rate), 1u);
-  server.context().draining = true;
+  EXPECT_EQ(server.core().abuse().count(Abuse::chat_rate), 1u);
+  server.core().state().draining = true;
   auto late = server.join("r", "Bob");
   ASSERT_TRUE(late->closing);
-  EXPECT_EQ(server.context().abuse.count(Abuse::shutting_down), 1u);
+  EXPECT_EQ(server.core().abuse().count(Abuse::shutting_down), 1u);
 }
 
 TEST(ClientSession, WithoutAPackageTheNameChoosesAProceduralFace) {
@@ -191,13 +192,13 @@ TEST(ClientSession, WithoutAPackageTheNameChoosesAProceduralFace) {
   const std::string asset = first->welcome->avatars.back().asset;
   EXPECT_EQ(again->welcome->avatars.back().asset, asset);
   bool demo = false;
-  for (const StoredAvatar& face : server.context().demo_avatars) demo = demo || face.asset == asset;
+  for (const StoredAvatar& face : server.core().demo_avatars()) demo = demo || face.asset == asset;
   EXPECT_TRUE(demo);
 }
 
 TEST(ClientSession, AnUploadedPackageIsTheFaceItNames) {
   InMemoryServer server(InMemoryServer::test_config(2));
-  const StoredAvatar& uploaded = server.context().demo_avatars.at(1);
+  const StoredAvatar& uploaded = server.core().demo_avatars().at(1);
   auto peer = server.join("r", "Ann", {.avatar = uploaded.asset});
   ASSERT_TRUE(peer->welcome);
   EXPECT_EQ(peer->welcome->avatars.back().asset, uploaded.asset);
@@ -206,7 +207,7 @@ TEST(ClientSession, AnUploadedPackageIsTheFaceItNames) {
 
 TEST(ClientSession, WhileDrainingNobodyJoins) {
   InMemoryServer server;
-  server.context().draining = true;
+  server.core().state().draining = true;
   auto peer = server.join("r", "Ann");
   ASSERT_TRUE(peer->closing);
   EXPECT_EQ(peer->closing->code, CloseCode::shutting_down);
@@ -320,7 +321,7 @@ TEST(ClientSessionLimits, MoreChatLinesThanTheChatBurstAreAFlood) {
   for (int i = 0; i <= static_cast<int>(limits::kChatBurst); ++i) peer->send(codec::Chat{0, "line " + std::to_string(i)});
   EXPECT_EQ(closed_with(*peer), CloseCode::rate_limited);
   EXPECT_NE(peer->closing->reason.find("chat lines"), std::string::npos);
-  EXPECT_TRUE(eventually([&] { return server.context().metrics.chat_lines.load() == limits::kChatBurst; }))
+  EXPECT_TRUE(eventually([&] { return server.core().metrics().chat_lines.load() == limits::kChatBurst; }))
       << "the burst itself is relayed";
 }
 
@@ -329,7 +330,7 @@ TEST(ClientSessionLimits, OnlyAFewMessagesMayWaitForTheWelcome) {
   // The room's worker is held, so the hello waits for its welcome while the
   // peer goes on sending.
   std::promise<void> release;
-  boost::asio::post(*server.context().workers, [held = release.get_future().share()] { held.wait(); });
+  boost::asio::post(server.core().workers(), [held = release.get_future().share()] { held.wait(); });
   auto peer = server.connect();
   peer->hello("r", "Eager");
   for (std::size_t i = 0; i <= limits::kMaxEarlyMessages; ++i) peer->send(codec::Ping{static_cast<std::uint32_t>(i), 0});
@@ -360,7 +361,7 @@ TEST(ClientSessionTimeouts, NoHelloInTimeClosesTheConnection) {
   EXPECT_EQ(closed_with(*peer), CloseCode::handshake_timeout);
   EXPECT_GE(std::chrono::steady_clock::now() - start, 200ms);
   EXPECT_NE(peer->closing->reason.find("no hello within 0.2 s"), std::string::npos) << peer->closing->reason;
-  EXPECT_EQ(server.context().metrics.rejected_joins.load(), 1u);
+  EXPECT_EQ(server.core().metrics().rejected_joins.load(), 1u);
 }
 
 TEST(ClientSessionTimeouts, APeerThatSaysNothingIsClosedWhenIdle) {

@@ -59,7 +59,7 @@ TEST(InMemorySession, PushedMessagesReachTheSessionAsIfReadFromASocket) {
   InMemoryServer server;
   auto peer = server.join("r", "Ann");
   ASSERT_TRUE(peer->welcome) << (peer->closing ? peer->closing->reason : "no answer");
-  const auto received = server.context().metrics.bytes_received.load();
+  const auto received = server.core().metrics().bytes_received.load();
   EXPECT_GT(received, 0u) << "the hello counts as received";
   peer->send(codec::Ping{42, 7});
   ASSERT_TRUE(peer->read_until([&] { return !peer->pongs.empty(); }));

@@ -18,16 +18,53 @@ using test::InMemoryServer;
 
 TEST(ServerCore, OpensTheStoreWithTheDemoFaces) {
   InMemoryServer server(InMemoryServer::test_config(2));
-  const auto& demo = server.context().demo_avatars;
+  const auto& demo = server.core().demo_avatars();
   ASSERT_EQ(demo.size(), 2u);
   EXPECT_NE(demo[0].asset, demo[1].asset) << "every face its own";
   for (const StoredAvatar& face : demo) {
     EXPECT_TRUE(is_asset_id(face.asset));
     ASSERT_TRUE(face.preview && face.full);
     EXPECT_LT(face.preview->size(), face.full->size());
-    EXPECT_TRUE(server.context().store->get(face.asset)) << "stored like an upload";
+    EXPECT_TRUE(server.core().store().get(face.asset)) << "stored like an upload";
   }
-  EXPECT_TRUE(server.context().ready.load()) << "no demo room: ready at once";
+  EXPECT_TRUE(server.core().state().ready.load()) << "no demo room: ready at once";
+}
+
+TEST(ServerCore, IsWholeWhenMadeAndUsableAtOnce) {
+  ServerConfig config = InMemoryServer::test_config(2);
+  config.data = (std::filesystem::temp_directory_path() / ("fw-whole-" + std::to_string(::getpid()))).string();
+  std::string error;
+  auto core = ServerCore::open(config, error);
+  ASSERT_NE(core, nullptr) << error;
+  EXPECT_TRUE(error.empty()) << error;
+  EXPECT_EQ(core->demo_avatars().size(), 2u);
+  EXPECT_TRUE(is_asset_id(core->demo_avatars()[0].asset));
+  EXPECT_FALSE(core->server_key().empty());
+  // What sessions are made with is the core's own, not copies filled in apart.
+  const SessionServices& sessions = core->session_services();
+  EXPECT_EQ(&sessions.store, &core->store());
+  EXPECT_EQ(&sessions.rooms, &core->rooms());
+  EXPECT_EQ(&sessions.sessions, &core->sessions());
+  EXPECT_EQ(&sessions.procedural_faces, &core->demo_avatars());
+  EXPECT_EQ(&sessions.server_key, &core->server_key());
+  EXPECT_EQ(&sessions.draining, &core->state().draining);
+  // No open() to complete it: a room opens, ticks on the pool and is counted.
+  EXPECT_NE(core->rooms().find_or_create("r"), nullptr);
+  EXPECT_EQ(core->metrics().rooms.load(), 1);
+  EXPECT_TRUE(core->store().get(core->demo_avatars()[1].asset));
+  core->stop();
+  EXPECT_TRUE(core->rooms().list().empty());
+
+  // Made again on the same directory (a restart): the same key, the same faces.
+  const std::string key = core->server_key();
+  const std::string face = core->demo_avatars()[0].asset;
+  core.reset();
+  const auto again = ServerCore::open(config, error);
+  ASSERT_NE(again, nullptr) << error;
+  EXPECT_EQ(again->server_key(), key);
+  EXPECT_EQ(again->demo_avatars()[0].asset, face);
+  again->stop();
+  std::filesystem::remove_all(config.data);
 }
 
 TEST(ServerCore, SaysWhyItCannotOpenTheStore) {
@@ -35,9 +72,8 @@ TEST(ServerCore, SaysWhyItCannotOpenTheStore) {
   std::ofstream(file) << "x";
   ServerConfig config = InMemoryServer::test_config();
   config.data = file.string();
-  ServerCore core(config);
   std::string error;
-  EXPECT_FALSE(core.open(error));
+  EXPECT_EQ(ServerCore::open(config, error), nullptr) << "no half-made core";
   EXPECT_NE(error.find("cannot create the avatar store"), std::string::npos) << error;
   EXPECT_NE(error.find("--data DIR"), std::string::npos) << error;
   std::filesystem::remove(file);
@@ -48,9 +84,8 @@ TEST(ServerCore, TheLobbyNeedsThreeDemoFaces) {
   config.demo_room = true;
   config.demo_faces = 2;
   config.data = (std::filesystem::temp_directory_path() / ("fw-lobby-" + std::to_string(::getpid()))).string();
-  ServerCore core(config);
   std::string error;
-  EXPECT_FALSE(core.open(error));
+  EXPECT_EQ(ServerCore::open(config, error), nullptr);
   EXPECT_NE(error.find("at least 3"), std::string::npos) << error;
   std::filesystem::remove_all(config.data);
 }
@@ -59,7 +94,7 @@ TEST(ServerCore, IsReadyOnceTheLobbyIsSeated) {
   ServerConfig config = InMemoryServer::test_config(3);
   config.demo_room = true;
   InMemoryServer server(config);
-  EXPECT_TRUE(eventually([&] { return server.context().ready.load(); }));
+  EXPECT_TRUE(eventually([&] { return server.core().state().ready.load(); }));
   const auto rooms = server.core().rooms().list();
   ASSERT_EQ(rooms.size(), 1u);
   EXPECT_EQ(rooms[0].name, "lobby");

@@ -87,7 +87,7 @@ TEST_F(Repreparation, AnOutOfDateAvatarIsServedAgainUnderTheSameIdAfterARestart)
   std::string asset;
   {
     InMemoryServer server(InMemoryServer::test_config(), data_);
-    asset = upload(*server.context().store, photo);
+    asset = upload(server.core().store(), photo);
     ASSERT_FALSE(asset.empty());
   }
   EXPECT_EQ(file_bytes(file(asset, ".photo")), photo) << "the photo as uploaded, beside its package";
@@ -99,14 +99,14 @@ TEST_F(Repreparation, AnOutOfDateAvatarIsServedAgainUnderTheSameIdAfterARestart)
   std::filesystem::copy_file(file(asset, ".fwa"), file(asset, ".fwa.partial-4242"));
 
   InMemoryServer server(InMemoryServer::test_config(), data_);
-  AvatarRepreparation repreparation(*server.context().store, *worker_);
+  AvatarRepreparation repreparation(server.core().store(), *worker_);
   const auto early = join_wearing(server, asset);
   ASSERT_TRUE(early->closing.has_value()) << "nobody can be shown an avatar of another generic face";
   EXPECT_EQ(early->closing->code, CloseCode::avatar_being_prepared);
   EXPECT_NE(early->closing->reason.find("join again in a few seconds"), std::string::npos) << early->closing->reason;
 
-  ASSERT_TRUE(test::eventually([&] { return server.context().store->lookup(asset).avatar.has_value(); }, 60s))
-      << server.context().store->lookup(asset).message;
+  ASSERT_TRUE(test::eventually([&] { return server.core().store().lookup(asset).avatar.has_value(); }, 60s))
+      << server.core().store().lookup(asset).message;
   const auto joined = join_wearing(server, asset);
   ASSERT_TRUE(joined->welcome.has_value()) << (joined->closing ? joined->closing->reason : "");
   ASSERT_EQ(joined->welcome->avatars.size(), 1u);
@@ -114,18 +114,18 @@ TEST_F(Repreparation, AnOutOfDateAvatarIsServedAgainUnderTheSameIdAfterARestart)
 
   const auto current = file_bytes(file(asset, ".fwa"));
   EXPECT_NE(current, older);
-  EXPECT_EQ(*server.context().store->lookup(asset).avatar->full, current);
+  EXPECT_EQ(*server.core().store().lookup(asset).avatar->full, current);
   model::AvatarPackage package;
   std::string error;
   EXPECT_TRUE(model::parse_avatar_package(current, package, error)) << error;
   EXPECT_TRUE(model::parse_avatar_package(file_bytes(file(asset, ".preview.fwa")), package, error)) << error;
   EXPECT_EQ(file_bytes(file(asset, ".photo")), photo);
 
-  const auto& metrics = server.context().metrics;
+  const auto& metrics = server.core().metrics();
   EXPECT_EQ(metrics.repreparations_started.load(), 1u);
   EXPECT_TRUE(test::eventually([&] { return metrics.repreparations.load() == 1; }))
       << "counted once it is stored, which a join may beat";
-  EXPECT_NE(metrics.render(1.0, server.context().abuse).find("facewire_repreparations_total 1\n"), std::string::npos);
+  EXPECT_NE(metrics.render(1.0, server.core().abuse()).find("facewire_repreparations_total 1\n"), std::string::npos);
 }
 
 TEST_F(Repreparation, APhotoThatNoLongerMakesAnAvatarIsReportedAndRefused) {
@@ -137,14 +137,14 @@ TEST_F(Repreparation, APhotoThatNoLongerMakesAnAvatarIsReportedAndRefused) {
   ASSERT_TRUE(model::write_file_atomically(file(asset, ".photo"), std::span(photo).first(photo.size() / 2), error));
 
   InMemoryServer server(InMemoryServer::test_config(), data_);
-  AvatarRepreparation repreparation(*server.context().store, *worker_);
-  EXPECT_EQ(server.context().store->lookup(asset).status, AvatarStatus::being_prepared);
+  AvatarRepreparation repreparation(server.core().store(), *worker_);
+  EXPECT_EQ(server.core().store().lookup(asset).status, AvatarStatus::being_prepared);
   ASSERT_TRUE(test::eventually(
-      [&] { return server.context().store->lookup(asset).status != AvatarStatus::being_prepared; }, 60s));
-  const AvatarLookup refused = server.context().store->lookup(asset);
+      [&] { return server.core().store().lookup(asset).status != AvatarStatus::being_prepared; }, 60s));
+  const AvatarLookup refused = server.core().store().lookup(asset);
   EXPECT_EQ(refused.status, AvatarStatus::out_of_date);
   EXPECT_NE(refused.message.find("upload your photo again"), std::string::npos) << refused.message;
-  EXPECT_EQ(server.context().metrics.repreparation_failures.load(), 1u);
+  EXPECT_EQ(server.core().metrics().repreparation_failures.load(), 1u);
   const auto peer = join_wearing(server, asset);
   ASSERT_TRUE(peer->closing.has_value());
   EXPECT_EQ(peer->closing->code, CloseCode::bad_request);

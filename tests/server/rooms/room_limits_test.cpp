@@ -69,7 +69,7 @@ ServerConfig lobby_with_ids(std::uint32_t space, std::chrono::milliseconds quiet
 TEST(RoomLimits, ALobbyThroughManyJoinsAndLeavesKeepsAdmittingWithinItsIds) {
   constexpr std::uint32_t kSpace = 64;
   InMemoryServer server(lobby_with_ids(kSpace, 200ms));
-  ASSERT_TRUE(eventually([&] { return server.context().ready.load(); }));
+  ASSERT_TRUE(eventually([&] { return server.core().state().ready.load(); }));
   int admitted = 0;
   for (int attempt = 0; attempt < 3000 && admitted < 300; ++attempt) {
     auto peer = server.join("lobby", "Cycler");
@@ -104,7 +104,7 @@ TEST(RoomLimits, ALobbyThroughManyJoinsAndLeavesKeepsAdmittingWithinItsIds) {
 TEST(RoomLimits, WhenEveryIdRestsAJoinIsRefusedUntilOneIsFreeAgain) {
   // Ids 1 .. 15: the lobby's three avatars hold 1 .. 3, twelve are left.
   InMemoryServer server(lobby_with_ids(16, 3s));
-  ASSERT_TRUE(eventually([&] { return server.context().ready.load(); }));
+  ASSERT_TRUE(eventually([&] { return server.core().state().ready.load(); }));
   for (int i = 0; i < 12; ++i) {
     auto peer = server.join("lobby", "Cycler");
     ASSERT_TRUE(peer->welcome) << i << ": " << (peer->closing ? peer->closing->reason : "no answer");
@@ -155,7 +155,7 @@ TEST(RoomLimits, APersonWhoNeitherSendsNorReadsIsLetGoAndAQuietViewerStays) {
   ping_for(*viewer, *squatter, 4s);
   ASSERT_TRUE(eventually([&] { return squatter->session().gone(); }, 2s)) << "the squatter is let go";
   EXPECT_EQ(squatter->session().shut_down(), CloseCode::idle_timeout);
-  EXPECT_EQ(server.context().abuse.count(Abuse::idle_person), 1u);
+  EXPECT_EQ(server.core().abuse().count(Abuse::idle_person), 1u);
   EXPECT_FALSE(viewer->session().gone()) << "who reads stays, though it only pings";
   EXPECT_TRUE(viewer->read_until([&] { return viewer->presence.size() >= 2; }));
   EXPECT_EQ(viewer->presence.back().change, codec::Presence::Change::left);
@@ -167,7 +167,7 @@ TEST(RoomLimits, ARoomWhoseOnlyPersonIsLetGoCloses) {
   ASSERT_TRUE(squatter->welcome);
   squatter->session().set_reading(false);
   const auto has_room = [&] {
-    for (const auto& room : server.context().rooms->list())
+    for (const auto& room : server.core().rooms().list())
       if (room.name == "squat") return true;
     return false;
   };
@@ -187,7 +187,7 @@ TEST(RoomLimits, ARoomMadeForARefusedJoinDoesNotStay) {
   ASSERT_TRUE(second->closing);
   first.reset();
   second.reset();
-  EXPECT_TRUE(eventually([&] { return server.context().rooms->list().empty(); }, 3s));
+  EXPECT_TRUE(eventually([&] { return server.core().rooms().list().empty(); }, 3s));
 }
 
 TEST(RoomLimits, OneAddressHoldsAtMostHalfOfARoomsSeats) {
@@ -204,7 +204,7 @@ TEST(RoomLimits, OneAddressHoldsAtMostHalfOfARoomsSeats) {
   EXPECT_EQ(a3->closing->code, CloseCode::room_full);
   EXPECT_NE(a3->closing->reason.find("from your address"), std::string::npos) << a3->closing->reason;
   EXPECT_TRUE(b1->welcome) << "another address still joins";
-  EXPECT_EQ(server.context().abuse.count(Abuse::room_seats), 1u);
+  EXPECT_EQ(server.core().abuse().count(Abuse::room_seats), 1u);
 }
 
 TEST(RoomLimits, OneNetworksAddressesTogetherHoldAtMostThreeQuartersOfARoomsSeats) {
@@ -240,7 +240,7 @@ TEST(RoomLimits, OneAddressCreatesAtMostFiveRoomsAtOnce) {
   EXPECT_NE(sixth->closing->reason.find("too many new rooms"), std::string::npos) << sixth->closing->reason;
   EXPECT_TRUE(join_from(server, "10.0.0.1", "room1", "Again")->welcome) << "a room that exists still admits";
   EXPECT_TRUE(join_from(server, "10.0.0.2", "room6", "Other")->welcome) << "another address creates rooms";
-  EXPECT_EQ(server.context().abuse.count(Abuse::room_creation), 1u);
+  EXPECT_EQ(server.core().abuse().count(Abuse::room_creation), 1u);
 }
 
 // --- rates -----------------------------------------------------------------------
@@ -256,7 +256,7 @@ TEST(RoomLimits, JoinsOverTheAddresssRateAreRefusedAcrossReconnects) {
   EXPECT_NE(fourth->closing->reason.find("too many joins from your address; try again in"), std::string::npos)
       << fourth->closing->reason;
   EXPECT_TRUE(join_from(server, "10.0.0.2", "r", "Other")->welcome);
-  EXPECT_EQ(server.context().abuse.count(Abuse::join_rate), 1u);
+  EXPECT_EQ(server.core().abuse().count(Abuse::join_rate), 1u);
 }
 
 TEST(RoomLimits, JoinsIntoOneRoomFromManyAddressesHaveARate) {
@@ -276,7 +276,7 @@ TEST(RoomLimits, JoinsIntoOneRoomFromManyAddressesHaveARate) {
   EXPECT_NE(fourth->closing->reason.find("takes no more joins this moment; try again in"), std::string::npos)
       << fourth->closing->reason;
   EXPECT_TRUE(join_from(server, "10.0.1.9", "quiet", "Late")->welcome);
-  EXPECT_EQ(server.context().abuse.count(Abuse::join_rate), 1u);
+  EXPECT_EQ(server.core().abuse().count(Abuse::join_rate), 1u);
 }
 
 bool told(const InMemoryPeer& peer, const std::string& words) {
@@ -308,7 +308,7 @@ TEST(RoomLimits, ChatOverTheAddresssRateIsDroppedAndItsWriterTold) {
   reader->read_for(300ms);
   EXPECT_EQ(lines_from_people(*reader), 3u);
   EXPECT_FALSE(b->session().gone()) << "a dropped line does not cost the connection";
-  EXPECT_EQ(server.context().abuse.count(Abuse::chat_rate), 1u);
+  EXPECT_EQ(server.core().abuse().count(Abuse::chat_rate), 1u);
 }
 
 TEST(RoomLimits, ChatOverTheRoomsRateIsDroppedAndItsWriterTold) {
@@ -326,7 +326,7 @@ TEST(RoomLimits, ChatOverTheRoomsRateIsDroppedAndItsWriterTold) {
   EXPECT_TRUE(writers[3]->read_until([&] { return told(*writers[3], "not sent: room 'talk' carries at most"); }));
   writers[0]->read_for(300ms);
   EXPECT_EQ(lines_from_people(*writers[0]), 3u);
-  EXPECT_EQ(server.context().abuse.count(Abuse::chat_rate), 1u);
+  EXPECT_EQ(server.core().abuse().count(Abuse::chat_rate), 1u);
 }
 
 // A line longer than a face may take to say (15 s) is said in part, and

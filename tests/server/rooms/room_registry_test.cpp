@@ -33,7 +33,7 @@ TEST(RoomRegistry, FindsTheSameRoomByName) {
   EXPECT_EQ(rooms.find_or_create("a"), a);
   EXPECT_NE(rooms.find_or_create("b"), a);
   EXPECT_EQ(rooms.list().size(), 2u);
-  EXPECT_EQ(server.context().metrics.rooms.load(), 2);
+  EXPECT_EQ(server.core().metrics().rooms.load(), 2);
 }
 
 TEST(RoomRegistry, HoldsAtMostMaxRooms) {

@@ -113,9 +113,9 @@ class RecordingConnection : public RoomConnection {
 class RoomsOver {
  public:
   explicit RoomsOver(RoomBus& bus)
-      : services_{context().config, context().metrics, context().physics_lod, context().abuse, *context().workers,
-                  *context().store, context().demo_avatars, bus, context().draining},
-        registry_(services_, *context().addresses) {}
+      : services_{core().config(), core().metrics(),      core().physics_lod(), core().abuse(),
+                  core().workers(), core().store(), core().demo_avatars(), bus, core().state().draining},
+        registry_(services_, core().addresses()) {}
   ~RoomsOver() {
     // The rooms hold the registry and the bus: they go first.
     registry_.close_all_rooms();
@@ -130,17 +130,17 @@ class RoomsOver {
   JoinRequest person(const std::string& name, std::shared_ptr<RecordingConnection> connection) {
     JoinRequest request;
     request.name = name;
-    request.avatar = context().demo_avatars[0];
+    request.avatar = core().demo_avatars()[0];
     request.connection = std::move(connection);
     request.resume = name + "-resume";
     request.address = "192.0.2.1";
     return request;
   }
   RoomRegistry& registry() { return registry_; }
-  const StoredAvatar& face() { return context().demo_avatars[0]; }
+  const StoredAvatar& face() { return core().demo_avatars()[0]; }
 
  private:
-  ServerContext& context() { return server_.context(); }
+  ServerCore& core() { return server_.core(); }
 
   InMemoryServer server_;
   RoomServices services_;

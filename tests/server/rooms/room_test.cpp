@@ -30,7 +30,7 @@ std::shared_ptr<Room> room_with_autonomous_avatars(InMemoryServer& server, const
   for (std::size_t i = 0; i < count; ++i) {
     JoinRequest request;
     request.name = "Auto" + std::to_string(i);
-    request.avatar = server.context().demo_avatars.at(i);
+    request.avatar = server.core().demo_avatars().at(i);
     room->join(std::move(request));
   }
   std::promise<void> seated;
@@ -55,7 +55,7 @@ TEST(InMemoryRoom, AJoinerIsWelcomedWithEveryoneAndTheOthersAreTold) {
   const auto room = server.core().rooms().find_or_create("r");
   EXPECT_EQ(room->person_count(), 2u);
   EXPECT_EQ(room->avatar_count(), 2u);
-  EXPECT_EQ(server.context().metrics.avatars.load(), 2);
+  EXPECT_EQ(server.core().metrics().avatars.load(), 2);
 }
 
 TEST(InMemoryRoom, LeavingIsToldToTheOthersAndTheLastToLeaveClosesTheRoom) {
@@ -71,7 +71,7 @@ TEST(InMemoryRoom, LeavingIsToldToTheOthersAndTheLastToLeaveClosesTheRoom) {
   ASSERT_EQ(server.core().rooms().list().size(), 1u);
   ann.reset();
   EXPECT_TRUE(eventually([&] { return server.core().rooms().list().empty(); })) << "an empty room closes";
-  EXPECT_TRUE(eventually([&] { return server.context().metrics.rooms.load() == 0; }));
+  EXPECT_TRUE(eventually([&] { return server.core().metrics().rooms.load() == 0; }));
 }
 
 TEST(InMemoryRoom, APersistentRoomStaysWithItsAutonomousAvatars) {
@@ -101,7 +101,7 @@ TEST(InMemoryRoom, ChatReachesEveryoneTheWriterIncluded) {
   ASSERT_TRUE(bob->read_until([&] { return !bob->chat.empty(); }));
   EXPECT_EQ(ann->chat[0].text, "hello, Ann");
   EXPECT_EQ(ann->chat[0].from, bob->welcome->you) << "the server says who wrote, whatever the client claimed";
-  EXPECT_EQ(server.context().metrics.chat_lines.load(), 1u);
+  EXPECT_EQ(server.core().metrics().chat_lines.load(), 1u);
   bob->send(codec::Chat{0, ""});
   bob->read_for(100ms);
   EXPECT_EQ(bob->chat.size(), 1u) << "an empty line is dropped";
@@ -302,7 +302,7 @@ TEST(InMemoryRoom, ASubscriberThatStopsReadingHasTicksSkippedAndThenGetsTheNewes
   peer->read_for(300ms);
 
   peer->session().set_reading(false);
-  const auto skipped_before = server.context().metrics.skipped_ticks.load();
+  const auto skipped_before = server.core().metrics().skipped_ticks.load();
   std::size_t most_queued = 0, queued_at_half = 0;
   for (int i = 0; i < 75; ++i) {  // 1.5 s: 45 ticks
     std::this_thread::sleep_for(20ms);
@@ -310,7 +310,7 @@ TEST(InMemoryRoom, ASubscriberThatStopsReadingHasTicksSkippedAndThenGetsTheNewes
     if (i == 37) queued_at_half = peer->session().queued_bytes();
   }
   const std::size_t queued_at_end = peer->session().queued_bytes();
-  const auto skipped = server.context().metrics.skipped_ticks.load() - skipped_before;
+  const auto skipped = server.core().metrics().skipped_ticks.load() - skipped_before;
   EXPECT_GE(skipped, 20u) << "most of the 45 ticks (fewer on a busy machine) are skipped";
   // The stream stops at half a second of budget (4 KB here) and a message
   // on its way; a whole second of budget is a generous bound.

@@ -76,16 +76,16 @@ class StreamHarness {
   explicit StreamHarness(std::uint32_t budget_bps, std::uint32_t packages = 1, bool timestamps = false)
       : server_(quiet_config(packages)), peer_(server_.connect()),
         connection_(std::make_shared<CountingConnection>(peer_->shared_session())),
-        stream_(settings(budget_bps, timestamps), connection_, server_.context().metrics) {
+        stream_(settings(budget_bps, timestamps), connection_, server_.core().metrics()) {
     drain();  // the stream header, which a room sends after its welcome
   }
 
   InMemoryPeer& peer() { return *peer_; }
   InMemorySession& session() { return peer_->session(); }
   SubscriberStream& stream() { return stream_; }
-  Metrics& metrics() { return server_.context().metrics; }
+  Metrics& metrics() { return server_.core().metrics(); }
   /// The demo faces' packages, to stream as if avatars of the room.
-  const std::vector<StoredAvatar>& packages() { return server_.context().demo_avatars; }
+  const std::vector<StoredAvatar>& packages() { return server_.core().demo_avatars(); }
   std::uint32_t ticks() const { return tick_; }
 
   /// One tick with these faces, then (while the peer reads) waits until it

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <unistd.h>
@@ -140,19 +141,16 @@ class InMemoryServer {
                                                std::to_string(counter_++))) {
     owns_data_ = true;
   }
-  /// A server on the data directory `data` (a restart), which it leaves in place.
+  /// A server on the data directory `data` (a restart), which it leaves in
+  /// place. Throws, failing the test, when the core cannot be made.
   InMemoryServer(ServerConfig config, std::filesystem::path data)
-      : data_(std::move(data)),
-        core_(with_data(std::move(config), data_)),
+      : data_(std::move(data)), core_(open_core(with_data(std::move(config), data_))),
         work_(boost::asio::make_work_guard(io_)) {
-    std::string error;
-    opened_ = core_.open(error);
-    EXPECT_TRUE(opened_) << error;
-    core_.open_demo_room();
+    core_->open_demo_room();
     io_thread_ = std::thread([this] { io_.run(); });
   }
   ~InMemoryServer() {
-    core_.stop();
+    core_->stop();
     work_.reset();
     io_.stop();
     io_thread_.join();
@@ -162,14 +160,13 @@ class InMemoryServer {
   InMemoryServer(const InMemoryServer&) = delete;
   InMemoryServer& operator=(const InMemoryServer&) = delete;
 
-  server::ServerCore& core() { return core_; }
-  server::ServerContext& context() { return core_.context(); }
+  server::ServerCore& core() { return *core_; }
   boost::asio::io_context& io() { return io_; }
 
   /// A connection whose session has started (its clock runs), not greeted
   /// yet, from the peer address `from`.
   std::unique_ptr<InMemoryPeer> connect(const std::string& from = "in-memory") {
-    auto session = std::make_shared<InMemorySession>(context(), boost::asio::make_strand(io_), from);
+    auto session = std::make_shared<InMemorySession>(core_->session_services(), boost::asio::make_strand(io_), from);
     session->run();
     return std::make_unique<InMemoryPeer>(std::move(session));
   }
@@ -179,7 +176,7 @@ class InMemoryServer {
     auto peer = connect();
     HelloOptions with_key = options;
     if (!with_key.avatar.empty() && !with_key.avatar_key)
-      with_key.avatar_key = server::avatar_key(context().server_key, with_key.avatar);
+      with_key.avatar_key = server::avatar_key(core_->server_key(), with_key.avatar);
     peer->hello(room, name, with_key);
     peer->read_until([&] { return peer->welcome.has_value() || peer->closing.has_value(); });
     return peer;
@@ -190,14 +187,19 @@ class InMemoryServer {
     config.data = data.string();
     return config;
   }
+  static std::unique_ptr<server::ServerCore> open_core(const ServerConfig& config) {
+    std::string error;
+    auto core = server::ServerCore::open(config, error);
+    if (!core) throw std::runtime_error("the server core cannot be made: " + error);
+    return core;
+  }
 
   static inline std::atomic<int> counter_{0};
   std::filesystem::path data_;
-  server::ServerCore core_;
+  std::unique_ptr<server::ServerCore> core_;
   boost::asio::io_context io_;
   boost::asio::executor_work_guard<boost::asio::io_context::executor_type> work_;
   std::thread io_thread_;
-  bool opened_ = false;
   bool owns_data_ = false;
 };
 
