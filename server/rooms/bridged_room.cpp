@@ -10,6 +10,10 @@ namespace fw::server {
 namespace {
 // A bridging node asks the owner for its roster this often until it comes.
 constexpr auto kSyncRetry = std::chrono::milliseconds(500);
+// A tick whose faces are not the people this node knows (a join or a leave
+// it never heard of, while Redis was away) asks for the roster again, at
+// most this often.
+constexpr auto kResyncOnDivergence = std::chrono::seconds(2);
 // An up join the owner did not answer in this time is given up: the client
 // is asked to come back (the owner may have died; a new one takes over).
 constexpr auto kJoinAnswerTimeout = std::chrono::seconds(6);
@@ -150,6 +154,7 @@ void BridgedRoom::on_roster(bridge::Down& message) {
   // what changed since the last roster (another owner took over) is told
   // to them as presence.
   std::map<std::uint32_t, Member> members;
+  std::vector<std::uint32_t> newcomers;
   for (bridge::MemberRecord& record : message.members) {
     const std::uint32_t id = record.info.id;
     auto old = members_.find(id);
@@ -157,14 +162,8 @@ void BridgedRoom::on_roster(bridge::Down& message) {
     if (old != members_.end()) member = std::move(old->second);
     else member.avatar = stored_face_of(services_.store, record.info, name_);
     member.info = record.info;
-    if (old == members_.end())
-      for (auto& [other_id, other] : members_)
-        if (other.stream) {
-          other.stream->post_presence(codec::Presence::Change::joined, id,
-                                      encode_shared(codec::Presence{codec::Presence::Change::joined, member.info}));
-          other.stream->add_avatar(id, member.avatar.preview, member.avatar.full);
-        }
     if (old != members_.end()) members_.erase(old);
+    else newcomers.push_back(id);
     members.emplace(id, std::move(member));
   }
   // Whoever is here and not in the roster lost their seat (a room restored
@@ -185,6 +184,10 @@ void BridgedRoom::on_roster(bridge::Down& message) {
       }
   }
   members_ = std::move(members);
+  // Newcomers are introduced once everyone is in place, to every local
+  // person whatever the roster's order (introduced while the roster was
+  // read, those listed before them were skipped: they had moved already).
+  for (const std::uint32_t id : newcomers) introduce_to_others(members_, members_.at(id));
   std::size_t persons = 0;
   for (const auto& [id, member] : members_) persons += member.info.person;
   counts_.persons.store(persons);
@@ -253,9 +256,19 @@ void BridgedRoom::on_tick(bridge::Down& message) {
   bridged_faces_.clear();
   bridged_faces_.reserve(message.faces.size());
   faces_.clear();
+  std::size_t known = 0;
   for (const bridge::FaceEntry& entry : message.faces) {
     if (!members_.count(entry.id)) continue;
+    ++known;
     bridged_faces_.push_back(entry.face);
+  }
+  // The owner sends every member's face each tick: other faces, or fewer,
+  // mean this node's roster fell behind (news lost while Redis was down).
+  const auto now = std::chrono::steady_clock::now();
+  if ((known != message.faces.size() || known != members_.size()) && now - last_resync_ >= kResyncOnDivergence) {
+    last_resync_ = now;
+    spdlog::info("room {}: the owner's faces differ from the people known here; asking for the roster", name_);
+    send_up(bridge::up_sync(services_.bus.node()));
   }
   std::size_t next = 0;
   for (const bridge::FaceEntry& entry : message.faces)

@@ -64,6 +64,7 @@ class BridgedRoom : public RoomRole {
   std::map<std::string, SentJoin> sent_joins_;  ///< by join_ref, waiting for the owner's answer
   std::uint64_t next_join_ref_ = 1;
   std::chrono::steady_clock::time_point last_sync_{}, last_down_{};
+  std::chrono::steady_clock::time_point last_resync_{};  ///< the last roster asked for because ticks disagreed
   std::uint32_t ticks_since_check_ = 0;  ///< for housekeeping four times a second
 };
 
