@@ -63,7 +63,8 @@ class ActionSelection {
   void snub(FaceId face, double seconds);
   /// The person performs an expression: autonomous expressions and mimicry pause.
   void hold_expression(double seconds);
-  /// Someone wrote in the chat: look at them for `seconds` (a command in force wins).
+  /// Someone named this face in a chat line: look at them for `seconds`, as
+  /// a command would (a person's command in force wins).
   void draw_attention(FaceId writer, double seconds);
 
   /// Decides this tick. `seen`: the faces perceived; `gaze`: where the eyes
