@@ -20,13 +20,11 @@ FacePoint FaceScan::step(double now_s, std::optional<FaceId> attended, bool atte
     until_s_ = now_s + fixation();
   } else if (now_s >= until_s_) {
     const double mouth = attended_speaks ? kMouthWhileSpeaking : kMouthOtherwise;
-    if (point_ != FacePoint::mouth && unit(rng_) < mouth) {
-      point_ = FacePoint::mouth;
-    } else if (point_ == FacePoint::mouth) {
-      point_ = either_eye();
-    } else {
-      point_ = point_ == FacePoint::left_eye ? FacePoint::right_eye : FacePoint::left_eye;
-    }
+    const double draw = unit(rng_);
+    FacePoint next = draw < mouth ? FacePoint::mouth : draw < mouth + kNose ? FacePoint::nose : either_eye();
+    // An eye after an eye is the other one: the scan moves.
+    if (next == point_) next = next == FacePoint::left_eye ? FacePoint::right_eye : either_eye();
+    point_ = next;
     until_s_ = now_s + fixation();
   }
   return point_;
@@ -34,6 +32,7 @@ FacePoint FaceScan::step(double now_s, std::optional<FaceId> attended, bool atte
 
 glm::vec3 face_point_room(const FaceSnapshot& s, FacePoint p) {
   if (p == FacePoint::mouth) return s.mouth_room_mm;
+  if (p == FacePoint::nose) return s.eye_mid_room_mm + 0.55f * (s.mouth_room_mm - s.eye_mid_room_mm);
   // The head's right (its own left eye sits toward +x, as in eye_head.cpp)
   // turned by the head's yaw, then by the seat into the room.
   const float yaw = s.head_yaw_rad;

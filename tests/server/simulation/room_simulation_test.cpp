@@ -90,6 +90,9 @@ TEST(RoomSimulationSpeech, AChatLineIsSpokenWithTheMouth) {
   RoomSimulation room = room_with_physics();
   const AvatarId a = room.add_avatar({"a", true});
   room.add_avatar({"b", true});
+  // Its person holds a neutral face, so that no smile of its own parts the
+  // lips: what moves the mouth below is the line alone.
+  ASSERT_EQ(room.command(a, ExpressCommand{"neutral", 1, 30}), "");
   for (int i = 0; i < 60; ++i) room.tick();
   float before = 0;
   for (int i = 0; i < 30; ++i) {

@@ -21,15 +21,18 @@
 
 namespace fw::behavior {
 
-enum class FacePoint : std::uint8_t { left_eye, right_eye, mouth };
+enum class FacePoint : std::uint8_t { left_eye, right_eye, nose, mouth };
 
 class FaceScan {
  public:
   /// A fixation on one point of a face (log-normal: median, sigma of log).
-  static constexpr double kFixationS = 0.45, kFixationSpread = 0.4;
+  static constexpr double kFixationS = 0.33, kFixationSpread = 0.4;
   static constexpr double kShortestS = 0.25, kLongestS = 2.0;
-  /// How often the mouth is the next point, while the face speaks and not.
-  static constexpr double kMouthWhileSpeaking = 0.45, kMouthOtherwise = 0.15;
+  /// How often the next point is the mouth, and the nose (the centre of the
+  /// face, where many fixations land: Henderson et al. 2005), while the face
+  /// speaks and not; the rest go to an eye.
+  static constexpr double kMouthWhileSpeaking = 0.3, kMouthOtherwise = 0.05;
+  static constexpr double kNose = 0.25;
 
   explicit FaceScan(std::uint64_t seed);
   /// The point to rest on at `now_s`: a new face starts at an eye.
@@ -44,7 +47,7 @@ class FaceScan {
 
 /// The point `p` of the face `s` describes, in the room frame: an eye 32 mm
 /// to either side of the eyes' midpoint, across the head as it is turned,
-/// or the mouth.
+/// the mouth, or the nose (a little over halfway from the eyes to the mouth).
 glm::vec3 face_point_room(const FaceSnapshot& s, FacePoint p);
 
 }  // namespace fw::behavior
