@@ -242,11 +242,7 @@ void BridgedRoom::on_left(std::uint32_t avatar) {
   }
   const bool person = it->second.info.person;
   members_.erase(it);
-  attention_sent_.erase(avatar);
-  counts_.avatars.fetch_sub(1);
-  services_.metrics.avatars.fetch_sub(1);
-  if (person) counts_.persons.fetch_sub(1);
-  tell_left(members_, avatar, person);
+  count_departure(members_, attention_sent_, counts_, services_.metrics, avatar, person);
   room_.close_if_unpeopled();
 }
 

@@ -239,12 +239,8 @@ void OwnedRoom::leave(std::uint32_t avatar) {
   services_.abuse.event(it->second.address.empty() ? std::string_view("-") : std::string_view(it->second.address),
                         "room '" + name_ + "': " + it->second.info.name + " left");
   members_.erase(it);
-  attention_sent_.erase(avatar);
   simulation_.remove_avatar(avatar);
-  counts_.avatars.fetch_sub(1);
-  services_.metrics.avatars.fetch_sub(1);
-  if (person) counts_.persons.fetch_sub(1);
-  tell_left(members_, avatar, person);
+  count_departure(members_, attention_sent_, counts_, services_.metrics, avatar, person);
   services_.bus.forget_member(name_, avatar);
   send_down(bridge::down_left(avatar));
   if (const SharedBytes moved = reseat()) broadcast_seats(moved);

@@ -92,6 +92,20 @@ void tell_left(Members& members, std::uint32_t avatar, bool person) {
   }
 }
 
+/// `avatar`, already erased from `members`, left: what was last said of
+/// whom it attends goes, the room's counts (RoomCounts) and the server's
+/// avatar metric drop, and the people connected here are told. Both roles
+/// end a departure this way.
+template <class Members, class Counts>
+void count_departure(Members& members, std::map<std::uint32_t, codec::Attention::Entry>& attention_sent,
+                     Counts& counts, Metrics& metrics, std::uint32_t avatar, bool person) {
+  attention_sent.erase(avatar);
+  counts.avatars.fetch_sub(1);
+  metrics.avatars.fetch_sub(1);
+  if (person) counts.persons.fetch_sub(1);
+  tell_left(members, avatar, person);
+}
+
 /// The room closes: every member's connection is closed and the members
 /// forgotten.
 template <class Members>

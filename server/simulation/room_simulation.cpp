@@ -245,14 +245,17 @@ void RoomSimulation::chat(AvatarId avatar, std::string_view text) {
 
 void RoomSimulation::say_waiting_lines() {
   State& s = *state_;
+  bool said = false;
   for (const AvatarId avatar : s.lines.with_lines()) {
     std::optional<LineToSay> line = s.lines.next(avatar, s.room.speaking(avatar));
     if (!line) continue;
     s.room.chat(avatar, line->text, line->mouth ? &*line->mouth : nullptr);
+    said = true;
     if (!line->note.empty())
       s.events.push_back({s.room.tick_index(), avatar, "speech: " + line->note, "your line was " + line->note});
   }
-  s.collect_events();
+  // The room's events of a line said (chat, blush) before the tick's own.
+  if (said) s.collect_events();
 }
 
 bool RoomSimulation::speaking(AvatarId avatar) const {
