@@ -54,5 +54,20 @@ TEST(Perception, WhoLooksAtWhom) {
   EXPECT_EQ(attending_count(10, room), 0);
 }
 
+TEST(Perception, GazeOnANearFacesCheekRestsOnThatFace) {
+  // Two faces 250 mm apart, eye to eye: the other's cheek, 40 mm beside its
+  // nose, is 9 degrees off its eyes and mouth (beyond the 8 degree cone)
+  // yet on the face, as an eye tracker's face area counts it.
+  FaceSnapshot other;
+  other.id = 2;
+  other.eye_mid_room_mm = {0, 0, 250};
+  other.mouth_room_mm = {0, -70, 250};
+  const glm::vec3 cheek{40, -35, 250};
+  EXPECT_EQ(face_on_gaze(1, {0, 0, 0}, glm::normalize(cheek), {other}), std::optional<FaceId>(2));
+  // A metre away a gaze 200 mm beside the face is off it.
+  other.eye_mid_room_mm.z = other.mouth_room_mm.z = 1000;
+  EXPECT_EQ(face_on_gaze(1, {0, 0, 0}, glm::normalize(glm::vec3{200, -35, 1000}), {other}), std::nullopt);
+}
+
 }  // namespace
 }  // namespace fw::behavior

@@ -191,11 +191,26 @@ struct BehaviorRoom::Impl {
       for (const FaceSnapshot& s : room)
         if (look->away_from && s.id == *look->away_from)
           from = direction_angles(room_to_seat(f.snapshot.seat, s.eye_mid_room_mm) - f.eyes.eye_position_seat());
-      const YawPitch away{from.yaw_rad + look->away_offset.yaw_rad, from.pitch_rad + look->away_offset.pitch_rad};
-      intent.look_seat_mm = f.eyes.eye_position_seat() + 1500.0f * direction_from_angles(away);
+      intent.look_seat_mm = f.eyes.eye_position_seat() + 1500.0f * direction_from_angles(away_from_faces(f, from, look->away_offset, room));
     }
     // Mimicry needs the mimicked face in view of the eyes, not just in mind.
     if (intent.mimic && intent.attend != intent.mimic) intent.mimic.reset();
+  }
+
+  // A look away rests on no face: the drawn offset from `from`, else the
+  // same to the other side, else further down (below the ring of faces).
+  static YawPitch away_from_faces(const Face& f, YawPitch from, YawPitch offset, const std::vector<FaceSnapshot>& room) {
+    const glm::vec3 eyes_room = f.snapshot.eye_mid_room_mm;
+    const auto on_a_face = [&](YawPitch a) {
+      const glm::vec3 d = seat_to_room(f.snapshot.seat, direction_from_angles(a)) - f.snapshot.seat.origin_mm;
+      return face_on_gaze(f.id, eyes_room, glm::normalize(d), room).has_value();
+    };
+    const YawPitch candidates[] = {{from.yaw_rad + offset.yaw_rad, from.pitch_rad + offset.pitch_rad},
+                                   {from.yaw_rad - offset.yaw_rad, from.pitch_rad + offset.pitch_rad},
+                                   {from.yaw_rad + offset.yaw_rad, from.pitch_rad + 2 * offset.pitch_rad}};
+    for (const YawPitch& a : candidates)
+      if (!on_a_face(a)) return a;
+    return candidates[2];
   }
 
   // The line being said: its track moves the jaw and lips (articulation

@@ -27,8 +27,17 @@ void ConversationGaze::draw_away_offset() {
 std::optional<ConversationLook> ConversationGaze::step(const ConversationScene& scene,
                                                        const std::vector<PerceivedFace>& seen) {
   if (scene.my_start_s) return speak(scene, seen);
-  speech_start_s_ = -1;
-  return listen(scene, seen);
+  if (speech_start_s_ >= 0) {
+    // This face's line just ended, looking at a listener (the end look):
+    // it hands the turn over by holding that look a moment (Kendon 1967),
+    // as its listeners hold theirs.
+    speech_start_s_ = -1;
+    handover_until_s_ = speaker_looking_ && listener_ ? scene.now_s + kAfterS : -1;
+  }
+  std::optional<ConversationLook> look = listen(scene, seen);
+  if (!look && scene.now_s < handover_until_s_ && listener_ && sees(seen, *listener_))
+    return ConversationLook{listener_, {}, {}};
+  return look;
 }
 
 std::optional<ConversationLook> ConversationGaze::listen(const ConversationScene& scene,

@@ -44,9 +44,14 @@ std::optional<FaceId> face_on_gaze(FaceId self, glm::vec3 origin, glm::vec3 dire
   };
   for (const FaceSnapshot& other : room) {
     if (other.id == self) continue;
-    // Gaze on the eyes or on the mouth rests on the face: eyes scan between
-    // them (face_scan.hpp), and a near face's mouth lies beyond the cone.
-    const float angle = std::min(angle_to(other.eye_mid_room_mm), angle_to(other.mouth_room_mm));
+    // Gaze on the eyes, the nose or the mouth rests on the face: eyes scan
+    // between them (face_scan.hpp). A near face's features lie beyond the
+    // cone; its area, seen from here, is wider.
+    const glm::vec3 centre = 0.5f * (other.eye_mid_room_mm + other.mouth_room_mm);
+    const float distance = glm::length(centre - origin);
+    const float area = distance > 0 ? std::atan(kFaceAreaRadiusMm / distance) : kAttendConeRad;
+    const float angle = std::min({angle_to(other.eye_mid_room_mm), angle_to(other.mouth_room_mm),
+                                  angle_to(centre) * kAttendConeRad / std::max(area, kAttendConeRad)});
     if (angle <= best_angle) {
       best_angle = angle;
       best = other.id;

@@ -9,7 +9,8 @@
 //   and longer looks away (Argyle & Cook 1976); it looks away as a long
 //   utterance begins, in over 70 % of them, and at a listener as it ends
 //   (Kendon 1967, "Some functions of gaze-direction in social
-//   interaction", Acta Psychologica 26).
+//   interaction", Acta Psychologica 26), holding that look a moment after
+//   its last word as the turn passes.
 // - Mutual gaze comes of the two: episodes of a second or two (Argyle &
 //   Ingham 1972: mean mutual glance 1.18 s; Rogers et al. 2018: ~2.2 s).
 // - A listener turns to a new speaker with a human latency, a saccade's
@@ -58,8 +59,8 @@ class ConversationGaze {
   static constexpr double kEndLookS = 1.0;
   /// Reaction to a new speaker: mean and sigma of the latency, and its bounds.
   static constexpr double kLatencyS = 0.2, kLatencySpreadS = 0.05, kLatencyMinS = 0.12, kLatencyMaxS = 0.4;
-  /// After the speaker stops, a listener keeps looking a moment, then the
-  /// routines take over again.
+  /// After the speaker stops, a listener keeps looking a moment, and so does
+  /// the speaker at its last listener; then the routines take over again.
   static constexpr double kAfterS = 0.8;
   /// A listener whose glance would end while the speaker looks at it holds
   /// on up to this much longer.
@@ -90,6 +91,7 @@ class ConversationGaze {
   bool speaker_looking_ = false;
   double speaker_phase_until_s_ = 0;
   std::optional<FaceId> listener_;
+  double handover_until_s_ = -1;  ///< the line ended: keep looking at `listener_` until then
   YawPitch away_offset_{};
 };
 

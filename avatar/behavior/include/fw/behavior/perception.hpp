@@ -48,12 +48,19 @@ struct PerceivedFace {
 inline constexpr float kFieldOfViewHalfRad = 1.75f;  ///< 100 degrees
 /// A gaze within this angle of a face's eyes rests on that face.
 inline constexpr float kAttendConeRad = 0.14f;  ///< 8 degrees
+/// A near face is larger than that cone: a gaze that passes within this
+/// distance of the face's centre (between the eyes and the mouth) rests on
+/// it too, as an eye tracker's face area of interest counts any fixation on
+/// the face, eyes, nose or mouth (the face region of Rogers et al. 2018;
+/// about the half-width of an adult face, 140-150 mm wide).
+inline constexpr float kFaceAreaRadiusMm = 70.0f;
 
 /// The faces `self` perceives in `room` (itself excluded), nearest first.
 std::vector<PerceivedFace> perceive(const FaceSnapshot& self, const std::vector<FaceSnapshot>& room);
 
 /// The face whose eyes or mouth lie nearest `gaze` (origin, unit direction)
-/// within kAttendConeRad, if any; `self` is never one.
+/// within kAttendConeRad, or whose face area it crosses, if any; `self` is
+/// never one.
 std::optional<FaceId> face_on_gaze(FaceId self, glm::vec3 origin, glm::vec3 direction,
                                    const std::vector<FaceSnapshot>& room);
 
