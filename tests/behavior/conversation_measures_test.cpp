@@ -122,7 +122,8 @@ double median_of(std::vector<double> v) {
 struct Pooled {
   double listener_at_speaker = 0, listener_ticks = 0, speaker_at_listener = 0, speaker_ticks = 0;
   int long_lines = 0, begin_away = 0, big_moves = 0, bell = 0;
-  std::vector<double> mutual, amplitudes;
+  int turns_watched = 0, turns_in_unison = 0;  ///< new speakers met by two listeners or more
+  std::vector<double> mutual, amplitudes, reactions;
 };
 
 // Records the room of `seed`, prints its measures and adds its counts to `pooled`.
@@ -198,6 +199,38 @@ void measure_room(std::uint64_t seed, Pooled& pooled) {
       }
     }
 
+  // Reaction to a new speaker: for each listener not already looking at
+  // it, when the gaze shift that brings its eyes there begins (the last
+  // tick of motion after its last of rest, within 2 s of the line), after
+  // the line begins.
+  // Listeners in unison: every such listener of a line starts in one tick.
+  const auto gaze_speed = [&](std::size_t t, FaceId id) {
+    const YawPitch a = r.gaze[t - 1].at(id), b = r.gaze[t].at(id);
+    return std::hypot(b.yaw_rad - a.yaw_rad, b.pitch_rad - a.pitch_rad) / r.dt;
+  };
+  std::vector<double> reactions;
+  int turns_watched = 0, turns_in_unison = 0;
+  for (std::size_t u = 0; u < r.utterance_starts.size(); ++u) {
+    const auto first = static_cast<std::size_t>(r.utterance_starts[u] / r.dt);
+    const FaceId speaker = r.utterance_speakers[u];
+    std::vector<std::size_t> onsets;
+    for (FaceId id = 1; id <= 4; ++id) {
+      if (id == speaker || first == 0 || r.looking_at[first].at(id) == speaker) continue;
+      std::size_t arrive = first;
+      while (arrive < r.looking_at.size() && arrive < first + static_cast<std::size_t>(2 / r.dt) &&
+             r.looking_at[arrive].at(id) != speaker)
+        ++arrive;
+      if (arrive >= r.looking_at.size() || r.looking_at[arrive].at(id) != speaker) continue;
+      std::size_t onset = arrive;
+      while (onset > first && gaze_speed(onset, id) > 30 * kRadiansPerDegree) --onset;
+      onsets.push_back(onset);
+      reactions.push_back(static_cast<double>(onset + 1 - first) * r.dt);  // its first tick of motion
+    }
+    if (onsets.size() < 2) continue;
+    ++turns_watched;
+    turns_in_unison += std::all_of(onsets.begin(), onsets.end(), [&](std::size_t o) { return o == onsets.front(); }) ? 1 : 0;
+  }
+
   // Saccades: runs of ticks in which gaze moves faster than 30 deg/s; the
   // amplitude is where the run ends against where it began.
   std::vector<double> amplitudes;
@@ -263,6 +296,9 @@ void measure_room(std::uint64_t seed, Pooled& pooled) {
   pooled.big_moves += big_moves;
   pooled.bell += bell;
   pooled.mutual.insert(pooled.mutual.end(), mutual.begin(), mutual.end());
+  pooled.reactions.insert(pooled.reactions.end(), reactions.begin(), reactions.end());
+  pooled.turns_watched += turns_watched;
+  pooled.turns_in_unison += turns_in_unison;
   pooled.amplitudes.insert(pooled.amplitudes.end(), amplitudes.begin(), amplitudes.end());
 }
 
@@ -277,6 +313,8 @@ TEST(Conversation, GazeAndHeadsMoveAsPeoplesDo) {
               "moves peaking mid-move %d of %d\n",
               100 * listeners, 100 * speakers, p.begin_away, p.long_lines, median_of(p.mutual), p.mutual.size(),
               100 * small, p.amplitudes.size(), p.bell, p.big_moves);
+  std::printf("pooled: a new speaker met after a median %.2f s by %zu listeners; %d of %d turns met in unison\n",
+              median_of(p.reactions), p.reactions.size(), p.turns_in_unison, p.turns_watched);
   EXPECT_GE(listeners, 0.60);
   EXPECT_LE(listeners, 0.90);
   EXPECT_GE(speakers, 0.25);
@@ -288,6 +326,12 @@ TEST(Conversation, GazeAndHeadsMoveAsPeoplesDo) {
   EXPECT_GE(median_of(p.mutual), 1.0);
   EXPECT_LE(median_of(p.mutual), 3.0);
   EXPECT_GE(small, 0.60);
+  // A saccade's latency, 150-250 ms (Carpenter 1988), each listener its own.
+  ASSERT_GT(p.reactions.size(), 30u);
+  EXPECT_GE(median_of(p.reactions), 0.15);
+  EXPECT_LE(median_of(p.reactions), 0.30);
+  ASSERT_GT(p.turns_watched, 10);
+  EXPECT_LE(p.turns_in_unison, p.turns_watched / 2);
   ASSERT_GT(p.big_moves, 15);
   EXPECT_GE(p.bell, 0.8 * p.big_moves);
 }
