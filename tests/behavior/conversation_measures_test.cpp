@@ -200,9 +200,8 @@ void measure_room(std::uint64_t seed, Pooled& pooled) {
     }
 
   // Reaction to a new speaker: for each listener not already looking at
-  // it, when the gaze shift that brings its eyes there begins (the last
-  // tick of motion after its last of rest, within 2 s of the line), after
-  // the line begins.
+  // it, how long after the line begins the gaze shift that brings its
+  // eyes there (within 2 s) starts: its first tick of motion.
   // Listeners in unison: every such listener of a line starts in one tick.
   const auto gaze_speed = [&](std::size_t t, FaceId id) {
     const YawPitch a = r.gaze[t - 1].at(id), b = r.gaze[t].at(id);
