@@ -111,6 +111,12 @@ Recording record(std::uint64_t seed) {
   return r;
 }
 
+// The share of `v` for which `in` holds.
+template <typename Predicate>
+double share_of(const std::vector<double>& v, Predicate in) {
+  return static_cast<double>(std::count_if(v.begin(), v.end(), in)) / static_cast<double>(std::max<std::size_t>(1, v.size()));
+}
+
 double median_of(std::vector<double> v) {
   if (v.empty()) return 0;
   std::sort(v.begin(), v.end());
@@ -247,8 +253,7 @@ void measure_room(std::uint64_t seed, Pooled& pooled) {
       moving = fast;
     }
   }
-  const double small = static_cast<double>(std::count_if(amplitudes.begin(), amplitudes.end(), [](double a) { return a < 12; })) /
-                       static_cast<double>(std::max<std::size_t>(1, amplitudes.size()));
+  const double small = share_of(amplitudes, [](double a) { return a < 12; });
 
   // Head moves over 10 degrees: runs of head-yaw velocity above 5 deg/s;
   // where in the run its speed peaks.
@@ -305,13 +310,15 @@ TEST(Conversation, GazeAndHeadsMoveAsPeoplesDo) {
   Pooled p;
   for (const std::uint64_t seed : {1u, 2u, 3u}) measure_room(seed, p);
   const double listeners = p.listener_at_speaker / p.listener_ticks, speakers = p.speaker_at_listener / p.speaker_ticks;
-  const double small = static_cast<double>(std::count_if(p.amplitudes.begin(), p.amplitudes.end(), [](double a) { return a < 12; })) /
-                       static_cast<double>(std::max<std::size_t>(1, p.amplitudes.size()));
+  const double small = share_of(p.amplitudes, [](double a) { return a < 12; });
   std::printf("pooled: listeners at the speaker %.0f %%, speaker at a listener %.0f %%, long utterances begun looking "
               "away %d of %d, mutual gaze median %.2f s over %zu episodes, saccades under 12 deg %.0f %% of %zu, head "
               "moves peaking mid-move %d of %d\n",
               100 * listeners, 100 * speakers, p.begin_away, p.long_lines, median_of(p.mutual), p.mutual.size(),
               100 * small, p.amplitudes.size(), p.bell, p.big_moves);
+  std::printf("pooled: mutual gaze episodes of 1-3 s %.0f %%, saccades under 10 deg %.0f %%\n",
+              100 * share_of(p.mutual, [](double m) { return m >= 1 && m <= 3; }),
+              100 * share_of(p.amplitudes, [](double a) { return a < 10; }));
   std::printf("pooled: a new speaker met after a median %.2f s by %zu listeners; %d of %d turns met in unison\n",
               median_of(p.reactions), p.reactions.size(), p.turns_in_unison, p.turns_watched);
   EXPECT_GE(listeners, 0.60);
