@@ -5,6 +5,7 @@
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/vec2.hpp>
 
 #include "head_points.hpp"
 
@@ -126,11 +127,19 @@ FirstPersonLayout first_person_layout(int others, int width, int height) {
 }
 
 std::vector<std::uint32_t> others_left_to_right(std::vector<SeatedAvatar> avatars, std::uint32_t viewer) {
-  // The server's seats all face the arc's centre, a seat at angle phi on the
-  // arc turned by -phi: seen from any seat, larger phi (smaller facing yaw)
-  // lies further to the left.
-  std::stable_sort(avatars.begin(), avatars.end(), [](const SeatedAvatar& a, const SeatedAvatar& b) {
-    if (a.seat.facing_yaw_rad != b.seat.facing_yaw_rad) return a.seat.facing_yaw_rad < b.seat.facing_yaw_rad;
+  // The server's seats lie on an arc open toward the room's +z. Seen from
+  // inside the arc (from any point of it), the seats keep their order along
+  // it, so the angle about the seats' centroid (strictly inside the arc's
+  // circle) orders them whatever their facings, which need not differ: two
+  // seats may be turned alike. Measured from the arc's back (-z), larger
+  // angles (toward +x) lie further to a seated person's left.
+  glm::vec2 centroid(0.0f);
+  for (const SeatedAvatar& a : avatars) centroid += glm::vec2(a.seat.x_mm, a.seat.z_mm);
+  if (!avatars.empty()) centroid /= static_cast<float>(avatars.size());
+  const auto around = [&](const codec::SeatInfo& s) { return std::atan2(s.x_mm - centroid.x, centroid.y - s.z_mm); };
+  std::stable_sort(avatars.begin(), avatars.end(), [&](const SeatedAvatar& a, const SeatedAvatar& b) {
+    const float ka = around(a.seat), kb = around(b.seat);
+    if (ka != kb) return ka > kb;
     return a.id < b.id;
   });
   std::vector<std::uint32_t> order;

@@ -37,7 +37,8 @@ struct FirstPersonLayout {
 FirstPersonLayout first_person_layout(int others, int width, int height);
 
 /// The others of `viewer` in the order they sit at the table as the viewer
-/// sees it, left to right: by their server seats (neighbours stay
+/// sees it, left to right: by their server seats' places along the arc (not
+/// their facings, which the server may give alike; neighbours stay
 /// neighbours), ties by id. `avatars` may include the viewer (left out).
 struct SeatedAvatar {
   std::uint32_t id = 0;

@@ -87,14 +87,13 @@ std::pair<int, int> frame_size(const RenderSceneArgs& args) {
   return {width, height};
 }
 
-/// The scene, with every avatar seated (a version 1 scene has no seats: the default arc).
+/// The scene, with every avatar seated (a version 1 scene has no seats: the
+/// centre-facing arc it was recorded on, behavior::scene_seat).
 behavior::Scene seated_scene(const std::string& path) {
   behavior::Scene scene;
   std::string error;
   if (!behavior::read_scene(path, scene, error)) fail_command("render-scene", error);
-  const std::vector<behavior::Seat> layout = behavior::seat_layout(static_cast<int>(scene.avatars.size()));
-  for (std::size_t i = 0; i < scene.avatars.size(); ++i)
-    if (!scene.avatars[i].seat) scene.avatars[i].seat = layout[i];
+  for (std::size_t i = 0; i < scene.avatars.size(); ++i) scene.avatars[i].seat = behavior::scene_seat(scene, i);
   return scene;
 }
 

@@ -287,6 +287,11 @@ TEST(BehaviorRoomChat, ListenersTurnToTheSpeakerNotInUnison) {
   BehaviorRoom room = make_room(6, 6);
   for (FaceId id = 1; id <= 6; ++id) room.add(id, "face" + std::to_string(id));
   run(room, 5);
+  // A listener already attending the speaker when the line starts has no
+  // turn to make: its latency is not measured (it still counts as attending).
+  std::set<FaceId> already;
+  for (FaceId id = 1; id <= 5; ++id)
+    if (room.attending(id) == 6u) already.insert(id);
   room.chat(6, "hahaha that is great, really great :)");
   EXPECT_TRUE(room.speaking(6));
   std::map<FaceId, int> turned;  // the tick each listener first attends the speaker
@@ -297,6 +302,7 @@ TEST(BehaviorRoomChat, ListenersTurnToTheSpeakerNotInUnison) {
   }
   std::set<int> ticks;
   for (const auto& [id, tick] : turned) {
+    if (already.count(id)) continue;
     ticks.insert(tick);
     EXPECT_GE(tick * room.dt_s(), 0.1) << "face " << id << " turned before a human could";
     EXPECT_LE(tick * room.dt_s(), 0.45) << "face " << id;

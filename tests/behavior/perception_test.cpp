@@ -38,7 +38,10 @@ TEST(Perception, SeesTheOthersWithTheirStateNotItself) {
 
 TEST(Perception, OnlyWithinTheFieldOfView) {
   std::vector<FaceSnapshot> room = room_of(3);
-  room[0].head_yaw_rad = -1.2f;  // turned far to its right, away from the others
+  // Turned far to its right, away from the others: its seat is turned 60
+  // degrees toward them (seat_layout), so the head turns 80 degrees more
+  // to put the nearest 110 degrees off its gaze, past the 100-degree field.
+  room[0].head_yaw_rad = -1.4f;
   EXPECT_TRUE(perceive(room[0], room).empty());
 }
 

@@ -87,12 +87,34 @@ TEST(SceneFile, Version2CarriesSeatsPresenceAndEvents) {
   ASSERT_TRUE(back.avatars[0].seat);
   EXPECT_EQ(back.avatars[0].seat->origin_mm.x, -120.5f);
   EXPECT_EQ(back.avatars[0].seat->facing_yaw_rad, 0.4f);
-  ASSERT_TRUE(back.avatars[1].seat);  // an unseated avatar gets the default layout's seat
+  // An unseated avatar is written where a version 1 scene would have sat it.
+  ASSERT_TRUE(back.avatars[1].seat);
+  EXPECT_EQ(back.avatars[1].seat->origin_mm, centre_facing_arc_layout(2)[1].origin_mm);
+  EXPECT_EQ(back.avatars[1].seat->facing_yaw_rad, centre_facing_arc_layout(2)[1].facing_yaw_rad);
   ASSERT_EQ(back.events.size(), 3u);
   EXPECT_EQ(back.events[2].what, "behavior visual_search -> mimicking (talker)");
   EXPECT_EQ(back.events[2].avatar, 1);
   EXPECT_EQ(back.events[2].tick, 9u);
   std::filesystem::remove(path);
+}
+
+// A version 1 file holds no seats: it was recorded when every room sat
+// facing the arc's centre, and plays there still, not on today's seats.
+TEST(SceneFile, AVersion1SceneSitsOnTheArcItWasRecordedOn) {
+  const Scene s = small_scene();
+  std::vector<std::uint8_t> bytes;
+  std::string error;
+  ASSERT_TRUE(write_scene_bytes(s, bytes, error)) << error;
+  ASSERT_EQ(bytes[7], '1');
+  Scene back;
+  ASSERT_TRUE(read_scene_bytes(bytes, back, error)) << error;
+  ASSERT_FALSE(back.avatars[0].seat);
+  const std::vector<Seat> arc = centre_facing_arc_layout(static_cast<int>(back.avatars.size()));
+  for (std::size_t i = 0; i < back.avatars.size(); ++i) {
+    EXPECT_EQ(scene_seat(back, i).origin_mm, arc[i].origin_mm);
+    EXPECT_EQ(scene_seat(back, i).facing_yaw_rad, arc[i].facing_yaw_rad);
+    EXPECT_NE(scene_seat(back, i).facing_yaw_rad, seat_layout(static_cast<int>(back.avatars.size()))[i].facing_yaw_rad);
+  }
 }
 
 TEST(SceneFile, RefusesFilesThatAreNotScenesOrDoNotAddUp) {

@@ -56,6 +56,11 @@ bool read_scene_file(const std::string& path, std::vector<std::uint8_t>& bytes, 
 
 }  // namespace
 
+Seat scene_seat(const Scene& scene, std::size_t index) {
+  if (scene.avatars[index].seat) return *scene.avatars[index].seat;
+  return centre_facing_arc_layout(static_cast<int>(scene.avatars.size()))[index];
+}
+
 bool read_scene(const std::string& path, Scene& scene, std::string& error) {
   std::vector<std::uint8_t> bytes;
   if (!read_scene_file(path, bytes, error)) return false;

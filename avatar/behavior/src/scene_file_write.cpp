@@ -84,8 +84,7 @@ void write_header(codec::ByteWriter& w, const Scene& scene, int version) {
 }
 
 void write_avatars(codec::ByteWriter& w, const Scene& scene, int version) {
-  // Version 2 gives every avatar a seat: the default layout's where the scene has none.
-  const std::vector<Seat> default_seats = version >= 2 ? seat_layout(static_cast<int>(scene.avatars.size())) : std::vector<Seat>{};
+  // Version 2 gives every avatar a seat: where version 1 seated it, when the scene gives none.
   for (std::size_t i = 0; i < scene.avatars.size(); ++i) {
     const SceneAvatar& a = scene.avatars[i];
     w.u8(a.idle ? layout::kFlagIdle : 0);
@@ -94,7 +93,7 @@ void write_avatars(codec::ByteWriter& w, const Scene& scene, int version) {
     if (version < 2) continue;
     w.u32_le(a.joined_tick);
     w.u32_le(a.left_tick);
-    const Seat seat = a.seat.value_or(default_seats[i]);
+    const Seat seat = scene_seat(scene, i);
     w.f32_le(seat.origin_mm.x);
     w.f32_le(seat.origin_mm.y);
     w.f32_le(seat.origin_mm.z);

@@ -78,19 +78,38 @@ TEST(FirstPersonLayout, TheSelfViewFaceFillsItsTileInFrontOfEveryone) {
       << "near the camera: in front of the others in depth";
 }
 
-TEST(FirstPersonLayout, OthersGoLeftToRightAsTheySitAtTheTableSeenFromTheViewer) {
-  // Four seats on the server's arc, the viewer (2) second; facing yaw is minus
-  // the seat's angle on the arc: the seats with smaller facing yaw lie to the
-  // viewer's left.
+// Seats on an arc of `span_rad` open toward +z, 420 mm apart, the first
+// at the viewer's left of the room (-x), each with the given facing.
+std::vector<SeatedAvatar> seated_on_arc(float span_rad, const std::vector<float>& facings) {
+  const int n = static_cast<int>(facings.size());
+  const float step = span_rad / static_cast<float>(n - 1), radius = 210.0f / std::sin(0.5f * step);
   std::vector<SeatedAvatar> seated;
-  const float facing[] = {1.3f, 0.44f, -0.44f, -1.3f};
-  for (std::uint32_t id = 1; id <= 4; ++id) {
+  for (int i = 0; i < n; ++i) {
+    const float phi = (static_cast<float>(i) - 0.5f * static_cast<float>(n - 1)) * step;
     codec::SeatInfo seat;
-    seat.facing_yaw_rad = facing[id - 1];
-    seated.push_back({id, seat});
+    seat.x_mm = radius * std::sin(phi);
+    seat.z_mm = radius * (1.0f - std::cos(phi));
+    seat.facing_yaw_rad = facings[static_cast<std::size_t>(i)];
+    seated.push_back({static_cast<std::uint32_t>(i + 1), seat});
   }
-  EXPECT_EQ(others_left_to_right(seated, 2), (std::vector<std::uint32_t>{4, 3, 1}));
+  return seated;
+}
+
+TEST(FirstPersonLayout, OthersGoLeftToRightAsTheySitAtTheTableSeenFromTheViewer) {
+  // Four seats on the server's arc, the viewer (2) second. Seen from a seat,
+  // the seats further toward the room's +x lie to the left, whatever the
+  // facings: the server turns the end seats toward the others, alike when
+  // the viewer's limit holds them (avatar/behavior seat_layout).
+  EXPECT_EQ(others_left_to_right(seated_on_arc(2.094f, {1.047f, 0.0f, 0.0f, -1.047f}), 2),
+            (std::vector<std::uint32_t>{4, 3, 1}));
+  EXPECT_EQ(others_left_to_right(seated_on_arc(2.094f, {1.047f, 1.047f, -1.047f, -1.047f}), 2),
+            (std::vector<std::uint32_t>{4, 3, 1}));
+  // The centre-facing arc of earlier servers, over 270 degrees, where the
+  // seats' x alone would not order them (the ends curl back toward +z).
+  EXPECT_EQ(others_left_to_right(seated_on_arc(4.712f, {2.36f, 1.57f, 0.79f, 0.0f, -0.79f, -1.57f, -2.36f}), 4),
+            (std::vector<std::uint32_t>{7, 6, 5, 3, 2, 1}));
   // Without seats (all at the origin): by id.
+  std::vector<SeatedAvatar> seated = seated_on_arc(2.094f, {0.0f, 0.0f, 0.0f, 0.0f});
   for (auto& s : seated) s.seat = {};
   EXPECT_EQ(others_left_to_right(seated, 3), (std::vector<std::uint32_t>{1, 2, 4}));
 }

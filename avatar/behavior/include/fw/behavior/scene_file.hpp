@@ -5,7 +5,10 @@
 // measures on them, `facewire-server render-scene` turns them into video.
 // Format: codec/FORMAT.md, "Appendix A. Scene files". Version 2 adds seats,
 // presence and events; version 1 files (faces only) are still read, and a
-// scene with nothing version 2 adds is still written as version 1.
+// scene with nothing version 2 adds is still written as version 1. A version
+// 1 file was recorded before seats were stored, when every room sat on
+// centre_facing_arc_layout: an avatar without a seat sits there (scene_seat),
+// so an old recording keeps the seats its gazes were aimed from.
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -33,7 +36,7 @@ struct SceneAvatar {
   /// In the room from this tick until (excluding) that one.
   std::uint32_t joined_tick = 0;
   std::uint32_t left_tick = kPresentToTheEnd;
-  std::optional<Seat> seat{};  ///< where the room seated it (version 2)
+  std::optional<Seat> seat{};  ///< where the room seated it (version 2); none: scene_seat
 
   bool present(std::size_t tick) const { return tick >= joined_tick && tick < left_tick; }
 };
@@ -52,6 +55,12 @@ struct Scene {
 
   std::size_t tick_count() const { return avatars.empty() ? 0 : avatars.front().ticks.size(); }
 };
+
+/// Where avatar `index` of `scene` sits: its own seat, or, without one, its
+/// seat on centre_facing_arc_layout for the scene's avatars (where version 1
+/// recordings were made; never seat_layout, whose seats turn toward each
+/// other and would change what an old file shows).
+Seat scene_seat(const Scene& scene, std::size_t index);
 
 /// Writes `scene` to `path`; false (with `error` saying why) on failure.
 bool write_scene(const Scene& scene, const std::string& path, std::string& error);

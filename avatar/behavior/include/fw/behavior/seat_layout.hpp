@@ -20,12 +20,40 @@ struct Seat {
   float facing_yaw_rad = 0;   ///< same sign as head yaw: positive turns toward the person's left
 };
 
-/// The seats of a room of `count` avatars: an arc open toward the viewer,
-/// every seat facing the arc's centre, neighbours kSeatSpacingMm apart and
-/// at most kSeatAngleRad apart on the arc; a single seat faces the viewer.
+/// The seats of a room of `count` avatars: an arc open toward the viewer
+/// (the room's +z), neighbours kSeatSpacingMm apart, spread evenly over
+/// kSeatArcSpanRad, each seat
+/// turned from the viewer toward its partners: to the middle of the
+/// directions in which it sees them, but never more than
+/// kMaxFacingFromViewerRad from the viewer, so that the viewer sees every
+/// face at rest at most three-quarter. A single seat faces the viewer.
+/// Facings fall from the viewer's left to the viewer's right seat (a seat
+/// further right is turned more toward the viewer's left), never rising.
 inline constexpr float kSeatSpacingMm = 420.0f;
-inline constexpr float kSeatAngleRad = 0.8726646f;  ///< 50 degrees
-std::vector<Seat> seat_layout(int count);
+inline constexpr float kSeatAngleRad = 0.8726646f;    ///< 50 degrees
+inline constexpr float kSeatArcSpanRad = 2.0943951f;  ///< 120 degrees, see seat_layout.cpp
+/// 60 degrees. Expressions are categorised about as well from the
+/// mid-profile (45 degrees) as from the front, but a profile (90 degrees)
+/// weakens every one and loses some disgust and sadness (Guo & Shaw 2015,
+/// Acta Psychologica 155: 19-28): a face at rest stays nearer three-quarter.
+inline constexpr float kMaxFacingFromViewerRad = 1.0471976f;
+/// `span_rad` (above 0, below 2 pi): another spread, to measure the choice.
+std::vector<Seat> seat_layout(int count, float span_rad = kSeatArcSpanRad);
+
+/// The layout before seats were turned toward their partners: an arc open
+/// toward the viewer, neighbours kSeatSpacingMm and at most kSeatAngleRad
+/// apart on it, over at most 270 degrees, every seat facing the arc's centre. A scene file of version
+/// 1 stores no seats; it was recorded on these (scene_file.hpp).
+std::vector<Seat> centre_facing_arc_layout(int count);
+
+/// What a layout asks of heads and shows a viewer far away on +z: the
+/// largest angle between a seat's facing and the direction to another seat
+/// (the head yaw a face needs to look at that partner), its mean over all
+/// pairs, and the largest angle between a facing and the viewer.
+struct SeatLayoutAngles {
+  float largest_partner_yaw_rad = 0, mean_partner_yaw_rad = 0, largest_from_viewer_rad = 0;
+};
+SeatLayoutAngles seat_layout_angles(const std::vector<Seat>& seats);
 
 /// Head pose (the head's rotation about the neck pivot, FaceParams' signs).
 struct HeadPose {
