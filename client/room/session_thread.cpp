@@ -1,6 +1,7 @@
 #include "session_thread.hpp"
 
 #include <chrono>
+#include <future>
 
 #include <boost/asio/post.hpp>
 
@@ -39,8 +40,19 @@ void SessionThread::say(std::string line) {
 
 void SessionThread::stop() {
   if (!thread_.joinable()) return;
-  boost::asio::post(io_, [this] { session_.stop(); });
-  // The session's sockets are closed; give their handlers a moment, then stop.
+  // The session closes on its own thread; wait until it has (a busy machine
+  // may take longer than any fixed pause to get there), then give the
+  // sockets' handlers a moment, then stop.
+  // A context already out of work (its run() returned) runs nothing
+  // posted, so it is not waited for, and the wait is bounded anyway.
+  if (!io_.stopped()) {
+    std::promise<void> stopped;
+    boost::asio::post(io_, [this, &stopped] {
+      session_.stop();
+      stopped.set_value();
+    });
+    stopped.get_future().wait_for(std::chrono::seconds(5));
+  }
   std::this_thread::sleep_for(std::chrono::milliseconds(50));
   io_.stop();
   thread_.join();

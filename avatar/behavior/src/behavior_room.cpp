@@ -198,7 +198,8 @@ struct BehaviorRoom::Impl {
   }
 
   // A look away rests on no face: the drawn offset from `from`, else the
-  // same to the other side, else further down (below the ring of faces).
+  // same to the other side, else further down (below the ring of faces),
+  // else straight down.
   static YawPitch away_from_faces(const Face& f, YawPitch from, YawPitch offset, const std::vector<FaceSnapshot>& room) {
     const glm::vec3 eyes_room = f.snapshot.eye_mid_room_mm;
     const auto on_a_face = [&](YawPitch a) {
@@ -207,10 +208,12 @@ struct BehaviorRoom::Impl {
     };
     const YawPitch candidates[] = {{from.yaw_rad + offset.yaw_rad, from.pitch_rad + offset.pitch_rad},
                                    {from.yaw_rad - offset.yaw_rad, from.pitch_rad + offset.pitch_rad},
-                                   {from.yaw_rad + offset.yaw_rad, from.pitch_rad + 2 * offset.pitch_rad}};
+                                   {from.yaw_rad + offset.yaw_rad, from.pitch_rad + 2 * offset.pitch_rad},
+                                   {from.yaw_rad - offset.yaw_rad, from.pitch_rad + 2 * offset.pitch_rad},
+                                   {from.yaw_rad, from.pitch_rad + 3 * offset.pitch_rad}};
     for (const YawPitch& a : candidates)
       if (!on_a_face(a)) return a;
-    return candidates[2];
+    return candidates[4];
   }
 
   // The line being said: its track moves the jaw and lips (articulation

@@ -51,12 +51,12 @@ class ConversationGaze {
   // Listener: glance at the speaker, look away (log-normal, medians).
   static constexpr double kListenGlanceS = 2.8, kListenAwayS = 0.9;
   // Speaker: glance at a listener, look away.
-  static constexpr double kSpeakGlanceS = 2.4, kSpeakAwayS = 3.2;
+  static constexpr double kSpeakGlanceS = 2.0, kSpeakAwayS = 3.6;
   static constexpr double kSpread = 0.4;  ///< sigma of log(duration)
   /// A long utterance, and how often it begins with the speaker looking away.
   static constexpr double kLongUtteranceS = 2.0, kStartAwayShare = 0.8;
   /// The last part of an utterance, in which the speaker looks at a listener.
-  static constexpr double kEndLookS = 1.0;
+  static constexpr double kEndLookS = 0.8;
   /// Reaction to a new speaker: mean and sigma of the latency, and its bounds.
   static constexpr double kLatencyS = 0.2, kLatencySpreadS = 0.05, kLatencyMinS = 0.12, kLatencyMaxS = 0.4;
   /// After the speaker stops, a listener keeps looking a moment, and so does
@@ -65,6 +65,10 @@ class ConversationGaze {
   /// A listener whose glance would end while the speaker looks at it holds
   /// on up to this much longer.
   static constexpr double kHoldMutualS = 2.5;
+  /// Mutual gaze the speaker holds once a listener returns its glance
+  /// (log-normal median): between Argyle & Ingham's 1.18 s mean mutual
+  /// glance (1972) and Rogers et al.'s 2.2 s mutual face gaze (2018).
+  static constexpr double kMutualS = 1.6;
 
   explicit ConversationGaze(std::uint64_t seed);
 
@@ -91,6 +95,7 @@ class ConversationGaze {
   bool speaker_looking_ = false;
   double speaker_phase_until_s_ = 0;
   std::optional<FaceId> listener_;
+  double mutual_until_s_ = -1;  ///< the listener returned the glance: hold it until then
   double handover_until_s_ = -1;  ///< the line ended: keep looking at `listener_` until then
   YawPitch away_offset_{};
 };

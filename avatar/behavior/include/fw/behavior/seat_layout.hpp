@@ -29,7 +29,7 @@ struct Seat {
 /// face at rest at most three-quarter. A single seat faces the viewer.
 /// Facings fall from the viewer's left to the viewer's right seat (a seat
 /// further right is turned more toward the viewer's left), never rising.
-inline constexpr float kSeatSpacingMm = 420.0f;
+inline constexpr float kSeatSpacingMm = 600.0f;
 inline constexpr float kSeatAngleRad = 0.8726646f;    ///< 50 degrees
 inline constexpr float kSeatArcSpanRad = 2.0943951f;  ///< 120 degrees, see seat_layout.cpp
 /// 60 degrees. Expressions are categorised about as well from the
