@@ -28,6 +28,7 @@ struct OwnedMember : Member {
   std::string node;         ///< the node a bridged person is on ("" here)
   std::string resume_hash;  ///< of the person's resume key
   std::uint64_t order = 0;  ///< join order (the earliest present leads)
+  std::string language;     ///< the person's lines' ("": the room's), kept for a successor
   /// The person's node died; the seat waits for them until then.
   std::optional<std::chrono::steady_clock::time_point> away_until;
   bool person() const { return stream || !node.empty() || away_until; }
@@ -75,6 +76,8 @@ class OwnedRoom : public RoomRole {
   std::size_t seats_of_block(const std::string& block) const;
   /// A line from the server (avatar 0) to one person only.
   void notice(OwnedMember& member, const std::string& text);
+  /// `avatar` begins to say a line: a speaking message to everyone (5.15).
+  void tell_line_begun(std::uint32_t avatar, const RoomEvent::LineBegun& line);
   /// Takes every member's seat from the simulation; a Seats message for
   /// everyone when a seat already announced moved, else null.
   SharedBytes reseat();
