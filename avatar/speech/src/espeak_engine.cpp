@@ -1,4 +1,5 @@
 #include "espeak_engine.hpp"
+#include "fw/speech/espeak_data_folder.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -20,6 +21,7 @@ struct Engine {
   bool started = false;
   std::string start_error;
   int sample_rate_hz = 0;
+  std::string data_folder;  ///< where espeak-ng reads its voice data
   std::set<std::string> languages;  ///< lower case, as the voice files name them
 };
 
@@ -69,6 +71,9 @@ Engine& started_engine() {
       return e;
     }
     e.sample_rate_hz = rate;
+    const char* path = nullptr;
+    espeak_Info(&path);
+    e.data_folder = path ? path : "";
     espeak_SetSynthCallback(on_synthesis);
     for (const espeak_VOICE** voice = espeak_ListVoices(nullptr); voice && *voice; ++voice) {
       // A list of (priority byte, name, zero byte), ended by an empty name.
@@ -122,6 +127,11 @@ bool espeak_synthesize(std::string_view text, std::string_view language, double 
     return false;
   }
   return true;
+}
+
+std::string espeak_data_folder() {
+  const std::lock_guard lock(engine_mutex);
+  return started_engine().data_folder;
 }
 
 }  // namespace fw::speech
