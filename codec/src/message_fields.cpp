@@ -64,6 +64,17 @@ void read_string(ByteReader& r, std::size_t max_bytes, std::string& out, Message
   if (!is_clean_text(out, allow_layout) && error == MessageError::ok) error = MessageError::bad_text;
 }
 
+void read_language(ByteReader& r, std::string& out, MessageError& error, bool may_be_empty) {
+  const MessageError before = error;
+  read_string(r, kMaxLanguageBytes, out, error);
+  if (before != MessageError::ok || error != MessageError::ok || r.failed()) return;
+  if (out.empty()) {
+    if (!may_be_empty) error = MessageError::value_out_of_range;
+  } else if (!is_language_code(out)) {
+    error = MessageError::bad_text;
+  }
+}
+
 std::uint32_t read_u32_le(ByteReader& r) {
   std::uint32_t value = 0;
   for (int i = 0; i < 4; ++i) value |= static_cast<std::uint32_t>(r.u8()) << (8 * i);
@@ -89,3 +100,14 @@ MessageError check_first_byte(ByteReader& r, std::size_t size, MessageType expec
 }
 
 }  // namespace fw::codec::message_fields
+
+namespace fw::codec {
+
+bool is_language_code(std::string_view code) {
+  if (code.empty() || code.size() > kMaxLanguageBytes) return false;
+  for (const char c : code)
+    if (!((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-')) return false;
+  return true;
+}
+
+}  // namespace fw::codec

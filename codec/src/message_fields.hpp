@@ -30,6 +30,9 @@ bool is_clean_text(std::string_view text, bool allow_layout = false);
 /// it is ok) on a cut, an over-long or an unclean string.
 void read_string(ByteReader& r, std::size_t max_bytes, std::string& out, MessageError& error,
                  bool allow_layout = false);
+/// Reads a language (hello, speaking): at most kMaxLanguageBytes of a-z 0-9 -
+/// (bad_text otherwise), empty only when `may_be_empty` (value_out_of_range).
+void read_language(ByteReader& r, std::string& out, MessageError& error, bool may_be_empty);
 std::uint32_t read_u32_le(ByteReader& r);
 std::uint64_t read_u64_le(ByteReader& r);
 

@@ -37,7 +37,9 @@ std::string_view describe(MessageError error) {
     case MessageError::truncated: return "the message is cut short";
     case MessageError::too_large: return "the message is larger than the protocol allows";
     case MessageError::string_too_long: return "a text field is longer than its limit";
-    case MessageError::bad_text: return "a text field is not clean UTF-8 (control characters or invalid bytes)";
+    case MessageError::bad_text:
+      return "a text field is not clean UTF-8 (control characters or invalid bytes), or a language is not of "
+             "a-z, 0-9 and -";
     case MessageError::value_out_of_range: return "a number lies outside its field's range";
     case MessageError::trailing_bytes: return "bytes follow the message's last field";
     case MessageError::too_many_entries: return "a list holds more entries than allowed";

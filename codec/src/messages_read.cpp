@@ -17,6 +17,11 @@ MessageError finish(const ByteReader& r, MessageError error) {
   return MessageError::ok;
 }
 
+/// Versions 3 and 4 share the welcome's layout and the hello's first fields.
+bool is_readable_version(std::uint16_t version) {
+  return version >= kOldestProtocolVersion && version <= kProtocolVersion;
+}
+
 void fail(MessageError& error, MessageError why) {
   if (error == MessageError::ok) error = why;
 }
@@ -65,7 +70,7 @@ MessageError read_message(std::span<const std::uint8_t> bytes, Hello& m) {
   m.protocol_version = r.u16_le();
   if (r.failed()) return failure_of(r);
   // Another version may lay out the rest differently: stop here.
-  if (m.protocol_version != kProtocolVersion) return MessageError::unsupported_version;
+  if (!is_readable_version(m.protocol_version)) return MessageError::unsupported_version;
   MessageError error = MessageError::ok;
   const std::uint8_t flags = r.u8();
   if (!r.failed() && (flags & ~7u) != 0) fail(error, MessageError::bad_flags);
@@ -79,6 +84,8 @@ MessageError read_message(std::span<const std::uint8_t> bytes, Hello& m) {
   read_string(r, kMaxTokenBytes, m.token, error);
   read_string(r, kMaxKeyBytes, m.avatar_key, error);
   read_string(r, kMaxKeyBytes, m.resume, error);
+  m.language.clear();
+  if (m.protocol_version >= kFirstSpeakingVersion) read_language(r, m.language, error, /*may_be_empty=*/true);
   return finish(r, error);
 }
 
@@ -89,7 +96,7 @@ MessageError read_message(std::span<const std::uint8_t> bytes, Welcome& m) {
     return e;
   m.protocol_version = r.u16_le();
   if (r.failed()) return failure_of(r);
-  if (m.protocol_version != kProtocolVersion) return MessageError::unsupported_version;
+  if (!is_readable_version(m.protocol_version)) return MessageError::unsupported_version;
   MessageError error = MessageError::ok;
   m.you = read_bounded(r, 3, kMaxAvatarIdValue, error);
   read_string(r, kMaxRoomNameBytes, m.room, error);
@@ -292,6 +299,21 @@ MessageError read_message(std::span<const std::uint8_t> bytes, Attention& m) {
     entry.target = static_cast<AttentionTarget>(target);
     entry.target_avatar = entry.target == AttentionTarget::avatar ? read_bounded(r, 3, kMaxAvatarIdValue, error) : 0;
   }
+  return finish(r, error);
+}
+
+MessageError read_message(std::span<const std::uint8_t> bytes, Speaking& m) {
+  ByteReader r(bytes);
+  if (auto e = check_first_byte(r, bytes.size(), MessageType::speaking, kMaxDownstreamMessageBytes);
+      e != MessageError::ok)
+    return e;
+  MessageError error = MessageError::ok;
+  m.avatar = read_bounded(r, 3, kMaxAvatarIdValue, error);
+  m.tick = r.varint(5);
+  m.duration_ms = read_bounded(r, 3, kMaxSpeakingMs, error);
+  read_language(r, m.language, error, /*may_be_empty=*/false);
+  read_string(r, kMaxChatBytes, m.text, error);
+  if (!r.failed() && error == MessageError::ok && m.text.empty()) fail(error, MessageError::value_out_of_range);
   return finish(r, error);
 }
 

@@ -40,6 +40,10 @@ void write_message(const Hello& m, std::vector<std::uint8_t>& out) {
   assert(m.room.size() <= kMaxRoomNameBytes && m.name.size() <= kMaxDisplayNameBytes);
   assert(m.avatar.size() <= kMaxAssetIdBytes && m.token.size() <= kMaxTokenBytes && m.max_bps <= kMaxBitsPerSecond);
   assert(m.avatar_key.size() <= kMaxKeyBytes && m.resume.size() <= kMaxKeyBytes);
+  assert(m.protocol_version >= kOldestProtocolVersion && m.protocol_version <= kProtocolVersion);
+  // A version-3 hello has no language field: one set there would be lost.
+  assert(m.protocol_version >= kFirstSpeakingVersion ? (m.language.empty() || is_language_code(m.language))
+                                                     : m.language.empty());
   ByteWriter w(out);
   w.u8(first_byte(MessageType::hello));
   w.u16_le(m.protocol_version);
@@ -51,6 +55,7 @@ void write_message(const Hello& m, std::vector<std::uint8_t>& out) {
   write_string(w, m.token);
   write_string(w, m.avatar_key);
   write_string(w, m.resume);
+  if (m.protocol_version >= kFirstSpeakingVersion) write_string(w, m.language);
 }
 
 void write_message(const Welcome& m, std::vector<std::uint8_t>& out) {
@@ -202,6 +207,18 @@ void write_message(const Attention& m, std::vector<std::uint8_t>& out) {
     w.u8(static_cast<std::uint8_t>(e.target));
     if (e.target == AttentionTarget::avatar) w.varint(e.target_avatar);
   }
+}
+
+void write_message(const Speaking& m, std::vector<std::uint8_t>& out) {
+  assert(m.avatar <= kMaxAvatarIdValue && m.duration_ms <= kMaxSpeakingMs && is_language_code(m.language));
+  assert(!m.text.empty() && m.text.size() <= kMaxChatBytes);
+  ByteWriter w(out);
+  w.u8(first_byte(MessageType::speaking));
+  w.varint(m.avatar);
+  w.varint(m.tick);
+  w.varint(m.duration_ms);
+  write_string(w, m.language);
+  write_string(w, m.text);
 }
 
 }  // namespace fw::codec

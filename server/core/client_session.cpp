@@ -236,8 +236,8 @@ void ClientSession::handle_hello(std::span<const std::uint8_t> message) {
   const MessageError error = codec::read_message(message, hello);
   if (error == MessageError::unsupported_version)
     return protocol_error(CloseCode::unsupported_version,
-                          "this server speaks protocol version " + std::to_string(codec::kProtocolVersion) +
-                              " only; update the client");
+                          "this server speaks protocol versions " + std::to_string(codec::kOldestProtocolVersion) +
+                              " to " + std::to_string(codec::kProtocolVersion) + " only; update the client");
   if (error != MessageError::ok)
     return protocol_error(CloseCode::protocol_error,
                           "the first message must be a hello: " + std::string(codec::describe(error)));
@@ -332,6 +332,7 @@ StreamSettings ClientSession::stream_settings_for(const codec::Hello& hello) con
   stream.timestamps = hello.timestamps;
   stream.packages = !hello.no_packages;
   stream.own_package = hello.own_package && !hello.avatar.empty();
+  stream.protocol_version = hello.protocol_version;
   return stream;
 }
 

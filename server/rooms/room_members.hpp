@@ -44,6 +44,7 @@ template <class Members>
 std::unique_ptr<SubscriberStream> welcome(const Members& others, const Member& newcomer, const JoinRequest& request,
                                           const std::string& room, int tick_hz, Metrics& metrics) {
   codec::Welcome welcome;
+  welcome.protocol_version = request.stream.protocol_version;  // a version-3 client reads a version-3 welcome
   welcome.you = newcomer.info.id;
   welcome.resume = request.resume;
   welcome.room = room;

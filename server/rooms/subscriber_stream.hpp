@@ -35,6 +35,7 @@
 
 #include "fw/codec/codec.hpp"
 #include "fw/codec/face_params.hpp"
+#include "fw/codec/messages.hpp"
 #include "metrics.hpp"
 #include "room_connection.hpp"
 
@@ -46,6 +47,9 @@ struct StreamSettings {
   bool timestamps = false;
   bool packages = true;
   bool own_package = false;  ///< the subscriber holds its own avatar's package
+  /// The hello's version: the welcome answers in it, and only sessions of
+  /// codec::kFirstSpeakingVersion or later are sent speaking messages.
+  std::uint16_t protocol_version = codec::kProtocolVersion;
 };
 
 struct AvatarFace {

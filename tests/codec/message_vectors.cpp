@@ -42,7 +42,8 @@ json info_json(const AvatarInfo& a) {
 json fields(const Hello& m) {
   return {{"protocolVersion", m.protocol_version}, {"timestamps", m.timestamps}, {"noPackages", m.no_packages},
           {"ownPackage", m.own_package}, {"maxBps", m.max_bps}, {"room", m.room}, {"name", m.name},
-          {"avatar", m.avatar}, {"token", m.token}, {"avatarKey", m.avatar_key}, {"resume", m.resume}};
+          {"avatar", m.avatar}, {"token", m.token}, {"avatarKey", m.avatar_key}, {"resume", m.resume},
+          {"language", m.language}};
 }
 json fields(const Welcome& m) {
   json avatars = json::array();
@@ -78,6 +79,10 @@ json fields(const Seats& m) {
   json seats = json::array();
   for (const auto& e : m.seats) seats.push_back({{"avatar", e.avatar}, {"seat", seat_json(e.seat)}});
   return {{"seats", seats}};
+}
+json fields(const Speaking& m) {
+  return {{"avatar", m.avatar}, {"tick", m.tick}, {"durationMs", m.duration_ms}, {"language", m.language},
+          {"text", m.text}};
 }
 json fields(const Attention& m) {
   json entries = json::array();
@@ -148,6 +153,12 @@ struct Vectors {
 json make_vectors() {
   Vectors v;
   v.add(fw::test::sample_hello());
+  v.add(fw::test::sample_hello_v3());  // still read: a version-3 client, no language
+  Hello plain;  // version 4 with the server's default language
+  plain.room = "r";
+  plain.name = "A";
+  plain.no_packages = true;
+  v.add(plain);
   Welcome welcome;
   welcome.you = 300;
   welcome.room = "r-1.x";
@@ -156,6 +167,8 @@ json make_vectors() {
   welcome.resume = "r-e_sume0123456789abcd";
   welcome.avatars = {{1, "Ada", "", 0, 0, false, {-364.0f, 0.0f, 210.0f, 1.0471976f}},
                      {300, "Bo 🙂", "ffeeddccbbaa99887766554433221100", 1100, 19652, true, {0, 0, -40.0f, -3.1415926f}}};
+  v.add(welcome);
+  welcome.protocol_version = 3;  // the answer to a version-3 hello: the same layout
   v.add(welcome);
   v.add(Presence{Presence::Change::joined, welcome.avatars[1]});
   v.add(Presence{Presence::Change::left, {300, "", "", 0, 0, true, {}}});
@@ -183,6 +196,10 @@ json make_vectors() {
   Attention attention;
   attention.entries = {{1, AttentionTarget::avatar, 2}, {2, AttentionTarget::room, 0}, {3, AttentionTarget::nobody, 0}};
   v.add(attention);
+  v.add(fw::test::sample_speaking());
+  v.add(Speaking{.avatar = 2097151, .tick = 4294967295u, .duration_ms = kMaxSpeakingMs, .language = "zh-yue-1",
+                 .text = "Ja."});
+  v.add(Speaking{.avatar = 0, .tick = 0, .duration_ms = 0, .language = "x", .text = "."});
   return {{"protocolVersion", kProtocolVersion}, {"messages", v.messages}, {"damaged", v.damaged_messages}};
 }
 

@@ -36,12 +36,165 @@ TEST(Messages, HelloRoundTrips) {
   EXPECT_TRUE(back.own_package);
   EXPECT_EQ(back.avatar_key, hello.avatar_key);
   EXPECT_EQ(back.resume, hello.resume);
+  EXPECT_EQ(back.protocol_version, 4);
+  EXPECT_EQ(back.language, "pt-br");
+  EXPECT_EQ(bytes_of(back), bytes);
 }
 
 TEST(Messages, HelloOfAnotherVersionIsRefusedBeforeItsFields) {
-  std::vector<std::uint8_t> bytes = {0x81, 0x01, 0x00, 0xFF};  // version 1, whose layout this reader does not know
   Hello back;
-  EXPECT_EQ(read_message(bytes, back), MessageError::unsupported_version);
+  for (const std::uint8_t version : {1, 2, 5, 0xFF}) {  // versions whose layout this reader does not know
+    std::vector<std::uint8_t> bytes = {0x81, version, 0x00, 0xFF};
+    EXPECT_EQ(read_message(bytes, back), MessageError::unsupported_version) << int{version};
+  }
+}
+
+TEST(Messages, HelloOfVersionThreeStillReadsWithoutALanguage) {
+  const Hello v3 = fw::test::sample_hello_v3();
+  const auto bytes = bytes_of(v3);
+  EXPECT_EQ(bytes[1], 3);
+  Hello back;
+  back.language = "de";  // the reader clears what an earlier message left
+  ASSERT_EQ(read_message(bytes, back), MessageError::ok);
+  EXPECT_EQ(back.protocol_version, 3);
+  EXPECT_EQ(back.language, "");
+  EXPECT_EQ(back.resume, v3.resume);
+  EXPECT_EQ(bytes_of(back), bytes) << "written back in version 3's layout";
+  // A version-4 hello is the version-3 one plus the language.
+  Hello v4 = v3;
+  v4.protocol_version = 4;
+  v4.language = "de";
+  const auto v4_bytes = bytes_of(v4);
+  ASSERT_EQ(v4_bytes.size(), bytes.size() + 3);
+  EXPECT_TRUE(std::equal(bytes.begin() + 3, bytes.end(), v4_bytes.begin() + 3));
+  EXPECT_EQ(v4_bytes[v4_bytes.size() - 3], 2);
+  // A version-3 hello with a language field after its last: trailing bytes.
+  auto v3_with_language = bytes;
+  v3_with_language.insert(v3_with_language.end(), {2, 'd', 'e'});
+  EXPECT_EQ(read_message(v3_with_language, back), MessageError::trailing_bytes);
+  // A version-4 hello without its language is cut short.
+  auto v4_cut = bytes;
+  v4_cut[1] = 4;
+  EXPECT_EQ(read_message(v4_cut, back), MessageError::truncated);
+}
+
+TEST(Messages, HelloLanguageIsEmptyOrAVoiceName) {
+  Hello hello;
+  hello.room = "r";
+  hello.name = "A";
+  Hello back;
+  for (const char* language : {"", "en", "en-us", "pt-br", "zh-yue", "sit-can-1", "abcdefghijklmnop"}) {
+    hello.language = language;
+    ASSERT_EQ(read_message(bytes_of(hello), back), MessageError::ok) << language;
+    EXPECT_EQ(back.language, language);
+  }
+  hello.language.clear();
+  const auto plain = bytes_of(hello);
+  ASSERT_EQ(plain.back(), 0) << "an empty language is its length alone";
+  const auto with_language = [&](std::string_view text) {
+    auto bytes = plain;
+    bytes.back() = static_cast<std::uint8_t>(text.size());
+    bytes.insert(bytes.end(), text.begin(), text.end());
+    return bytes;
+  };
+  for (const char* bad : {"EN", "en_us", "en us", "de.", "fr/", "é"})
+    EXPECT_EQ(read_message(with_language(bad), back), MessageError::bad_text) << bad;
+  EXPECT_EQ(read_message(with_language("abcdefghijklmnopq"), back), MessageError::string_too_long);
+  EXPECT_EQ(read_message(with_language(std::string_view("d\0", 2)), back), MessageError::bad_text);
+}
+
+TEST(Messages, LanguageCodesHaveOneShape) {
+  EXPECT_TRUE(is_language_code("en"));
+  EXPECT_TRUE(is_language_code("pt-br"));
+  EXPECT_TRUE(is_language_code("x"));
+  EXPECT_TRUE(is_language_code("1234567890123456"));
+  EXPECT_FALSE(is_language_code(""));
+  EXPECT_FALSE(is_language_code("12345678901234567"));
+  EXPECT_FALSE(is_language_code("De"));
+  EXPECT_FALSE(is_language_code("en_GB"));
+  EXPECT_FALSE(is_language_code("de "));
+}
+
+TEST(Messages, SpeakingRoundTrips) {
+  const Speaking speaking = fw::test::sample_speaking();
+  const auto bytes = bytes_of(speaking);
+  EXPECT_EQ(bytes[0], 0x90);
+  EXPECT_EQ(classify(bytes), MessageKind::session);
+  EXPECT_EQ(session_type(bytes), MessageType::speaking);
+  Speaking back;
+  ASSERT_EQ(read_message(bytes, back), MessageError::ok);
+  EXPECT_EQ(back.avatar, 300u);
+  EXPECT_EQ(back.tick, 70000u);
+  EXPECT_EQ(back.duration_ms, 2140u);
+  EXPECT_EQ(back.language, "de");
+  EXPECT_EQ(back.text, speaking.text);
+  EXPECT_EQ(bytes_of(back), bytes);
+  const Speaking longest{.avatar = kMaxAvatarIdValue, .tick = 0xFFFFFFFFu, .duration_ms = kMaxSpeakingMs,
+                         .language = "abcdefghijklmnop", .text = std::string(kMaxChatBytes, 'x')};
+  ASSERT_EQ(read_message(bytes_of(longest), back), MessageError::ok);
+  EXPECT_EQ(back.tick, 0xFFFFFFFFu);
+  EXPECT_EQ(back.text.size(), kMaxChatBytes);
+}
+
+TEST(Messages, SpeakingRefusesWhatNoServerSends) {
+  Speaking back;
+  // avatar 1, tick 2, 20 001 ms (0xA1 0x9C 0x01): past kMaxSpeakingMs
+  EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x90, 0x01, 0x02, 0xA1, 0x9C, 0x01, 0x02, 'e', 'n', 0x01, 'a'},
+                         back),
+            MessageError::value_out_of_range);
+  EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x90, 0x01, 0x02, 0xA0, 0x9C, 0x01, 0x02, 'e', 'n', 0x01, 'a'},
+                         back),
+            MessageError::ok)
+      << "20 000 ms is the longest";
+  EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x90, 0x01, 0x02, 0x03, 0x00, 0x01, 'a'}, back),
+            MessageError::value_out_of_range)
+      << "a line is said in some language";
+  EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x90, 0x01, 0x02, 0x03, 0x02, 'e', 'n', 0x00}, back),
+            MessageError::value_out_of_range)
+      << "and says something";
+  EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x90, 0x01, 0x02, 0x03, 0x02, 'E', 'N', 0x01, 'a'}, back),
+            MessageError::bad_text);
+  EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x90, 0x01, 0x02, 0x03, 0x02, 'e', 'n', 0x01, 0x07}, back),
+            MessageError::bad_text);
+  EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x90, 0x01, 0x02, 0x03, 0x02, 'e', 'n', 0x02, 'a'}, back),
+            MessageError::truncated);
+  EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x90, 0x01, 0x02, 0x03, 0x02, 'e', 'n', 0x01, 'a', 0x00}, back),
+            MessageError::trailing_bytes);
+  EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x90, 0x81, 0x81, 0x81, 0x01, 0x02, 0x03, 0x02, 'e', 'n', 0x01, 'a'},
+                         back),
+            MessageError::bad_number)
+      << "an avatar id takes at most 3 bytes";
+  std::vector<std::uint8_t> long_text = {0x90, 0x01, 0x02, 0x03, 0x02, 'e', 'n', 0xF5, 0x03};  // 501 bytes
+  long_text.resize(long_text.size() + 501, 'x');
+  EXPECT_EQ(read_message(long_text, back), MessageError::string_too_long);
+  std::vector<std::uint8_t> long_language = {0x90, 0x01, 0x02, 0x03, 17};
+  long_language.resize(long_language.size() + 17, 'a');
+  long_language.insert(long_language.end(), {0x01, 'a'});
+  EXPECT_EQ(read_message(long_language, back), MessageError::string_too_long);
+  Chat chat;
+  EXPECT_EQ(read_message(bytes_of(fw::test::sample_speaking()), chat), MessageError::wrong_type);
+  EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x91, 0x00}, back), MessageError::unknown_type)
+      << "0x91 is no message of version 4";
+  EXPECT_EQ(classify(std::vector<std::uint8_t>{0x91, 0x00}), MessageKind::invalid);
+}
+
+TEST(Messages, WelcomeOfVersionThreeAnswersAVersionThreeHello) {
+  Welcome welcome;
+  welcome.protocol_version = 3;
+  welcome.you = 7;
+  welcome.room = "lobby";
+  welcome.resume = "k";
+  const auto bytes = bytes_of(welcome);
+  Welcome back;
+  ASSERT_EQ(read_message(bytes, back), MessageError::ok);
+  EXPECT_EQ(back.protocol_version, 3);
+  EXPECT_EQ(bytes_of(back), bytes);
+  welcome.protocol_version = 4;
+  auto v4 = bytes_of(welcome);
+  v4[1] = 3;
+  EXPECT_EQ(v4, bytes) << "the two versions' welcomes differ in the version alone";
+  v4[1] = 2;
+  EXPECT_EQ(read_message(v4, back), MessageError::unsupported_version);
 }
 
 TEST(Messages, WelcomeAndPresenceCarryAvatars) {
@@ -234,7 +387,7 @@ TEST(Messages, BadBytesGiveTheirError) {
   EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x85, 0x01, 0x09}, command), MessageError::value_out_of_range);
   EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x85, 0x01, 0x00, 0x03, 'j', 'o', 'y', 101, 0x00}, command),
             MessageError::value_out_of_range);
-  for (int e = 0; e <= 13; ++e) EXPECT_FALSE(describe(static_cast<MessageError>(e)).empty());
+  for (int e = 0; e <= 14; ++e) EXPECT_FALSE(describe(static_cast<MessageError>(e)).empty());
 }
 
 TEST(Messages, EveryReaderSurvivesRandomBytes) {
@@ -243,14 +396,17 @@ TEST(Messages, EveryReaderSurvivesRandomBytes) {
   for (int i = 0; i < 20000; ++i) {
     bytes.resize(rng() % 64);
     for (auto& b : bytes) b = static_cast<std::uint8_t>(rng());
-    if (!bytes.empty()) bytes[0] = static_cast<std::uint8_t>(0x80 | (1 + rng() % 15));
+    if (!bytes.empty()) bytes[0] = static_cast<std::uint8_t>(0x80 | (1 + rng() % 16));
     Hello a; Welcome b; Presence c; Chat d; Command e; CommandResult f; PackageChunk g;
-    SetRate h; Ping k; Pong l; LinkStats m; Closing n; TimedRoomFrame o; Seats p; Attention q;
+    SetRate h; Ping k; Pong l; LinkStats m; Closing n; TimedRoomFrame o; Seats p; Attention q; Speaking s;
     (void)read_message(bytes, a); (void)read_message(bytes, b); (void)read_message(bytes, c);
     (void)read_message(bytes, d); (void)read_message(bytes, e); (void)read_message(bytes, f);
     (void)read_message(bytes, g); (void)read_message(bytes, h); (void)read_message(bytes, k);
     (void)read_message(bytes, l); (void)read_message(bytes, m); (void)read_message(bytes, n);
     (void)read_message(bytes, o); (void)read_message(bytes, p); (void)read_message(bytes, q);
+    (void)read_message(bytes, s);
+    EXPECT_LE(s.language.size(), kMaxLanguageBytes);
+    EXPECT_LE(a.language.size(), kMaxLanguageBytes);
     EXPECT_LE(b.avatars.size(), kMaxWelcomeAvatars);
     EXPECT_LE(p.seats.size(), kMaxWelcomeAvatars);
     EXPECT_LE(q.entries.size(), kMaxWelcomeAvatars);

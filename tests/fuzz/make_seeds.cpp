@@ -70,15 +70,16 @@ Bytes room_frame_bytes() {
 }
 
 struct Messages {
-  Bytes hello, hello_minimal, welcome, presence_joined, presence_left, chat_up, chat_down, command_express,
+  Bytes hello, hello_v3, hello_minimal, welcome, welcome_v3, presence_joined, presence_left, chat_up, chat_down, command_express,
       command_look_at, command_snub, command_facs, command_accepted, command_refused, package_chunk, package_chunk_large,
-      set_rate, ping, pong, link_stats, closing, timed_room_frame, seats, attention, stream_header,
+      set_rate, ping, pong, link_stats, closing, timed_room_frame, seats, attention, speaking, stream_header,
       stream_header_loss_tolerant, resync_request, room_frame;
 };
 
 Messages make_messages() {
   Messages m;
   m.hello = bytes_of(fw::test::sample_hello());
+  m.hello_v3 = bytes_of(fw::test::sample_hello_v3());
   Hello minimal;
   minimal.room = "r";
   minimal.name = "A";
@@ -91,6 +92,8 @@ Messages make_messages() {
   welcome.avatars = {{1, "Ada", "", 0, 0, false, {-364.0f, 0.0f, 210.0f, 1.0471f}},
                      {300, "Bo 🙂", "ffeeddccbbaa99887766554433221100", 1100, 19652, true, {0, 0, -40.0f, -3.1415f}}};
   m.welcome = bytes_of(welcome);
+  welcome.protocol_version = 3;
+  m.welcome_v3 = bytes_of(welcome);
   m.presence_joined = bytes_of(Presence{Presence::Change::joined, welcome.avatars[1]});
   m.presence_left = bytes_of(Presence{Presence::Change::left, {300, "", "", 0, 0, true, {}}});
   m.chat_up = bytes_of(Chat{0, "hello, room — ça va?"});
@@ -121,6 +124,7 @@ Messages make_messages() {
   Attention attention;
   attention.entries = {{1, AttentionTarget::avatar, 2}, {2, AttentionTarget::room, 0}, {3, AttentionTarget::nobody, 0}};
   m.attention = bytes_of(attention);
+  m.speaking = bytes_of(fw::test::sample_speaking());
   m.stream_header = write_stream_header(StreamOptions{});
   m.stream_header_loss_tolerant = write_stream_header(StreamOptions{true, 20, 0});
   const std::uint32_t ids[] = {1, 2, 300};
@@ -131,8 +135,10 @@ Messages make_messages() {
 void session_messages(const fs::path& corpus, const Messages& m) {
   Folder f(corpus, "session_message_fuzz");
   f.write("hello", m.hello);
+  f.write("hello_v3", m.hello_v3);
   f.write("hello_minimal", m.hello_minimal);
   f.write("welcome", m.welcome);
+  f.write("welcome_v3", m.welcome_v3);
   f.write("presence_joined", m.presence_joined);
   f.write("presence_left", m.presence_left);
   f.write("chat_up", m.chat_up);
@@ -152,6 +158,7 @@ void session_messages(const fs::path& corpus, const Messages& m) {
   f.write("timed_room_frame", m.timed_room_frame);
   f.write("seats", m.seats);
   f.write("attention", m.attention);
+  f.write("speaking", m.speaking);
   f.write("stream_header", m.stream_header);
   f.write("stream_header_loss_tolerant", m.stream_header_loss_tolerant);
   f.write("resync_request", m.resync_request);
@@ -173,7 +180,7 @@ void tcp_framing(const fs::path& corpus, const Messages& m) {
   f.write("client_to_server", TcpFramingInput::make(false, {all, all, all, all}, up));
   f.write("client_to_server_in_pieces", TcpFramingInput::make(false, {0, 2, 6, 30}, up));
   const Bytes down = framed({&m.welcome, &m.stream_header, &m.attention, &m.timed_room_frame, &m.presence_joined,
-                             &m.seats, &m.chat_down, &m.package_chunk_large, &m.room_frame, &m.link_stats, &m.pong,
+                             &m.seats, &m.speaking, &m.chat_down, &m.package_chunk_large, &m.room_frame, &m.link_stats, &m.pong,
                              &m.closing});
   f.write("server_to_client", TcpFramingInput::make(true, {all, all, all, all}, down));
   f.write("server_to_client_in_pieces", TcpFramingInput::make(true, {254, 0, 127, 9}, down));

@@ -18,7 +18,21 @@ inline codec::Hello sample_hello() {
   hello.own_package = true;
   hello.avatar_key = "k3y-_AZaz09k3y-_AZaz09";
   hello.resume = "r-e_sume0123456789abcd";
+  hello.language = "pt-br";
   return hello;
+}
+
+/// The same hello as a version-3 client sends it: no language.
+inline codec::Hello sample_hello_v3() {
+  codec::Hello hello = sample_hello();
+  hello.protocol_version = 3;
+  hello.language.clear();
+  return hello;
+}
+
+/// A speaking message with every field set, its text outside ASCII.
+inline codec::Speaking sample_speaking() {
+  return {.avatar = 300, .tick = 70000, .duration_ms = 2140, .language = "de", .text = "Grüß Gott, wie geht's?"};
 }
 
 }  // namespace fw::test

@@ -48,8 +48,8 @@ std::optional<CloseCode> closed_with(test::InMemoryPeer& peer) {
 /// a hello the writer did write.
 std::vector<std::uint8_t> oversized_hello(const std::string& room, const std::string& name) {
   std::vector<std::uint8_t> head;
-  codec::write_message(codec::Hello{}, head);  // type, version, flags, max_bps 0, then six empty strings
-  std::vector<std::uint8_t> bytes(head.begin(), head.end() - 6);
+  codec::write_message(codec::Hello{}, head);  // type, version, flags, max_bps 0, then seven empty strings
+  std::vector<std::uint8_t> bytes(head.begin(), head.end() - 7);
   codec::ByteWriter w(bytes);
   for (const std::string& text : {room, name}) {
     w.varint(static_cast<std::uint32_t>(text.size()));
@@ -59,6 +59,7 @@ std::vector<std::uint8_t> oversized_hello(const std::string& room, const std::st
   w.varint(0);  // no token
   w.varint(0);  // no avatar key
   w.varint(0);  // no resume key
+  w.varint(0);  // the server's default language
   return bytes;
 }
 
@@ -115,10 +116,10 @@ TEST(ClientSession, AnotherProtocolVersionIsRefusedNamingOurs) {
   hello.name = "Ann";
   std::vector<std::uint8_t> bytes;
   codec::write_message(hello, bytes);
-  bytes[1] = 4;  // protocol_version, u16 little-endian after the type byte: one this server does not speak
+  bytes[1] = 5;  // protocol_version, u16 little-endian after the type byte: one this server does not speak
   peer->send_bytes(bytes);
   EXPECT_EQ(closed_with(*peer), CloseCode::unsupported_version);
-  EXPECT_NE(peer->closing->reason.find("version 3"), std::string::npos) << peer->closing->reason;
+  EXPECT_NE(peer->closing->reason.find("versions 3 to 4"), std::string::npos) << peer->closing->reason;
 }
 
 TEST(ClientSession, RoomNamesAreLettersDigitsAndFewMarks) {

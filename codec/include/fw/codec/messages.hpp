@@ -2,7 +2,8 @@
 // The room protocol's session messages (server/PROTOCOL.md is the normative
 // description; this header is its C++ API): hello, welcome, presence, chat,
 // commands, package chunks, rate, ping/pong, link statistics, closing, timed
-// room frames, seats and attention, plus the length prefix that delimits messages on TCP.
+// room frames, seats, attention and speaking, plus the length prefix that
+// delimits messages on TCP.
 //
 // Every message is one WebSocket binary message, or one length-prefixed frame
 // on TCP. A session message's first byte is 0x80 | MessageType; the codec's
@@ -23,8 +24,15 @@ namespace fw::codec {
 /// The session protocol's version, carried in hello and welcome. A server
 /// answers a hello of another version with Closing{unsupported_version}.
 /// Version 2 added the seats (in avatar_info, and the seats message) and the
-/// attention message.
-inline constexpr std::uint16_t kProtocolVersion = 3;
+/// attention message; version 4 the hello's language and the speaking
+/// message. A server still reads a version-3 hello (no language) and answers
+/// it with a version-3 welcome, whose layout is the same.
+inline constexpr std::uint16_t kProtocolVersion = 4;
+/// The oldest version a hello or welcome may carry and still be read.
+inline constexpr std::uint16_t kOldestProtocolVersion = 3;
+/// The first version whose hello carries a language and whose sessions are
+/// sent speaking messages.
+inline constexpr std::uint16_t kFirstSpeakingVersion = 4;
 
 /// The low seven bits of a session message's first byte. Values never change.
 enum class MessageType : std::uint8_t {
@@ -43,8 +51,9 @@ enum class MessageType : std::uint8_t {
   timed_room_frame = 13, ///< down: a codec room frame with its tick and server time
   seats = 14,            ///< down: where every avatar sits, after the layout changed
   attention = 15,        ///< down: whom faces attend, for those whose target changed
+  speaking = 16,         ///< down (version 4): a face begins to say a chat line
 };
-inline constexpr MessageType kLastMessageType = MessageType::attention;
+inline constexpr MessageType kLastMessageType = MessageType::speaking;
 inline constexpr std::uint8_t kSessionMessageBit = 0x80;
 
 /// What a message on the connection is, from its first byte.
@@ -69,7 +78,7 @@ enum class MessageError : std::uint8_t {
   truncated = 5,            ///< a field runs past the end of the message
   too_large = 6,            ///< over the message's size limit
   string_too_long = 7,      ///< a string over its field's limit
-  bad_text = 8,             ///< a string that is not UTF-8, or holds control characters
+  bad_text = 8,             ///< a string that is not UTF-8, or holds control characters; a language not of a-z 0-9 -
   value_out_of_range = 9,   ///< a number outside what its field allows
   trailing_bytes = 10,      ///< bytes after the last field
   too_many_entries = 11,    ///< a list over its limit
@@ -93,6 +102,11 @@ inline constexpr std::size_t kMaxTokenBytes = 512;
 /// An avatar key (the secret an upload returns) and a resume key (a welcome's).
 inline constexpr std::size_t kMaxKeyBytes = 64;
 inline constexpr std::size_t kMaxChatBytes = 500;
+/// A language: an espeak-ng voice name such as `en`, `en-us`, `pt-br`.
+inline constexpr std::size_t kMaxLanguageBytes = 16;
+/// The longest line a face says at once is 15 s of speech (longer lines
+/// are said in part); 20 s leaves room for espeak-ng's pauses.
+inline constexpr std::uint32_t kMaxSpeakingMs = 20'000;
 inline constexpr std::size_t kMaxEmotionBytes = 16;
 inline constexpr std::size_t kMaxSentenceBytes = 4096;
 inline constexpr std::size_t kMaxReasonBytes = 120;
@@ -132,7 +146,16 @@ struct Hello {
   /// The client holds its own avatar's package (it uploaded the package
   /// itself): none of its own avatar's packages come back down.
   bool own_package = false;
+  /// Version 4: the language the person's chat lines are said in, an
+  /// espeak-ng voice name (is_language_code); empty: the server's default.
+  /// A version-3 hello has none (it must stay empty to be written).
+  std::string language;
 };
+
+/// Whether `code` is 1 .. kMaxLanguageBytes of lowercase ASCII letters,
+/// digits and `-`: the shape of a language (whether a server speaks it is
+/// the server's to say).
+bool is_language_code(std::string_view code);
 
 /// Where an avatar sits in the room frame the server's gaze is computed in
 /// (PROTOCOL.md 4): millimetres, x to the right of someone looking at the
@@ -282,6 +305,17 @@ struct Attention {
   std::vector<Entry> entries;  ///< at most kMaxWelcomeAvatars
 };
 
+/// Down, to sessions whose hello was version 4: a face begins to say a chat
+/// line. Sent before the first room frame that carries the line; a client
+/// starts what it keeps in step with the line (sound) when it shows that frame.
+struct Speaking {
+  std::uint32_t avatar = 0;       ///< who speaks
+  std::uint32_t tick = 0;         ///< the room tick whose frame is the line's first (as TimedRoomFrame::tick)
+  std::uint32_t duration_ms = 0;  ///< how long the face speaks, 0 .. kMaxSpeakingMs
+  std::string language;           ///< the language it is said in, is_language_code
+  std::string text;               ///< the part of the line said, 1 .. 500 bytes
+};
+
 /// Down, instead of a bare room frame when the hello asked for timestamps.
 struct TimedRoomFrame {
   std::uint32_t tick = 0;            ///< the room's tick index
@@ -306,8 +340,11 @@ void write_message(const Closing& message, std::vector<std::uint8_t>& out);
 void write_message(const TimedRoomFrame& message, std::vector<std::uint8_t>& out);
 void write_message(const Seats& message, std::vector<std::uint8_t>& out);
 void write_message(const Attention& message, std::vector<std::uint8_t>& out);
+void write_message(const Speaking& message, std::vector<std::uint8_t>& out);
 
 // Readers parse one whole message; on error the output holds no meaning.
+// A hello or welcome of version 3 or 4 reads (with the layout of its version);
+// written back, each keeps its version's layout.
 MessageError read_message(std::span<const std::uint8_t> bytes, Hello& message);
 MessageError read_message(std::span<const std::uint8_t> bytes, Welcome& message);
 MessageError read_message(std::span<const std::uint8_t> bytes, Presence& message);
@@ -325,6 +362,7 @@ MessageError read_message(std::span<const std::uint8_t> bytes, Closing& message)
 MessageError read_message(std::span<const std::uint8_t> bytes, TimedRoomFrame& message);
 MessageError read_message(std::span<const std::uint8_t> bytes, Seats& message);
 MessageError read_message(std::span<const std::uint8_t> bytes, Attention& message);
+MessageError read_message(std::span<const std::uint8_t> bytes, Speaking& message);
 
 // ---------------------------------------------------------------------------
 // TCP framing: every message is preceded by its length as an unsigned LEB128
