@@ -53,6 +53,9 @@ int fw_speech_init(void) {
  * the server does (by its properties, among the voice files present). 0 on
  * success, espeak-ng's error otherwise. */
 int fw_speech_set_language(const char* language) {
+  /* espeak-ng lists the voice files once and keeps the list; the page adds
+   * a language's file when it is first needed, so list them again. */
+  espeak_ListVoices(NULL);
   espeak_VOICE spec;
   memset(&spec, 0, sizeof spec);
   spec.languages = language;
