@@ -48,6 +48,7 @@ export class RoomClient {
     this.avatars = new Map();    // id -> { info, package: {quality, bytes} | null, lastFrameMs }
     this.attention = new Map();  // id -> { target, targetAvatar }
     this.chatLines = [];         // { from, name, text }
+    this.speakingLines = [];     // the speaking messages (avatar, tick, durationMs, language, text), newest last
     this.results = new Map();    // request id -> error ('' accepted)
     this.requestId = 0;
     this.decoder = null;
@@ -240,7 +241,10 @@ export class RoomClient {
       case MessageType.linkStats:
         this.serverLink = m;
         return this.notify('link');
-      case MessageType.speaking: return this.notify('speaking', { line: m, framesReceived: this.framesReceived });
+      case MessageType.speaking:
+        this.speakingLines.push(m);
+        if (this.speakingLines.length > MAX_CHAT_LINES) this.speakingLines.shift();
+        return this.notify('speaking', { line: m, framesReceived: this.framesReceived });
       case MessageType.pong: return undefined;
       default: return this.protocolProblem(`a message of type ${type} a client never receives`);
     }
