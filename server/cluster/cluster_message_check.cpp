@@ -186,6 +186,13 @@ Refusal refusal_of(bridge::Down& m) {
       if (!reads_as(m.message, chat) || !clean_chat(chat.text)) return "chat: no chat line a client could have written";
       return std::nullopt;
     }
+    case bridge::DownKind::speaking: {
+      codec::Speaking speaking;
+      if (m.avatar != 0) return "speaking: it goes to everyone (avatar 0)";
+      if (!reads_as(m.message, speaking) || !plausible_avatar(speaking.avatar))
+        return "speaking: no Speaking message of an avatar";
+      return std::nullopt;
+    }
     case bridge::DownKind::result: {
       codec::CommandResult result;
       if (!plausible_avatar(m.avatar)) return "result: the addressee's avatar id is out of range";
@@ -212,6 +219,7 @@ Refusal refusal_of(const bridge::Up& m) {
       if (!plausible_address(m.address)) return "join: the address is malformed";
       if (!plausible_hash(m.resume_hash)) return "join: the resume hash is malformed";
       if (!within(m.returning, codec::kMaxKeyBytes) || !plain(m.returning)) return "join: the resume key is malformed";
+      if (!m.language.empty() && !codec::is_language_code(m.language)) return "join: the language is malformed";
       return std::nullopt;
     case bridge::UpKind::leave:
       if (!plausible_avatar(m.avatar)) return "leave: the avatar id is out of range";

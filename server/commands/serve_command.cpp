@@ -53,6 +53,14 @@ void add_thread_flags(CLI::App& cmd, ServerConfig& config) {
       ->envname("FACEWIRE_WORKERS")
       ->check(CLI::Range(1, 64))
       ->capture_default_str();
+  cmd.add_option("--speech-threads", config.speech_threads,
+                 "threads that make chat lines' lip-sync tracks (espeak-ng), shared by every room")
+      ->check(CLI::Range(1, 8))
+      ->capture_default_str();
+  cmd.add_option("--speech-queue", config.speech_queue,
+                 "chat lines that may wait for a speech thread; a line past them is shown but not said")
+      ->check(CLI::Range(1, 4096))
+      ->capture_default_str();
 }
 
 void add_room_flags(CLI::App& cmd, ServerConfig& config) {

@@ -30,6 +30,11 @@ struct ServerConfig {
   std::string data = "facewire-data";  ///< avatar store directory
   int io_threads = 2;
   int workers = 2;               ///< room ticks and encoding
+  /// Threads that make chat lines' lip-sync tracks for every room
+  /// (rooms/speech_worker.hpp), and the lines that may wait for them; a line
+  /// that finds them all waiting is shown but not said.
+  int speech_threads = 2;
+  std::size_t speech_queue = 64;
   int tick_hz = 30;
   std::size_t room_size = 16;
   std::size_t max_rooms = 1000;

@@ -17,6 +17,7 @@
 #include "session_registry.hpp"
 #include "server_keys.hpp"
 #include "server_limits.hpp"
+#include "speech_languages.hpp"
 
 namespace fw::server {
 
@@ -286,7 +287,8 @@ void ClientSession::handle_hello(std::span<const std::uint8_t> message) {
                       .returning = hello.resume,
                       .node = {},  // here: not bridged from another node
                       .join_ref = {},
-                      .resume_hash = {}};
+                      .resume_hash = {},
+                      .language = hello.language};  // checked by refusal_of; empty: the room's
   room_->join(std::move(request));
 }
 
@@ -310,6 +312,7 @@ std::optional<std::pair<CloseCode, std::string>> ClientSession::refusal_of(const
   if (services_.draining.load()) return {{CloseCode::shutting_down, "the server is shutting down; try again soon"}};
   if (!is_valid_room_name(hello.room))
     return {{CloseCode::bad_request, "room names are 1 to 64 characters of A-Z a-z 0-9 _ - ."}};
+  if (std::string why; chosen_language(hello.language, why).empty()) return {{CloseCode::bad_request, why}};
   if (services_.config.auth_secret.empty()) return std::nullopt;
   const auto now =
       std::chrono::duration_cast<std::chrono::seconds>(std::chrono::system_clock::now().time_since_epoch()).count();

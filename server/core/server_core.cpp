@@ -30,8 +30,9 @@ ServerCore::ServerCore(const ServerConfig& config, std::unique_ptr<Metrics> metr
       server_key_(std::move(server_key)),
       demo_avatars_(std::move(demo_avatars)),
       workers_(static_cast<std::size_t>(config_.workers)),
+      speech_(static_cast<std::size_t>(config_.speech_threads), config_.speech_queue),
       rooms_(RoomServices{config_, *metrics_, physics_lod_, abuse_, workers_, *store_, demo_avatars_, bus_,
-                          state_.draining},
+                          state_.draining, speech_},
              addresses_),
       session_services_{config_, *metrics_, abuse_,         tokens_,     addresses_,     *store_,
                         rooms_,  sessions_, demo_avatars_, server_key_, state_.draining} {}
@@ -57,6 +58,8 @@ void ServerCore::stop() {
   if (stopped_) return;
   stopped_ = true;
   rooms_.close_all_rooms();
+  // Lines still waiting for a voice are not said: the rooms are closing.
+  speech_.stop();
   // Closed rooms stop their timers, so the pool runs out of work.
   workers_.join();
 }

@@ -69,6 +69,7 @@ class ServerCore {
   const std::vector<StoredAvatar>& demo_avatars() const { return demo_avatars_; }
   ServerState& state() { return state_; }
   boost::asio::thread_pool& workers() { return workers_; }
+  SpeechWorker& speech() { return speech_; }
   /// The bus every room holds (room_bus_relay.hpp): a cluster node attaches itself to it.
   RoomBusRelay& room_bus() { return bus_; }
   RoomRegistry& rooms() { return rooms_; }
@@ -92,6 +93,7 @@ class ServerCore {
   const std::vector<StoredAvatar> demo_avatars_;
   ServerState state_;
   boost::asio::thread_pool workers_;  ///< room ticks, encoding
+  SpeechWorker speech_;               ///< chat lines' lip-sync tracks (speech_worker.hpp)
   RoomBusRelay bus_;
   SessionRegistry sessions_;
   RoomRegistry rooms_;

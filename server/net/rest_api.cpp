@@ -5,6 +5,7 @@
 #include "api_access.hpp"
 #include "avatar_deletion.hpp"
 #include "room_registry.hpp"
+#include "speech_languages.hpp"
 
 namespace fw::server {
 
@@ -104,6 +105,24 @@ Response json_response(http::status status, unsigned version, bool keep_alive, s
   return response;
 }
 
+namespace {
+
+/// GET /api/languages (PROTOCOL.md 8): what a hello may choose. The voices
+/// installed do not change while the server runs, so it is made once. Open
+/// without a token: it says nothing of rooms or people, and a page needs it
+/// before its person joins.
+const std::string& languages_json() {
+  static const std::string body = [] {
+    nlohmann::json languages = nlohmann::json::array();
+    for (const SpeechLanguage& language : speech_languages())
+      languages.push_back({{"code", language.code}, {"name", language.name}});
+    return nlohmann::json{{"default", kDefaultSpeechLanguage}, {"languages", languages}}.dump() + "\n";
+  }();
+  return body;
+}
+
+}  // namespace
+
 std::optional<Response> respond_to_api(const ApiServices& services, const Request& request) {
   const std::string_view target(request.target().data(), request.target().size());
   const std::string_view path = target.substr(0, target.find('?'));
@@ -144,6 +163,7 @@ std::optional<Response> respond_to_api(const ApiServices& services, const Reques
     return json_response(http::status::ok, request.version(), request.keep_alive(),
                          nlohmann::json{{"rooms", rooms}}.dump() + "\n");
   }
+  if (path == "/api/languages") return json_response(http::status::ok, request.version(), request.keep_alive(), languages_json());
   constexpr std::string_view kPackages = "/api/packages/";
   if (path.substr(0, kPackages.size()) == kPackages)
     return package_response(services, request, std::string(path.substr(kPackages.size())), query == "quality=preview");

@@ -238,6 +238,7 @@ Bytes encode(const Down& m) {
     case DownKind::seats:
     case DownKind::chat:
     case DownKind::result:
+    case DownKind::speaking:
       w.u32_le(m.avatar);
       put_bytes(w, m.message);
       break;
@@ -255,7 +256,7 @@ Bytes encode(const Down& m) {
 }
 
 std::optional<Down> decode_down(const std::uint8_t* data, std::size_t size) {
-  if (size < 2 || data[0] != kVersion || data[1] < 1 || data[1] > static_cast<std::uint8_t>(DownKind::tick))
+  if (size < 2 || data[0] != kVersion || data[1] < 1 || data[1] > static_cast<std::uint8_t>(DownKind::speaking))
     return std::nullopt;
   Down m;
   m.kind = static_cast<DownKind>(data[1]);
@@ -284,6 +285,7 @@ std::optional<Down> decode_down(const std::uint8_t* data, std::size_t size) {
     case DownKind::seats:
     case DownKind::chat:
     case DownKind::result:
+    case DownKind::speaking:
       m.avatar = r.u32_le();
       m.message = get_bytes(r);
       break;
@@ -316,6 +318,7 @@ Bytes encode(const Up& m) {
       put_text(w, m.address);
       put_text(w, m.resume_hash);
       put_text(w, m.returning);
+      put_text(w, m.language);
       break;
     case UpKind::leave: w.u32_le(m.avatar); break;
     case UpKind::chat:
@@ -346,6 +349,7 @@ std::optional<Up> decode_up(const std::uint8_t* data, std::size_t size) {
       m.address = get_text(r);
       m.resume_hash = get_text(r);
       m.returning = get_text(r);
+      m.language = get_text(r);
       break;
     case UpKind::leave: m.avatar = r.u32_le(); break;
     case UpKind::chat:

@@ -21,7 +21,8 @@ namespace fw::server::bridge {
 
 using Bytes = std::vector<std::uint8_t>;
 
-inline constexpr std::uint8_t kVersion = 1;
+/// 2: the join's language, the speaking news.
+inline constexpr std::uint8_t kVersion = 2;
 
 /// A member as its owner keeps it in Redis, so that another node can
 /// restore the room (and as the roster tells it to bridging nodes).
@@ -44,7 +45,7 @@ struct RoomState {
 };
 
 // ---- down: owner -> bridging nodes ----------------------------------------
-enum class DownKind : std::uint8_t { roster = 1, joined, refused, left, seats, attention, chat, result, tick };
+enum class DownKind : std::uint8_t { roster = 1, joined, refused, left, seats, attention, chat, result, tick, speaking };
 
 struct FaceEntry {
   std::uint32_t id = 0;
@@ -62,7 +63,7 @@ struct Down {
   codec::CloseCode code = codec::CloseCode::normal;  ///< refused
   std::string reason;                    ///< refused
   std::uint32_t avatar = 0;              ///< left; result, chat notice: to whom (0: everyone)
-  Bytes message;                         ///< seats, chat, result: the encoded client message
+  Bytes message;                         ///< seats, chat, result, speaking: the encoded client message
   std::uint32_t tick = 0;                ///< tick
   std::vector<FaceEntry> faces;          ///< tick
 };
@@ -79,6 +80,7 @@ struct Up {
   std::string address;     ///< join
   std::string resume_hash; ///< join: of the resume key the new connection holds
   std::string returning;   ///< join: the resume key the hello showed (to take a seat back), or ""
+  std::string language;    ///< join: the language the person's lines are said in ("": the room's)
   std::uint32_t avatar = 0;  ///< leave, chat, command
   std::string text;        ///< chat
   Bytes command;           ///< command: an encoded Command
@@ -89,7 +91,7 @@ Down down_roster();
 Down down_joined(std::string join_ref, MemberRecord member, bool returning = false);
 Down down_refused(std::string join_ref, codec::CloseCode code, std::string reason);
 Down down_left(std::uint32_t avatar);
-/// seats, chat, result: a client message, for `avatar` (0: everyone).
+/// seats, chat, result, speaking: a client message, for `avatar` (0: everyone).
 Down down_message(DownKind kind, std::uint32_t avatar, Bytes message);
 Down down_attention(Bytes attention);
 Down down_tick(std::uint32_t tick);

@@ -121,6 +121,13 @@ void BridgedRoom::on_down(bridge::Down& message) {
         if (member.stream && (message.avatar == 0 || message.avatar == id)) member.stream->post_chat(line);
       return;
     }
+    case bridge::DownKind::speaking: {
+      // The owner's tick news comes after it, so the line still goes before its frame here.
+      const auto speaking = share(std::move(message.message));
+      for (auto& [id, member] : members_)
+        if (member.stream) member.stream->post_speaking(speaking);
+      return;
+    }
     case bridge::DownKind::result: {
       const auto it = members_.find(message.avatar);
       if (it != members_.end() && it->second.stream) it->second.stream->post_result(share(std::move(message.message)));
@@ -145,6 +152,7 @@ void BridgedRoom::join(JoinRequest request) {
   up.address = request.address;
   up.resume_hash = resume_hash(request.resume);
   up.returning = request.returning;
+  up.language = request.language;
   send_up(up);
   sent_joins_.emplace(ref, SentJoin{std::move(request), std::chrono::steady_clock::now()});
 }

@@ -27,6 +27,9 @@ struct JoinRequest {
   std::string node;
   std::string join_ref;
   std::string resume_hash;  ///< of `resume`, when the connection is on another node
+  /// The language the person's lines are said in (PROTOCOL.md 5.1), checked
+  /// by whoever took the hello; empty: the room's (autonomous avatars too).
+  std::string language = {};
 };
 
 }  // namespace fw::server

@@ -119,7 +119,7 @@ void OwnedRoom::join(JoinRequest request) {
   if (take_seat_back(request)) return;
   if (const auto refusal = refusal_of(request)) return refuse(request, refusal->first, refusal->second);
   const bool person = request.connection != nullptr || !request.node.empty();
-  const std::uint32_t id = simulation_.add_avatar(AvatarSetup{request.name, person});
+  const std::uint32_t id = simulation_.add_avatar(AvatarSetup{request.name, person, request.language});
   if (id == 0) {
     services_.abuse.count_quietly(Abuse::room_full, 1);
     return refuse(request, codec::CloseCode::room_full, "room '" + name_ + "' is full; try another room");
@@ -298,6 +298,16 @@ void OwnedRoom::broadcast_attention(const codec::Attention& attention, std::uint
   send_down(bridge::down_attention(std::move(bytes)));
 }
 
+void OwnedRoom::tell_line_begun(std::uint32_t avatar, const RoomEvent::LineBegun& line) {
+  // Before this tick's frames, the line's first (PROTOCOL.md 5.15); the
+  // streams of version-3 sessions leave it out.
+  const auto speaking =
+      encode_shared(codec::Speaking{avatar, line.frame_tick, line.duration_ms, line.language, line.text});
+  for (auto& [id, member] : members_)
+    if (member.stream) member.stream->post_speaking(speaking);
+  if (bridged_members() != 0) send_down(bridge::down_message(bridge::DownKind::speaking, 0, *speaking));
+}
+
 void OwnedRoom::tick(std::chrono::steady_clock::time_point due) {
   const auto start = std::chrono::steady_clock::now();
   const auto period = std::chrono::microseconds(1'000'000 / services_.config.tick_hz);
@@ -314,6 +324,7 @@ void OwnedRoom::tick(std::chrono::steady_clock::time_point due) {
     spdlog::debug("room {}: tick {} avatar {}: {}", name_, event.tick, event.avatar, event.what);
     const auto writer = members_.find(event.avatar);
     if (!event.tell.empty() && writer != members_.end()) notice(writer->second, event.tell);
+    if (event.line && writer != members_.end()) tell_line_begun(event.avatar, *event.line);
   }
   faces_.clear();
   for (const auto& [id, member] : members_) faces_.push_back({id, &simulation_.face(id)});

@@ -75,6 +75,8 @@ class OwnedRoom : public RoomRole {
   std::size_t seats_of_block(const std::string& block) const;
   /// A line from the server (avatar 0) to one person only.
   void notice(OwnedMember& member, const std::string& text);
+  /// `avatar` begins to say a line: a speaking message to everyone (5.15).
+  void tell_line_begun(std::uint32_t avatar, const RoomEvent::LineBegun& line);
   /// Takes every member's seat from the simulation; a Seats message for
   /// everyone when a seat already announced moved, else null.
   SharedBytes reseat();

@@ -57,6 +57,7 @@ void OwnedRoom::on_up(bridge::Up& message) {
       request.node = message.node;
       request.join_ref = message.join_ref;
       request.resume_hash = message.resume_hash;
+      request.language = message.language;  // of the shape a hello allows (cluster_message_check.cpp)
       if (auto stored = services_.store.get(message.asset)) request.avatar = *stored;
       else
         return send_down(bridge::down_refused(message.join_ref, codec::CloseCode::avatar_being_prepared,

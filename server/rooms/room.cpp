@@ -12,8 +12,10 @@ namespace net = boost::asio;
 
 namespace {
 
-RoomSimulationOptions simulation_options(const ServerConfig& config, std::uint64_t seed) {
+RoomSimulationOptions simulation_options(const ServerConfig& config, std::uint64_t seed,
+                                         std::shared_ptr<TrackMaker> track_maker) {
   RoomSimulationOptions options{seed, config.tick_hz, config.physics, config.physics_sleeps};
+  options.track_maker = std::move(track_maker);
   options.id_space = config.avatar_id_space;
   // Ticks never run ahead of the clock, so this many of them last at least as long.
   options.id_quiet_ticks =
@@ -35,7 +37,9 @@ Room::Room(const RoomServices& services, RoomRegistry& registry, std::string nam
            std::uint64_t seed, RoomRoleKind role)
     : services_(services), registry_(registry), name_(std::move(name)), persistent_(persistent),
       strand_(net::make_strand(services.workers)), timer_(strand_),
-      simulation_(simulation_options(services.config, seed)), role_(make_role(*this, role)), kind_(role) {
+      track_maker_(std::make_shared<RoomTrackMaker>(services.speech, strand_)),
+      simulation_(simulation_options(services.config, seed, track_maker_)), role_(make_role(*this, role)),
+      kind_(role) {
   services_.metrics.rooms.fetch_add(1);
 }
 
@@ -54,6 +58,8 @@ void Room::post_open(Work work) {
 }
 
 void Room::start() {
+  // Tracks handed back after the room is gone are dropped (speech_worker.hpp).
+  track_maker_->bind(weak_from_this());
   net::post(strand_, [self = shared_from_this()] {
     self->next_tick_ = std::chrono::steady_clock::now();
     self->schedule_tick();

@@ -133,6 +133,8 @@ class Room : public std::enable_shared_from_this<Room> {
   bool persistent_;
   boost::asio::strand<boost::asio::thread_pool::executor_type> strand_;
   boost::asio::steady_timer timer_;
+  /// Makes the simulation's lines' tracks on the server's SpeechWorker.
+  std::shared_ptr<RoomTrackMaker> track_maker_;
   /// Lives as long as the room, whichever role simulates it.
   RoomSimulation simulation_;
   RoomCounts counts_;

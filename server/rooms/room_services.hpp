@@ -14,6 +14,7 @@
 #include "physics_governor.hpp"
 #include "room_bus.hpp"
 #include "server_config.hpp"
+#include "speech_worker.hpp"
 
 namespace fw::server {
 
@@ -28,6 +29,7 @@ struct RoomServices {
   const std::vector<StoredAvatar>& procedural_faces;
   RoomBus& bus;                  ///< the other nodes (LocalRoomBus alone)
   const std::atomic<bool>& draining;  ///< SIGTERM: no new joins
+  SpeechWorker& speech;          ///< makes chat lines' lip-sync tracks off the rooms' strands
 };
 
 }  // namespace fw::server

@@ -168,12 +168,21 @@ void SubscriberStream::post_attention(const codec::Attention& attention) {
 void SubscriberStream::post_result(SharedBytes message) {
   // A client that sends commands faster than its link carries the answers
   // loses the oldest answers, not its budget.
-  std::size_t results = 0;
-  for (const Waiting& w : waiting_) results += w.kind == Kind::result;
-  if (results >= kMaxWaitingResults) {
-    waiting_.erase(std::find_if(waiting_.begin(), waiting_.end(), [](const Waiting& w) { return w.kind == Kind::result; }));
-  }
-  waiting_.push_back({Kind::result, 0, std::move(message)});
+  post_bounded(Kind::result, kMaxWaitingResults, std::move(message));
+}
+
+void SubscriberStream::post_speaking(SharedBytes message) {
+  if (settings_.protocol_version < codec::kFirstSpeakingVersion) return;
+  // A link too slow for the room's lines loses the oldest announcements:
+  // their lines have begun long since.
+  post_bounded(Kind::speaking, kMaxWaitingSpeaking, std::move(message));
+}
+
+void SubscriberStream::post_bounded(Kind kind, std::size_t max_waiting, SharedBytes message) {
+  const auto same = [kind](const Waiting& w) { return w.kind == kind; };
+  if (static_cast<std::size_t>(std::count_if(waiting_.begin(), waiting_.end(), same)) >= max_waiting)
+    waiting_.erase(std::find_if(waiting_.begin(), waiting_.end(), same));
+  waiting_.push_back({kind, 0, std::move(message)});
   send_messages();
 }
 

@@ -82,12 +82,18 @@ class SubscriberStream {
   void post_result(SharedBytes message);
   /// A chat line (from an avatar, or the server's avatar 0).
   void post_chat(SharedBytes message);
+  /// A face begins to say a line (codec::Speaking), for sessions of protocol
+  /// version 4 or later only (a version-3 client would refuse it). It goes
+  /// before any later room frame, which carries the line: it waits with
+  /// presence and the rest, kMaxWaitingSpeaking at most (the oldest goes).
+  void post_speaking(SharedBytes message);
   /// Room messages still waiting, and chat lines dropped so far.
   std::size_t waiting_messages() const { return waiting_.size() + chat_.size(); }
   std::uint64_t dropped_chat_lines() const { return dropped_chat_total_; }
 
   static constexpr std::size_t kMaxWaitingChat = 16;
   static constexpr std::size_t kMaxWaitingResults = 16;
+  static constexpr std::size_t kMaxWaitingSpeaking = 8;
 
   void tick(std::uint32_t tick, std::uint64_t now_us, std::span<const AvatarFace> faces);
 
@@ -101,12 +107,14 @@ class SubscriberStream {
     SharedBytes bytes;
     std::size_t offset = 0;
   };
-  enum class Kind { joined, left, seats, attention, result };
+  enum class Kind { joined, left, seats, attention, result, speaking };
   struct Waiting {
     Kind kind;
     std::uint32_t avatar = 0;  ///< joined, left: whose
     SharedBytes bytes;         ///< null for the attention (encoded when it goes)
   };
+  /// Queues a message of `kind`, dropping the oldest of its kind past `max_waiting`.
+  void post_bounded(Kind kind, std::size_t max_waiting, SharedBytes message);
   /// Half a second of budget or more waits for the socket.
   bool congested() const;
   bool may_send_message() const;

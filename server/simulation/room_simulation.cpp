@@ -10,6 +10,7 @@
 
 #include "fw/behavior/behavior_room.hpp"
 #include "fw/behavior/articulation.hpp"
+#include "fw/behavior/facs_track.hpp"
 #include "fw/behavior/plateau_motion.hpp"
 #include "spoken_lines.hpp"
 #include "fw/model/generic_face.hpp"
@@ -147,9 +148,17 @@ struct RoomSimulation::State {
   behavior::BehaviorRoom room;
   std::map<AvatarId, Avatar> avatars;
   std::vector<RoomEvent> events;
-  SpokenLines lines{options.speech_language};
+  SpokenLines lines;
+  std::shared_ptr<TrackMaker> track_maker =
+      options.track_maker ? options.track_maker : std::make_shared<ImmediateTrackMaker>();
+  /// Whether this simulation still exists: a track handed back late (by a
+  /// pooled maker, after the room moved or closed) checks it first.
+  std::shared_ptr<bool> alive = std::make_shared<bool>(true);
   double physics_share = 1;
   std::size_t physics_faces = 0, kinematic_faces = 0;
+
+  /// The line of `job` starts, its track made (say_waiting_lines).
+  void say_line(const LineJob& job, LineToSay line);
 
   // Events of a tick carry that tick's index; those of calls between ticks
   // the index of the tick they first act on.
@@ -163,6 +172,32 @@ RoomSimulation::RoomSimulation(const RoomSimulationOptions& options) : state_(st
 RoomSimulation::~RoomSimulation() = default;
 RoomSimulation::RoomSimulation(RoomSimulation&&) noexcept = default;
 RoomSimulation& RoomSimulation::operator=(RoomSimulation&&) noexcept = default;
+
+void RoomSimulation::State::say_line(const LineJob& job, LineToSay line) {
+  State& s = *this;
+  if (!s.lines.made(job.avatar, job.ticket) || !s.room.contains(job.avatar)) return;
+  behavior::AuTrack mouth;
+  mouth.times_s.reserve(line.mouth.size());
+  for (std::size_t i = 0; i < line.mouth.size(); ++i)
+    mouth.times_s.push_back(static_cast<double>(i) * LineToSay::kPoseStepS);
+  mouth.poses.assign(line.mouth.begin(), line.mouth.end());
+  s.room.chat(job.avatar, line.text, line.mouth.empty() ? nullptr : &mouth);
+  if (!line.note.empty())
+    s.events.push_back({s.room.tick_index(), job.avatar, "speech: " + line.note, "your line was " + line.note});
+  if (!line.mouth.empty() && line.said_bytes > 0) {
+    // The track starts with the next tick, whose frame carries its first pose.
+    const double length_ms = mouth.times_s.back() * 1000.0;
+    RoomEvent::LineBegun begun{
+        s.room.tick_index() + 1,
+        static_cast<std::uint32_t>(std::clamp(std::lround(length_ms), 0L, static_cast<long>(codec::kMaxSpeakingMs))),
+        line.language, line.text.substr(0, line.said_bytes)};
+    s.events.push_back({s.room.tick_index(), job.avatar, "speech: a line begins", "", std::move(begun)});
+  }
+  // The room's events of a line said (chat, blush) before the tick's own.
+  s.collect_events();
+  // A line that came back at once (ImmediateTrackMaker) or between ticks
+  // leaves the avatar speaking; its next line waits for the end of this one.
+}
 
 AvatarId RoomSimulation::add_avatar(const AvatarSetup& setup) {
   State& s = *state_;
@@ -235,7 +270,8 @@ std::string RoomSimulation::command(AvatarId avatar, const AvatarCommand& comman
 void RoomSimulation::chat(AvatarId avatar, std::string_view text) {
   State& s = *state_;
   if (!s.room.contains(avatar)) return;
-  if (!s.lines.add(avatar, std::string(text)))
+  const std::string& language = s.avatars.at(avatar).setup.language;
+  if (!s.lines.add(avatar, std::string(text), language.empty() ? s.options.speech_language : language))
     s.events.push_back({s.room.tick_index(), avatar,
                         "speech: a line not said (" + std::to_string(SpokenLines::kMaxWaiting) + " lines wait)",
                         "your line is shown but not said: " + std::to_string(SpokenLines::kMaxWaiting) +
@@ -245,17 +281,21 @@ void RoomSimulation::chat(AvatarId avatar, std::string_view text) {
 
 void RoomSimulation::say_waiting_lines() {
   State& s = *state_;
-  bool said = false;
   for (const AvatarId avatar : s.lines.with_lines()) {
-    std::optional<LineToSay> line = s.lines.next(avatar, s.room.speaking(avatar));
-    if (!line) continue;
-    s.room.chat(avatar, line->text, line->mouth ? &*line->mouth : nullptr);
-    said = true;
-    if (!line->note.empty())
-      s.events.push_back({s.room.tick_index(), avatar, "speech: " + line->note, "your line was " + line->note});
+    std::optional<LineJob> job = s.lines.next(avatar, s.room.speaking(avatar));
+    if (!job) continue;
+    const std::uint64_t ticket = job->ticket;
+    // A maker that hands the line back later does so on the room's strand,
+    // where the simulation's state is checked to be there still (alive).
+    const bool taken = s.track_maker->make(
+        std::move(*job), [state = &s, alive = std::weak_ptr<bool>(s.alive)](LineJob made, LineToSay line) {
+          if (!alive.expired()) state->say_line(made, std::move(line));
+        });
+    if (taken) continue;
+    s.lines.made(avatar, ticket);
+    s.events.push_back({s.room.tick_index(), avatar, "speech: a line not said (the speech worker is full)",
+                        "your line is shown but not said: the server is busy saying other lines; try again soon"});
   }
-  // The room's events of a line said (chat, blush) before the tick's own.
-  if (said) s.collect_events();
 }
 
 bool RoomSimulation::speaking(AvatarId avatar) const {

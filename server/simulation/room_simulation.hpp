@@ -18,6 +18,7 @@
 
 #include "fw/codec/face_params.hpp"
 #include "fw/codec/messages.hpp"
+#include "track_maker.hpp"
 
 namespace fw::server {
 
@@ -37,9 +38,13 @@ struct RoomSimulationOptions {
   /// left (avatar_ids.hpp). Tests shrink both.
   AvatarId id_space = codec::kMaxAvatarIdValue + 1;
   std::uint64_t id_quiet_ticks = 60 * 30;
-  /// The language chat lines are said in (an espeak-ng language: en, de,
-  /// fr, es, ...; spoken_lines.hpp).
+  /// The language chat lines are said in when their writer chose none (an
+  /// espeak-ng language: en, de, fr, es, ...; spoken_lines.hpp), and the
+  /// room's own faces' language.
   std::string speech_language = "en";
+  /// Makes the lines' lip-sync tracks (track_maker.hpp); null: at once, on
+  /// the caller's thread (ImmediateTrackMaker).
+  std::shared_ptr<TrackMaker> track_maker;
 };
 
 struct AvatarSetup {
@@ -47,6 +52,9 @@ struct AvatarSetup {
   /// Nobody is at the keyboard: the behavior repertoire runs unattended.
   /// A person's avatar is autonomous too, but the person's commands win.
   bool person = true;
+  /// The language the avatar's lines are said in; empty: the room's
+  /// (RoomSimulationOptions::speech_language).
+  std::string language = {};
 };
 
 /// A person's commands to their own avatar (they override autonomy for their
@@ -78,6 +86,14 @@ struct RoomEvent {
   /// What the avatar's person should be told (a line said in part, or not
   /// said), "" for events that are only logged.
   std::string tell = {};
+  /// The avatar began to say a chat line (PROTOCOL.md 5.15, speaking).
+  struct LineBegun {
+    std::uint32_t frame_tick = 0;   ///< the tick whose frame is the line's first (tick_index() after the next tick())
+    std::uint32_t duration_ms = 0;  ///< the lip-sync track's length, at most codec::kMaxSpeakingMs
+    std::string language;
+    std::string text;               ///< the part of the line said
+  };
+  std::optional<LineBegun> line = {};
 };
 
 class RoomSimulation {
@@ -106,9 +122,11 @@ class RoomSimulation {
   /// unknown emotion, a target not in the room, a FACS sentence that does
   /// not parse: the message says what was wrong).
   std::string command(AvatarId avatar, const AvatarCommand& command);
-  /// A chat line from `avatar`: the avatar says it (with lip sync, after
-  /// the lines it is still saying; spoken_lines.hpp), the others' gaze
-  /// follows the speaker, the text nudges the writer's emotion.
+  /// A chat line from `avatar`: the avatar says it in its language (with
+  /// lip sync, after the lines it is still saying, once the line's track is
+  /// made; spoken_lines.hpp, track_maker.hpp), the others' gaze follows the
+  /// speaker, the text nudges the writer's emotion. The line's start is an
+  /// event with RoomEvent::line set.
   void chat(AvatarId avatar, std::string_view text);
   /// Whether the avatar is saying a line now.
   bool speaking(AvatarId avatar) const;
@@ -131,7 +149,8 @@ class RoomSimulation {
   /// Advances every avatar by one tick.
   void tick();
  private:
-  /// Starts the waiting line of every avatar that is not speaking.
+  /// Has the track of the waiting line of every avatar that is not
+  /// speaking made; each line starts when its track is back.
   void say_waiting_lines();
 
  public:

@@ -4,8 +4,10 @@
 #include <algorithm>
 #include <cctype>
 #include <cstring>
+#include <map>
 #include <mutex>
 #include <set>
+#include <tuple>
 
 #include <espeak-ng/speak_lib.h>
 
@@ -23,6 +25,7 @@ struct Engine {
   int sample_rate_hz = 0;
   std::string data_folder;  ///< where espeak-ng reads its voice data
   std::set<std::string> languages;  ///< lower case, as the voice files name them
+  std::map<std::string, std::string> names;  ///< language -> the name of the voice that speaks it best
 };
 
 // The synthesis in progress; the callback has no other way to find it
@@ -75,10 +78,22 @@ Engine& started_engine() {
     espeak_Info(&path);
     e.data_folder = path ? path : "";
     espeak_SetSynthCallback(on_synthesis);
+    // For each language, the voice it is the first language of wins, then
+    // the voice that gives it the lowest priority number (espeak-ng's best).
+    std::map<std::string, std::tuple<bool, int>> rank;
     for (const espeak_VOICE** voice = espeak_ListVoices(nullptr); voice && *voice; ++voice) {
       // A list of (priority byte, name, zero byte), ended by an empty name.
-      for (const char* entry = (*voice)->languages; entry && *entry; entry += std::strlen(entry) + 1)
-        e.languages.insert(lower(entry + 1));
+      bool first = true;
+      for (const char* entry = (*voice)->languages; entry && *entry; entry += std::strlen(entry) + 1) {
+        const std::string language = lower(entry + 1);
+        e.languages.insert(language);
+        const std::tuple<bool, int> this_rank{!first, static_cast<unsigned char>(entry[0])};
+        first = false;
+        const auto known = rank.find(language);
+        if (known != rank.end() && known->second <= this_rank) continue;
+        rank[language] = this_rank;
+        e.names[language] = (*voice)->name ? (*voice)->name : language;
+      }
     }
     e.started = true;
     return e;
@@ -132,6 +147,11 @@ bool espeak_synthesize(std::string_view text, std::string_view language, double 
 std::string espeak_data_folder() {
   const std::lock_guard lock(engine_mutex);
   return started_engine().data_folder;
+}
+
+std::map<std::string, std::string> espeak_languages() {
+  const std::lock_guard lock(engine_mutex);
+  return started_engine().names;
 }
 
 }  // namespace fw::speech

@@ -6,6 +6,7 @@
 // Thread-safe: one process-wide mutex serialises every synthesis.
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -36,5 +37,11 @@ struct SynthesisEvents {
 /// are), or synthesis failed. An empty `text` only checks the language.
 bool espeak_synthesize(std::string_view text, std::string_view language, double stop_after_s,
                        SynthesisEvents& out, std::string& error);
+
+/// The languages the installed voices speak (lower case), each with the
+/// name of the voice that speaks it best: the voice whose own language it
+/// is, else the one espeak-ng ranks first for it. Empty if espeak-ng could
+/// not start.
+std::map<std::string, std::string> espeak_languages();
 
 }  // namespace fw::speech

@@ -114,7 +114,8 @@ class RoomsOver {
  public:
   explicit RoomsOver(RoomBus& bus)
       : services_{core().config(), core().metrics(),      core().physics_lod(), core().abuse(),
-                  core().workers(), core().store(), core().demo_avatars(), bus, core().state().draining},
+                  core().workers(), core().store(), core().demo_avatars(), bus, core().state().draining,
+                  core().speech()},
         registry_(services_, core().addresses()) {}
   ~RoomsOver() {
     // The rooms hold the registry and the bus: they go first.

@@ -49,6 +49,8 @@ struct HelloOptions {
   /// The avatar's key; unset: the right one (InMemoryServer::join), as the uploader has it.
   std::optional<std::string> avatar_key{};
   std::string resume{};
+  std::uint16_t version = codec::kProtocolVersion;  ///< 3: a client from before the speaking message
+  std::string language{};
 };
 
 /// The peer of one in-memory connection: sends upstream messages and files
@@ -82,6 +84,8 @@ class InMemoryPeer : public RoomInbox {
     h.avatar = options.avatar;
     h.avatar_key = options.avatar_key.value_or("");
     h.resume = options.resume;
+    h.protocol_version = options.version;
+    h.language = options.language;
     send(h);
   }
 

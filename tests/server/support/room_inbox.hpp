@@ -1,6 +1,6 @@
 #pragma once
 // What a room-protocol client received, filed by kind: welcome, presence,
-// chat, command results, closing, link statistics, seats, attention, room frames decoded by a
+// chat, command results, closing, link statistics, seats, attention, speaking, room frames decoded by a
 // codec::RoomDecoder, package chunks reassembled, and anything a correct
 // server never sends. Shared by the socket client (room_test_client.hpp)
 // and the in-memory peer (in_memory_server.hpp).
@@ -28,6 +28,10 @@ struct RoomInbox {
   std::vector<codec::Pong> pongs;
   std::vector<codec::Seats> seats;
   std::vector<codec::Attention> attention;
+  std::vector<codec::Speaking> speaking;
+  /// For each speaking message: the tick of the last timed room frame
+  /// filed before it (0: none), to check it came before its line's frame.
+  std::vector<std::uint32_t> last_tick_before_speaking;
   std::uint64_t room_frames = 0;
   std::uint64_t bytes_received = 0;
   std::uint64_t room_frame_bytes = 0;  ///< of the codec room frames (timestamps excluded)
@@ -75,6 +79,9 @@ struct RoomInbox {
       case codec::MessageType::pong: return file_into(m, pongs, "pong");
       case codec::MessageType::seats: return file_into(m, seats, "seats");
       case codec::MessageType::attention: return file_into(m, attention, "attention");
+      case codec::MessageType::speaking:
+        last_tick_before_speaking.push_back(ticks.empty() ? 0 : ticks.back().second);
+        return file_into(m, speaking, "speaking");
       default: errors.push_back("a message the server never sends"); return;
     }
   }
