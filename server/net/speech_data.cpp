@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <system_error>
 
 #include "fw/speech/espeak_data_folder.hpp"
@@ -41,14 +40,9 @@ bool is_plain_file(const fs::path& path) {
   return fs::is_regular_file(path, error);
 }
 
-std::string lower_case(std::string text) {
-  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return text;
-}
-
 }  // namespace
 
-SpeechData::SpeechData(const fs::path& folder) {
+SpeechData::SpeechData(const fs::path& folder, const std::map<std::string, std::string>& voice_files) {
   if (folder.empty()) return;
   for (std::string_view table : kPhonemeTables)
     if (is_plain_file(folder / table)) files_.emplace(std::string(table), folder / table);
@@ -57,12 +51,14 @@ SpeechData::SpeechData(const fs::path& folder) {
     const std::string name = entry.path().filename().string();
     if (is_dictionary(name) && is_plain_file(entry.path())) files_.emplace(name, entry.path());
   }
-  // Voice files sit in family folders (lang/gmw/en-US); a language's code
-  // is its file's name in lower case. Links are not followed out of lang/.
-  for (fs::recursive_directory_iterator it(folder / "lang", error), end; !error && it != end; it.increment(error)) {
-    if (!it->is_regular_file(error) || it->is_symlink(error)) continue;
-    const std::string code = lower_case(it->path().filename().string());
-    if (is_voice_code(code)) files_.emplace("lang/" + code, it->path());
+  // Voice files sit in family folders (lang/gmw/en-US), and a code may be
+  // said by a voice of another name (en-gb by lang/gmw/en): espeak-ng's
+  // own choice, checked to stay inside the folder.
+  for (const auto& [code, relative] : voice_files) {
+    const fs::path path(relative);
+    const bool inside = !relative.empty() && path.is_relative() &&
+                        std::none_of(path.begin(), path.end(), [](const fs::path& part) { return part == ".."; });
+    if (is_voice_code(code) && inside && is_plain_file(folder / path)) files_.emplace("lang/" + code, folder / path);
   }
 }
 
@@ -82,7 +78,7 @@ std::string SpeechData::refusal(std::string_view name) {
 }
 
 const SpeechData& served_speech_data() {
-  static const SpeechData data(fw::speech::espeak_data_folder());
+  static const SpeechData data(fw::speech::espeak_data_folder(), fw::speech::espeak_voice_files());
   return data;
 }
 

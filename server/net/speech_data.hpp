@@ -7,8 +7,8 @@
 // outside it ("../", absolute paths, links elsewhere are never opened):
 //   phontab, phonindex, phondata, intonations   the phoneme tables
 //   LANG_dict                                   a language's dictionary (2 to 8 letters)
-//   lang/CODE                                   the voice file of a language code ("en", "pt-br"),
-//                                               wherever espeak-ng keeps it below lang/
+//   lang/CODE                                   the voice file espeak-ng says language CODE ("en",
+//                                               "pt-br") with, wherever it is below lang/
 // Thread-safe: immutable once made.
 #include <filesystem>
 #include <map>
@@ -20,9 +20,12 @@ namespace fw::server {
 
 class SpeechData {
  public:
-  /// Indexes `folder` (an espeak-ng-data folder); an empty or missing
-  /// folder serves nothing.
-  explicit SpeechData(const std::filesystem::path& folder);
+  /// Indexes `folder` (an espeak-ng-data folder) and the voice file of
+  /// each language code (`voice_files`: code -> path relative to `folder`,
+  /// as fw::speech::espeak_voice_files gives them; one that climbs out of
+  /// the folder or is absolute is left out). An empty or missing folder
+  /// serves nothing.
+  SpeechData(const std::filesystem::path& folder, const std::map<std::string, std::string>& voice_files);
 
   /// The file that `name` (the part of the path after /speech/data/) names,
   /// or nothing for a name of another shape or one the folder lacks.
@@ -35,8 +38,8 @@ class SpeechData {
   std::map<std::string, std::filesystem::path, std::less<>> files_;  ///< served name -> file
 };
 
-/// The data of this process's espeak-ng (fw::speech::espeak_data_folder),
-/// indexed on first use.
+/// The data of this process's espeak-ng (fw::speech::espeak_data_folder
+/// and espeak_voice_files), indexed on first use.
 const SpeechData& served_speech_data();
 
 }  // namespace fw::server

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 
 #include <gtest/gtest.h>
 
@@ -36,28 +37,32 @@ class SpeechDataTest : public ::testing::Test {
     write(data_ / "lang/gmw/en-US", "name English (America)");
     write(data_ / "lang/roa/pt-BR", "name Portuguese (Brazil)");
     write(root_ / "secret", "outside the data folder");
-    fs::create_directories(data_ / "lang/evil");
-    fs::create_symlink(root_ / "secret", data_ / "lang/evil/xx");
+    voices_ = {{"en", "lang/gmw/en"}, {"en-gb", "lang/gmw/en"}, {"en-us", "lang/gmw/en-US"},
+               {"pt-br", "lang/roa/pt-BR"}, {"xx", "../secret"}, {"yy", (root_ / "secret").string()},
+               {"zz", "lang/../../secret"}, {"EN", "lang/gmw/en"}, {"fr", "lang/roa/fr"}};
   }
   void TearDown() override { fs::remove_all(root_); }
   fs::path root_;
   fs::path data_;
+  std::map<std::string, std::string> voices_;  ///< as espeak-ng would give them, and some it never would
 };
 
 TEST_F(SpeechDataTest, ServesThePhonemeTablesDictionariesAndVoicesByCode) {
-  const SpeechData data(data_);
+  const SpeechData data(data_, voices_);
   EXPECT_EQ(data.find("phontab"), data_ / "phontab");
   EXPECT_EQ(data.find("intonations"), data_ / "intonations");
   EXPECT_EQ(data.find("en_dict"), data_ / "en_dict");
   EXPECT_EQ(data.find("lang/en"), data_ / "lang/gmw/en");
   EXPECT_EQ(data.find("lang/en-us"), data_ / "lang/gmw/en-US");
+  EXPECT_EQ(data.find("lang/en-gb"), data_ / "lang/gmw/en");  // a code said by a voice of another name
   EXPECT_EQ(data.find("lang/pt-br"), data_ / "lang/roa/pt-BR");
 }
 
 TEST_F(SpeechDataTest, RefusesEveryNameOfAnotherShapeAndEveryPathOutside) {
-  const SpeechData data(data_);
+  const SpeechData data(data_, voices_);
   for (const char* name : {"", "../secret", "../../etc/passwd", "/etc/passwd", "phontab/../../secret",
-                           "lang/../../secret", "lang/gmw/en", "lang/en-US", "lang/EN", "lang/", "lang/xx",
+                           "lang/../../secret", "lang/gmw/en", "lang/en-US", "lang/EN", "lang/", "lang/xx", "lang/yy",
+                           "lang/zz", "lang/fr",
                            "phondata-manifest", "de_dict", "EN_dict", "e_dict", "lang/-en", "lang/en/../en",
                            "lang/aaaaaaaaaaaaaaaaa", "phontab\n", "./phontab", "voices/!v/m1"})
     EXPECT_FALSE(data.find(name)) << "'" << name << "' was served";
@@ -65,8 +70,8 @@ TEST_F(SpeechDataTest, RefusesEveryNameOfAnotherShapeAndEveryPathOutside) {
 }
 
 TEST_F(SpeechDataTest, AMissingFolderServesNothing) {
-  EXPECT_FALSE(SpeechData(root_ / "nowhere").find("phontab"));
-  EXPECT_FALSE(SpeechData(fs::path()).find("phontab"));
+  EXPECT_FALSE(SpeechData(root_ / "nowhere", voices_).find("phontab"));
+  EXPECT_FALSE(SpeechData(fs::path(), voices_).find("lang/en"));
 }
 
 TEST(SpeechDataServer, TheServerServesItsOwnEspeakDataAndNothingOutside) {
@@ -76,6 +81,8 @@ TEST(SpeechDataServer, TheServerServesItsOwnEspeakDataAndNothingOutside) {
   EXPECT_GT(phontab.body.size(), 1000u);
   EXPECT_NE(phontab.headers.find("application/octet-stream"), std::string::npos);
   EXPECT_EQ(test::http_get(server.http_port(), "/speech/data/lang/en").status, 200);
+  EXPECT_EQ(test::http_get(server.http_port(), "/speech/data/lang/pt-br").status, 200);
+  EXPECT_EQ(test::http_get(server.http_port(), "/speech/data/lang/en-gb").status, 200);
   EXPECT_EQ(test::http_get(server.http_port(), "/speech/data/en_dict").status, 200);
   for (const char* path : {"/speech/data/../../../etc/passwd", "/speech/data/%2e%2e/%2e%2e/etc/passwd",
                            "/speech/data//etc/passwd", "/speech/data/lang/../../../../etc/passwd"}) {
