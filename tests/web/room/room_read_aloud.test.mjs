@@ -69,93 +69,120 @@ test("the lobby lists the server's languages and keeps the choice", { timeout: 6
   await page.context().close();
 });
 
+// Small pages: SwiftShader draws both on the CPU, and the mouth is timed
+// from the frames Ann's page draws, so the more often it draws the better.
+const VIEWPORT = { width: 640, height: 400 };
+const LINES = ['Guten Tag, wie geht es Ihnen heute?', 'Morgen fahren wir zusammen nach Berlin.',
+  'Das Wetter ist heute wirklich schön.', 'Bitte bringen Sie mir ein Glas Wasser.', 'Wir sehen uns am Montag wieder.'];
+
 test("a German line's speaking comes back in German to its writer's page", { timeout: 120000 }, async () => {
-  pages.ann = await web.page();
+  pages.ann = await web.page(VIEWPORT);
   await pages.ann.addInitScript(() => localStorage.setItem('facewire.readAloud', 'on'));
   await joinFromLobby(pages.ann, 'Ann');
   assert.ok(await pages.ann.locator('#read-aloud').isChecked(), 'read aloud kept on');
-  pages.bert = await web.page();
+  pages.bert = await web.page(VIEWPORT);
   const bert = await joinFromLobby(pages.bert, 'Bert', 'de');
   assert.match(pages.bert.url(), /language=de/);
   // Ann's page draws Bert's face before he speaks.
   const ann = await until(pages.ann, (s) => s.names.Bert && s.drawn[s.names.Bert], "Bert's face on Ann's page", 60000);
   pages.bertId = ann.names.Bert;
-  await watchMouthAndSound(pages.ann, pages.bertId);
-  await pages.bert.fill('#chat-text', 'Guten Tag, wie geht es Ihnen heute?');
-  await pages.bert.click('#chat-form button');
+  pages.measures = [await sayAndMeasure(LINES[0])];
   const said = await until(pages.bert, (s) => s.speaking.length > 0, "the speaking of Bert's line", 30000);
   assert.equal(said.speaking[0].avatar, bert.you);
   assert.equal(said.speaking[0].language, 'de');
+  assert.equal(said.speaking[0].text, LINES[0]);
   assert.ok(said.speaking[0].durationMs > 1000, `${said.speaking[0].durationMs} ms`);
 });
 
 /**
- * Watches, in Ann's page at every animation frame, Bert's decoded mouth
- * (lips apart AU 25, jaw drop AU 26, mouth stretch AU 27: channels 26-28)
- * in the face the page draws, and the sound through the read-aloud
- * analyser; keeps the first time each crosses its threshold.
+ * Bert says `text`; Ann's page times, at every frame it draws, Bert's
+ * decoded mouth (lips apart AU 25, jaw drop AU 26, mouth stretch AU 27:
+ * channels 26-28) in the face it draws, and the sound through the read-aloud
+ * analyser. The mouth opens where it crosses its threshold, between the two
+ * drawn frames either side (linearly: a page on a loaded machine draws
+ * seldom); the sound begins at its first sample above the player's silence
+ * level, placed on the page's clock by the analyser's window and
+ * getOutputTimestamp. Resolves with both times once the line is over.
  */
-function watchMouthAndSound(page, avatar) {
-  return page.evaluate((watched) => {
+async function sayAndMeasure(text) {
+  await pages.ann.evaluate((watched) => {
     const { client, readAloud } = window.facewireRoom;
-    const watch = { mouthMs: null, soundMs: null, restingMouth: 0, frames: 0 };
+    const watch = { mouthMs: null, soundMs: null, restingMouth: 0, drawnFrames: 0, longestGapMs: 0, done: false };
     window.readAloudWatch = watch;
-    const samples = new Float32Array(2048);
+    // The longest window the analyser keeps (0.7 s at 48 kHz): a page that
+    // draws seldom still finds where the sound began.
+    readAloud.analyser.fftSize = 32768;
+    const samples = new Float32Array(readAloud.analyser.fftSize);
+    const level = 328 / 32768;  // the player's silence level (read_aloud.js SILENCE_LEVEL)
     const startMs = performance.now();
     const mouthOf = (now) => Math.max(...(client.face(watched, now)?.au ?? []).slice(26, 29));
+    let last = null;
     const step = (now) => {
       if (watch.soundMs === null || watch.mouthMs === null) requestAnimationFrame(step);
-      ++watch.frames;
+      else watch.done = true;
       const mouth = mouthOf(now);
-      // Before the line: how far the idle face opens its mouth anyway.
+      if (last) watch.longestGapMs = Math.max(watch.longestGapMs, now - last.now);
+      ++watch.drawnFrames;
+      // For half a second before the line: how far the idle face opens its mouth anyway.
       if (now - startMs < 500) watch.restingMouth = Math.max(watch.restingMouth, mouth);
-      else if (watch.mouthMs === null && mouth > Math.max(0.12, watch.restingMouth + 0.08)) watch.mouthMs = now;
-      const analyser = readAloud.analyser;
-      if (watch.soundMs === null && analyser) {
-        analyser.getFloatTimeDomainData(samples);
-        let peak = 0;
-        for (const s of samples) peak = Math.max(peak, Math.abs(s));
-        if (peak > 0.02) {
-          // The analyser holds the last fftSize samples the context rendered:
-          // the sound began at most that long ago, and is heard after the
-          // output's latency. getOutputTimestamp maps context time to page time.
-          const stamp = analyser.context.getOutputTimestamp();
-          const renderedMs = stamp.performanceTime + (analyser.context.currentTime - stamp.contextTime) * 1000;
-          let first = 0;
-          while (first < samples.length && Math.abs(samples[first]) <= 0.02) ++first;
-          const backMs = ((samples.length - first) / analyser.context.sampleRate) * 1000;
-          watch.soundMs = renderedMs - backMs;
-          watch.soundSeenMs = now;
+      const threshold = Math.max(0.12, watch.restingMouth + 0.08);
+      if (now - startMs >= 500 && watch.mouthMs === null && mouth > threshold) {
+        watch.mouthMs = last && last.mouth < threshold
+          ? last.now + ((threshold - last.mouth) / (mouth - last.mouth)) * (now - last.now) : now;
+      }
+      last = { now, mouth };
+      if (watch.soundMs === null) {
+        readAloud.analyser.getFloatTimeDomainData(samples);
+        const first = samples.findIndex((s) => Math.abs(s) > level);
+        if (first >= 0) {
+          const context = readAloud.analyser.context;
+          const stamp = context.getOutputTimestamp();
+          const startS = context.currentTime - (samples.length - first) / context.sampleRate;
+          watch.soundMs = stamp.performanceTime + (startS - stamp.contextTime) * 1000;
+          watch.soundFilledWindow = first === 0;  // then its start is older than the window
         }
       }
     };
     requestAnimationFrame(step);
-  }, avatar);
-}
-
-test("Ann's page hears Bert's line, in step with his lips", { timeout: 120000 }, async () => {
-  const page = pages.ann;
+  }, pages.bertId);
+  await pages.ann.waitForTimeout(600);  // the resting mouth
+  await pages.bert.fill('#chat-text', text);
+  await pages.bert.click('#chat-form button');
   const start = Date.now();
   let watch;
   for (;;) {
-    watch = await page.evaluate(() => ({ ...window.readAloudWatch, log: window.facewireRoom.readAloud.log }));
-    if (watch.soundMs !== null && watch.mouthMs !== null) break;
+    watch = await pages.ann.evaluate(() => window.readAloudWatch);
+    if (watch.done) break;
     if (Date.now() - start > 30000) throw new Error(`no sound or no mouth within 30 s: ${JSON.stringify(watch)}`);
-    await page.waitForTimeout(250);
+    await pages.ann.waitForTimeout(250);
   }
-  const line = watch.log.find((l) => l.avatar === pages.bertId);
-  assert.ok(line, `the player scheduled Bert's line: ${JSON.stringify(watch.log)}`);
-  assert.equal(line.language, 'de');
+  const log = await pages.ann.evaluate(() => window.facewireRoom.readAloud.log);
+  const line = log.findLast((l) => l.text === text);
+  assert.ok(line, `the player scheduled '${text}': ${JSON.stringify(log)}`);
+  assert.ok(!watch.soundFilledWindow, 'the sound began inside the analyser\'s window');
   const apart = watch.soundMs - watch.mouthMs;
-  console.log(`mouth opened ${watch.mouthMs.toFixed(0)} ms (resting ${watch.restingMouth.toFixed(3)}), sound heard ` +
-    `${watch.soundMs.toFixed(0)} ms (scheduled ${line.soundAtMs?.toFixed(0)}, frame shown ${line.shownMs.toFixed(0)}, ` +
-    `leading silence ${line.silenceMs.toFixed(0)} ms, late by ${line.offsetMs.toFixed(0)} ms): ${apart.toFixed(0)} ms apart; ` +
-    `sound ${line.soundMs.toFixed(0)} ms of the lips' ${line.durationMs} ms`);
-  assert.ok(Math.abs(apart) <= IN_STEP_MS, `sound ${apart.toFixed(0)} ms after the mouth opened (at most ${IN_STEP_MS})`);
+  console.log(`'${text}': mouth opened ${watch.mouthMs.toFixed(0)} ms (resting ${watch.restingMouth.toFixed(3)}), ` +
+    `sound heard ${watch.soundMs.toFixed(0)} ms (scheduled ${line.soundAtMs?.toFixed(0)}, its frame shown ` +
+    `${line.shownMs.toFixed(0)}, leading silence ${line.silenceMs.toFixed(0)} ms, late by ${line.offsetMs.toFixed(0)} ms): ` +
+    `${apart.toFixed(0)} ms apart; sound ${line.soundMs.toFixed(0)} ms of the lips' ${line.durationMs} ms; ` +
+    `${watch.drawnFrames} frames drawn, longest gap ${watch.longestGapMs.toFixed(0)} ms`);
+  // The line over, and a moment of quiet before the next.
+  await pages.ann.waitForTimeout(line.durationMs + 800);
+  return { apart, line };
+}
+
+test("Ann's page hears Bert's lines, in step with his lips", { timeout: 240000 }, async () => {
+  for (const text of LINES.slice(1)) pages.measures.push(await sayAndMeasure(text));
+  for (const { line } of pages.measures) assert.equal(line.language, 'de');
+  // Pooled: the median of five lines, so that a few slow frames on a loaded machine do not decide.
+  const aparts = pages.measures.map((m) => m.apart).sort((a, b) => a - b);
+  const median = aparts[Math.floor(aparts.length / 2)];
+  assert.ok(Math.abs(median) <= IN_STEP_MS,
+    `the sound began ${median.toFixed(0)} ms after the mouth opened (median of ${aparts.map((a) => a.toFixed(0)).join(', ')}; at most ${IN_STEP_MS})`);
   assert.deepEqual(web.pageErrors, []);
 });
 
-test('turned off, read aloud stops what plays and stays off after a reload', { timeout: 60000 }, async () => {
+test('turned off, read aloud stops what plays and stays off', { timeout: 60000 }, async () => {
   const page = pages.ann;
   await page.click('#read-aloud');
   assert.equal(await page.evaluate(() => window.facewireRoom.readAloud.lines.size), 0);

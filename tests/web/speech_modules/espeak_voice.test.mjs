@@ -64,6 +64,24 @@ test('the same line lasts the same again, whatever was said between', async () =
     `${a.samples.length} then ${b.samples.length} samples`);
 });
 
+test('every language the server lists has its voice file and dictionary served', async () => {
+  const { languages } = await (await fetch(new URL('/api/languages', server.url))).json();
+  assert.ok(languages.length > 20, `${languages.length} languages`);
+  const missing = [];
+  for (const { code } of languages) {
+    const voiceFile = await fetch(new URL(`/speech/data/lang/${code}`, server.url));
+    if (!voiceFile.ok) {
+      missing.push(`lang/${code}`);
+      continue;
+    }
+    const dictionary = dictionaryOf(await voiceFile.text());
+    const served = await fetch(new URL(`/speech/data/${dictionary}`, server.url));
+    await served.arrayBuffer();  // read, so that its connection is free for the next request
+    if (!served.ok) missing.push(`${dictionary} (${code}): HTTP ${served.status}`);
+  }
+  assert.deepEqual(missing, []);
+});
+
 test('a language the server has no voice for is refused with its name', async () => {
   await assert.rejects(voice.synthesize('hello', 'xx'), /lang\/xx: HTTP 404/);
 });
