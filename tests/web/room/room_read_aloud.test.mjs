@@ -12,6 +12,7 @@ import { after, before, test } from 'node:test';
 import assert from 'node:assert/strict';
 
 import { openWeb } from '../support/harness.mjs';
+import { pageUntil } from '../support/page_poll.mjs';
 
 const ROOM = 'aloud';
 /** How far apart the sound's start and the mouth's opening may be. */
@@ -32,15 +33,7 @@ const state = (page) => page.evaluate(() => {
     drawn: Object.fromEntries([...client.avatars].map(([id]) => [id, Boolean(client.face(id))])),
   };
 });
-async function until(page, predicate, what, timeout = 30000) {
-  const start = Date.now();
-  for (;;) {
-    const s = await state(page);
-    if (s && predicate(s)) return s;
-    if (Date.now() - start > timeout) throw new Error(`${what} did not happen within ${timeout / 1000} s: ${JSON.stringify(s)}`);
-    await page.waitForTimeout(200);
-  }
-}
+const until = (page, predicate, what, timeout) => pageUntil(page, state, predicate, what, timeout);
 
 async function joinFromLobby(page, name, language) {
   await page.goto(web.server.url);
