@@ -18,12 +18,17 @@ export const LEAD_MS = 150;
 /** Below this a sample is espeak-ng's leading silence: 1 % of full scale (-40 dBFS). */
 export const SILENCE_LEVEL = 328;
 
+/** Lines heard but not started yet that are kept: a hidden page draws no
+ * frames, so none starts, and each holds its synthesised sound. */
+export const MAX_WAITING_LINES = 8;
+
 export class ReadAloudSchedule {
   /** @param {(avatar: number) => boolean} isMuted  whether the viewer muted this avatar now */
   constructor(isMuted = () => false) {
     this.isMuted = isMuted;
     this.nextId = 1;
     this.pending = [];          // { id, line, afterFrame }: heard, their first frame not shown yet
+    this.dropped = [];          // ids of waiting lines let go for newer ones, to cancel at the next frame
     this.playing = new Map();   // id -> { avatar, endMs }
   }
 
@@ -36,6 +41,7 @@ export class ReadAloudSchedule {
     if (line.avatar === 0 || this.isMuted(line.avatar)) return 0;
     const id = this.nextId++;
     this.pending.push({ id, line, afterFrame: framesReceived });
+    if (this.pending.length > MAX_WAITING_LINES) this.dropped.push(this.pending.shift().id);
     return id;
   }
 
@@ -46,7 +52,8 @@ export class ReadAloudSchedule {
    */
   shown(framesReceived, nowMs) {
     const start = [];
-    const cancel = [];
+    const cancel = this.dropped;
+    this.dropped = [];
     for (const [id, p] of this.playing) if (p.endMs <= nowMs) this.playing.delete(id);
     const due = this.pending.filter((p) => p.afterFrame < framesReceived);
     this.pending = this.pending.filter((p) => p.afterFrame >= framesReceived);
@@ -59,7 +66,8 @@ export class ReadAloudSchedule {
       this.playing.set(id, { avatar: line.avatar, endMs: nowMs + line.durationMs });
       start.push({ id, line, shownMs: nowMs });
     }
-    return { start, cancel };
+    // Of one speaker's lines due at the same frame, only the last is heard.
+    return { start: start.filter((s) => this.playing.has(s.id)), cancel };
   }
 
   /** The speaker left the room, or was muted: what of theirs to stop. */
@@ -71,8 +79,9 @@ export class ReadAloudSchedule {
 
   /** Read aloud off, or the viewer leaves: everything to stop. */
   stopAll() {
-    const cancel = [...this.pending.map((p) => p.id), ...this.playing.keys()];
+    const cancel = [...this.dropped, ...this.pending.map((p) => p.id), ...this.playing.keys()];
     this.pending = [];
+    this.dropped = [];
     this.playing.clear();
     return cancel;
   }

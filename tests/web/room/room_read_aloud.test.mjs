@@ -59,6 +59,10 @@ test("the lobby lists the server's languages and keeps the choice", { timeout: 6
   await page.reload();
   await page.locator('#language[data-loaded="true"]').waitFor();
   assert.equal(await page.locator('#language').inputValue(), 'de', 'kept across a reload, as the name is');
+  // A room address whose language is not a language code stops the page, saying so.
+  await page.goto(new URL('room.html?room=aloud&name=Eve&language=Deutsch!', web.server.url).href);
+  await page.locator('#status.error').waitFor();
+  assert.match(await page.locator('#status').textContent(), /'Deutsch!' is not a language code .*choose one in the lobby/);
   await page.context().close();
 });
 

@@ -5,7 +5,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 
-import { LEAD_MS, ReadAloudSchedule, leadingSilence, placeSound } from '../../../web/room/read_aloud.js';
+import { LEAD_MS, MAX_WAITING_LINES, ReadAloudSchedule, leadingSilence, placeSound } from '../../../web/room/read_aloud.js';
 
 const line = (avatar, text = 'hello', durationMs = 1000) => ({ avatar, tick: 0, durationMs, language: 'en', text });
 
@@ -87,4 +87,14 @@ test('leading silence ends at the first sample above 1 % of full scale', () => {
   assert.equal(leadingSilence(Int16Array.from([0, 3, -300, 328, -329, 2000])), 4);
   assert.equal(leadingSilence(Int16Array.from([0, 0])), 2);
   assert.equal(LEAD_MS, 150, 'the lead of the server\'s lip track (PhonemeTiming::kLeadS)');
+});
+
+test('a page that draws no frames (hidden) keeps only the newest waiting lines', () => {
+  const s = new ReadAloudSchedule();
+  const ids = Array.from({ length: MAX_WAITING_LINES + 3 }, (_, i) => s.heard(line(3, `line ${i}`), 5));
+  const { start, cancel } = s.shown(6, 0);
+  assert.deepEqual(cancel.slice(0, 3), ids.slice(0, 3), 'the oldest three were let go');
+  // Of one speaker's lines due at one frame, only the newest is heard; the others are let go too.
+  assert.deepEqual(start.map((x) => x.id), [ids.at(-1)]);
+  assert.deepEqual(cancel.sort((a, b) => a - b), ids.slice(0, -1));
 });
