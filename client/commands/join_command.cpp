@@ -185,6 +185,9 @@ void add_join_command(CLI::App& app, JoinNetwork network) {
   cmd->add_option("--mute", args->mute,
                   "a display name to mute for yourself alone: their chat lines are not printed and their face is "
                   "drawn still and neutral; everyone of that name (repeatable; they are not told)");
+  cmd->add_option("--language", args->language,
+                  "the language your chat lines are said in by your face (en, en-us, de, fr, es, pt-br, ...; "
+                  "GET /api/languages on the server lists them); the server's default if unset");
   cmd->add_option("--emote", args->emote, "express an emotion once joined: joy, sadness, anger, fear, surprise, disgust")
       ->check(CLI::IsMember({"joy", "sadness", "anger", "fear", "surprise", "disgust", "neutral"}));
   cmd->add_flag("--json", args->json, "print one JSON summary at the end (on stdout, or stderr when the video is there)");

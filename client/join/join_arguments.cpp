@@ -43,6 +43,10 @@ bool check_session_fields(const JoinArgs& args, std::string& error) {
     error = "--say: a chat line holds 1.." + std::to_string(codec::kMaxChatBytes) + " bytes";
   else if (args.token.size() > codec::kMaxTokenBytes)
     error = "--token is longer than a join token can be";
+  else if (!args.language.empty() && !codec::is_language_code(args.language))
+    error = "--language takes a language as espeak-ng names it (en, en-us, de, fr, es, pt-br: 1.." +
+            std::to_string(codec::kMaxLanguageBytes) + " lowercase letters, digits and -), not '" + args.language +
+            "'; GET /api/languages on the server lists the ones it speaks";
   else
     return true;
   return false;
@@ -111,6 +115,7 @@ SessionOptions session_options(const JoinArgs& args, const std::string& asset, c
   options.timestamps = wants_timestamps(args);
   options.say = args.say;
   options.emote = args.emote;
+  options.language = args.language;
   return options;
 }
 

@@ -24,6 +24,7 @@ struct JoinArgs {
   std::string chat;  ///< --chat: a file of timed chat lines (chat_script.hpp), or "-" for standard input
   std::vector<std::string> mute;  ///< display names muted for this person alone (--mute, repeatable)
   std::string emote;
+  std::string language;  ///< --language: the espeak-ng language the person's lines are said in ("": the server's)
   bool json = false, quiet = false;
   std::string size = "640x360";
   int fps = 15;

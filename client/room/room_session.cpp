@@ -115,6 +115,7 @@ void RoomSession::say_hello() {
   hello.max_bps = options_.max_bps;
   hello.timestamps = options_.timestamps;
   hello.own_package = options_.own_package != nullptr;
+  hello.language = options_.language;
   send_message(hello);
 }
 
@@ -252,6 +253,7 @@ codec::MessageError RoomSession::dispatch(codec::MessageType type, std::span<con
     case MessageType::timed_room_frame: return read_then(message, &RoomSession::on_timed_room_frame);
     case MessageType::seats: return read_then(message, &RoomSession::on_seats);
     case MessageType::attention: return read_then(message, &RoomSession::on_attention);
+    case MessageType::speaking: return read_then(message, &RoomSession::on_speaking);
     default: return codec::MessageError::wrong_type;  // an upstream message coming down
   }
 }
@@ -316,6 +318,11 @@ void RoomSession::on_chat(const codec::Chat& chat) {
   const bool muted = state_.muted(chat.from);
   const std::string name = state_.chat_line(chat);
   if (!muted) event(name + ": " + chat.text);
+}
+
+void RoomSession::on_speaking(const codec::Speaking& speaking) {
+  std::lock_guard lock(state_.mutex);
+  if (const auto line = state_.line_begun(speaking, Clock::now())) event(*line);
 }
 
 void RoomSession::on_seats(const codec::Seats& seats) {

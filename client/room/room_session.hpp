@@ -59,6 +59,9 @@ struct SessionOptions {
   bool timestamps = true;     ///< ask for timed room frames (latency measurements)
   std::vector<std::string> say;    ///< chat lines sent after the first welcome
   std::string emote;               ///< an emotion expressed after the first welcome
+  /// The language the person's lines are said in (hello version 4); empty:
+  /// the server's default. Its shape is checked before (join_arguments).
+  std::string language;
   /// Called on the session's thread for what a person should see at once
   /// (chat lines, arrivals, departures, refused commands, reconnects).
   std::function<void(const std::string&)> on_event;
@@ -132,6 +135,7 @@ class RoomSession {
   template <class Message>
   codec::MessageError read_then(std::span<const std::uint8_t> bytes, void (RoomSession::*handle)(const Message&));
   void on_welcome(const codec::Welcome& welcome);
+  void on_speaking(const codec::Speaking& speaking);
   void greet_once();
   void on_presence(const codec::Presence& presence);
   void on_chat(const codec::Chat& chat);

@@ -1,6 +1,7 @@
 #include "room_state.hpp"
 
 #include <algorithm>
+#include <cstdio>
 
 namespace fw::client {
 
@@ -105,6 +106,23 @@ std::string RoomState::chat_line(const codec::Chat& chat) {
   else
     record({"chat", name, chat.text});
   return name;
+}
+
+std::optional<std::string> RoomState::line_begun(const codec::Speaking& speaking, Clock::time_point now) {
+  if (muted(speaking.avatar)) return std::nullopt;  // its chat line is hidden (and counted) already
+  RoomEventRecord record_of{"speaking", name_of(speaking.avatar), speaking.text};
+  record_of.language = speaking.language;
+  record_of.duration_ms = speaking.duration_ms;
+  record_of.tick = speaking.tick;
+  std::string line = record_of.name + " says (" + speaking.language + ", " + std::to_string(speaking.duration_ms) +
+                     " ms): " + speaking.text;
+  record(std::move(record_of));
+  if (const auto joined = stats.joined_at()) {
+    char at[32];
+    std::snprintf(at, sizeof at, "[%.1f s] ", std::chrono::duration<double>(now - *joined).count());
+    line = at + line;
+  }
+  return line;
 }
 
 bool RoomState::package_arrived(AssembledPackage package, Clock::time_point now) {

@@ -37,10 +37,14 @@ struct RoomAvatar {
 
 /// A line for the summary and for tests: chat lines and presence changes.
 struct RoomEventRecord {
-  std::string kind;  ///< "chat", "joined", "left"
+  std::string kind;  ///< "chat", "joined", "left", "speaking"
   std::string name;
-  std::string text;  ///< chat only
+  std::string text;  ///< chat and speaking only
   std::chrono::steady_clock::time_point at{};  ///< when it was recorded
+  // speaking only (PROTOCOL.md 5.15):
+  std::string language = {};
+  std::uint32_t duration_ms = 0;
+  std::uint32_t tick = 0;  ///< the room tick whose frame is the line's first
 };
 
 class RoomState {
@@ -106,6 +110,10 @@ class RoomState {
   /// A chat line (recorded as an event, or only counted when its writer is
   /// muted). Returns the writer's name.
   std::string chat_line(const codec::Chat& chat);
+  /// A face begins to say a line (recorded as an event unless its writer is
+  /// muted). Returns what the person reads, "[12.3 s] Anna says (de,
+  /// 4650 ms): text" (seconds since the first welcome), or nothing when muted.
+  std::optional<std::string> line_begun(const codec::Speaking& speaking, Clock::time_point now);
   /// A whole package: the avatar's face from now on. False when it is
   /// ignored: the avatar is not in the room, or a late preview would
   /// replace the full package.

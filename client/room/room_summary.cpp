@@ -15,6 +15,11 @@ nlohmann::json room_summary(const RoomState& state, std::chrono::steady_clock::t
   const auto joined = state.stats.joined_at();
   for (const RoomEventRecord& event : state.events) {
     nlohmann::json entry = {{"kind", event.kind}, {"name", event.name}, {"text", event.text}};
+    if (event.kind == "speaking") {
+      entry["language"] = event.language;
+      entry["duration_ms"] = event.duration_ms;
+      entry["tick"] = event.tick;
+    }
     // Seconds after the first welcome (negative: before it).
     if (joined) entry["at_s"] = std::chrono::duration<double>(event.at - *joined).count();
     events.push_back(std::move(entry));

@@ -74,6 +74,25 @@ TEST(JoinArguments, SaysWhichFlagIsWrong) {
   EXPECT_EQ(plan_error(args), "--size: width and height must each be 16..4096 pixels");
 }
 
+TEST(JoinArguments, ALanguageIsCheckedForShapeAndGoesIntoTheHello) {
+  JoinArgs args = valid_args();
+  for (const char* bad : {"DE", "en_US", "english please", "abcdefghijklmnopq"}) {
+    args.language = bad;
+    const std::string error = plan_error(args);
+    EXPECT_EQ(error.rfind("--language takes a language as espeak-ng names it", 0), 0u) << error;
+    EXPECT_NE(error.find(std::string("not '") + bad + "'"), std::string::npos) << error;
+    EXPECT_NE(error.find("GET /api/languages"), std::string::npos) << error;
+  }
+  // Whether the server speaks it is the server's to say (closing 10).
+  for (const char* fine : {"", "de", "pt-br", "xx"}) {
+    args.language = fine;
+    JoinPlan plan;
+    std::string error;
+    EXPECT_TRUE(plan_join(args, plan, error)) << fine << ": " << error;
+    EXPECT_EQ(session_options(args, "", "", nullptr).language, fine);
+  }
+}
+
 TEST(JoinArguments, AFrameSizeIsTwoWholeNumbersAroundAnX) {
   int width = 0, height = 0;
   EXPECT_TRUE(parse_frame_size("640x360", width, height));

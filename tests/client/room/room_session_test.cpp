@@ -124,7 +124,24 @@ TEST_F(RoomSessionTest, SaysHelloFirstWithWhatItWasAskedFor) {
   EXPECT_EQ(hello.max_bps, 9600u);
   EXPECT_FALSE(hello.timestamps);
   EXPECT_TRUE(hello.own_package) << "an uploaded package is not sent back";
+  EXPECT_EQ(hello.protocol_version, 4);
+  EXPECT_EQ(hello.language, "") << "the server's default language";
   EXPECT_FALSE(joined()) << "not in the room before the welcome";
+}
+
+TEST_F(RoomSessionTest, ItsLanguageGoesInTheHelloAndARefusalOfItIsPrintedAsItComes) {
+  SessionOptions options = default_options();
+  options.language = "pt-br";
+  start(options);
+  const auto sent = upstream();
+  ASSERT_EQ(sent.size(), 1u);
+  EXPECT_EQ(read_as<codec::Hello>(sent[0]).language, "pt-br");
+  send(closing(codec::CloseCode::bad_request,
+               "unknown language 'pt-br'; GET /api/languages lists the ones this server speaks"));
+  EXPECT_TRUE(saw_event("server: unknown language 'pt-br'; GET /api/languages lists the ones this server speaks"));
+  std::lock_guard lock(state_.mutex);
+  ASSERT_TRUE(state_.fatal_error);
+  EXPECT_NE(state_.fatal_error->find("(closing code 10)"), std::string::npos) << *state_.fatal_error;
 }
 
 TEST_F(RoomSessionTest, TheWelcomeLetsItIntoTheRoomWithEveryoneInIt) {
@@ -336,6 +353,19 @@ TEST_F(RoomSessionTest, ChatRefusedCommandsAndLinkStatisticsReachThePerson) {
   EXPECT_EQ(state_.events[0].text, "hi ada");
   ASSERT_TRUE(state_.server_link);
   EXPECT_EQ(state_.server_link->skipped_ticks, 3u);
+}
+
+TEST_F(RoomSessionTest, ALineBegunIsShownWithItsLanguageAndLength) {
+  join();
+  send(bytes_of(codec::Speaking{2, 90, 1840, "fr", "bonjour à tous"}));
+  send(chat_from(2, "bonjour à tous"));
+  EXPECT_TRUE(saw_event("bob: bonjour à tous")) << "the session goes on after a speaking message";
+  std::lock_guard lock(state_.mutex);
+  ASSERT_EQ(state_.events.size(), 2u);
+  EXPECT_EQ(state_.events[0].kind, "speaking");
+  EXPECT_EQ(state_.events[0].language, "fr");
+  EXPECT_EQ(state_.events[0].duration_ms, 1840u);
+  EXPECT_TRUE(saw_event("bob says (fr, 1840 ms): bonjour à tous"));
 }
 
 TEST_F(RoomSessionTest, CountsTheBytesOfBothDirections) {

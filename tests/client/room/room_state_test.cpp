@@ -76,6 +76,28 @@ TEST(RoomState, ArrivalsDeparturesAndChatAreRecorded) {
   EXPECT_EQ(state.events[3].kind, "left");
 }
 
+TEST(RoomState, ALineBegunIsRecordedWithItsLanguageLengthAndTime) {
+  RoomState state;
+  const auto now = Clock::now();
+  state.welcomed(welcome_of(1, {avatar_info(1, "me"), avatar_info(5, "Anna")}), {}, now);
+  state.stats.joined(now);
+  const auto line = state.line_begun({5, 301, 4650, "de", "Im Jahr 1999"}, now + std::chrono::milliseconds(12340));
+  ASSERT_TRUE(line);
+  EXPECT_EQ(*line, "[12.3 s] Anna says (de, 4650 ms): Im Jahr 1999");
+  ASSERT_FALSE(state.events.empty());
+  const RoomEventRecord& event = state.events.back();
+  EXPECT_EQ(event.kind, "speaking");
+  EXPECT_EQ(event.name, "Anna");
+  EXPECT_EQ(event.text, "Im Jahr 1999");
+  EXPECT_EQ(event.language, "de");
+  EXPECT_EQ(event.duration_ms, 4650u);
+  EXPECT_EQ(event.tick, 301u);
+  state.mutes = MuteList({"Anna"});
+  const std::size_t events = state.events.size();
+  EXPECT_FALSE(state.line_begun({5, 400, 1000, "de", "noch einmal"}, now)) << "muted: nothing to show";
+  EXPECT_EQ(state.events.size(), events);
+}
+
 TEST(RoomState, KeepsTheLastEventsOnly) {
   RoomState state;
   for (std::size_t i = 0; i < RoomState::kMaxEvents + 10; ++i) state.chat_line({1, "line " + std::to_string(i)});
