@@ -1,7 +1,9 @@
 // The browser's read-aloud voice (web/speech) under node: espeak-ng's
 // WebAssembly module (FW_SPEECH_MODULE_DIR, from the build) speaking from
 // the voice data a real facewire-server serves (/speech/data/), as the room
-// page does; and which data files a language needs.
+// page does, held to the lengths the server's own espeak-ng gives the same
+// lines (FW_SPEECH_DURATIONS, written by tests/speech/speech_durations.cpp);
+// and which data files a language needs.
 import { after, before, test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
@@ -80,6 +82,30 @@ test('every language the server lists has its voice file and dictionary served',
     if (!served.ok) missing.push(`${dictionary} (${code}): HTTP ${served.status}`);
   }
   assert.deepEqual(missing, []);
+});
+
+// The module is espeak-ng 1.52.0, the server's library 1.51 (web/README.md,
+// "Read aloud"), on the same data: English comes out the same length, give
+// or take the few milliseconds espeak-ng's state carries from one line into
+// the next; the engine changed a little between the releases for some
+// others (Spanish and Brazilian Portuguese 1.5 to 2 % shorter).
+const LENGTH_TOLERANCE = { en: 0.01, 'en-us': 0.01 };
+const OTHER_LANGUAGES_TOLERANCE = 0.04;
+
+test("each line lasts in the browser what it lasts in the server's espeak-ng", async () => {
+  const path = process.env.FW_SPEECH_DURATIONS;
+  assert.ok(path, 'FW_SPEECH_DURATIONS names the lengths speech_durations wrote (run through ctest)');
+  const lines = JSON.parse(readFileSync(path, 'utf8'));
+  assert.ok(lines.length >= 5);
+  for (const { language, text, sampleRateHz, samples } of lines) {
+    assert.equal(sampleRateHz, voice.sampleRateHz);
+    const ours = (await voice.synthesize(text, language)).samples.length;
+    const off = Math.abs(ours - samples) / samples;
+    const tolerance = LENGTH_TOLERANCE[language] ?? OTHER_LANGUAGES_TOLERANCE;
+    console.log(`${language}: the server says '${text}' in ${(samples / sampleRateHz * 1000).toFixed(0)} ms, ` +
+      `the browser in ${(ours / sampleRateHz * 1000).toFixed(0)} ms (${(off * 100).toFixed(2)} % apart)`);
+    assert.ok(off <= tolerance, `${language}: ${ours} samples against the server's ${samples} (at most ${tolerance * 100} % apart)`);
+  }
 });
 
 test('a language the server has no voice for is refused with its name', async () => {
