@@ -84,6 +84,7 @@ Refusal member_refusal(const bridge::MemberRecord& m) {
   if (!m.node.empty() && !plausible_node_name(m.node)) return "a member's node name is malformed";
   if (!m.address.empty() && !plausible_address(m.address)) return "a member's address is malformed";
   if (!plausible_hash(m.resume_hash)) return "a member's resume hash is malformed";
+  if (!m.language.empty() && !codec::is_language_code(m.language)) return "a member's language is malformed";
   return std::nullopt;
 }
 

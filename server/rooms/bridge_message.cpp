@@ -62,6 +62,7 @@ void put_member(ByteWriter& w, const MemberRecord& m) {
   put_text(w, m.resume_hash);
   w.u32_le(static_cast<std::uint32_t>(m.order >> 32));
   w.u32_le(static_cast<std::uint32_t>(m.order));
+  put_text(w, m.language);
 }
 MemberRecord get_member(ByteReader& r) {
   MemberRecord m;
@@ -71,6 +72,7 @@ MemberRecord get_member(ByteReader& r) {
   m.resume_hash = get_text(r);
   const std::uint64_t high = r.u32_le();
   m.order = high << 32 | r.u32_le();
+  m.language = get_text(r);
   return m;
 }
 

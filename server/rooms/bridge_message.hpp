@@ -21,7 +21,7 @@ namespace fw::server::bridge {
 
 using Bytes = std::vector<std::uint8_t>;
 
-/// 2: the join's language, the speaking news.
+/// 2: the language of a join and of a member, the speaking news.
 inline constexpr std::uint8_t kVersion = 2;
 
 /// A member as its owner keeps it in Redis, so that another node can
@@ -32,6 +32,7 @@ struct MemberRecord {
   std::string address;      ///< the person's address_key(), for the seats one address may hold
   std::string resume_hash;  ///< of the resume key the person holds: who shows it takes the seat back
   std::uint64_t order = 0;  ///< join order (the earliest present leads)
+  std::string language;     ///< the language the person's lines are said in ("": the room's)
 };
 
 /// What the owner keeps of its room's behavior, once a second: each face's

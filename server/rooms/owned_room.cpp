@@ -129,6 +129,7 @@ void OwnedRoom::join(JoinRequest request) {
   member.node = request.node;
   member.order = next_order_++;
   member.resume_hash = request.connection ? resume_hash(request.resume) : request.resume_hash;
+  member.language = request.language;
   member.info = {id, request.name, request.avatar.asset,
                  static_cast<std::uint32_t>(request.avatar.preview ? request.avatar.preview->size() : 0),
                  static_cast<std::uint32_t>(request.avatar.full ? request.avatar.full->size() : 0), person,

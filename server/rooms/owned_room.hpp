@@ -28,6 +28,7 @@ struct OwnedMember : Member {
   std::string node;         ///< the node a bridged person is on ("" here)
   std::string resume_hash;  ///< of the person's resume key
   std::uint64_t order = 0;  ///< join order (the earliest present leads)
+  std::string language;     ///< the person's lines' ("": the room's), kept for a successor
   /// The person's node died; the seat waits for them until then.
   std::optional<std::chrono::steady_clock::time_point> away_until;
   bool person() const { return stream || !node.empty() || away_until; }

@@ -17,6 +17,7 @@ bridge::MemberRecord OwnedRoom::record_of(const OwnedMember& member) const {
   record.address = member.address;
   record.resume_hash = member.resume_hash;
   record.order = member.order;
+  record.language = member.language;
   return record;
 }
 
@@ -148,7 +149,7 @@ void OwnedRoom::restore(std::vector<bridge::MemberRecord> records, std::optional
   for (bridge::MemberRecord& record : records) {
     const std::uint32_t id = record.info.id;
     // Seated again in join order, under their ids: the same one leads.
-    if (!simulation_.restore_avatar(id, AvatarSetup{record.info.name, record.info.person})) continue;
+    if (!simulation_.restore_avatar(id, AvatarSetup{record.info.name, record.info.person, record.language})) continue;
     OwnedMember member;
     if (auto old = here.find(id); old != here.end()) {
       static_cast<Member&>(member) = std::move(old->second);
@@ -158,6 +159,7 @@ void OwnedRoom::restore(std::vector<bridge::MemberRecord> records, std::optional
     }
     member.info = record.info;
     member.address = record.address;
+    member.language = record.language;
     member.resume_hash = record.resume_hash;
     member.order = record.order;
     next_order_ = std::max(next_order_, record.order + 1);

@@ -26,6 +26,7 @@ bridge::MemberRecord sample_member() {
   m.node = "b";
   m.address = "127.0.0.2";
   m.resume_hash = "hash";
+  m.language = "de";
   m.order = (std::uint64_t{1} << 40) + 3;
   return m;
 }
@@ -38,6 +39,7 @@ TEST(BridgeMessage, AMemberRecordReadsBackAsWritten) {
   EXPECT_EQ(back->info.seat, sample_member().info.seat);
   EXPECT_EQ(back->order, sample_member().order);
   EXPECT_EQ(back->resume_hash, "hash");
+  EXPECT_EQ(back->language, "de") << "a successor says the person's lines in their language";
 }
 
 TEST(BridgeMessage, FacesGoDownExactly) {
@@ -66,6 +68,7 @@ TEST(BridgeMessage, EveryKindRoundTripsAndCutsAreRefused) {
       {.kind = bridge::DownKind::refused, .owner = "a", .join_ref = "b/2", .code = codec::CloseCode::room_full, .reason = "full"},
       {.kind = bridge::DownKind::left, .owner = "a", .avatar = 3},
       {.kind = bridge::DownKind::chat, .owner = "a", .avatar = 0, .message = {9, 8, 7}},
+      {.kind = bridge::DownKind::speaking, .owner = "a", .avatar = 0, .message = {6, 5}},
   };
   for (const auto& down : downs) {
     const auto bytes = bridge::encode(down);
@@ -79,11 +82,12 @@ TEST(BridgeMessage, EveryKindRoundTripsAndCutsAreRefused) {
       EXPECT_FALSE(bridge::decode_down(bytes.data(), cut)) << "a message cut at " << cut << " was read";
   }
   bridge::Up up{.kind = bridge::UpKind::join, .node = "b", .join_ref = "b/1", .name = "Ann", .asset = "x",
-                .address = "::1", .resume_hash = "r", .returning = "k"};
+                .address = "::1", .resume_hash = "r", .returning = "k", .language = "pt-br"};
   const auto bytes = bridge::encode(up);
   const auto back = bridge::decode_up(bytes.data(), bytes.size());
   ASSERT_TRUE(back);
   EXPECT_EQ(back->returning, "k");
+  EXPECT_EQ(back->language, "pt-br") << "a person's language travels with the join";
   auto other_version = bytes;
   other_version[0] = bridge::kVersion + 1;
   EXPECT_FALSE(bridge::decode_up(other_version.data(), other_version.size()));
@@ -152,13 +156,15 @@ std::vector<bridge::Down> owners_news() {
       {.kind = bridge::DownKind::attention, .owner = "a", .attention = attention_bytes()},
       {.kind = bridge::DownKind::chat, .owner = "a", .avatar = 0, .message = client_message(codec::Chat{7, "hi there"})},
       {.kind = bridge::DownKind::result, .owner = "a", .avatar = 7, .message = client_message(codec::CommandResult{4, ""})},
+      {.kind = bridge::DownKind::speaking, .owner = "a", .avatar = 0,
+       .message = client_message(codec::Speaking{7, 90, 1800, "de", "guten Tag"})},
       {.kind = bridge::DownKind::tick, .owner = "a", .tick = 9, .faces = {{7, face}, {8, codec::FaceParams{}}}},
   };
 }
 
 bridge::Up bridges_join() {
   return {.kind = bridge::UpKind::join, .node = "b", .join_ref = "b/1", .name = "Ann", .asset = std::string(32, 'c'),
-          .address = "127.0.2.9", .resume_hash = "qPZ1-0_abc", .returning = ""};
+          .address = "127.0.2.9", .resume_hash = "qPZ1-0_abc", .returning = "", .language = "de"};
 }
 
 std::vector<bridge::Up> bridges_requests() {
@@ -217,6 +223,7 @@ TEST(ClusterCheck, ForgedNewsOfEveryKindIsRefused) {
   expect_refused(K::roster, [](auto& m) { m.members[0].info.asset = "../../etc/passwd"; }, "an asset id with a path");
   expect_refused(K::roster, [](auto& m) { m.members[0].info.full_bytes = 0xffffffffu; }, "a 4 GB package");
   expect_refused(K::roster, [](auto& m) { m.members[0].address = "not an address"; }, "a member's address");
+  expect_refused(K::roster, [](auto& m) { m.members[0].language = "de\n"; }, "a member's language with a line feed");
   expect_refused(K::roster, [](auto& m) { m.attention = {1, 2, 3}; }, "a roster whose attention is junk");
   expect_refused(K::joined, [](auto& m) { m.member.info.name = "a\x07"; }, "a control character in a name");
   expect_refused(K::joined, [](auto& m) { m.join_ref = std::string(200, 'r'); }, "a join reference of 200 bytes");
@@ -233,6 +240,10 @@ TEST(ClusterCheck, ForgedNewsOfEveryKindIsRefused) {
   }, "a chat line with a control character");
   expect_refused(K::result, [](auto& m) { m.message = client_message(codec::Chat{7, "hi"}); }, "a result that is chat");
   expect_refused(K::result, [](auto& m) { m.avatar = 0; }, "a result for nobody");
+  expect_refused(K::speaking, [](auto& m) { m.message = client_message(codec::Chat{7, "hi"}); }, "speaking that is chat");
+  expect_refused(K::speaking, [](auto& m) { m.message = client_message(codec::Speaking{0, 1, 1, "de", "a"}); },
+                 "speaking of avatar 0");
+  expect_refused(K::speaking, [](auto& m) { m.avatar = 7; }, "speaking for one person only");
   expect_refused(K::tick, [&](auto& m) { m.faces[0].face.au[3] = nan; }, "a face with NaN");
   expect_refused(K::tick, [&](auto& m) { m.faces[0].face.head_pitch_rad = inf; }, "a face with infinity");
   expect_refused(K::tick, [](auto& m) { m.faces[0].face.head_yaw_rad = 100.f; }, "a head turned 100 rad");
@@ -271,6 +282,8 @@ TEST(ClusterCheck, ForgedRequestsOfEveryKindAreRefused) {
   EXPECT_TRUE(refused([&] { auto m = join; m.asset = std::string(65, 'a'); return m; }())) << "a 65-byte asset id";
   EXPECT_TRUE(refused([&] { auto m = join; m.returning = std::string(65, 'k'); return m; }())) << "a long resume key";
   EXPECT_TRUE(refused([&] { auto m = join; m.node = ""; return m; }())) << "a join from no node";
+  EXPECT_TRUE(refused([&] { auto m = join; m.language = "DE"; return m; }())) << "a language no hello carries";
+  EXPECT_TRUE(refused([&] { auto m = join; m.language = std::string(17, 'a'); return m; }())) << "a 17-byte language";
   EXPECT_TRUE(refused(bridge::up_leave("b", 0))) << "avatar 0 leaving";
   EXPECT_TRUE(refused(bridge::up_chat("b", 7, ""))) << "an empty chat line";
   EXPECT_TRUE(refused(bridge::up_chat("b", 7, std::string(501, 'x')))) << "a chat line past 500 bytes";

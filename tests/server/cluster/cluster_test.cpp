@@ -98,13 +98,15 @@ std::set<std::uint32_t> known_avatars(const RoomTestClient& client) {
 }
 
 std::unique_ptr<RoomTestClient> join_node(RunningServer& node, const std::string& room, const std::string& name,
-                                          const std::string& resume = "", const std::string& from = "") {
+                                          const std::string& resume = "", const std::string& from = "",
+                                          const std::string& language = "") {
   auto client = std::make_unique<RoomTestClient>(Transport::websocket, node.http_port(), from);
   EXPECT_TRUE(client->connected());
   codec::Hello hello;
   hello.room = room;
   hello.name = name;
   hello.resume = resume;
+  hello.language = language;
   hello.timestamps = true;  // the tick of each frame, for the pace
   client->send_message(hello);
   EXPECT_TRUE(client->pump_until([&] { return client->welcome.has_value() || client->closed(); }, 15s))
@@ -150,7 +152,9 @@ TEST(Cluster, ThreeNodesOneRoomEveryoneSeesEveryone) {
   std::vector<std::unique_ptr<RoomTestClient>> clients;
   std::vector<RoomTestClient*> all;
   for (std::size_t i = 0; i < 3; ++i) {
-    clients.push_back(join_node(cluster.node(i), "meet", "P" + std::to_string(i)));
+    // P1's lines are said in German: its language travels with its join to
+    // whichever node owns the room.
+    clients.push_back(join_node(cluster.node(i), "meet", "P" + std::to_string(i), "", "", i == 1 ? "de" : ""));
     all.push_back(clients.back().get());
   }
   std::set<std::uint32_t> ids;
@@ -164,7 +168,8 @@ TEST(Cluster, ThreeNodesOneRoomEveryoneSeesEveryone) {
       EXPECT_GT(all[i]->frames_per_avatar[id], 0u) << "client on node " << i << " decodes no frame of avatar " << id;
     EXPECT_TRUE(all[i]->errors.empty()) << all[i]->errors.front();
   }
-  // Chat goes everywhere, whichever node it was written on.
+  // Chat goes everywhere, whichever node it was written on, and so does
+  // the news that its writer's face begins to say it, in the writer's language.
   codec::Chat line;
   line.text = "hello from b";
   clients[1]->send_message(line);
@@ -174,11 +179,20 @@ TEST(Cluster, ThreeNodesOneRoomEveryoneSeesEveryone) {
         for (auto* c : all) {
           bool heard = false;
           for (const auto& chat : c->chat) heard = heard || chat.text == "hello from b";
-          if (!heard) return false;
+          if (!heard || c->speaking.empty()) return false;
         }
         return true;
       },
       10s));
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    ASSERT_EQ(all[i]->speaking.size(), 1u) << "client on node " << i;
+    const codec::Speaking& said = all[i]->speaking.front();
+    EXPECT_EQ(said.avatar, clients[1]->welcome->you);
+    EXPECT_EQ(said.language, "de") << "client on node " << i;
+    EXPECT_EQ(said.text, "hello from b");
+    EXPECT_GT(said.duration_ms, 500u);
+    EXPECT_LT(all[i]->last_tick_before_speaking.front(), said.tick) << "client on node " << i << ": a frame of the line came first";
+  }
   const std::string owner = cluster.owner_of("meet");
   EXPECT_FALSE(owner.empty()) << "the room has an owner in Redis";
 }

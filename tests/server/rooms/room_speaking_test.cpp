@@ -6,26 +6,18 @@
 
 #include <gtest/gtest.h>
 
-#include "fw/speech/phoneme_timing.hpp"
-#include "fw/speech/speech_track.hpp"
+#include "espeak_length.hpp"
 #include "in_memory_server.hpp"
 
 namespace fw::server {
 namespace {
 
+using test::espeak_track_ms;
 using codec::CloseCode;
 using test::HelloOptions;
 using test::InMemoryServer;
 
-// Numbers are said as words of each language: German says these longer.
-constexpr const char* kLine = "Im Jahr 1999 waren es 48 Leute";
-
-double espeak_track_ms(const std::string& text, const std::string& language) {
-  speech::PhonemeTiming timing;
-  std::string error;
-  EXPECT_TRUE(speech::time_phonemes(text, language, speech::SpeechLimits{}, timing, error)) << error;
-  return speech::speech_track(timing).length_s() * 1000.0;
-}
+constexpr const char* kLine = test::kLineLongerInGerman;
 
 TEST(RoomSpeaking, AnUnknownLanguageIsRefusedSayingWhereTheListIs) {
   InMemoryServer server;

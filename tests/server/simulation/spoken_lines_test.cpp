@@ -11,13 +11,13 @@
 
 #include <gtest/gtest.h>
 
-#include "fw/speech/phoneme_timing.hpp"
-#include "fw/speech/speech_track.hpp"
+#include "espeak_length.hpp"
 #include "room_simulation.hpp"
 
 namespace fw::server {
 namespace {
 
+using test::espeak_track_ms;
 RoomSimulation plain_room() {
   RoomSimulationOptions o;
   o.seed = 5;
@@ -32,16 +32,7 @@ std::optional<RoomEvent> line_begun(const std::vector<RoomEvent>& events) {
   return std::nullopt;
 }
 
-/// espeak-ng's own length of `text` in `language`: its track, as avatar/speech makes it.
-double espeak_track_ms(const std::string& text, const std::string& language) {
-  speech::PhonemeTiming timing;
-  std::string error;
-  EXPECT_TRUE(speech::time_phonemes(text, language, speech::SpeechLimits{}, timing, error)) << error;
-  return speech::speech_track(timing).length_s() * 1000.0;
-}
-
-// Numbers are said as words of each language: German says these longer.
-constexpr const char* kLine = "Im Jahr 1999 waren es 48 Leute";
+constexpr const char* kLine = test::kLineLongerInGerman;
 
 TEST(SpokenLines, ALineIsSaidInItsWritersLanguageWithThatLanguagesTiming) {
   RoomSimulation room = plain_room();
