@@ -184,6 +184,8 @@ void RoomSimulation::State::say_line(const LineJob& job, LineToSay line) {
   s.room.chat(job.avatar, line.text, line.mouth.empty() ? nullptr : &mouth);
   if (!line.note.empty())
     s.events.push_back({s.room.tick_index(), job.avatar, "speech: " + line.note, "your line was " + line.note});
+  // The room's events of a line said (chat, blush) before the tick's own.
+  s.collect_events();
   if (!line.mouth.empty() && line.said_bytes > 0) {
     // The track starts with the next tick, whose frame carries its first pose.
     const double length_ms = mouth.times_s.back() * 1000.0;
@@ -193,8 +195,6 @@ void RoomSimulation::State::say_line(const LineJob& job, LineToSay line) {
         line.language, line.text.substr(0, line.said_bytes)};
     s.events.push_back({s.room.tick_index(), job.avatar, "speech: a line begins", "", std::move(begun)});
   }
-  // The room's events of a line said (chat, blush) before the tick's own.
-  s.collect_events();
   // A line that came back at once (ImmediateTrackMaker) or between ticks
   // leaves the avatar speaking; its next line waits for the end of this one.
 }

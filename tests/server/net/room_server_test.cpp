@@ -1,5 +1,6 @@
 // The room server, started for real on loopback ports and spoken to over
 // WebSocket and TCP with the protocol's own codec (server/PROTOCOL.md).
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -267,6 +268,23 @@ TEST(RoomServerOperations, ReportsReadinessMetricsAndRooms) {
   ASSERT_EQ(rooms["rooms"].size(), 1u);
   EXPECT_EQ(rooms["rooms"][0]["name"], "lobby");
   EXPECT_EQ(rooms["rooms"][0]["avatars"], 3);
+}
+
+TEST(RoomServerRest, ListsTheLanguagesAHelloMayChooseWithoutAToken) {
+  RunningServer server("--auth-secret s3cret --no-demo-room");
+  const auto reply = test::http_get(server.http_port(), "/api/languages");
+  ASSERT_EQ(reply.status, 200) << reply.body;
+  const auto languages = nlohmann::json::parse(reply.body);
+  EXPECT_EQ(languages["default"], "en");
+  std::vector<std::string> codes;
+  for (const auto& language : languages["languages"]) {
+    codes.push_back(language["code"]);
+    EXPECT_FALSE(language["name"].get<std::string>().empty()) << codes.back();
+  }
+  EXPECT_TRUE(std::is_sorted(codes.begin(), codes.end()));
+  EXPECT_TRUE(std::adjacent_find(codes.begin(), codes.end()) == codes.end()) << "one entry per code";
+  for (const char* code : {"de", "en", "en-us", "es", "fr", "pt-br"})
+    EXPECT_NE(std::find(codes.begin(), codes.end(), code), codes.end()) << code;
 }
 
 test::HttpReply post(int port, const std::string& type, const std::string& body) {

@@ -73,10 +73,12 @@ class CountingConnection : public RoomConnection {
 class StreamHarness {
  public:
   /// `packages`: demo faces made for the test to stream as avatars' packages.
-  explicit StreamHarness(std::uint32_t budget_bps, std::uint32_t packages = 1, bool timestamps = false)
+  /// `version`: the protocol version of the subscriber's hello.
+  explicit StreamHarness(std::uint32_t budget_bps, std::uint32_t packages = 1, bool timestamps = false,
+                         std::uint16_t version = codec::kProtocolVersion)
       : server_(quiet_config(packages)), peer_(server_.connect()),
         connection_(std::make_shared<CountingConnection>(peer_->shared_session())),
-        stream_(settings(budget_bps, timestamps), connection_, server_.core().metrics()) {
+        stream_(settings(budget_bps, timestamps, version), connection_, server_.core().metrics()) {
     drain();  // the stream header, which a room sends after its welcome
   }
 
@@ -121,11 +123,12 @@ class StreamHarness {
     config.timeouts.handshake = std::chrono::minutes(10);  // the peer never says hello here
     return config;
   }
-  static StreamSettings settings(std::uint32_t budget_bps, bool timestamps) {
+  static StreamSettings settings(std::uint32_t budget_bps, bool timestamps, std::uint16_t version) {
     StreamSettings s;
     s.tick_hz = kTickHz;
     s.budget_bps = budget_bps;
     s.timestamps = timestamps;
+    s.protocol_version = version;
     return s;
   }
 
@@ -397,6 +400,31 @@ TEST(SubscriberStream, WaitingSeatsAndAttentionAreCoalesced) {
   EXPECT_FLOAT_EQ(h.peer().seats[0].seats[0].seat.x_mm, 19);
   ASSERT_EQ(h.peer().attention.size(), 1u);
   EXPECT_EQ(h.peer().attention[0].entries.size(), 2u);
+}
+
+TEST(SubscriberStream, SpeakingGoesBeforeTheLinesFramesAndOnlyTheNewestWaitOnAThinLink) {
+  StreamHarness h(2400, 1, /*timestamps=*/true);
+  h.stream().add_avatar(7, nullptr, nullptr);
+  h.stream().charge(1500);  // overdrawn: what is posted now waits
+  for (std::uint32_t i = 1; i <= 12; ++i)
+    h.stream().post_speaking(encode_shared(codec::Speaking{7, 100 + i, 900, "de", "Zeile " + std::to_string(i)}));
+  for (int i = 0; i < kTickHz * 10 && h.peer().speaking.size() < SubscriberStream::kMaxWaitingSpeaking; ++i)
+    h.tick_moving({7});
+  ASSERT_EQ(h.peer().speaking.size(), SubscriberStream::kMaxWaitingSpeaking) << "the oldest four went";
+  EXPECT_EQ(h.peer().speaking.front().text, "Zeile 5");
+  EXPECT_EQ(h.peer().speaking.back().text, "Zeile 12");
+  EXPECT_EQ(h.peer().last_tick_before_speaking.back(), 0u) << "no frame overtook them";
+  EXPECT_TRUE(h.peer().errors.empty());
+}
+
+TEST(SubscriberStream, AVersion3SubscriberIsSentNoSpeaking) {
+  StreamHarness h(64000, 1, /*timestamps=*/true, /*version=*/3);
+  h.stream().add_avatar(7, nullptr, nullptr);
+  h.stream().post_speaking(encode_shared(codec::Speaking{7, 1, 900, "de", "Hallo"}));
+  h.stream().post_chat(encode_shared(codec::Chat{7, "Hallo"}));
+  h.tick_moving({7});
+  EXPECT_TRUE(h.peer().speaking.empty());
+  EXPECT_EQ(h.peer().chat.size(), 1u);
 }
 
 }  // namespace
