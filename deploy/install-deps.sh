@@ -32,6 +32,7 @@ build_packages=(
   libcgal-dev                                 # constrained triangulation in the face generator
   libespeak-ng-dev                            # speech timing and audio for lip-sync (avatar/speech)
   emscripten                                  # avatar/model to WebAssembly for the browser (web/engine)
+  curl                                        # Debian's espeak-ng source for the browser's read aloud (below)
 )
 # What the test suites run besides ctest.
 test_packages=(
@@ -55,8 +56,14 @@ for pkg in "${build_packages[@]}" "${test_packages[@]}"; do
   fi
 done
 
+# Besides packages, the build compiles espeak-ng's C sources to WebAssembly
+# for the browser's read aloud (avatar/speech/wasm): Debian's source,
+# fetched and checked by its own script, into a cache the build knows.
+fetch_espeak_source() { bash "$(dirname "$0")/fetch-espeak-source.sh"; }
+
 if [ ${#missing[@]} -eq 0 ]; then
   echo "install-deps: all ${#build_packages[@]}+${#test_packages[@]} packages present"
+  fetch_espeak_source
   exit 0
 fi
 
@@ -70,3 +77,4 @@ echo "install-deps: installing ${missing[*]}"
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fetch_espeak_source

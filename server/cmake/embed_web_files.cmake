@@ -1,16 +1,16 @@
 # fw_embed_web_files(TARGET target DIRECTORY dir
-#                    [GENERATED_DIRECTORY dir GENERATED_FILES path... GENERATED_BY target])
+#                    [GENERATED_DIRECTORY dir GENERATED_FILES path... GENERATED_BY target...])
 # Compiles every file the browser loads from `dir` (web/: .html .js .mjs .css
 # .json .wasm, in any folder below it) into `target`, and generates the table
 # of them (server/net/web_files.hpp) that the static files are served from,
 # each at its path below `dir`. The glob is checked again at every build
 # (CONFIGURE_DEPENDS), so a file added to web/ is served after the next build
 # without anyone editing a list. Other files there (READMEs) are not served.
-# Files the build makes (the engine's WebAssembly module) are named instead:
-# GENERATED_FILES, paths below GENERATED_DIRECTORY, made by the target
-# GENERATED_BY, are served at those paths too.
+# Files the build makes (the engine's and the speech's WebAssembly modules)
+# are named instead: GENERATED_FILES, paths below GENERATED_DIRECTORY, made
+# by the targets GENERATED_BY, are served at those paths too.
 function(fw_embed_web_files)
-  cmake_parse_arguments(ARG "" "TARGET;DIRECTORY;GENERATED_DIRECTORY;GENERATED_BY" "GENERATED_FILES" ${ARGN})
+  cmake_parse_arguments(ARG "" "TARGET;DIRECTORY;GENERATED_DIRECTORY" "GENERATED_FILES;GENERATED_BY" ${ARGN})
   set(patterns "")
   foreach(extension html js mjs css json wasm)
     list(APPEND patterns ${ARG_DIRECTORY}/*.${extension})

@@ -60,19 +60,19 @@ std::string etag_of(std::string_view body) {
   return buffer;
 }
 
-StaticFile file_of(std::string_view content_type, std::string_view body) {
+}  // namespace
+
+StaticFile static_file(std::string_view content_type, std::string_view body) {
   return StaticFile{content_type, body, etag_of(body)};
 }
-
-}  // namespace
 
 std::optional<StaticFile> find_static_file(std::string_view target) {
   std::string_view path = target.substr(0, target.find('?'));
   if (path == "/") path = "/index.html";
   for (const Route& route : kSharedFiles)
-    if (route.path == path) return file_of(route.content_type, *route.body);
+    if (route.path == path) return static_file(route.content_type, *route.body);
   for (const WebFile& file : web_files())
-    if (file.path == path) return file_of(content_type_of(path), *file.body);
+    if (file.path == path) return static_file(content_type_of(path), *file.body);
   return std::nullopt;
 }
 

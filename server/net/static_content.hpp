@@ -14,6 +14,9 @@ struct StaticFile {
   std::string etag;  ///< a strong validator derived from the body
 };
 
+/// A file of `content_type` whose body is `body` (which must outlive it), with its ETag.
+StaticFile static_file(std::string_view content_type, std::string_view body);
+
 /// The file served at `target` (the request path, query string ignored).
 std::optional<StaticFile> find_static_file(std::string_view target);
 

@@ -1,6 +1,6 @@
 # cmake -P: configure SOURCE_DIR into BUILD_DIR as a newcomer would, with no
-# preset and no generator named, and build the WebAssembly module and the
-# codec. Prints "plain build: ok" only when every step succeeded.
+# preset and no generator named, and build the WebAssembly modules (the
+# engine's, and the speech's from espeak-ng's C sources) and the codec. Prints "plain build: ok" only when every step succeeded.
 if(NOT SOURCE_DIR OR NOT BUILD_DIR)
   message(FATAL_ERROR "usage: cmake -DSOURCE_DIR=... -DBUILD_DIR=... -P plain_cmake_build.cmake")
 endif()
@@ -16,12 +16,13 @@ if(NOT configured EQUAL 0)
   message(FATAL_ERROR "plain build: `cmake -S . -B build` failed (${configured})")
 endif()
 execute_process(
-  COMMAND ${CMAKE_COMMAND} --build ${BUILD_DIR} --target facewire_model fw_codec -j 2
+  COMMAND ${CMAKE_COMMAND} --build ${BUILD_DIR} --target facewire_model facewire_speech fw_codec -j 2
   RESULT_VARIABLE built)
 if(NOT built EQUAL 0)
-  message(FATAL_ERROR "plain build: `cmake --build build` of the WebAssembly module and the codec failed (${built})")
+  message(FATAL_ERROR "plain build: `cmake --build build` of the WebAssembly modules and the codec failed (${built})")
 endif()
-foreach(output web/engine/facewire_model.js web/engine/facewire_model.wasm)
+foreach(output web/engine/facewire_model.js web/engine/facewire_model.wasm
+               web/speech/facewire_speech.js web/speech/facewire_speech.wasm)
   if(NOT EXISTS ${BUILD_DIR}/${output})
     message(FATAL_ERROR "plain build: the build said it succeeded but ${output} is missing")
   endif()

@@ -15,9 +15,11 @@ export function readInvite(search) {
 
 /// The room page's address for joining `room` as `name`, wearing `asset`
 /// (empty: a face made from the name) with its `key`, with the invitation's
-/// `token`, on the `servers` of the lobby's own address (empty: the page's own).
-export function roomPageUrl({ room, name, asset, key, token, servers = '' }) {
+/// `token`, on the `servers` of the lobby's own address (empty: the page's own),
+/// the person's lines said in `language` (empty: the server's default).
+export function roomPageUrl({ room, name, asset, key, token, servers = '', language = '' }) {
   const query = new URLSearchParams({ room, name });
+  if (language) query.set('language', language);
   if (asset) query.set('asset', asset);
   if (asset && key) query.set('key', key);
   if (token) query.set('token', token);

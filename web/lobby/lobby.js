@@ -8,6 +8,7 @@ import { cameraAvailable, snapshot, startCamera } from './camera.js';
 import { deleteAvatar } from './delete_avatar.js';
 import { loadIdentity, saveIdentity } from './identity.js';
 import { readInvite, roomPageUrl } from './invite.js';
+import { DEFAULT_LANGUAGE, chooseLanguage, fetchLanguages, renderLanguages } from './languages.js';
 import { displayNameProblem, roomNameProblem } from './names.js';
 import { fitPhotoForUpload } from './photo_size.js';
 import { fetchRooms, renderRooms } from './room_list.js';
@@ -47,6 +48,20 @@ if (invite.name && invite.token) {
 nameField.addEventListener('input', () => {
   showError($('name-error'), '');
   saveIdentity({ name: nameField.value.trim(), asset: state.asset, key: state.key });
+});
+
+// --- language: the server's list, the person's choice kept with the name ----
+
+const languageField = $('language');
+languageField.value = identity.language || DEFAULT_LANGUAGE;
+fetchLanguages().then((list) => {
+  renderLanguages(languageField, list, chooseLanguage(identity.language, list));
+  languageField.dataset.loaded = 'true';
+}).catch((error) => {
+  showError($('language-error'), `${error.message}; your lines are said in the server's default language.`);
+});
+languageField.addEventListener('change', () => {
+  saveIdentity({ name: nameField.value.trim(), asset: state.asset, key: state.key, language: languageField.value });
 });
 
 // --- the avatar: preview and advice ----------------------------------------
@@ -239,6 +254,9 @@ $('join').addEventListener('click', () => {
   if (roomProblem) return roomField.focus();
   if (serversProblem) return undefined;
   if (state.uploading) return showError($('upload-error'), 'Wait until your photo is prepared, then join.');
-  saveIdentity({ name, asset: state.asset, key: state.key });
-  location.href = roomPageUrl({ room, name, asset: state.asset, key: state.key, token: invite.token, servers: invite.servers });
+  const language = languageField.value;
+  saveIdentity({ name, asset: state.asset, key: state.key, language });
+  location.href = roomPageUrl({
+    room, name, asset: state.asset, key: state.key, token: invite.token, servers: invite.servers, language,
+  });
 });

@@ -4,7 +4,10 @@
 // keeps the first field error, and then checks once that nothing was cut
 // and nothing follows, exactly as the C++ readers do, so both give the same
 // error for the same bytes.
-import { Limits, MessageError as E, MessageType, PROTOCOL_VERSION, SESSION_BIT, LAST_MESSAGE_TYPE } from './session_types.js';
+import {
+  FIRST_SPEAKING_VERSION, Limits, MessageError as E, MessageType, OLDEST_PROTOCOL_VERSION, PROTOCOL_VERSION, SESSION_BIT,
+  LAST_MESSAGE_TYPE, isLanguageCode,
+} from './session_types.js';
 import { ByteReader } from '../shared/byte_reader.js';
 import { decodeUtf8, isCleanText } from './wire.js';
 
@@ -41,6 +44,18 @@ class Fields {
     }
     if (!isCleanText(bytes, allowLayout)) this.fail(E.badText);
     return decodeUtf8(bytes);
+  }
+  /** A language (hello's may be empty: the server's default; speaking's not). */
+  language(mayBeEmpty) {
+    const before = this.error;
+    const code = this.string(Limits.languageBytes);
+    if (before !== E.ok || this.error !== E.ok || this.r.failed) return code;
+    if (code === '') {
+      if (!mayBeEmpty) this.fail(E.valueOutOfRange);
+    } else if (!isLanguageCode(code)) {
+      this.fail(E.badText);
+    }
+    return code;
   }
   count() {
     const n = this.r.varint(2);
@@ -87,18 +102,20 @@ function avatarInfo(f) {
   return { id, person: (flags & 1) !== 0, name, asset, previewBytes, fullBytes, seat: seat(f) };
 }
 
-/** Reads the version first: another version may lay out the rest differently. */
+/** Reads the version first: another version may lay out the rest
+ * differently. Versions 3 and 4 read (their layouts differ only in hello's
+ * language); the version read, or { error }. */
 function versioned(f) {
   const version = f.r.u16();
   if (f.r.failed) return { error: failureOf(f.r) };
-  if (version !== PROTOCOL_VERSION) return { error: E.unsupportedVersion };
-  return null;
+  if (version < OLDEST_PROTOCOL_VERSION || version > PROTOCOL_VERSION) return { error: E.unsupportedVersion };
+  return { version };
 }
 
 const readers = {
   [MessageType.hello]: [Limits.upstreamMessageBytes, (f) => {
-    const refused = versioned(f);
-    if (refused) return refused;
+    const { error, version } = versioned(f);
+    if (error !== undefined) return { error };
     const flags = f.r.u8();
     if (!f.r.failed && (flags & ~7) !== 0) f.fail(E.badFlags);
     const maxBps = f.bounded(4, Limits.bitsPerSecond);
@@ -108,14 +125,15 @@ const readers = {
     const token = f.string(Limits.tokenBytes);
     const avatarKey = f.string(Limits.keyBytes);
     const resume = f.string(Limits.keyBytes);
+    const language = version >= FIRST_SPEAKING_VERSION ? f.language(true) : '';
     return f.finish({
-      protocolVersion: PROTOCOL_VERSION, timestamps: (flags & 1) !== 0, noPackages: (flags & 2) !== 0,
-      ownPackage: (flags & 4) !== 0, maxBps, room, name, avatar, token, avatarKey, resume,
+      protocolVersion: version, timestamps: (flags & 1) !== 0, noPackages: (flags & 2) !== 0,
+      ownPackage: (flags & 4) !== 0, maxBps, room, name, avatar, token, avatarKey, resume, language,
     });
   }],
   [MessageType.welcome]: [Limits.downstreamMessageBytes, (f) => {
-    const refused = versioned(f);
-    if (refused) return refused;
+    const { error, version } = versioned(f);
+    if (error !== undefined) return { error };
     const you = f.bounded(3, Limits.avatarId);
     const room = f.string(Limits.roomNameBytes);
     const tickHz = f.r.u8();
@@ -125,7 +143,7 @@ const readers = {
     const avatars = [];
     for (let i = 0; i < count && f.going; ++i) avatars.push(avatarInfo(f));
     const resume = f.string(Limits.keyBytes);
-    return f.finish({ protocolVersion: PROTOCOL_VERSION, you, room, tickHz, maxBps, avatars, resume });
+    return f.finish({ protocolVersion: version, you, room, tickHz, maxBps, avatars, resume });
   }],
   [MessageType.presence]: [Limits.downstreamMessageBytes, (f) => {
     const change = f.r.u8();
@@ -221,6 +239,15 @@ const readers = {
       entries.push({ avatar, target, targetAvatar });
     }
     return f.finish({ entries });
+  }],
+  [MessageType.speaking]: [Limits.downstreamMessageBytes, (f) => {
+    const avatar = f.bounded(3, Limits.avatarId);
+    const tick = f.r.varint(5);
+    const durationMs = f.bounded(3, Limits.speakingMs);
+    const language = f.language(false);
+    const text = f.string(Limits.chatBytes);
+    if (!f.r.failed && f.error === E.ok && text === '') f.fail(E.valueOutOfRange);
+    return f.finish({ avatar, tick, durationMs, language, text });
   }],
 };
 

@@ -2,14 +2,18 @@
 // bytes, error codes and limits, as codec/include/fw/codec/messages.hpp
 // defines them. The numbers are part of the protocol and never change.
 
-export const PROTOCOL_VERSION = 3;
+export const PROTOCOL_VERSION = 4;
+/** The oldest hello or welcome that still reads (version 3: no language). */
+export const OLDEST_PROTOCOL_VERSION = 3;
+/** The first version whose hello carries a language and whose sessions are sent speaking. */
+export const FIRST_SPEAKING_VERSION = 4;
 export const SESSION_BIT = 0x80;
 
 export const MessageType = Object.freeze({
   hello: 1, welcome: 2, presence: 3, chat: 4, command: 5, commandResult: 6, packageChunk: 7, setRate: 8,
-  ping: 9, pong: 10, linkStats: 11, closing: 12, timedRoomFrame: 13, seats: 14, attention: 15,
+  ping: 9, pong: 10, linkStats: 11, closing: 12, timedRoomFrame: 13, seats: 14, attention: 15, speaking: 16,
 });
-export const LAST_MESSAGE_TYPE = MessageType.attention;
+export const LAST_MESSAGE_TYPE = MessageType.speaking;
 
 export const MessageError = Object.freeze({
   ok: 0, empty: 1, notSessionMessage: 2, unknownType: 3, wrongType: 4, truncated: 5, tooLarge: 6,
@@ -38,6 +42,8 @@ export const Limits = Object.freeze({
   tokenBytes: 512,
   keyBytes: 64,
   chatBytes: 500,
+  languageBytes: 16,
+  speakingMs: 20_000,
   emotionBytes: 16,
   sentenceBytes: 4096,
   reasonBytes: 120,
@@ -49,6 +55,11 @@ export const Limits = Object.freeze({
   avatarId: (1 << 21) - 1,
   facingTenThousandths: 31416,
 });
+
+/** Whether `code` has a language's shape: 1 .. 16 bytes of a-z, 0-9 and `-`
+ * (whether the server speaks it is the server's to say). */
+export const isLanguageCode = (code) =>
+  typeof code === 'string' && code.length >= 1 && code.length <= Limits.languageBytes && /^[a-z0-9-]+$/.test(code);
 
 /** What a message on the connection is, from its first byte. */
 export function classify(bytes) {

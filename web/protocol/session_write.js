@@ -2,7 +2,7 @@
 // byte for byte against the C++ writers (tests/codec/protocol_js). Field
 // limits are the caller's to respect (session_types.js Limits): the room
 // page checks what a person types before it is sent.
-import { MessageType, PROTOCOL_VERSION, SESSION_BIT } from './session_types.js';
+import { FIRST_SPEAKING_VERSION, MessageType, PROTOCOL_VERSION, SESSION_BIT } from './session_types.js';
 import { WireWriter } from './wire.js';
 
 function start(type) {
@@ -38,7 +38,8 @@ function avatarInfo(w, a) {
 
 const writers = {
   [MessageType.hello]: (w, m) => {
-    w.u16(m.protocolVersion ?? PROTOCOL_VERSION);
+    const version = m.protocolVersion ?? PROTOCOL_VERSION;
+    w.u16(version);
     w.u8((m.timestamps ? 1 : 0) | (m.noPackages ? 2 : 0) | (m.ownPackage ? 4 : 0));
     w.varint(m.maxBps ?? 0);
     w.string(m.room);
@@ -47,6 +48,8 @@ const writers = {
     w.string(m.token ?? '');
     w.string(m.avatarKey ?? '');
     w.string(m.resume ?? '');
+    // Version 4 on: the language the person's lines are said in ('' = the server's default).
+    if (version >= FIRST_SPEAKING_VERSION) w.string(m.language ?? '');
   },
   [MessageType.welcome]: (w, m) => {
     w.u16(m.protocolVersion ?? PROTOCOL_VERSION);
@@ -131,6 +134,13 @@ const writers = {
       w.u8(e.target);
       if (e.target === 2) w.varint(e.targetAvatar);
     }
+  },
+  [MessageType.speaking]: (w, m) => {
+    w.varint(m.avatar);
+    w.varint(m.tick);
+    w.varint(m.durationMs);
+    w.string(m.language);
+    w.string(m.text);
   },
 };
 

@@ -23,15 +23,18 @@ export class RoomClient {
    * @param options.servers      ws:// or wss:// URLs (shared/server_list.js): the first, then the next after a failure
    * @param options.url          or one URL, or several comma-separated
    * @param options.room, options.name, options.asset, options.avatarKey, options.token   the hello's fields
+   * @param options.language     the language the person's lines are said in ('' = the server's default)
    * @param options.maxBps       downstream budget, 0: the server's default
    * @param options.ownPackage   the page holds its own avatar's package (the server sends it none)
    * @param options.openSocket   url -> WebSocket-like ({binaryType, send, close, onopen, onmessage, onclose})
-   * @param options.onChange     (what) => void, after every change of state ('welcome', 'chat', 'frame', ...)
+   * @param options.onChange     (what, detail) => void, after every change of state ('welcome', 'chat', 'frame', ...);
+   *                             'speaking' with { line, framesReceived } (the line starts with the next room
+   *                             frame), 'left' with the avatar id
    * @param options.now          clock in ms (performance.now)
    */
   constructor(options) {
     this.resume = '';
-    this.options = { maxBps: 0, ownPackage: false, asset: '', avatarKey: '', token: '', now: () => performance.now(), ...options };
+    this.options = { maxBps: 0, ownPackage: false, asset: '', avatarKey: '', token: '', language: '', now: () => performance.now(), ...options };
     this.servers = this.options.servers ?? String(this.options.url).split(',').map((u) => u.trim()).filter(Boolean);
     this.serverIndex = 0;
     /** Where the client moved and why, newest last (for the page and whoever inspects it). */
@@ -45,9 +48,12 @@ export class RoomClient {
     this.avatars = new Map();    // id -> { info, package: {quality, bytes} | null, lastFrameMs }
     this.attention = new Map();  // id -> { target, targetAvatar }
     this.chatLines = [];         // { from, name, text }
+    this.speakingLines = [];     // the speaking messages (avatar, tick, durationMs, language, text), newest last
     this.results = new Map();    // request id -> error ('' accepted)
     this.requestId = 0;
     this.decoder = null;
+    /** Room frames received so far: a speaking line starts with the frame after its message. */
+    this.framesReceived = 0;
     this.packages = new PackageAssembly();
     this.socket = null;
     this.stopped = false;
@@ -118,7 +124,7 @@ export class RoomClient {
       const o = this.options;
       socket.send(writeMessage(MessageType.hello, {
         room: o.room, name: o.name, avatar: o.asset, avatarKey: o.avatarKey, token: o.token, maxBps: o.maxBps,
-        ownPackage: o.ownPackage, timestamps: false, noPackages: false,
+        ownPackage: o.ownPackage, timestamps: false, noPackages: false, language: o.language,
         // After a drop: the server may still hold the token for the old
         // connection; the last welcome's key shows this is the same person.
         resume: this.resume,
@@ -165,7 +171,7 @@ export class RoomClient {
     this.retryTimer = setTimeout(() => this.connect(), next.delayMs);
   }
 
-  notify(what) { this.options.onChange?.(what); }
+  notify(what, detail) { this.options.onChange?.(what, detail); }
 
   /** One message from the server. */
   receive(bytes) {
@@ -192,6 +198,7 @@ export class RoomClient {
   roomFrame(bytes, now) {
     if (!this.decoder) return this.protocolProblem('a room frame before its stream header');
     const result = this.decoder.decode(bytes);
+    this.framesReceived += 1;
     for (const [avatar, error] of result.avatars) {
       const entry = this.avatars.get(avatar);
       if (error === 0 && entry) {
@@ -234,6 +241,10 @@ export class RoomClient {
       case MessageType.linkStats:
         this.serverLink = m;
         return this.notify('link');
+      case MessageType.speaking:
+        this.speakingLines.push(m);
+        if (this.speakingLines.length > MAX_CHAT_LINES) this.speakingLines.shift();
+        return this.notify('speaking', { line: m, framesReceived: this.framesReceived });
       case MessageType.pong: return undefined;
       default: return this.protocolProblem(`a message of type ${type} a client never receives`);
     }
@@ -269,6 +280,7 @@ export class RoomClient {
       this.decoder?.remove(m.avatar.id);
       this.packages.forget(m.avatar.id);
       this.meter.forget(m.avatar.id);
+      this.notify('left', m.avatar.id);
     }
     this.notify('presence');
   }

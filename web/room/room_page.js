@@ -5,21 +5,27 @@
 // the person's own place (room_view.js), and wires the controls: chat, the
 // expression and blush buttons, FACS sentences, looking at, snubbing or
 // muting a face (for the viewer alone: mute_list.js), the stream budget,
-// and the meter.
+// the meter, and read aloud (the others' lines heard in step with their
+// lips: read_aloud_player.js; off until the person turns it on).
 import { loadEngineFromServer } from '../engine/engine.js';
-import { AttentionTarget } from '../protocol/session_types.js';
+import { AttentionTarget, isLanguageCode } from '../protocol/session_types.js';
 import { FaceRenderer } from './face_renderer.js';
 import { RoomClient } from './room_client.js';
 import { MuteList } from './mute_list.js';
+import { ReadAloudPlayer } from './read_aloud_player.js';
 import { RoomView } from './room_view.js';
 import { parseServers } from '../shared/server_list.js';
 
 const EXPRESSIONS = ['joy', 'sadness', 'anger', 'fear', 'surprise', 'disgust', 'cunning', 'teasing', 'blush'];
 const BUDGET_KEY = 'facewire.budget';
+const READ_ALOUD_KEY = 'facewire.readAloud';
 const $ = (id) => document.getElementById(id);
 
 const query = new URLSearchParams(location.search);
-const identity = { room: query.get('room') || '', name: query.get('name') || '', asset: query.get('asset') || '', key: query.get('key') || '', token: query.get('token') || '' };
+const identity = {
+  room: query.get('room') || '', name: query.get('name') || '', asset: query.get('asset') || '', key: query.get('key') || '',
+  token: query.get('token') || '', language: query.get('language') || '',
+};
 
 function fail(message) {
   $('status').textContent = message;
@@ -47,6 +53,9 @@ async function main() {
   }
   const { servers, error: serversProblem } = parseServers(query.get('servers'), location);
   if (serversProblem) return fail(`the room cannot start: ${serversProblem}`);
+  if (identity.language && !isLanguageCode(identity.language)) {
+    return fail(`the room cannot start: the language '${identity.language}' is not a language code (such as en, de or pt-br); choose one in the lobby`);
+  }
   $('room-name').textContent = identity.room;
   document.title = `facewire: ${identity.room}`;
   const canvas = $('room-canvas');
@@ -64,18 +73,24 @@ async function main() {
 
   const client = new RoomClient({
     servers, room: identity.room, name: identity.name, asset: identity.asset, avatarKey: identity.key, token: identity.token,
-    maxBps: budgetBps(budget.value), ownPackage: Boolean(own), openSocket: (url) => new WebSocket(url),
-    onChange: (what) => changed(what),
+    language: identity.language, maxBps: budgetBps(budget.value), ownPackage: Boolean(own),
+    openSocket: (url) => new WebSocket(url), onChange: (what, detail) => changed(what, detail),
   });
   // Whom this person muted in this room, kept across reconnects and visits.
   const mutes = MuteList.load(localStorage, identity.room);
   const view = new RoomView({ gl, engine, renderer, client, mutes });
   if (own) await view.setOwnPackage(own).catch((error) => console.warn(`own package: ${error.message}`));
-  window.facewireRoom = { client, view, mutes };  // for whoever inspects the page (and its tests)
+  const readAloud = new ReadAloudPlayer({
+    isMuted: (avatar) => mutes.mutes(avatar, client.nameOf(avatar), client.you),
+    onProblem: (message) => { $('read-aloud-note').textContent = message; },
+  });
+  wireReadAloud(readAloud);
+  window.facewireRoom = { client, view, mutes, readAloud };  // for whoever inspects the page (and its tests)
   // Muting changes what this page shows, nothing else: no message goes out.
   const toggleMute = (name) => {
     const muted = mutes.toggle(name);
     mutes.save(localStorage, identity.room);
+    if (muted) for (const [id, { info }] of client.avatars) if (info.name === name) readAloud.silence(id);
     $('mute-note').textContent = muteNote(client, name, muted);
     showPeople(client, mutes, toggleMute);
     showChat(client, mutes, true);
@@ -104,18 +119,40 @@ async function main() {
       canvas.height = Math.round(height * ratio);
     }
     view.draw(width, height, ratio, now);
+    readAloud.shown(client.framesReceived, now);
     placeOverlays(client, view);
     canvas.dataset.frames = String(view.frames);
   };
   requestAnimationFrame(frame);
   setInterval(() => showMeter(client), 500);
 
-  function changed(what) {
+  function changed(what, detail) {
+    if (what === 'speaking') readAloud.heard(detail.line, detail.framesReceived);
+    if (what === 'left') readAloud.silence(detail);
+    if (what === 'closed') readAloud.disable();
     if (what === 'chat') showChat(client, mutes);
     if (what === 'result') showResults(client);
     if (['welcome', 'presence', 'attention', 'closed', 'reconnecting', 'closing'].includes(what)) showStatus(client);
     if (['welcome', 'presence'].includes(what)) showPeople(client, mutes, toggleMute);
   }
+}
+
+/** The read-aloud switch: off unless the person turned it on (kept like the budget). */
+function wireReadAloud(readAloud) {
+  const toggle = $('read-aloud');
+  toggle.checked = localStorage.getItem(READ_ALOUD_KEY) === 'on';
+  const apply = () => {
+    $('read-aloud-note').textContent = '';
+    if (toggle.checked) readAloud.enable();
+    else readAloud.disable();
+  };
+  toggle.addEventListener('change', () => {
+    localStorage.setItem(READ_ALOUD_KEY, toggle.checked ? 'on' : 'off');
+    apply();
+  });
+  if (toggle.checked) apply();
+  // Kept on from an earlier visit, its sound may wait for a gesture on the page.
+  document.addEventListener('pointerdown', () => { if (toggle.checked) readAloud.context?.resume(); });
 }
 
 /** 0 asks for "unlimited": the server's own cap. */

@@ -1,4 +1,5 @@
 #include "espeak_engine.hpp"
+#include "fw/speech/espeak_data_folder.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -22,6 +23,8 @@ struct Engine {
   bool started = false;
   std::string start_error;
   int sample_rate_hz = 0;
+  std::string data_folder;  ///< where espeak-ng reads its voice data
+  std::map<std::string, std::string> voice_files;  ///< language -> its voice file, below data_folder
   std::set<std::string> languages;  ///< lower case, as the voice files name them
   std::map<std::string, std::string> names;  ///< language -> the name of the voice that speaks it best
 };
@@ -57,6 +60,26 @@ int on_synthesis(short* wav, int sample_count, espeak_EVENT* events) {
   return out.samples.size() > collecting.stop_after_samples ? 1 : 0;  // 1 stops the synthesis
 }
 
+// The file of the voice espeak_SetVoiceByProperties takes for each
+// language: the first of espeak-ng's own ranking that is not an MBROLA
+// voice (which SetVoiceByProperties passes over too). Called with
+// engine_mutex held, after the list of all voices was read: each
+// espeak_ListVoices call reuses the array the last one returned.
+std::map<std::string, std::string> voice_files_of(const std::set<std::string>& languages) {
+  std::map<std::string, std::string> files;
+  for (const std::string& language : languages) {
+    espeak_VOICE spec{};
+    spec.languages = language.c_str();
+    for (const espeak_VOICE** voice = espeak_ListVoices(&spec); voice && *voice; ++voice) {
+      const std::string_view identifier = (*voice)->identifier ? (*voice)->identifier : "";
+      if (identifier.empty() || identifier.starts_with("mb/")) continue;
+      files[language] = "lang/" + std::string(identifier);  // identifiers name files below lang/
+      break;
+    }
+  }
+  return files;
+}
+
 // Called with engine_mutex held.
 Engine& started_engine() {
   static Engine engine = [] {
@@ -72,6 +95,9 @@ Engine& started_engine() {
       return e;
     }
     e.sample_rate_hz = rate;
+    const char* path = nullptr;
+    espeak_Info(&path);
+    e.data_folder = path ? path : "";
     espeak_SetSynthCallback(on_synthesis);
     // For each language, the voice it is the first language of wins, then
     // the voice that gives it the lowest priority number (espeak-ng's best).
@@ -90,6 +116,7 @@ Engine& started_engine() {
         e.names[language] = (*voice)->name ? (*voice)->name : language;
       }
     }
+    e.voice_files = voice_files_of(e.languages);
     e.started = true;
     return e;
   }();
@@ -137,6 +164,16 @@ bool espeak_synthesize(std::string_view text, std::string_view language, double 
     return false;
   }
   return true;
+}
+
+std::string espeak_data_folder() {
+  const std::lock_guard lock(engine_mutex);
+  return started_engine().data_folder;
+}
+
+std::map<std::string, std::string> espeak_voice_files() {
+  const std::lock_guard lock(engine_mutex);
+  return started_engine().voice_files;
 }
 
 std::map<std::string, std::string> espeak_languages() {

@@ -18,8 +18,9 @@ const ALLOWED = {
   codec: ['shared'],
   protocol: ['shared'],
   engine: ['shared'],
+  speech: ['shared'],
   lobby: ['shared'],
-  room: ['shared', 'codec', 'protocol', 'engine'],
+  room: ['shared', 'codec', 'protocol', 'engine', 'speech'],
 };
 
 function filesUnder(dir) {
@@ -30,8 +31,9 @@ const folderOf = (file) => {
   const parts = relative(web, file).split(sep);
   return parts.length > 1 ? parts[0] : '';
 };
-// Files the build adds beside web/'s own (the engine's WebAssembly module).
-const BUILT = new Set([join(web, 'engine', 'facewire_model.js'), join(web, 'engine', 'facewire_model.wasm')]);
+// Files the build adds beside web/'s own (the engine's and the speech's WebAssembly modules).
+const BUILT = new Set([join(web, 'engine', 'facewire_model.js'), join(web, 'engine', 'facewire_model.wasm'),
+  join(web, 'speech', 'facewire_speech.js'), join(web, 'speech', 'facewire_speech.wasm')]);
 
 const modules = filesUnder(web).filter((f) => f.endsWith('.js') || f.endsWith('.mjs'));
 const pages = filesUnder(web).filter((f) => f.endsWith('.html'));

@@ -25,3 +25,8 @@ test('the room page gets the room, the name, the asset, its key and the token', 
     { room: 'lobby', name: 'Zoë & co', asset: 'ab'.repeat(16), key: 'k-_3', token: 'fw1.x.y' });
   assert.equal(roomPageUrl({ room: 'r', name: 'n', asset: '', token: '' }), 'room.html?room=r&name=n');
 });
+
+test('the room page is told the chosen language, and nothing when it is the default', () => {
+  assert.equal(roomPageUrl({ room: 'r', name: 'A', language: 'pt-br' }), 'room.html?room=r&name=A&language=pt-br');
+  assert.equal(roomPageUrl({ room: 'r', name: 'A' }), 'room.html?room=r&name=A');
+});

@@ -11,6 +11,7 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 
 import { openWeb, sourceFile } from '../support/harness.mjs';
+import { pageUntil } from '../support/page_poll.mjs';
 
 const ROOM = 'quiet';
 let web;
@@ -29,15 +30,7 @@ const room = (page) => page.evaluate(() => {
     lines: client.chatLines.map((l) => l.text),
   };
 });
-async function until(page, predicate, what, timeout = 30000) {
-  const start = Date.now();
-  for (;;) {
-    const state = await room(page);
-    if (state && predicate(state)) return state;
-    if (Date.now() - start > timeout) throw new Error(`${what} did not happen within ${timeout / 1000} s: ${JSON.stringify(state)}`);
-    await page.waitForTimeout(200);
-  }
-}
+const until = (page, predicate, what, timeout) => pageUntil(page, room, predicate, what, timeout);
 const tileOf = (state, name) => state.tiles.find((t) => t.id === state.names[name]);
 const started = Date.now();
 const step = (what) => console.log(`${((Date.now() - started) / 1000).toFixed(1)} s: ${what}`);

@@ -10,6 +10,7 @@ import { spawn } from 'node:child_process';
 import { readFileSync } from 'node:fs';
 
 import { openWeb, program, sourceFile } from '../support/harness.mjs';
+import { pageUntil } from '../support/page_poll.mjs';
 import { canvasPixels, faceShare, irisOffset, meanAbsDifference, mouthSamples, spread } from '../support/room_pixels.mjs';
 
 const ROOM = 'e2e';
@@ -35,15 +36,7 @@ const room = (page) => page.evaluate(() => {
   };
 });
 const landmarks = (page, key, indices) => page.evaluate(([k, i]) => window.facewireRoom.view.landmarksOnScreen(k, i), [key, indices]);
-async function until(page, predicate, what, timeout = 30000) {
-  const start = Date.now();
-  for (;;) {
-    const state = await room(page);
-    if (state && predicate(state)) return state;
-    if (Date.now() - start > timeout) throw new Error(`${what} did not happen within ${timeout / 1000} s: ${JSON.stringify(state)}`);
-    await page.waitForTimeout(200);
-  }
-}
+const until = (page, predicate, what, timeout) => pageUntil(page, room, predicate, what, timeout);
 const tileOf = (state, name) => state.tiles.find((t) => t.id === state.names[name]);
 /** FW_ROOM_SHOTS=DIR keeps screenshots of what the tests looked at, for people to look at too. */
 async function keep(page, name) {

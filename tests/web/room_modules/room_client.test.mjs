@@ -173,3 +173,23 @@ test('a malformed message closes the connection with a reason', (t) => {
   assert.equal(sockets[0].closedWith, 1002);
   assert.match(c.error, /malformed message \(truncated\)/);
 });
+
+test('hello carries the language; a speaking line is kept and handed on with the frames received before it', (t) => {
+  const seen = [];
+  const { c, sockets } = client({ language: 'de', onChange: (what, detail) => { if (what === 'speaking') seen.push(detail); } });
+  t.after(() => c.stop());
+  const hello = readMessage(sockets[0].sent[0], MessageType.hello);
+  assert.equal(hello.message.protocolVersion, 4);
+  assert.equal(hello.message.language, 'de');
+  sockets[0].deliver(MessageType.welcome, welcome);
+  const line = { avatar: 1, tick: 90, durationMs: 1800, language: 'de', text: 'Guten Tag' };
+  sockets[0].deliver(MessageType.speaking, line);
+  assert.deepEqual(c.speakingLines, [line]);
+  assert.deepEqual(seen, [{ line, framesReceived: 0 }]);
+});
+
+test('without a language, hello asks for the server\'s default', (t) => {
+  const { c, sockets } = client();
+  t.after(() => c.stop());
+  assert.equal(readMessage(sockets[0].sent[0], MessageType.hello).message.language, '');
+});
