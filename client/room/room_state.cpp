@@ -117,9 +117,9 @@ std::optional<std::string> RoomState::line_begun(const codec::Speaking& speaking
   std::string line = record_of.name + " says (" + speaking.language + ", " + std::to_string(speaking.duration_ms) +
                      " ms): " + speaking.text;
   record(std::move(record_of));
-  if (const auto joined = stats.joined_at()) {
+  if (const auto joined_at = stats.joined_at()) {
     char at[32];
-    std::snprintf(at, sizeof at, "[%.1f s] ", std::chrono::duration<double>(now - *joined).count());
+    std::snprintf(at, sizeof at, "[%.1f s] ", std::chrono::duration<double>(now - *joined_at).count());
     line = at + line;
   }
   return line;

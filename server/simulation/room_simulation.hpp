@@ -44,7 +44,7 @@ struct RoomSimulationOptions {
   std::string speech_language = "en";
   /// Makes the lines' lip-sync tracks (track_maker.hpp); null: at once, on
   /// the caller's thread (ImmediateTrackMaker).
-  std::shared_ptr<TrackMaker> track_maker;
+  std::shared_ptr<TrackMaker> track_maker{};
 };
 
 struct AvatarSetup {
