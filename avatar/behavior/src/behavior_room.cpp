@@ -191,7 +191,8 @@ struct BehaviorRoom::Impl {
       for (const FaceSnapshot& s : room)
         if (look->away_from && s.id == *look->away_from)
           from = direction_angles(room_to_seat(f.snapshot.seat, s.eye_mid_room_mm) - f.eyes.eye_position_seat());
-      intent.look_seat_mm = f.eyes.eye_position_seat() + 1500.0f * direction_from_angles(away_from_faces(f, from, look->away_offset, room));
+      const YawPitch away = away_from_faces(f, from, look->away_offset, room);
+      intent.look_seat_mm = f.eyes.eye_position_seat() + 1500.0f * direction_from_angles(away);
     }
     // Mimicry needs the mimicked face in view of the eyes, not just in mind.
     if (intent.mimic && intent.attend != intent.mimic) intent.mimic.reset();
@@ -200,7 +201,8 @@ struct BehaviorRoom::Impl {
   // A look away rests on no face: the drawn offset from `from`, else the
   // same to the other side, else further down (below the ring of faces),
   // else straight down.
-  static YawPitch away_from_faces(const Face& f, YawPitch from, YawPitch offset, const std::vector<FaceSnapshot>& room) {
+  static YawPitch away_from_faces(const Face& f, YawPitch from, YawPitch offset,
+                                  const std::vector<FaceSnapshot>& room) {
     const glm::vec3 eyes_room = f.snapshot.eye_mid_room_mm;
     const auto on_a_face = [&](YawPitch a) {
       const glm::vec3 d = seat_to_room(f.snapshot.seat, direction_from_angles(a)) - f.snapshot.seat.origin_mm;

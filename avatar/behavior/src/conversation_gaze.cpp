@@ -117,8 +117,9 @@ std::optional<ConversationLook> ConversationGaze::speak(const ConversationScene&
   }
   // A glance the listener returns becomes mutual gaze, which the speaker
   // lets last its own while before it looks away.
-  const bool met = speaker_looking_ && listener_ &&
-                   std::any_of(seen.begin(), seen.end(), [&](const PerceivedFace& f) { return f.id == *listener_ && f.looks_at_me; });
+  const bool met = speaker_looking_ && listener_ && std::any_of(seen.begin(), seen.end(), [&](const PerceivedFace& f) {
+                     return f.id == *listener_ && f.looks_at_me;
+                   });
   if (!met) mutual_until_s_ = -1;
   else if (mutual_until_s_ < 0) mutual_until_s_ = now + lognormal(kMutualS);
   if (now >= speaker_phase_until_s_ && !(met && now < mutual_until_s_)) {
