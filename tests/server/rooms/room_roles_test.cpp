@@ -161,7 +161,7 @@ TEST(RoomRoles, AnOwnerSeatsAPersonAndTellsItsBusWhatItKeepsAndForgets) {
   ASSERT_TRUE(eventually([&] { return ann->avatar() != 0; }));
   const std::string id = std::to_string(ann->avatar());
   EXPECT_TRUE(eventually([&] { return bus.kept() == std::vector<std::string>{id}; }));
-  EXPECT_TRUE(bus.sent_down(bridge::DownKind::joined));
+  EXPECT_TRUE(eventually([&] { return bus.sent_down(bridge::DownKind::joined); }));
   EXPECT_EQ(room->person_count(), 1u);
   room->chat(ann->avatar(), "hello");
   EXPECT_TRUE(eventually([&] { return bus.chats_kept() == 1; }));
