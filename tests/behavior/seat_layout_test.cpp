@@ -82,9 +82,9 @@ TEST(SeatLayout, TheSpreadIsTheOneWithTheSmallestLargestHeadTurn) {
 
 TEST(SeatLayout, TheOldArcFacesItsCentre) {
   const std::vector<Seat> seats = centre_facing_arc_layout(4);
-  EXPECT_NEAR(glm::length(seats[0].origin_mm - seats[1].origin_mm), kSeatSpacingMm, 0.01f);
+  EXPECT_NEAR(glm::length(seats[0].origin_mm - seats[1].origin_mm), kCentreFacingArcSpacingMm, 0.01f);
   EXPECT_NEAR(seats[3].facing_yaw_rad, -1.5f * kSeatAngleRad, 1e-5f);
-  const glm::vec3 centre(0, 0, 0.5f * kSeatSpacingMm / std::sin(0.5f * kSeatAngleRad));
+  const glm::vec3 centre(0, 0, 0.5f * kCentreFacingArcSpacingMm / std::sin(0.5f * kSeatAngleRad));
   for (const Seat& s : seats) {
     const glm::vec3 ahead = glm::normalize(room_to_seat(s, centre));
     EXPECT_NEAR(ahead.z, 1, 1e-5f);

@@ -16,10 +16,10 @@ namespace {
 
 // Seats evenly on an arc open toward +z, `step` apart on it, neighbours
 // kSeatSpacingMm apart; each facing the arc's centre (yaw -phi).
-std::vector<Seat> arc_of(int count, float step) {
+std::vector<Seat> arc_of(int count, float step, float spacing_mm) {
   std::vector<Seat> seats(static_cast<std::size_t>(std::max(count, 0)));
   if (count <= 1) return seats;
-  const float radius = 0.5f * kSeatSpacingMm / std::sin(0.5f * step);
+  const float radius = 0.5f * spacing_mm / std::sin(0.5f * step);
   const glm::vec3 centre(0.0f, 0.0f, radius);
   for (int i = 0; i < count; ++i) {
     const float phi = (static_cast<float>(i) - 0.5f * static_cast<float>(count - 1)) * step;
@@ -45,7 +45,7 @@ std::vector<Seat> seat_layout(int count, float span_rad) {
   // head turn toward a partner for every room of 3 to 16 (measured: the
   // table in avatar/behavior/README.md, "Seats and the renderer").
   assert(span_rad > 0 && span_rad < 6.2831853f);
-  std::vector<Seat> seats = arc_of(count, span_rad / static_cast<float>(std::max(count - 1, 1)));
+  std::vector<Seat> seats = arc_of(count, span_rad / static_cast<float>(std::max(count - 1, 1)), kSeatSpacingMm);
   std::vector<float> facings(seats.size());
   for (std::size_t i = 0; i < seats.size(); ++i) {
     // The partners' directions relative to the arc's centre all lie within
@@ -71,7 +71,8 @@ std::vector<Seat> seat_layout(int count, float span_rad) {
 
 std::vector<Seat> centre_facing_arc_layout(int count) {
   // Spread at most 270 degrees so that a large room stays an open ring.
-  return arc_of(count, std::min(kSeatAngleRad, 4.712389f / static_cast<float>(std::max(count - 1, 1))));
+  return arc_of(count, std::min(kSeatAngleRad, 4.712389f / static_cast<float>(std::max(count - 1, 1))),
+                kCentreFacingArcSpacingMm);
 }
 
 SeatLayoutAngles seat_layout_angles(const std::vector<Seat>& seats) {

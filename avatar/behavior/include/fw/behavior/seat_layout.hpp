@@ -40,10 +40,13 @@ inline constexpr float kMaxFacingFromViewerRad = 1.0471976f;
 /// `span_rad` (above 0, below 2 pi): another spread, to measure the choice.
 std::vector<Seat> seat_layout(int count, float span_rad = kSeatArcSpanRad);
 
+/// Neighbours' distance on that older arc: version 1 scenes were recorded so.
+inline constexpr float kCentreFacingArcSpacingMm = 420.0f;
 /// The layout before seats were turned toward their partners: an arc open
-/// toward the viewer, neighbours kSeatSpacingMm and at most kSeatAngleRad
-/// apart on it, over at most 270 degrees, every seat facing the arc's centre. A scene file of version
-/// 1 stores no seats; it was recorded on these (scene_file.hpp).
+/// toward the viewer, neighbours kCentreFacingArcSpacingMm and at most
+/// kSeatAngleRad apart on it, over at most 270 degrees, every seat facing
+/// the arc's centre. A scene file of version 1 stores no seats; it was
+/// recorded on these (scene_file.hpp).
 std::vector<Seat> centre_facing_arc_layout(int count);
 
 /// What a layout asks of heads and shows a viewer far away on +z: the
