@@ -58,13 +58,13 @@ void ClusterNode::on_down(const std::string& room, bridge::Down message) {
     held_down_.erase(room);
     if (!reply) return;  // Redis went away: the room asks for a roster when it is back
     const bool known = leases_.count(room) != 0;
-    Lease& lease = leases_[room];
-    const std::string before = lease.holder;
-    lease.holder = reply->type == RedisReply::Type::string ? reply->text : "";
-    lease.read = Clock::now();
+    Lease& read_lease = leases_[room];
+    const std::string before = read_lease.holder;
+    read_lease.holder = reply->type == RedisReply::Type::string ? reply->text : "";
+    read_lease.read = Clock::now();
     bool from_holder = false;
     for (bridge::Down& news : waiting) {
-      if (!lease.holder.empty() && news.owner == lease.holder) {
+      if (!read_lease.holder.empty() && news.owner == read_lease.holder) {
         from_holder = true;
         deliver(news);
       } else if (news.owner != before || before.empty()) {
@@ -73,7 +73,7 @@ void ClusterNode::on_down(const std::string& room, bridge::Down message) {
     }
     // A new owner, whose first news (its roster) may have been refused
     // before its lease was read: its roster is asked for again.
-    if (from_holder && known && before != lease.holder)
+    if (from_holder && known && before != read_lease.holder)
       if (auto target = services_.rooms.find(room)) target->ask_roster();
   });
 }

@@ -41,6 +41,8 @@ std::string Metrics::render(double physics_share, const AbuseLog& abuse) const {
          rejected_joins.load());
   family("facewire_uploads_total", "counter", "Avatar packages stored from uploads.", uploads.load());
   family("facewire_chat_lines_total", "counter", "Chat lines relayed.", chat_lines.load());
+  family("facewire_unsaid_lines_total", "counter",
+         "Chat lines shown but not said: the speech queue (--speech-queue) was full.", unsaid_lines.load());
   family("facewire_repreparations_started_total", "counter",
          "Stored avatars of another package format or generic face handed to be prepared again from their photo.",
          repreparations_started.load());

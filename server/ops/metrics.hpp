@@ -25,6 +25,7 @@ struct Metrics {
   std::atomic<std::uint64_t> rejected_joins{0};
   std::atomic<std::uint64_t> uploads{0};
   std::atomic<std::uint64_t> chat_lines{0};
+  std::atomic<std::uint64_t> unsaid_lines{0};  ///< lines shown but not said: the speech queue was full
   // Stored avatars whose package is of another format or generic face
   // version (avatar_store.hpp): handed to be prepared again from their
   // photo, prepared again, failed; refused for want of a photo.

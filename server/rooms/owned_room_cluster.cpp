@@ -129,6 +129,8 @@ bool OwnedRoom::take_seat_back(JoinRequest& request) {
   member.node = request.node;
   member.resume_hash = request.connection ? resume_hash(request.resume) : request.resume_hash;
   member.info.name = request.name;
+  member.language = request.language;  // they may have chosen another on the way back
+  simulation_.set_language(it->first, request.language);
   spdlog::info("room {}: {} is back as avatar {}", name_, request.name, it->first);
   if (request.connection) {
     member.stream = welcome(members_, member, request, name_, services_.config.tick_hz, services_.metrics);

@@ -37,7 +37,7 @@ Room::Room(const RoomServices& services, RoomRegistry& registry, std::string nam
            std::uint64_t seed, RoomRoleKind role)
     : services_(services), registry_(registry), name_(std::move(name)), persistent_(persistent),
       strand_(net::make_strand(services.workers)), timer_(strand_),
-      track_maker_(std::make_shared<RoomTrackMaker>(services.speech, strand_)),
+      track_maker_(std::make_shared<RoomTrackMaker>(services.speech, strand_, services.metrics.unsaid_lines)),
       simulation_(simulation_options(services.config, seed, track_maker_)), role_(make_role(*this, role)),
       kind_(role) {
   services_.metrics.rooms.fetch_add(1);

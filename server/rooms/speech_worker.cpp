@@ -53,7 +53,7 @@ void SpeechWorker::run() {
 }
 
 bool RoomTrackMaker::make(LineJob job, std::function<void(LineJob, LineToSay)> done) {
-  return worker_.submit([strand = strand_, room = room_, job = std::move(job), done = std::move(done)]() mutable {
+  const bool queued = worker_.submit([strand = strand_, room = room_, job = std::move(job), done = std::move(done)]() mutable {
     LineToSay line = make_line(job.text, job.language);
     boost::asio::post(strand, [room = std::move(room), job = std::move(job), line = std::move(line),
                                done = std::move(done)]() mutable {
@@ -62,6 +62,8 @@ bool RoomTrackMaker::make(LineJob job, std::function<void(LineJob, LineToSay)> d
       if (const auto alive = room.lock()) done(std::move(job), std::move(line));
     });
   });
+  if (!queued) refused_.fetch_add(1, std::memory_order_relaxed);
+  return queued;
 }
 
 }  // namespace fw::server

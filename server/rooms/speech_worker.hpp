@@ -13,7 +13,9 @@
 // rate) and a few ms per line, the queue fills only when many rooms chat
 // at their limits at once; then losing voices beats losing ticks.
 // Thread-safe: any thread submits; stop() and the destructor from one.
+#include <atomic>
 #include <condition_variable>
+#include <cstdint>
 #include <cstddef>
 #include <deque>
 #include <functional>
@@ -64,7 +66,10 @@ class SpeechWorker {
 class RoomTrackMaker final : public TrackMaker {
  public:
   using Strand = boost::asio::strand<boost::asio::thread_pool::executor_type>;
-  RoomTrackMaker(SpeechWorker& worker, Strand strand) : worker_(worker), strand_(std::move(strand)) {}
+  /// `refused` counts the lines the worker's full queue turned away
+  /// (Metrics::unsaid_lines), so that an operator sees voices lost to load.
+  RoomTrackMaker(SpeechWorker& worker, Strand strand, std::atomic<std::uint64_t>& refused)
+      : worker_(worker), strand_(std::move(strand)), refused_(refused) {}
   /// The room whose life the tracks handed back depend on (before any line).
   void bind(std::weak_ptr<const void> room) { room_ = std::move(room); }
   bool make(LineJob job, std::function<void(LineJob, LineToSay)> done) override;
@@ -72,6 +77,7 @@ class RoomTrackMaker final : public TrackMaker {
  private:
   SpeechWorker& worker_;
   Strand strand_;
+  std::atomic<std::uint64_t>& refused_;
   std::weak_ptr<const void> room_;
 };
 

@@ -224,6 +224,11 @@ bool RoomSimulation::restore_avatar(AvatarId id, const AvatarSetup& setup) {
   return true;
 }
 
+void RoomSimulation::set_language(AvatarId avatar, std::string language) {
+  const auto it = state_->avatars.find(avatar);
+  if (it != state_->avatars.end()) it->second.setup.language = std::move(language);
+}
+
 std::vector<float> RoomSimulation::mood(AvatarId avatar) const {
   if (!state_->room.contains(avatar)) return {};
   const behavior::EmotionPoint point = state_->room.mood(avatar);

@@ -109,6 +109,9 @@ class RoomSimulation {
   /// Seats an avatar under `id` (a room restored from another server);
   /// false if the id is taken or the room is full.
   bool restore_avatar(AvatarId id, const AvatarSetup& setup);
+  /// The language `avatar`'s next lines are said in ("": the room's): a
+  /// person taking a kept seat back may have chosen another.
+  void set_language(AvatarId avatar, std::string language);
   /// An avatar's mood (one value per primary emotion), and that mood given
   /// back after a restore.
   std::vector<float> mood(AvatarId avatar) const;

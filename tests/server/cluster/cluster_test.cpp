@@ -255,7 +255,8 @@ TEST(Cluster, KillingTheOwnerTheRoomGoesOnWithinFiveSeconds) {
   EXPECT_NE(cluster.owner_of("meet"), owner);
   // The person whose node died comes back to another node with their resume key: same seat.
   RunningServer& other = cluster.node(dead == 0 ? 1 : 0);
-  auto back = join_node(other, "meet", "P" + std::to_string(dead), dead_resume);
+  // They chose another language on the way back.
+  auto back = join_node(other, "meet", "P" + std::to_string(dead), dead_resume, "", "de");
   ASSERT_TRUE(back->welcome.has_value());
   EXPECT_EQ(back->welcome->you, dead_id) << "the seat kept for them is theirs again";
   std::vector<RoomTestClient*> after = survivors;
@@ -268,6 +269,19 @@ TEST(Cluster, KillingTheOwnerTheRoomGoesOnWithinFiveSeconds) {
       },
       20s))
       << "after the takeover everyone sees everyone again";
+  // Their lines are said in the language they came back with.
+  back->send_message(codec::Chat{0, "wieder da"});
+  RoomTestClient& listener = *survivors.front();
+  EXPECT_TRUE(eventually(
+      [&] {
+        pump_all(after, 100ms);
+        return !listener.speaking.empty() && listener.speaking.back().avatar == dead_id;
+      },
+      20s))
+      << "the returning person's line was not said";
+  if (!listener.speaking.empty()) {
+    EXPECT_EQ(listener.speaking.back().language, "de");
+  }
 }
 
 TEST(Cluster, RedisRestartsAndTheClusterRecovers) {

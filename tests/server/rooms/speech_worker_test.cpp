@@ -60,7 +60,8 @@ TEST(SpeechWorker, ARoomsLineComesBackOnItsStrandWhileTheRoomLives) {
   SpeechWorker worker(1, 8);
   net::thread_pool pool(1);
   const auto strand = net::make_strand(pool.get_executor());
-  RoomTrackMaker maker(worker, strand);
+  std::atomic<std::uint64_t> refused{0};
+  RoomTrackMaker maker(worker, strand, refused);
   auto room = std::make_shared<int>(0);
   maker.bind(room);
   std::atomic<int> on_strand{0}, elsewhere{0};
@@ -81,6 +82,29 @@ TEST(SpeechWorker, ARoomsLineComesBackOnItsStrandWhileTheRoomLives) {
   pool.join();
   EXPECT_EQ(on_strand.load(), 1);
   EXPECT_EQ(elsewhere.load(), 0) << "nothing handed back to a room that is gone";
+  EXPECT_EQ(refused.load(), 0u);
+}
+
+// A line that finds the queue full is refused, and counted for /metrics
+// (Metrics::unsaid_lines), so that voices lost to load show.
+TEST(SpeechWorker, ALineRefusedByAFullQueueIsCounted) {
+  SpeechWorker worker(1, 1);
+  net::thread_pool pool(1);
+  std::atomic<std::uint64_t> refused{0};
+  RoomTrackMaker maker(worker, net::make_strand(pool.get_executor()), refused);
+  auto room = std::make_shared<int>(0);
+  maker.bind(room);
+  Gate gate;
+  gate.block(worker);
+  const auto ignore = [](LineJob, LineToSay) {};
+  EXPECT_TRUE(maker.make({1, 1, "waits", "en"}, ignore));
+  EXPECT_FALSE(maker.make({1, 2, "finds the queue full", "en"}, ignore));
+  EXPECT_FALSE(maker.make({1, 3, "and so does this", "en"}, ignore));
+  EXPECT_EQ(refused.load(), 2u);
+  gate.release();
+  EXPECT_TRUE(eventually([&] { return worker.queued() == 0; }));
+  worker.stop();
+  pool.join();
 }
 
 // The room's strand ticks on while its writer's line waits for the worker:
@@ -89,7 +113,8 @@ TEST(SpeechWorker, ARoomTicksWhileItsLineIsMade) {
   SpeechWorker worker(1, 8);
   net::thread_pool pool(1);
   auto strand = net::make_strand(pool.get_executor());
-  auto maker = std::make_shared<RoomTrackMaker>(worker, strand);
+  std::atomic<std::uint64_t> refused{0};
+  auto maker = std::make_shared<RoomTrackMaker>(worker, strand, refused);
   struct Room {
     RoomSimulation simulation;
   };

@@ -100,6 +100,20 @@ TEST(TrackMaker, ATrackBackAfterTheRoomIsGoneIsDropped) {
   SUCCEED();
 }
 
+// A person back in a kept seat may bring another language: the lines after
+// it are made in that one (OwnedRoom::take_seat_back).
+TEST(TrackMaker, ALanguageChangedBetweenLinesIsTheNextLinesLanguage) {
+  Room room;
+  const AvatarId a = room.simulation.add_avatar({"a", true, "fr"});
+  room.simulation.set_language(a, "de");
+  room.simulation.chat(a, "wieder da");
+  room.maker->finish();
+  bool said_in_german = false;
+  for (const RoomEvent& e : room.simulation.take_events())
+    if (e.line) said_in_german = e.line->language == "de";
+  EXPECT_TRUE(said_in_german);
+}
+
 TEST(TrackMaker, AFullMakerLeavesTheLineUnsaidAndTellsTheWriter) {
   Room room;
   room.maker->full = true;
