@@ -188,19 +188,34 @@ struct BehaviorRoom::Impl {
       intent.attend.reset();
       intent.routine = Routine::visual_search;
       YawPitch from{};
+      float face_radius_rad = 0;
       for (const FaceSnapshot& s : room)
-        if (look->away_from && s.id == *look->away_from)
-          from = direction_angles(room_to_seat(f.snapshot.seat, s.eye_mid_room_mm) - f.eyes.eye_position_seat());
-      const YawPitch away = away_from_faces(f, from, look->away_offset, room);
+        if (look->away_from && s.id == *look->away_from) {
+          const glm::vec3 to_face = room_to_seat(f.snapshot.seat, s.eye_mid_room_mm) - f.eyes.eye_position_seat();
+          from = direction_angles(to_face);
+          // The face as perception bounds it (face_on_gaze): its area, or
+          // the attention cone about its eyes, whichever is wider.
+          face_radius_rad = std::max(kAttendConeRad, std::atan2(kFaceAreaRadiusMm, glm::length(to_face)));
+        }
+      const YawPitch away = away_from_faces(f, from, beyond_face_edge(look->away_offset, face_radius_rad), room);
       intent.look_seat_mm = f.eyes.eye_position_seat() + 1500.0f * direction_from_angles(away);
     }
     // Mimicry needs the mimicked face in view of the eyes, not just in mind.
     if (intent.mimic && intent.attend != intent.mimic) intent.mimic.reset();
   }
 
-  // A look away rests on no face: the drawn offset from `from`, else the
-  // same to the other side, else further down (below the ring of faces),
-  // else straight down.
+  // `offset` (a saccade's amplitude beyond the face's edge) lengthened by
+  // the face's own angular radius, so that the look leaves the face.
+  static YawPitch beyond_face_edge(YawPitch offset, float face_radius_rad) {
+    const float amplitude = std::hypot(offset.yaw_rad, offset.pitch_rad);
+    if (amplitude <= 0.0f) return {0.0f, -face_radius_rad};
+    const float scale = (amplitude + face_radius_rad) / amplitude;
+    return {offset.yaw_rad * scale, offset.pitch_rad * scale};
+  }
+
+  // A look away rests on no face: the drawn offset from `from`, else its
+  // mirror images, else as far straight down or up, else twice as far down
+  // (below the ring of faces).
   static YawPitch away_from_faces(const Face& f, YawPitch from, YawPitch offset,
                                   const std::vector<FaceSnapshot>& room) {
     const glm::vec3 eyes_room = f.snapshot.eye_mid_room_mm;
@@ -208,14 +223,17 @@ struct BehaviorRoom::Impl {
       const glm::vec3 d = seat_to_room(f.snapshot.seat, direction_from_angles(a)) - f.snapshot.seat.origin_mm;
       return face_on_gaze(f.id, eyes_room, glm::normalize(d), room).has_value();
     };
+    const float amplitude = std::hypot(offset.yaw_rad, offset.pitch_rad);
     const YawPitch candidates[] = {{from.yaw_rad + offset.yaw_rad, from.pitch_rad + offset.pitch_rad},
                                    {from.yaw_rad - offset.yaw_rad, from.pitch_rad + offset.pitch_rad},
-                                   {from.yaw_rad + offset.yaw_rad, from.pitch_rad + 2 * offset.pitch_rad},
-                                   {from.yaw_rad - offset.yaw_rad, from.pitch_rad + 2 * offset.pitch_rad},
-                                   {from.yaw_rad, from.pitch_rad + 3 * offset.pitch_rad}};
+                                   {from.yaw_rad + offset.yaw_rad, from.pitch_rad - offset.pitch_rad},
+                                   {from.yaw_rad - offset.yaw_rad, from.pitch_rad - offset.pitch_rad},
+                                   {from.yaw_rad, from.pitch_rad - amplitude},
+                                   {from.yaw_rad, from.pitch_rad + amplitude},
+                                   {from.yaw_rad, from.pitch_rad - 2 * amplitude}};
     for (const YawPitch& a : candidates)
       if (!on_a_face(a)) return a;
-    return candidates[4];
+    return candidates[6];
   }
 
   // The line being said: its track moves the jaw and lips (articulation

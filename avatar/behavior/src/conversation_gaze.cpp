@@ -19,9 +19,13 @@ double ConversationGaze::lognormal(double median) {
 }
 
 void ConversationGaze::draw_away_offset() {
-  std::uniform_real_distribution<float> unit(0, 1);
-  const float side = unit(rng_) < 0.5f ? -1.0f : 1.0f;
-  away_offset_ = {side * (0.26f + 0.26f * unit(rng_)), -(0.14f + 0.21f * unit(rng_))};
+  std::uniform_real_distribution<double> unit(0, 1);
+  const float amplitude = std::min(
+      static_cast<float>(std::exponential_distribution<double>(1.0 / kAwayAmplitudeRad)(rng_)), kAwayAmplitudeMaxRad);
+  // One of the four axes (0, 90, 180, 270 degrees) or of the four diagonals.
+  const int quarter = std::uniform_int_distribution<int>(0, 3)(rng_);
+  const double direction = 1.5707963 * quarter + (unit(rng_) < kAxisShare ? 0.0 : 0.7853982);
+  away_offset_ = {amplitude * static_cast<float>(std::cos(direction)), amplitude * static_cast<float>(std::sin(direction))};
 }
 
 std::optional<ConversationLook> ConversationGaze::step(const ConversationScene& scene,

@@ -40,9 +40,10 @@ struct ConversationScene {
 struct ConversationLook {
   std::optional<FaceId> attend;  ///< none: look away from `away_from`
   std::optional<FaceId> away_from;
-  /// Where a look away goes, from `away_from`'s direction: 10-25 degrees
-  /// to one side and 10-20 down, below the ring of faces (speakers look
-  /// away mostly downward; a look away is a short shift, not a search).
+  /// Where a look away goes beyond the edge of `away_from`'s face (the
+  /// edge perception gives it, added by the caller, who knows how far the
+  /// face is): a saccade of Eyes Alive's amplitudes and directions
+  /// (ConversationGaze::kAwayAmplitudeRad, kAxisShare).
   YawPitch away_offset{};
 };
 
@@ -75,6 +76,18 @@ class ConversationGaze {
   /// (log-normal median): between Argyle & Ingham's 1.18 s mean mutual
   /// glance (1972) and Rogers et al.'s 2.2 s mutual face gaze (2018).
   static constexpr double kMutualS = 1.6;
+  /// A look away is a saccade, and saccades in conversation are mostly
+  /// small: Lee, Badler & Badler ("Eyes Alive", SIGGRAPH 2002) found the
+  /// share of saccades of amplitude A falling as e^(-A / 6.9 deg). A look
+  /// away is one that leaves the face; the exponential has no memory, so
+  /// its amplitude beyond the face's edge follows the same law (mean 6.9
+  /// deg), up to the eyes' comfortable range.
+  static constexpr float kAwayAmplitudeRad = 0.1204f, kAwayAmplitudeMaxRad = 0.5236f;  // 6.9 and 30 deg
+  /// Eyes Alive's eight direction bins hold 70 % of saccades on the four
+  /// axes (15.5-20.4 % each) and 30 % on the diagonals (6.5-7.9 % each).
+  /// Which bin is which axis we could not confirm from the paper here, so
+  /// the axes share 70 % evenly, and so do the diagonals their 30 %.
+  static constexpr double kAxisShare = 0.704;
 
   explicit ConversationGaze(std::uint64_t seed);
 
