@@ -85,8 +85,9 @@ class ConversationGaze {
   static constexpr float kAwayAmplitudeRad = 0.1204f, kAwayAmplitudeMaxRad = 0.5236f;  // 6.9 and 30 deg
   /// Eyes Alive's eight direction bins hold 70 % of saccades on the four
   /// axes (15.5-20.4 % each) and 30 % on the diagonals (6.5-7.9 % each).
-  /// Which bin is which axis we could not confirm from the paper here, so
-  /// the axes share 70 % evenly, and so do the diagonals their 30 %.
+  /// Here the axes share their 70 % evenly, and the diagonals their 30 %:
+  /// the bins' differences within each group are small, and which way a
+  /// look away goes is also bounded by the faces around (away_from_faces).
   static constexpr double kAxisShare = 0.704;
 
   explicit ConversationGaze(std::uint64_t seed);
