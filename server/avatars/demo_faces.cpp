@@ -13,16 +13,21 @@ namespace {
 model::Appearance look_for(std::uint32_t index) {
   // Three distinct people first (light, dark, olive skin; blue, brown,
   // green eyes; brown, black, auburn hair), then mixtures of them.
+  // Named fields: Appearance has gained fields before (the sclera), and a
+  // positional list silently fills the wrong one (lip colour in the whites).
   static const std::array<model::Appearance, 3> kLooks = {{
-      {{0.90f, 0.72f, 0.62f}, {0.30f, 0.20f, 0.12f}, {0.30f, 0.48f, 0.70f}, {0.75f, 0.42f, 0.42f}},
-      {{0.45f, 0.30f, 0.22f}, {0.06f, 0.05f, 0.05f}, {0.28f, 0.17f, 0.08f}, {0.45f, 0.25f, 0.24f}},
-      {{0.76f, 0.58f, 0.42f}, {0.48f, 0.20f, 0.10f}, {0.30f, 0.50f, 0.30f}, {0.68f, 0.36f, 0.34f}},
+      {.skin = {0.90f, 0.72f, 0.62f}, .hair = {0.30f, 0.20f, 0.12f}, .iris = {0.30f, 0.48f, 0.70f},
+       .lips = {0.75f, 0.42f, 0.42f}},
+      {.skin = {0.45f, 0.30f, 0.22f}, .hair = {0.06f, 0.05f, 0.05f}, .iris = {0.28f, 0.17f, 0.08f},
+       .lips = {0.45f, 0.25f, 0.24f}},
+      {.skin = {0.76f, 0.58f, 0.42f}, .hair = {0.48f, 0.20f, 0.10f}, .iris = {0.30f, 0.50f, 0.30f},
+       .lips = {0.68f, 0.36f, 0.34f}},
   }};
   if (index < kLooks.size()) return kLooks[index];
   const auto& a = kLooks[index % 3];
   const auto& b = kLooks[(index / 3 + 1) % 3];
   const float t = static_cast<float>((index * 37) % 100) / 100.0f;
-  return {a.skin * (1 - t) + b.skin * t, b.hair, a.iris * t + b.iris * (1 - t), a.lips};
+  return {.skin = a.skin * (1 - t) + b.skin * t, .hair = b.hair, .iris = a.iris * t + b.iris * (1 - t), .lips = a.lips};
 }
 
 std::array<std::uint8_t, 3> to_srgb8(const glm::vec3& c) {

@@ -47,12 +47,13 @@ bool parse_size(const std::string& text, int& width, int& height) {
 
 // A different look per avatar, so a viewer tells them apart.
 model::Appearance look(std::size_t i) {
+  // Named fields, so that a field added to Appearance cannot take another's value.
   static const model::Appearance looks[] = {
-      {{0.86f, 0.66f, 0.55f}, {0.23f, 0.15f, 0.09f}, {0.30f, 0.45f, 0.62f}, {0.72f, 0.38f, 0.38f}},
-      {{0.62f, 0.44f, 0.33f}, {0.08f, 0.06f, 0.05f}, {0.28f, 0.18f, 0.10f}, {0.58f, 0.30f, 0.28f}},
-      {{0.93f, 0.78f, 0.68f}, {0.72f, 0.52f, 0.25f}, {0.35f, 0.55f, 0.35f}, {0.80f, 0.45f, 0.45f}},
-      {{0.45f, 0.30f, 0.22f}, {0.05f, 0.04f, 0.04f}, {0.20f, 0.12f, 0.07f}, {0.45f, 0.24f, 0.22f}},
-      {{0.80f, 0.60f, 0.45f}, {0.45f, 0.20f, 0.10f}, {0.40f, 0.40f, 0.30f}, {0.70f, 0.36f, 0.34f}},
+      {.skin = {0.86f, 0.66f, 0.55f}, .hair = {0.23f, 0.15f, 0.09f}, .iris = {0.30f, 0.45f, 0.62f}, .lips = {0.72f, 0.38f, 0.38f}},
+      {.skin = {0.62f, 0.44f, 0.33f}, .hair = {0.08f, 0.06f, 0.05f}, .iris = {0.28f, 0.18f, 0.10f}, .lips = {0.58f, 0.30f, 0.28f}},
+      {.skin = {0.93f, 0.78f, 0.68f}, .hair = {0.72f, 0.52f, 0.25f}, .iris = {0.35f, 0.55f, 0.35f}, .lips = {0.80f, 0.45f, 0.45f}},
+      {.skin = {0.45f, 0.30f, 0.22f}, .hair = {0.05f, 0.04f, 0.04f}, .iris = {0.20f, 0.12f, 0.07f}, .lips = {0.45f, 0.24f, 0.22f}},
+      {.skin = {0.80f, 0.60f, 0.45f}, .hair = {0.45f, 0.20f, 0.10f}, .iris = {0.40f, 0.40f, 0.30f}, .lips = {0.70f, 0.36f, 0.34f}},
   };
   model::Appearance a = looks[i % std::size(looks)];
   if (i >= std::size(looks)) a.hair *= 0.8f;  // beyond the palette: vary the hair
