@@ -77,10 +77,13 @@ void put(RgbaImage& image, int x, int y, glm::vec3 rgb, float alpha) {
 glm::vec3 skin_colour(glm::vec2 p, const Appearance& look) {
   glm::vec3 c = look.skin * (0.96f + 0.035f * value_noise(p * 24.0f) + 0.05f * value_noise(p * 6.0f));
   // Warmer cheeks and nose tip, darker toward the ears and under the jaw.
-  const glm::vec3 flush(0.08f, -0.03f, -0.02f);
-  c += flush * std::exp(-glm::dot(p - glm::vec2(-0.7f, -0.55f), p - glm::vec2(-0.7f, -0.55f)) / 0.06f);
-  c += flush * std::exp(-glm::dot(p - glm::vec2(0.7f, -0.55f), p - glm::vec2(0.7f, -0.55f)) / 0.06f);
-  c += flush * 0.7f * std::exp(-glm::dot(p - glm::vec2(0.0f, -0.58f), p - glm::vec2(0.0f, -0.58f)) / 0.02f);
+  // The warmth is faint and wide: a strong, narrow one read as two pink
+  // discs painted on, as if the face blushed all the time (a blush is the
+  // vascular layer's, when something causes it).
+  const glm::vec3 flush(0.035f, -0.012f, -0.008f);
+  c += flush * std::exp(-glm::dot(p - glm::vec2(-0.7f, -0.55f), p - glm::vec2(-0.7f, -0.55f)) / 0.14f);
+  c += flush * std::exp(-glm::dot(p - glm::vec2(0.7f, -0.55f), p - glm::vec2(0.7f, -0.55f)) / 0.14f);
+  c += flush * 0.7f * std::exp(-glm::dot(p - glm::vec2(0.0f, -0.58f), p - glm::vec2(0.0f, -0.58f)) / 0.03f);
   c *= 1.0f - 0.22f * std::clamp((std::abs(p.x) - 0.95f) / 0.45f, 0.0f, 1.0f);
   c *= 1.0f - 0.2f * std::clamp((-1.75f - p.y) / 0.3f, 0.0f, 1.0f);
   return c;
@@ -93,8 +96,13 @@ float hair_cover(glm::vec2 p) {
   const float hairline_y = 0.22f + std::sqrt(1.0f - across * across);
   const float strands = 0.06f * (value_noise(glm::vec2(p.x * 30.0f, p.y * 3.0f)) - 0.5f);
   float cover = soft_inside(hairline_y + strands - p.y, 0.05f);
-  // Hair at the temples, beyond the face outline above the ears.
-  const float temple = soft_inside(1.1f - std::abs(p.x), 0.1f) * std::clamp((p.y + 0.05f) / 0.3f, 0.0f, 1.0f);
+  // Hair at the temples, beyond the face outline above the ears. It thins
+  // out downward over a long, sloping edge (lower toward the back of the
+  // head, as hair falls behind the ear): a short level one read as a hard
+  // horizontal step at the temples, and the strands break it up.
+  const float behind = std::max(0.0f, std::abs(p.x) - 1.1f);
+  const float temple = soft_inside(1.1f - std::abs(p.x), 0.1f) *
+                       std::clamp((p.y + 0.25f + 0.6f * behind + 2.0f * strands) / 0.6f, 0.0f, 1.0f);
   cover = std::max(cover, temple);
   return cover;
 }
