@@ -58,7 +58,10 @@ test-asan: deps
 # Every fuzz target (or those FUZZ_TARGETS names) for FUZZ_SECONDS each,
 # going on from what earlier runs found (build/fuzz/NAME-grown); make test
 # runs each briefly from its seeds alone.
-fuzz: build
+# They are built with -O1 for it (tests/fuzz/fuzz_target.cmake, FW_FUZZ_OPTIMIZE).
+fuzz: deps
+	cmake --preset release -DFW_FUZZ_OPTIMIZE=ON
+	cmake --build --preset release -j $(JOBS)
 	sh tests/fuzz/run_fuzzers.sh build $(FUZZ_SECONDS) $(FUZZ_TARGETS)
 
 bench: build
