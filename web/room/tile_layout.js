@@ -10,8 +10,9 @@
 // two columns on a tall phone stage (two rows of faces twice as wide as a
 // row of three, and larger than a column of three, whose height would
 // limit them to a third of the stage each). The faces keep clear of the
-// self view: the tiles move up, or left, out of its corner, and an
-// arrangement that cannot is not chosen.
+// self view: the tiles move up, or left, out of its corner, or are laid out
+// beside or above it; an arrangement that overlaps it is not chosen unless
+// none is clear.
 import { FRAME_ASPECT } from './face_frame.js';
 
 const GAP = 6;
@@ -25,7 +26,7 @@ function selfTile(stageWidth, stageHeight) {
   return { x: stageWidth - w - GAP, y: stageHeight - h - GAP, w, h };
 }
 
-/** `count` tiles in `columns` columns, as large as the stage allows and centred; a short last row is centred too. */
+/** `count` tiles in `columns` columns, as large as the area (from the stage's top left) allows and centred in it; a short last row is centred too. */
 function grid(count, columns, stageWidth, stageHeight) {
   const rows = Math.ceil(count / columns);
   const cellWidth = (stageWidth - GAP * (columns + 1)) / columns;
@@ -62,13 +63,18 @@ function clearOfSelf(tiles, self) {
  */
 export function tileLayout(count, stageWidth, stageHeight) {
   const self = selfTile(stageWidth, stageHeight);
+  // The whole stage, or the stage less a strip beside or above the self view
+  // (when the tiles cannot move out of its way, a face alone on a phone).
+  const areas = [[stageWidth, stageHeight], [self.x - GAP, stageHeight], [stageWidth, self.y - GAP]];
   let best = null;
   let widest = null;  // on a stage too small to clear the self view, the faces go over it
   for (let columns = 1; columns <= count; ++columns) {
-    const tiles = grid(count, columns, stageWidth, stageHeight);
-    if (!widest || tiles[0].w > widest[0].w) widest = tiles;
-    const clear = clearOfSelf(tiles, self);
-    if (clear && (!best || clear[0].w > best[0].w)) best = clear;
+    for (const [width, height] of areas) {
+      const tiles = grid(count, columns, width, height);
+      if (!widest || tiles[0].w > widest[0].w) widest = tiles;
+      const clear = clearOfSelf(tiles, self);
+      if (clear && (!best || clear[0].w > best[0].w)) best = clear;
+    }
   }
   return { tiles: best ?? widest ?? [], self, nameBand: NAME_BAND };
 }
