@@ -13,7 +13,8 @@ import { FaceRenderer } from './face_renderer.js';
 import { RoomClient } from './room_client.js';
 import { MuteList } from './mute_list.js';
 import { ReadAloudPlayer } from './read_aloud_player.js';
-import { RoomView } from './room_view.js';
+import { RoomView, TILE_BACKGROUND_CSS } from './room_view.js';
+import { NECK_FADE_SHARE } from './face_frame.js';
 import { parseServers } from '../shared/server_list.js';
 
 const EXPRESSIONS = ['joy', 'sadness', 'anger', 'fear', 'surprise', 'disgust', 'cunning', 'teasing', 'blush'];
@@ -59,6 +60,7 @@ async function main() {
   $('room-name').textContent = identity.room;
   document.title = `facewire: ${identity.room}`;
   const canvas = $('room-canvas');
+  $('stage').style.setProperty('--tile-background', TILE_BACKGROUND_CSS);
   // Opaque: the shader's alpha is coverage, not transparency.
   const gl = canvas.getContext('webgl2', { antialias: true, alpha: false, preserveDrawingBuffer: true });
   if (!gl) return fail('this browser has no WebGL2, which the room needs');
@@ -313,7 +315,10 @@ function wireControls(client, mutes, toggleMute) {
   document.addEventListener('keydown', (event) => { if (event.key === 'Escape') menu.hidden = true; });
 }
 
-/** Names under the faces, each tile clickable; the self-view's frame. */
+/**
+ * Names under the faces, each tile clickable, the necks faded out above the
+ * names; the self-view's frame.
+ */
 function placeOverlays(client, view) {
   const overlay = $('overlay');
   const wanted = view.tiles.map((t) => ({ ...t, self: false }));
@@ -327,7 +332,9 @@ function placeOverlays(client, view) {
     name.className = 'name';
     const waiting = document.createElement('p');
     waiting.className = 'waiting';
-    tile.append(name, waiting);
+    const fade = document.createElement('div');
+    fade.className = 'fade';
+    tile.append(fade, name, waiting);
     overlay.append(tile);
   }
   wanted.forEach((t, i) => {
@@ -338,6 +345,8 @@ function placeOverlays(client, view) {
     const attention = client.attention.get(t.id);
     tile.classList.toggle('attends-you', !t.self && !t.muted && attention?.target === AttentionTarget.avatar && attention.targetAvatar === client.you);
     Object.assign(tile.style, { left: `${t.rect.x}px`, top: `${t.rect.y}px`, width: `${t.rect.w}px`, height: `${t.rect.h}px` });
+    const face = t.rect.h - view.nameBand;
+    Object.assign(tile.querySelector('.fade').style, { bottom: `${view.nameBand}px`, height: `${NECK_FADE_SHARE * face}px` });
     if (tile.querySelector('.name').textContent !== t.name) tile.querySelector('.name').textContent = t.name;
     tile.querySelector('.waiting').textContent = t.drawn ? '' : 'arriving…';
   });

@@ -12,13 +12,13 @@ import { decodeImage } from './face_renderer.js';
 import { NEUTRAL_FACE as NEUTRAL } from './mute_list.js';
 import { MM_PER_UNIT, VIEW_DISTANCE_MM, eyeMidMm, screenOrder, seatToRoom, serverSeat, viewSeats } from './view_geometry.js';
 import { tileLayout } from './tile_layout.js';
+import { FRAME_ABOVE_EYES, FRAME_ACROSS, FRAME_BELOW_EYES } from './face_frame.js';
 
 /** How long a face takes to turn to a new target in the view (s): the server's head moves as smoothly. */
 const RETARGET_S = 0.35;
-/** How much of the head a tile shows, in model units: its height with hair and some neck, and its width. */
-const TILE_SPAN_UNITS = 4.2;
-const TILE_WIDTH_UNITS = 3.1;
 const BACKGROUND = [0.16, 0.17, 0.2];
+/** A face tile's background as CSS: what the neck fades into over the canvas (room_page.js). */
+export const TILE_BACKGROUND_CSS = `rgb(${BACKGROUND.map((c) => Math.round(c * 255)).join(' ')})`;
 
 /** A face's place: translate(origin) * rotate_y(facing), model units. */
 const placeOf = (seat) => mat4.multiply(mat4.translation(seat.origin.map((v) => v / MM_PER_UNIT)), mat4.rotationY(seat.facingYawRad));
@@ -42,6 +42,8 @@ export class RoomView {
     this.vergence = Math.atan2(halfInterocular, VIEW_DISTANCE_MM);
     this.ownFace = null;
     this.tiles = [];
+    /** The band under each face tile that holds its name (tile_layout.js). */
+    this.nameBand = 0;
     this.frames = 0;
     /** When the viewer's own face was first drawn (performance.now()), for the page's tests. */
     this.selfDrawnMs = null;
@@ -131,6 +133,7 @@ export class RoomView {
     const infos = [...client.avatars.values()].map((a) => a.info);
     const others = client.you ? screenOrder(infos, client.you) : [];
     const layout = tileLayout(others.length, width, height);
+    this.nameBand = layout.nameBand;
     const seats = viewSeats(others.length, this.eyeMid);
     const viewPlaces = new Map(others.map((info, i) => [info.id, seats[i]]));
     const serverSeats = new Map(infos.map((info) => [info.id, serverSeat(info.seat)]));
@@ -205,14 +208,19 @@ export class RoomView {
     return reaim(decoded, serverAim, { yaw: 0, pitch: 0 });
   }
 
-  /** The viewer's eyes looking at a seat's face, framing the head in the tile. */
+  /**
+   * The viewer's eyes looking at a seat's face, framing its head and the top
+   * of its neck (face_frame.js) in the tile: the camera stays at the viewer's
+   * eyes, so a face that looks at the viewer looks into the camera.
+   */
   tileCamera(seat, rect, nameBand) {
     const eyes = seat.eyes.map((v) => v / MM_PER_UNIT);
-    // The middle of the head (a little below the eyes), and the span to fit.
-    const target = [eyes[0], eyes[1] - 0.3, eyes[2]];
+    const frameHeight = FRAME_ABOVE_EYES + FRAME_BELOW_EYES;
+    const target = [eyes[0], eyes[1] + (FRAME_ABOVE_EYES - FRAME_BELOW_EYES) / 2, eyes[2]];
     const distance = Math.hypot(...target);
     const aspect = rect.w / Math.max(1, rect.h - nameBand);
-    const spanY = Math.max(TILE_SPAN_UNITS, TILE_WIDTH_UNITS / aspect);
+    // A tile of another shape than the frame's shows more around it, never less.
+    const spanY = Math.max(frameHeight, FRAME_ACROSS / aspect);
     return this.camera({ position: [0, 0, 0], target }, 2 * Math.atan(spanY / 2 / distance), aspect);
   }
 
