@@ -106,6 +106,7 @@ model::RgbaImage RoomView::render(const RoomScene& scene) {
   draws.reserve(plan.others.size());
   for (const PlacedFace& face : plan.others) draws.push_back(draw_of(shown_[face.id], face.params, face.place));
   model::RgbaImage image = renderer_->render(draws, plan.layout.camera);
+  for (const PlacedFace& face : plan.others) fade_neck(image, plan.layout.camera, face.place, options_.background);
 
   // The self view is a picture of its own: drawn alone (nobody's neck
   // behind it) and copied into its tile.

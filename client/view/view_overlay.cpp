@@ -1,6 +1,8 @@
 #include "view_overlay.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 
 #include "bitmap_font.hpp"
 #include "frame_text.hpp"
@@ -15,13 +17,51 @@ constexpr Rgb kTileFrame = {200, 200, 210};
 
 int margin_of(const model::RgbaImage& image) { return std::max(2, image.height / 60); }
 
+// Where a face's neck fade starts and how long it is, in eye-to-chin heights
+// below the chin: the fade clears the top of the neck, the name sits in it.
+constexpr float kFadeStart = 0.1f, kFadeLength = 0.35f;
+
+// The chin of the face at `place`, and the height from its eyes to its chin, in pixels.
+struct ChinInFrame {
+  glm::vec3 chin;
+  float face_height;
+};
+ChinInFrame chin_in_frame(const model::RgbaImage& image, const render::Camera& camera, const glm::mat4& place) {
+  const auto pixel = [&](glm::vec3 p) {
+    return render::project_to_pixel(camera, glm::vec3(place * glm::vec4(p, 1.0f)), image.width, image.height);
+  };
+  const glm::vec3 chin = pixel(head_points().chin);
+  return {chin, std::max(1.0f, chin.y - pixel(head_points().eye_mid).y)};
+}
+
 }  // namespace
 
 int text_scale(int height) { return std::max(1, (height + 100) / 240); }
 
+void fade_neck(model::RgbaImage& image, const render::Camera& camera, const glm::mat4& place, glm::vec3 background) {
+  const ChinInFrame face = chin_in_frame(image, camera, place);
+  const glm::vec3 side = render::project_to_pixel(
+      camera, glm::vec3(place * glm::vec4(head_points().half_width, head_points().chin.y, 0.0f, 1.0f)), image.width,
+      image.height);
+  // The neck is narrower than the head: the head's width at the chin holds it however the head is turned.
+  const float half = 1.2f * std::max(std::abs(side.x - face.chin.x), 0.3f * face.face_height);
+  const float start = face.chin.y + kFadeStart * face.face_height, length = kFadeLength * face.face_height;
+  const glm::vec3 to = background * 255.0f;
+  const int x0 = std::max(0, static_cast<int>(face.chin.x - half));
+  const int x1 = std::min(image.width, static_cast<int>(face.chin.x + half) + 1);
+  for (int y = std::max(0, static_cast<int>(start)); y < image.height; ++y) {
+    const float t = std::clamp((static_cast<float>(y) - start) / length, 0.0f, 1.0f);
+    for (int x = x0; x < x1; ++x) {
+      std::uint8_t* p = image.at(x, y);
+      for (int c = 0; c < 3; ++c)
+        p[c] = static_cast<std::uint8_t>(std::lround(static_cast<float>(p[c]) + t * (to[c] - static_cast<float>(p[c]))));
+    }
+  }
+}
+
 void draw_name_under(model::RgbaImage& image, const render::Camera& camera, const glm::mat4& place, const std::string& name) {
-  const glm::vec3 chin = render::project_to_pixel(camera, glm::vec3(place * glm::vec4(head_points().chin, 1.0f)),
-                                                   image.width, image.height);
+  const ChinInFrame face = chin_in_frame(image, camera, place);
+  const glm::vec3 chin = face.chin;
   const glm::vec3 side = render::project_to_pixel(
       camera, glm::vec3(place * glm::vec4(head_points().half_width, head_points().chin.y, 0.0f, 1.0f)), image.width,
       image.height);
@@ -30,7 +70,9 @@ void draw_name_under(model::RgbaImage& image, const render::Camera& camera, cons
   const int room = std::max(6 * kGlyphAdvance * scale, static_cast<int>(2.3f * std::abs(side.x - chin.x)));
   const std::string shown = fit_text(name, room, scale);
   const int x = static_cast<int>(chin.x) - text_width(shown, scale) / 2;
-  draw_text(image, x, static_cast<int>(chin.y) + 3 * scale, shown, scale, kNameColour);
+  // In the fade, past its first third: on the background more than on the neck.
+  const float below = (kFadeStart + 0.35f * kFadeLength) * face.face_height;
+  draw_text(image, x, static_cast<int>(chin.y + below), shown, scale, kNameColour);
 }
 
 void draw_self_tile(model::RgbaImage& image, const PixelRect& tile, const std::string& name) {

@@ -1,6 +1,6 @@
 #pragma once
-// What the room view draws over its rendered frame: each face's name under
-// its chin, the self view's frame (and the photo in it until the viewer's
+// What the room view draws over its rendered frame: each face's neck faded
+// out and its name under its chin, the self view's frame (and the photo in it until the viewer's
 // own face is there), the last chat line as a caption.
 #include <string>
 
@@ -15,7 +15,14 @@ namespace fw::client {
 /// The scale of the font (font pixels per image pixel) in a frame `height` tall.
 int text_scale(int height);
 
-/// `name`, centred under the chin of the face standing at `place`.
+/// Fades the neck of the face standing at `place` into `background` (the
+/// renderer's, sRGB [0,1]) from a little under its chin down, so that the
+/// face ends there and the name under it reads as its caption rather than
+/// a label on a long neck (as the browser's tiles do, web/room/face_frame.js).
+void fade_neck(model::RgbaImage& image, const render::Camera& camera, const glm::mat4& place, glm::vec3 background);
+
+/// `name`, centred under the chin of the face standing at `place`, where
+/// fade_neck has cleared the neck.
 void draw_name_under(model::RgbaImage& image, const render::Camera& camera, const glm::mat4& place, const std::string& name);
 
 /// The self view's frame, with `name` in its bottom left corner.

@@ -1,5 +1,8 @@
 // The words in the room view's frames: names under the faces, the last chat
 // line as a caption, the built-in font they are drawn with.
+#include <algorithm>
+#include <cstdint>
+
 #include <gtest/gtest.h>
 
 #include "bitmap_font.hpp"
@@ -84,14 +87,30 @@ class RoomViewText : public ::testing::Test {
   RoomScene scene_;
 };
 
+// Each face ends under its chin (its neck fades into the background) and
+// its name is under it, in the fade, not on the face.
 TEST_F(RoomViewText, EachFaceHasItsNameUnderIt) {
   const model::RgbaImage image = view_->render(scene_);
   const FirstPersonLayout layout = first_person_layout(3, 640, 360);
+  const glm::vec3 background = render::RendererOptions{}.background * 255.0f;
   for (const glm::mat4& place : layout.places) {
-    const glm::vec3 chin = render::project_to_pixel(layout.camera, glm::vec3(place * glm::vec4(head_points().chin, 1.0f)), 640, 360);
+    const auto pixel = [&](glm::vec3 p) {
+      return render::project_to_pixel(layout.camera, glm::vec3(place * glm::vec4(p, 1.0f)), 640, 360);
+    };
+    const glm::vec3 chin = pixel(head_points().chin);
+    const int face_height = static_cast<int>(chin.y - pixel(head_points().eye_mid).y);
     const int x = static_cast<int>(chin.x), y = static_cast<int>(chin.y);
-    EXPECT_GT(letter_pixels(image, x - 30, y, x + 30, y + 14), 20) << "a name under the chin at " << x << "," << y;
+    EXPECT_GT(letter_pixels(image, x - 30, y, x + 30, y + face_height / 2 + 8), 20)
+        << "a name under the chin at " << x << "," << y;
     EXPECT_LT(letter_pixels(image, x - 30, y - 40, x + 30, y - 20), 5) << "none on the face";
+    // Well under the chin the neck has faded out: background, whatever the
+    // skin (where the self view is not drawn over it).
+    const int below = std::min(359, y + face_height);
+    const PixelRect& self = layout.self_tile;
+    if (x >= self.x - 1 && x <= self.x + self.width && below >= self.y - 1) continue;
+    const std::uint8_t* p = image.at(x, below);
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(p[c], background[c], 6.0) << "the neck goes on under the face at " << x << "," << below;
   }
 }
 
