@@ -118,6 +118,7 @@ void OwnedRoom::replace_deleted_avatar(const std::string& asset) {
 void OwnedRoom::join(JoinRequest request) {
   if (take_seat_back(request)) return;
   if (const auto refusal = refusal_of(request)) return refuse(request, refusal->first, refusal->second);
+  request.avatar = unworn_procedural_face(members_, services_.procedural_faces, request.avatar);
   const bool person = request.connection != nullptr || !request.node.empty();
   const std::uint32_t id = simulation_.add_avatar(AvatarSetup{request.name, person, request.language});
   if (id == 0) {

@@ -35,6 +35,26 @@ StoredAvatar stored_face_of(AvatarStore& store, const codec::AvatarInfo& info, c
 /// shown in place of an avatar its uploader deleted. `faces` is not empty.
 const StoredAvatar& procedural_face_for(const std::vector<StoredAvatar>& faces, const std::string& name);
 
+/// `wanted`, unless it is one of the procedural `faces` and someone among
+/// `members` already wears it: then the first of `faces` that nobody there
+/// wears (still `wanted` when all are worn). Two people without a photo
+/// who look alike cannot tell each other apart, nor a resident from them.
+template <class Members>
+const StoredAvatar& unworn_procedural_face(const Members& members, const std::vector<StoredAvatar>& faces,
+                                           const StoredAvatar& wanted) {
+  const auto worn = [&](const std::string& asset) {
+    for (const auto& [id, member] : members)
+      if (member.info.asset == asset) return true;
+    return false;
+  };
+  const bool procedural =
+      std::any_of(faces.begin(), faces.end(), [&](const StoredAvatar& f) { return f.asset == wanted.asset; });
+  if (!procedural || !worn(wanted.asset)) return wanted;
+  for (const StoredAvatar& face : faces)
+    if (!worn(face.asset)) return face;
+  return wanted;
+}
+
 /// `member` wears `face` from now on (its own was deleted by its uploader).
 void wear_face(Member& member, const StoredAvatar& face);
 

@@ -6,7 +6,10 @@
 #include "room.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <future>
+#include <map>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -332,6 +335,27 @@ TEST(InMemoryRoom, ASubscriberThatStopsReadingHasTicksSkippedAndThenGetsTheNewes
   EXPECT_TRUE(peer->errors.empty()) << peer->errors.front() << ": the encoders held, so every frame decodes";
   ASSERT_TRUE(peer->link);
   EXPECT_GT(peer->link->skipped_ticks, 0u) << "the client is told";
+}
+
+// Two people without a photo whose names choose the same procedural face
+// (procedural_face_for: by the name's hash) are shown with different ones:
+// two of one face cannot be told apart.
+TEST(InMemoryRoom, TwoPeopleWithoutAPhotoNeverWearTheSameFace) {
+  constexpr std::uint32_t kFaces = 4;
+  InMemoryServer server(InMemoryServer::test_config(kFaces));
+  const std::string first = "P0";
+  std::string second;
+  for (int i = 1; second.empty(); ++i) {
+    const std::string name = "P" + std::to_string(i);
+    if (std::hash<std::string>{}(name) % kFaces == std::hash<std::string>{}(first) % kFaces) second = name;
+  }
+  auto a = server.join("r", first);
+  auto b = server.join("r", second);
+  ASSERT_TRUE(a->welcome && b->welcome);
+  std::map<std::uint32_t, std::string> assets;
+  for (const codec::AvatarInfo& info : b->welcome->avatars) assets[info.id] = info.asset;
+  ASSERT_EQ(assets.size(), 2u);
+  EXPECT_NE(assets[a->welcome->you], assets[b->welcome->you]) << first << " and " << second << " look alike";
 }
 
 }  // namespace
