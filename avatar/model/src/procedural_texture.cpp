@@ -102,7 +102,7 @@ float hair_cover(glm::vec2 p) {
   // horizontal step at the temples, and the strands break it up.
   const float behind = std::max(0.0f, std::abs(p.x) - 1.1f);
   const float temple = soft_inside(1.1f - std::abs(p.x), 0.1f) *
-                       std::clamp((p.y + 0.25f + 0.6f * behind + 2.0f * strands) / 0.6f, 0.0f, 1.0f);
+                       std::clamp((p.y + 0.25f + 2.5f * behind + 2.0f * strands) / 0.6f, 0.0f, 1.0f);
   cover = std::max(cover, temple);
   return cover;
 }
