@@ -143,10 +143,15 @@ void FaceRenderer::Impl::draw_face(const GpuFace& face, const FaceDraw& draw) {
   // shaded, which a software renderer feels.
   const bool blood = std::any_of(draw.blush.begin(), draw.blush.end(), [](float b) { return b > 0.0f; }) ||
                      draw.pallor > 0.0f;
-  const ShaderUniforms& skin = use(blood ? PartShader::skin_with_blood : PartShader::skin);
-  bind_texture(kClosedLidUnit, face.closed_lid);
-  glUniform4fv(skin.closed_lid_rect, 1, glm::value_ptr(face.closed_lid_rect));
-  glUniform2fv(skin.lid_closure, 1, glm::value_ptr(draw.lid_closure));
+  // A face without a closed-lid layer has an empty rectangle: nothing to fade in.
+  const bool lids_closing = face.closed_lid_rect != glm::vec4(0.0f) &&
+                            (draw.lid_closure.x > 0.0f || draw.lid_closure.y > 0.0f);
+  const ShaderUniforms& skin = use(skin_shader(lids_closing, blood));
+  if (lids_closing) {
+    bind_texture(kClosedLidUnit, face.closed_lid);
+    glUniform4fv(skin.closed_lid_rect, 1, glm::value_ptr(face.closed_lid_rect));
+    glUniform2fv(skin.lid_closure, 1, glm::value_ptr(draw.lid_closure));
+  }
   if (blood) {
     bind_texture(kMasksAUnit, face.masks_a);
     bind_texture(kMasksBUnit, face.masks_b);
