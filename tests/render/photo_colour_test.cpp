@@ -92,6 +92,18 @@ TEST_F(PhotoColourTest, AFaceAtRestFacingTheCameraShowsItsTextureAsItIs) {
   }
 }
 
+TEST_F(PhotoColourTest, TheDarkestColoursKeepTheirSteps) {
+  // Colour textures hold linear light: in eight bits these sRGB values
+  // would all round to black, so the texture needs more.
+  const glm::u8vec3 skin(4, 3, 2);
+  const AvatarAppearance face = flat_face(skin);
+  const model::RgbaImage image = render(face);
+  for (const glm::vec2 p : kSkinPoints) {
+    const glm::ivec2 px = pixel(face, p);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(image.at(px.x, px.y)[c], skin[c], 1) << p.x << "," << p.y << " channel " << c;
+  }
+}
+
 TEST_F(PhotoColourTest, TurningTheHeadShadesTheSideTurnedFromTheLight) {
   const glm::u8vec3 skin(181, 122, 94);
   const AvatarAppearance face = flat_face(skin);
