@@ -5,12 +5,15 @@
 //   FW_BLOOD       the skin in a frame with blush or pallor
 //   FW_SPECULAR    an eyeball: a wet highlight
 //   FW_ALPHA_TEST  no multisampling: alpha under 0.5 is a hole
+//   FW_SQUARE_ROOT_COLOUR  colour textures hold the square root of linear
+//                  light (the native renderer's, for llvmpipe's speed);
+//                  without it they are sRGB textures, decoded on lookup
 // and none for the mouth cavity and the head shell. Variants rather than
 // branches on uniforms: a software rasteriser runs both sides of a branch
 // for every fragment, and a frame is mostly fragments.
 //
 // Colour is computed in linear light (colour textures are sRGB textures,
-// decoded on lookup) and encoded to sRGB here, because both targets store
+// decoded on lookup, or square roots squared here) and encoded to sRGB here, because both targets store
 // what they are given: a WebGL canvas cannot be sRGB, and natively an sRGB
 // framebuffer makes every multisampled fragment cost a quarter more.
 precision highp float;
@@ -92,8 +95,16 @@ vec3 encode_srgb(vec3 linear_colour) {
   return mix(c * 12.92, curve, step(vec3(0.0031308), c));
 }
 
+vec4 colour_texel(sampler2D colour_texture, vec2 uv) {
+  vec4 texel = texture(colour_texture, uv);
+#ifdef FW_SQUARE_ROOT_COLOUR
+  texel.rgb *= texel.rgb;
+#endif
+  return texel;
+}
+
 void main() {
-  vec4 texel = texture(u_texture, v_uv);
+  vec4 texel = colour_texel(u_texture, v_uv);
 #ifdef FW_CLOSED_LID
   // Closing lids: the skin that was over the eye in the photo fills the
   // eye hole of the texture. Looked up at rest coordinates (v_uv), like
@@ -104,7 +115,7 @@ void main() {
     float closure = v_uv.x < 0.5 ? u_lid_closure.x : u_lid_closure.y;
     vec2 edge = min(lid_uv, vec2(1.0) - lid_uv);
     float cover = closure * smoothstep(0.0, 0.12, min(edge.x, edge.y));
-    texel.rgb = mix(texel.rgb, texture(u_closed_lid, lid_uv).rgb, cover);
+    texel.rgb = mix(texel.rgb, colour_texel(u_closed_lid, lid_uv).rgb, cover);
     texel.a = max(texel.a, cover);
   }
 #endif

@@ -1,10 +1,9 @@
 #include "gpu_resources.hpp"
 
 #include <algorithm>
-#include <array>
-#include <cmath>
 #include <vector>
 
+#include "colour_mipmaps.hpp"
 #include "fw/model/mesh.hpp"
 
 namespace fw::render {
@@ -104,39 +103,24 @@ void update_mesh(GpuMesh& gpu, const model::Mesh& mesh) {
   replace(gpu.uvs, mesh.uvs);
 }
 
-std::vector<std::uint16_t> linear_light_texels(std::span<const std::uint8_t> srgb_rgba) {
-  std::array<std::uint16_t, 256> decoded{};
-  for (std::size_t v = 0; v < decoded.size(); ++v) {
-    const double e = static_cast<double>(v) / 255.0;
-    const double linear = e <= 0.04045 ? e / 12.92 : std::pow((e + 0.055) / 1.055, 2.4);
-    decoded[v] = static_cast<std::uint16_t>(std::lround(linear * 65535.0));
-  }
-  std::vector<std::uint16_t> out(srgb_rgba.size());
-  for (std::size_t i = 0; i < srgb_rgba.size(); ++i)
-    out[i] = i % 4 == 3 ? static_cast<std::uint16_t>(srgb_rgba[i] * 257) : decoded[srgb_rgba[i]];
-  return out;
-}
-
 Texture upload_texture(const model::RgbaImage& image, TexelEncoding encoding) {
-  std::vector<std::uint8_t> flipped(image.pixels.size());
-  const std::size_t row = static_cast<std::size_t>(image.width) * 4;
-  for (int y = 0; y < image.height; ++y)
-    std::copy_n(image.at(0, y), row, flipped.data() + static_cast<std::size_t>(image.height - 1 - y) * row);
   auto texture = generate<Texture, glGenTextures>();
   glBindTexture(GL_TEXTURE_2D, texture.get());
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   if (encoding == TexelEncoding::srgb_colour) {
-    // Decoded once here rather than on every lookup: llvmpipe decodes an
-    // sRGB texture's every texel it reads (eight for each trilinear sample)
-    // on its slower general path, a fifth of a frame. Sixteen bits keep the
-    // darks that eight linear bits would band; the mipmaps, averaged by GL
-    // from these, are averages of light as the sRGB texture's were.
-    const std::vector<std::uint16_t> linear = linear_light_texels(flipped);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_SHORT, linear.data());
+    // Made here, once, rather than decoded on every lookup (colour_mipmaps.hpp).
+    const std::vector<MipLevel> levels = square_root_light_mipmaps(image);
+    for (std::size_t i = 0; i < levels.size(); ++i)
+      glTexImage2D(GL_TEXTURE_2D, static_cast<GLint>(i), GL_RGBA8, levels[i].width, levels[i].height, 0, GL_RGBA,
+                   GL_UNSIGNED_BYTE, levels[i].texels.data());
   } else {
+    std::vector<std::uint8_t> flipped(image.pixels.size());
+    const std::size_t row = static_cast<std::size_t>(image.width) * 4;
+    for (int y = 0; y < image.height; ++y)
+      std::copy_n(image.at(0, y), row, flipped.data() + static_cast<std::size_t>(image.height - 1 - y) * row);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, flipped.data());
+    glGenerateMipmap(GL_TEXTURE_2D);
   }
-  glGenerateMipmap(GL_TEXTURE_2D);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);

@@ -1,11 +1,8 @@
 #pragma once
 // Uploading the renderer's resources to GL: shader program, meshes, textures.
-#include <cstdint>
 #include <optional>
-#include <span>
 #include <string>
 #include <string_view>
-#include <vector>
 
 #include "fw/model/image.hpp"
 #include "fw/model/mesh.hpp"
@@ -36,17 +33,12 @@ GpuMesh share_vertices(const GpuMesh& mesh, const std::vector<glm::uvec3>& trian
 void update_mesh(GpuMesh& gpu, const model::Mesh& mesh);
 
 /// What a texture's bytes hold: colours (sRGB-encoded; the texture holds
-/// them decoded, so a lookup returns linear light) or plain data such as
-/// masks.
+/// the square root of their linear light, which the shader squares, see
+/// colour_mipmaps.hpp) or plain data such as masks.
 enum class TexelEncoding { srgb_colour, linear_data };
 
-/// RGBA bytes with sRGB-encoded colour as 16-bit linear light (0..65535);
-/// alpha, which is not encoded, scaled to 16 bits.
-std::vector<std::uint16_t> linear_light_texels(std::span<const std::uint8_t> srgb_rgba);
-
-/// An RGBA texture with mipmaps, clamped at the edges: colour as 16-bit
-/// linear light, data as 8 bits. Rows are flipped on upload because images
-/// run top-down and texture v runs up.
+/// An RGBA8 texture with mipmaps, clamped at the edges. Rows are flipped on
+/// upload because images run top-down and texture v runs up.
 Texture upload_texture(const model::RgbaImage& image, TexelEncoding encoding);
 
 }  // namespace fw::render

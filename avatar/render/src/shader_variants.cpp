@@ -30,7 +30,8 @@ std::optional<std::array<ShaderVariant, kPartShaderCount>> build_part_shaders(st
                                                                                bool alpha_test, std::string& error) {
   std::array<ShaderVariant, kPartShaderCount> variants;
   for (std::size_t i = 0; i < kPartShaderCount; ++i) {
-    std::vector<std::string_view> defines;
+    // Colour textures come from upload_texture (colour_mipmaps.hpp).
+    std::vector<std::string_view> defines{"FW_SQUARE_ROOT_COLOUR"};
     if (alpha_test) defines.push_back("FW_ALPHA_TEST");
     switch (static_cast<PartShader>(i)) {
       case PartShader::plain: break;
