@@ -8,6 +8,7 @@
 
 #include "fw/render/offscreen_context.hpp"
 #include "gpu_resources.hpp"
+#include "opening_scissor.hpp"
 #include "shader_variants.hpp"
 
 namespace fw::embedded {
@@ -27,6 +28,9 @@ struct GpuFace {
   std::array<GpuMesh, 2> eyes;
   std::array<glm::vec3, 2> eye_centres{};
   std::vector<glm::uvec3> skin_triangles;  // for normals when the shape changes
+  std::vector<glm::vec3> skin_positions;   // the current shape's, for the openings' rectangles
+  std::array<std::vector<std::uint32_t>, 2> eye_holes;
+  std::vector<std::uint32_t> mouth_slit;
   Texture skin_texture, eye_texture, mouth_texture, closed_lid, masks_a, masks_b;
   glm::vec4 closed_lid_rect{0.0f};
 };
@@ -67,8 +71,21 @@ struct FaceRenderer::Impl {
     return shaders[static_cast<std::size_t>(kind)].uniforms;
   }
   void set_frame_uniforms(const Camera& camera);
-  void draw_face(const GpuFace& face, const FaceDraw& draw);
+  void draw_face(const GpuFace& face, const FaceDraw& draw, const Camera& camera);
+  void scissor_to_opening(const GpuFace& face, std::span<const std::uint32_t> outline, const glm::mat4& mvp);
 };
+
+void FaceRenderer::Impl::scissor_to_opening(const GpuFace& face, std::span<const std::uint32_t> outline,
+                                            const glm::mat4& mvp) {
+  std::vector<glm::vec3> points;
+  points.reserve(outline.size());
+  for (std::uint32_t v : outline)
+    if (v < face.skin_positions.size()) points.push_back(face.skin_positions[v]);
+  const auto rect = opening_rect(points, mvp, options.width, options.height);
+  if (!rect) return;  // drawn whole
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(rect->x, rect->y, rect->width, rect->height);
+}
 
 bool FaceRenderer::Impl::set_up_framebuffers(std::string& error) {
   GLint max_samples = 0;
@@ -137,7 +154,7 @@ void FaceRenderer::Impl::set_frame_uniforms(const Camera& camera) {
   }
 }
 
-void FaceRenderer::Impl::draw_face(const GpuFace& face, const FaceDraw& draw) {
+void FaceRenderer::Impl::draw_face(const GpuFace& face, const FaceDraw& draw, const Camera& camera) {
   // Nearest first: what lies behind (the eyeballs, the mouth cavity, the
   // head shell behind the face) then fails the depth test before it is
   // shaded, which a software renderer feels.
@@ -160,6 +177,7 @@ void FaceRenderer::Impl::draw_face(const GpuFace& face, const FaceDraw& draw) {
     glUniform1f(skin.pallor, draw.pallor);
   }
   draw_mesh(face.skin, face.skin_texture, skin, draw.model);
+  const glm::mat4 skin_mvp = camera.view_projection() * draw.model;
   if (!face.eye_layer) {
     draw_mesh(face.eye_covers, face.skin_texture, skin, draw.model);
   } else {
@@ -167,11 +185,15 @@ void FaceRenderer::Impl::draw_face(const GpuFace& face, const FaceDraw& draw) {
     for (std::size_t side = 0; side < 2; ++side) {
       const glm::vec2 yaw_pitch = draw.eye_yaw_pitch_rad[side];
       const glm::mat4 eye_model = draw.model * eye_transform(face.eye_centres[side], yaw_pitch.x, yaw_pitch.y);
+      scissor_to_opening(face, face.eye_holes[side], skin_mvp);
       draw_mesh(face.eyes[side], face.eye_texture, eye, eye_model);
+      glDisable(GL_SCISSOR_TEST);
     }
   }
   const ShaderUniforms& plain = use(PartShader::plain);
+  scissor_to_opening(face, face.mouth_slit, skin_mvp);
   draw_mesh(face.mouth, face.mouth_texture, plain, draw.model);
+  glDisable(GL_SCISSOR_TEST);
   // The shell is closed wherever it can be seen, with its triangles facing
   // out: its far side need not be drawn at all.
   glEnable(GL_CULL_FACE);
@@ -217,6 +239,9 @@ FaceId FaceRenderer::add_face(const model::GenericFace& face, const FaceTextures
     gpu.eye_centres[side] = face.eyes[side].centre;
   }
   gpu.skin_triangles = face.skin.triangles;
+  gpu.skin_positions = face.skin.positions;
+  gpu.eye_holes = face.eye_holes;
+  gpu.mouth_slit = face.mouth_slit;
   gpu.eye_layer = textures.eye.width > 0;
   if (!gpu.eye_layer) {
     std::vector<glm::uvec3> fans;
@@ -244,6 +269,7 @@ void FaceRenderer::set_face_shape(FaceId id, std::span<const glm::vec3> position
   mesh.uvs.assign(uvs.begin(), uvs.end());
   mesh.triangles = face.skin_triangles;
   update_mesh(face.skin, mesh);
+  face.skin_positions = std::move(mesh.positions);
 }
 
 model::RgbaImage FaceRenderer::render(std::span<const FaceDraw> draws, const Camera& camera) {
@@ -271,7 +297,7 @@ model::RgbaImage FaceRenderer::render(std::span<const FaceDraw> draws, const Cam
   impl.set_frame_uniforms(camera);
   for (const FaceDraw& draw : draws) {
     if (draw.face >= impl.faces.size()) continue;  // an id from another renderer: nothing to draw
-    impl.draw_face(impl.faces[draw.face], draw);
+    impl.draw_face(impl.faces[draw.face], draw, camera);
   }
   glBindVertexArray(0);
   glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
