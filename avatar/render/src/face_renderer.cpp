@@ -157,7 +157,8 @@ void FaceRenderer::Impl::set_frame_uniforms(const Camera& camera) {
 void FaceRenderer::Impl::draw_face(const GpuFace& face, const FaceDraw& draw, const Camera& camera) {
   // Nearest first: what lies behind (the eyeballs, the mouth cavity, the
   // head shell behind the face) then fails the depth test before it is
-  // shaded, which a software renderer feels.
+  // shaded, which a software renderer feels (llvmpipe only without
+  // multisampling; with it, the openings' scissors do what they can).
   const bool blood = std::any_of(draw.blush.begin(), draw.blush.end(), [](float b) { return b > 0.0f; }) ||
                      draw.pallor > 0.0f;
   // A face without a closed-lid layer has an empty rectangle: nothing to fade in.
