@@ -337,21 +337,19 @@ model::RgbaImage FaceRenderer::render(std::span<const FaceDraw> draws, const Cam
   const int w = impl.options.width, h = impl.options.height;
   glBindFramebuffer(GL_FRAMEBUFFER, impl.draw_framebuffer.get());
   glViewport(0, 0, w, h);
-  // Only the rectangle the faces can reach is cleared, resolved and read
-  // back; the rest of the image is the background.
+  // Only the rectangle the faces can reach is resolved and read back; the
+  // rest of the image is the background. (The clear stays whole: llvmpipe
+  // clears a whole target by filling memory, a scissored one by drawing.)
   const PixelRect drawn = impl.drawn_rect(draws, camera);
   model::RgbaImage image(w, h);
-  for (std::size_t i = 0; i < image.pixels.size(); i += 4)
-    std::copy(impl.background_texel.begin(), impl.background_texel.end(),
-              image.pixels.begin() + static_cast<std::ptrdiff_t>(i));
+  const std::size_t row = static_cast<std::size_t>(w) * 4;
+  for (std::size_t i = 0; i < row; i += 4) std::copy_n(impl.background_texel.data(), 4, image.at(0, 0) + i);
+  for (int y = 1; y < h; ++y) std::copy_n(image.at(0, 0), row, image.at(0, y));
   if (drawn.width <= 0 || drawn.height <= 0) return image;
   // Targets store what they are given, and the background is given in sRGB.
   const glm::vec3 background = impl.options.background;
   glClearColor(background.r, background.g, background.b, 1.0f);
-  glEnable(GL_SCISSOR_TEST);
-  glScissor(drawn.x, drawn.y, drawn.width, drawn.height);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  glDisable(GL_SCISSOR_TEST);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   // Only the head shell is culled (draw_face): the skin is open, and a
@@ -381,9 +379,9 @@ model::RgbaImage FaceRenderer::render(std::span<const FaceDraw> draws, const Cam
   std::vector<std::uint8_t> bottom_up(static_cast<std::size_t>(drawn.width) * drawn.height * 4);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(x0, y0, drawn.width, drawn.height, GL_RGBA, GL_UNSIGNED_BYTE, bottom_up.data());
-  const std::size_t row = static_cast<std::size_t>(drawn.width) * 4;
+  const std::size_t drawn_row = static_cast<std::size_t>(drawn.width) * 4;
   for (int y = y0; y < y1; ++y)
-    std::copy_n(bottom_up.data() + static_cast<std::size_t>(y - y0) * row, row, image.at(x0, h - 1 - y));
+    std::copy_n(bottom_up.data() + static_cast<std::size_t>(y - y0) * drawn_row, drawn_row, image.at(x0, h - 1 - y));
   return image;
 }
 

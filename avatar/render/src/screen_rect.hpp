@@ -7,8 +7,8 @@
 //   opening: its draw is scissored to the opening's rectangle, grown by a
 //   quarter (the texture's alpha may open the skin a little beyond the
 //   mesh's outline).
-// - A frame's faces lie within their heads' boxes: the clear, the resolve
-//   and the read-back cover only those boxes' rectangle.
+// - A frame's faces lie within their heads' boxes: the resolve and the
+//   read-back cover only those boxes' rectangle.
 #include <optional>
 #include <span>
 
