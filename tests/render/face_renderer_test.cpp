@@ -260,6 +260,40 @@ TEST_F(FaceRendererTest, EyeHolesShowNoBackgroundAtTheLargestGaze) {
   }
 }
 
+// Only the rectangle the faces can reach is drawn by GL; the rest of the
+// image is filled with the background as GL stores it. Either way it is
+// one colour: a pixel a step or two from it would be a seam between them.
+TEST(FaceRendererBackground, IsOneColourInsideAndOutsideWhatTheFacesReach) {
+  std::string error;
+  RendererOptions options;
+  options.width = options.height = 128;
+  options.background = {0.1f, 0.3f, 0.9f};
+  auto renderer = FaceRenderer::create(options, error);
+  ASSERT_NE(renderer, nullptr) << error;
+  const auto& face = model::generic_face();
+  const FaceId id = renderer->add_face(face, plain(model::make_skin_texture(face, model::Appearance{}, 128),
+                                                   model::make_eye_texture(face.eyes[0], model::Appearance{}),
+                                                   model::make_mouth_texture()));
+  // Small and off to one side: most of the image lies outside its rectangle.
+  const FaceDraw draw{id, glm::translate(glm::mat4(1.0f), glm::vec3(-1.5f, 1.0f, -6.0f)), {}};
+  const RgbaImage image = renderer->render({&draw, 1}, Camera::portrait(1.0f));
+  const std::uint8_t* corner = image.at(image.width - 1, image.height - 1);
+  int background = 0, near_background = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const std::uint8_t* p = image.at(x, y);
+      int distance = 0;
+      for (int c = 0; c < 4; ++c) distance = std::max(distance, std::abs(p[c] - corner[c]));
+      background += distance == 0;
+      near_background += distance > 0 && distance <= 2;
+    }
+  EXPECT_GT(background, image.width * image.height / 2);
+  EXPECT_LT(background, image.width * image.height) << "the face must be in the image";
+  EXPECT_EQ(near_background, 0);
+  EXPECT_EQ(corner[0], 26);
+  EXPECT_EQ(corner[2], 230);
+}
+
 TEST(FaceRendererCreate, RejectsImpossibleSizes) {
   std::string error;
   RendererOptions options;

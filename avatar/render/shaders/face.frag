@@ -5,12 +5,15 @@
 //   FW_BLOOD       the skin in a frame with blush or pallor
 //   FW_SPECULAR    an eyeball: a wet highlight
 //   FW_ALPHA_TEST  no multisampling: alpha under 0.5 is a hole
+//   FW_SQUARE_ROOT_COLOUR  colour textures hold the square root of linear
+//                  light (the native renderer's, for llvmpipe's speed);
+//                  without it they are sRGB textures, decoded on lookup
 // and none for the mouth cavity and the head shell. Variants rather than
 // branches on uniforms: a software rasteriser runs both sides of a branch
 // for every fragment, and a frame is mostly fragments.
 //
 // Colour is computed in linear light (colour textures are sRGB textures,
-// decoded on lookup) and encoded to sRGB here, because both targets store
+// decoded on lookup, or square roots squared here) and encoded to sRGB here, because both targets store
 // what they are given: a WebGL canvas cannot be sRGB, and natively an sRGB
 // framebuffer makes every multisampled fragment cost a quarter more.
 precision highp float;
@@ -78,13 +81,30 @@ float relighting(vec3 n, vec3 rest) {
 
 // The multisample resolve then averages encoded values: an edge pixel comes
 // out a little darker than a linear average would make it, an accepted cost.
+//
+// The curve's power 1/2.4 is fitted with square roots (within 0.25 of an
+// 8-bit step, so a channel differs from the exact curve's by at most one
+// step, in about one value of sixty): pow() is a logarithm and an
+// exponential, and a software renderer runs it for every fragment it
+// rasterises, hidden ones included under multisampling. Fit: chilliant,
+// "sRGB approximations for HLSL" (2012).
 vec3 encode_srgb(vec3 linear_colour) {
   vec3 c = clamp(linear_colour, 0.0, 1.0);
-  return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
+  vec3 s1 = sqrt(c), s2 = sqrt(s1), s3 = sqrt(s2);
+  vec3 curve = 0.662002687 * s1 + 0.684122060 * s2 - 0.323583601 * s3 - 0.0225411470 * c;
+  return mix(c * 12.92, curve, step(vec3(0.0031308), c));
+}
+
+vec4 colour_texel(sampler2D colour_texture, vec2 uv) {
+  vec4 texel = texture(colour_texture, uv);
+#ifdef FW_SQUARE_ROOT_COLOUR
+  texel.rgb *= texel.rgb;
+#endif
+  return texel;
 }
 
 void main() {
-  vec4 texel = texture(u_texture, v_uv);
+  vec4 texel = colour_texel(u_texture, v_uv);
 #ifdef FW_CLOSED_LID
   // Closing lids: the skin that was over the eye in the photo fills the
   // eye hole of the texture. Looked up at rest coordinates (v_uv), like
@@ -95,7 +115,7 @@ void main() {
     float closure = v_uv.x < 0.5 ? u_lid_closure.x : u_lid_closure.y;
     vec2 edge = min(lid_uv, vec2(1.0) - lid_uv);
     float cover = closure * smoothstep(0.0, 0.12, min(edge.x, edge.y));
-    texel.rgb = mix(texel.rgb, texture(u_closed_lid, lid_uv).rgb, cover);
+    texel.rgb = mix(texel.rgb, colour_texel(u_closed_lid, lid_uv).rgb, cover);
     texel.a = max(texel.a, cover);
   }
 #endif
@@ -120,7 +140,14 @@ void main() {
   // A wet eye reflects the key light: the one highlight the photo cannot
   // hold, since the eye turns.
   vec3 half_vector = normalize(normalize(u_light_direction) + normalize(u_camera_position - v_world));
-  colour += vec3(u_specular * pow(max(dot(n, half_vector), 0.0), 120.0));
+  // The 120th power as products of squares (64 + 32 + 16 + 8): pow() is a
+  // logarithm and an exponential for every fragment in a software renderer.
+  float s8 = max(dot(n, half_vector), 0.0);
+  s8 *= s8;
+  s8 *= s8;
+  s8 *= s8;
+  float s16 = s8 * s8, s32 = s16 * s16, s64 = s32 * s32;
+  colour += vec3(u_specular * s64 * s32 * s16 * s8);
 #endif
   o_colour = vec4(encode_srgb(colour), texel.a);
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "colour_mipmaps.hpp"
 #include "fw/model/mesh.hpp"
 
 namespace fw::render {
@@ -103,16 +104,23 @@ void update_mesh(GpuMesh& gpu, const model::Mesh& mesh) {
 }
 
 Texture upload_texture(const model::RgbaImage& image, TexelEncoding encoding) {
-  std::vector<std::uint8_t> flipped(image.pixels.size());
-  const std::size_t row = static_cast<std::size_t>(image.width) * 4;
-  for (int y = 0; y < image.height; ++y)
-    std::copy_n(image.at(0, y), row, flipped.data() + static_cast<std::size_t>(image.height - 1 - y) * row);
   auto texture = generate<Texture, glGenTextures>();
   glBindTexture(GL_TEXTURE_2D, texture.get());
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  const GLint format = encoding == TexelEncoding::srgb_colour ? GL_SRGB8_ALPHA8 : GL_RGBA8;
-  glTexImage2D(GL_TEXTURE_2D, 0, format, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, flipped.data());
-  glGenerateMipmap(GL_TEXTURE_2D);
+  if (encoding == TexelEncoding::srgb_colour) {
+    // Made here, once, rather than decoded on every lookup (colour_mipmaps.hpp).
+    const std::vector<MipLevel> levels = square_root_light_mipmaps(image);
+    for (std::size_t i = 0; i < levels.size(); ++i)
+      glTexImage2D(GL_TEXTURE_2D, static_cast<GLint>(i), GL_RGBA8, levels[i].width, levels[i].height, 0, GL_RGBA,
+                   GL_UNSIGNED_BYTE, levels[i].texels.data());
+  } else {
+    std::vector<std::uint8_t> flipped(image.pixels.size());
+    const std::size_t row = static_cast<std::size_t>(image.width) * 4;
+    for (int y = 0; y < image.height; ++y)
+      std::copy_n(image.at(0, y), row, flipped.data() + static_cast<std::size_t>(image.height - 1 - y) * row);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, flipped.data());
+    glGenerateMipmap(GL_TEXTURE_2D);
+  }
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);

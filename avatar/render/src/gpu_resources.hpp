@@ -32,11 +32,12 @@ GpuMesh share_vertices(const GpuMesh& mesh, const std::vector<glm::uvec3>& trian
 /// the rest normals stay.
 void update_mesh(GpuMesh& gpu, const model::Mesh& mesh);
 
-/// What a texture's bytes hold: colours (sRGB-encoded, decoded to linear
-/// light on lookup) or plain data such as masks.
+/// What a texture's bytes hold: colours (sRGB-encoded; the texture holds
+/// the square root of their linear light, which the shader squares, see
+/// colour_mipmaps.hpp) or plain data such as masks.
 enum class TexelEncoding { srgb_colour, linear_data };
 
-/// An RGBA texture with mipmaps, clamped at the edges. Rows are flipped on
+/// An RGBA8 texture with mipmaps, clamped at the edges. Rows are flipped on
 /// upload because images run top-down and texture v runs up.
 Texture upload_texture(const model::RgbaImage& image, TexelEncoding encoding);
 

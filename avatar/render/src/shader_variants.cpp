@@ -20,17 +20,24 @@ std::string with_defines(std::string_view source, std::span<const std::string_vi
   return out;
 }
 
+PartShader skin_shader(bool lids_closing, bool blood) {
+  if (lids_closing) return blood ? PartShader::skin_closing_lids_with_blood : PartShader::skin_closing_lids;
+  return blood ? PartShader::skin_with_blood : PartShader::plain;
+}
+
 std::optional<std::array<ShaderVariant, kPartShaderCount>> build_part_shaders(std::string_view vertex_source,
                                                                                std::string_view fragment_source,
                                                                                bool alpha_test, std::string& error) {
   std::array<ShaderVariant, kPartShaderCount> variants;
   for (std::size_t i = 0; i < kPartShaderCount; ++i) {
-    std::vector<std::string_view> defines;
+    // Colour textures come from upload_texture (colour_mipmaps.hpp).
+    std::vector<std::string_view> defines{"FW_SQUARE_ROOT_COLOUR"};
     if (alpha_test) defines.push_back("FW_ALPHA_TEST");
     switch (static_cast<PartShader>(i)) {
       case PartShader::plain: break;
-      case PartShader::skin: defines.push_back("FW_CLOSED_LID"); break;
-      case PartShader::skin_with_blood: defines.insert(defines.end(), {"FW_CLOSED_LID", "FW_BLOOD"}); break;
+      case PartShader::skin_closing_lids: defines.push_back("FW_CLOSED_LID"); break;
+      case PartShader::skin_closing_lids_with_blood: defines.insert(defines.end(), {"FW_CLOSED_LID", "FW_BLOOD"}); break;
+      case PartShader::skin_with_blood: defines.push_back("FW_BLOOD"); break;
       case PartShader::eye: defines.push_back("FW_SPECULAR"); break;
     }
     auto program = build_program(vertex_source, with_defines(fragment_source, defines), error);

@@ -11,8 +11,14 @@
 
 namespace fw::render {
 
-enum class PartShader { plain, skin, skin_with_blood, eye };
-inline constexpr std::size_t kPartShaderCount = 4;
+// The skin uses plain when its lids are open and it has no blood colour:
+// those lookups would change nothing, and llvmpipe pays for every one.
+enum class PartShader { plain, skin_closing_lids, skin_closing_lids_with_blood, skin_with_blood, eye };
+inline constexpr std::size_t kPartShaderCount = 5;
+
+/// The skin's variant for a frame: `lids_closing` if either lid closes at
+/// all, `blood` if any blush or pallor shows.
+PartShader skin_shader(bool lids_closing, bool blood);
 
 /// `source` with a `#define NAME` line for each of `defines` after its first
 /// line (the #version line, which must stay first).
