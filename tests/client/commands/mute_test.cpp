@@ -119,7 +119,10 @@ TEST(Mute, AMutedPersonsLinesAreNotShownAndTheirFaceHoldsStill) {
             << " steps changed\n";
   ASSERT_GE(muted.frames, 10) << "the muting viewer hardly drew bob\n" << muting.transcript();
   ASSERT_GE(shown.frames, 10) << "the other viewer hardly drew bob\n" << watching.transcript();
-  EXPECT_GT(shown.largest, 3.0) << "the unmuted face moves and smiles";
+  // How far a smile moves the mean over the face's square depends on the
+  // face's contrast (a darker procedural face changes fewer steps of grey
+  // than a light one: 3.1 to 6.9 seen); the muted face's is exactly 0.
+  EXPECT_GT(shown.largest, 1.5) << "the unmuted face moves and smiles";
   EXPECT_GE(shown.steps_that_changed, shown.frames / 3);
   // A still face renders the same pixels, frame after frame.
   EXPECT_EQ(muted.steps_that_changed, 0) << "the muted face moved (the packages: "
