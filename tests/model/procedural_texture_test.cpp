@@ -34,6 +34,23 @@ TEST(ProceduralTexture, LipsAreRedderThanCheeksAndHairIsDark) {
   EXPECT_LT(texel_at(skin, face, {0.0f, 1.5f})[0], texel_at(skin, face, {0.0f, 0.6f})[0] - 60) << "hair vs forehead";
 }
 
+// The relief a low-polygon mesh cannot shade is painted in: the eye
+// sockets, the crease of each upper lid and the underside of the nose are
+// darker than the open cheek and forehead, and the upper lip darker than the
+// lower. Without it a procedural face read as a flat mask.
+TEST(ProceduralTexture, HollowsOfTheFaceAreShaded) {
+  const GenericFace& face = generic_face();
+  const RgbaImage skin = make_skin_texture(face, Appearance{}, 256);
+  const auto red = [&](glm::vec2 p) { return static_cast<int>(texel_at(skin, face, p)[0]); };
+  const int forehead = red({0.0f, 0.7f}), cheek = red({0.75f, -0.55f});
+  for (const float side : {-1.0f, 1.0f}) {
+    EXPECT_LT(red({side * 0.42f, 0.16f}) + 15, forehead) << "eye socket, side " << side;
+  }
+  EXPECT_LT(red({0.07f, -0.8f}) + 20, cheek) << "under the nose";
+  EXPECT_LT(red({0.0f, -1.38f}) + 12, cheek) << "under the lower lip";
+  EXPECT_LT(red({0.15f, -1.03f}) + 15, red({0.15f, -1.2f})) << "upper lip against lower lip";
+}
+
 TEST(ProceduralTexture, FollowsTheAppearance) {
   const GenericFace& face = generic_face();
   Appearance dark;

@@ -74,6 +74,46 @@ void put(RgbaImage& image, int x, int y, glm::vec3 rgb, float alpha) {
   px[3] = static_cast<std::uint8_t>(std::clamp(alpha, 0.0f, 1.0f) * 255.0f + 0.5f);
 }
 
+// A soft bump of height 1 at `centre`, falling off over `radii`.
+float blob(glm::vec2 p, glm::vec2 centre, glm::vec2 radii) {
+  const glm::vec2 d = (p - centre) / radii;
+  return std::exp(-glm::dot(d, d));
+}
+
+// The light a face's relief keeps from its own hollows, painted into the
+// skin as a portrait painter or a game's baked ambient occlusion would: the
+// mesh is low-polygon, and without it a procedural face reads as a flat
+// mask (eye sockets, the sides and underside of the nose, the crease of the
+// upper lid, the fold from nose to mouth, the hollow under the lower lip).
+// A factor on the skin's colour: under 1 in a hollow, a little over 1 where
+// a ridge (cheekbone, nose tip) catches the light.
+float relief_shade(glm::vec2 p) {
+  const float ax = std::abs(p.x);  // the face is symmetric
+  const glm::vec2 q(ax, p.y);
+  float shade = 1.0f;
+  // The eye socket: the hollow between brow and upper lid, deepest toward
+  // the nose, and the lighter one under the lower lid.
+  shade -= 0.16f * blob(q, {0.42f, 0.16f}, {0.26f, 0.09f});
+  shade -= 0.06f * blob(q, {0.47f, -0.13f}, {0.22f, 0.07f});
+  // The upper lid's crease, a thin line parallel to the lid's upper edge.
+  const float lid_top = 0.075f * std::sqrt(std::max(0.0f, 1.0f - ((ax - 0.49f) / 0.23f) * ((ax - 0.49f) / 0.23f)));
+  if (ax > 0.26f && ax < 0.72f)
+    shade -= 0.14f * std::exp(-std::pow((p.y - (lid_top + 0.055f)) / 0.018f, 2.0f));
+  // The nose: its sides in shadow, its underside darker, its tip and the
+  // bridge a little lit.
+  shade -= 0.12f * blob(q, {0.17f, -0.42f}, {0.06f, 0.25f});
+  shade -= 0.2f * blob(q, {0.07f, -0.8f}, {0.12f, 0.035f});
+  shade += 0.06f * blob(q, {0.0f, -0.56f}, {0.07f, 0.08f});
+  shade += 0.025f * blob(q, {0.0f, -0.2f}, {0.05f, 0.2f});
+  // The fold from the nose's wing toward the mouth's corner, faint.
+  const float fold = distance_to_segment(q, {0.3f, -0.74f}, {0.5f, -1.08f});
+  shade -= 0.07f * std::exp(-(fold / 0.035f) * (fold / 0.035f));
+  // The hollow under the lower lip, and the cheekbones catching the light.
+  shade -= 0.12f * blob(q, {0.0f, -1.38f}, {0.2f, 0.05f});
+  shade += 0.03f * blob(q, {0.68f, -0.3f}, {0.2f, 0.12f});
+  return shade;
+}
+
 glm::vec3 skin_colour(glm::vec2 p, const Appearance& look) {
   glm::vec3 c = look.skin * (0.96f + 0.035f * value_noise(p * 24.0f) + 0.05f * value_noise(p * 6.0f));
   // Warmer cheeks and nose tip, darker toward the ears and under the jaw.
@@ -86,7 +126,7 @@ glm::vec3 skin_colour(glm::vec2 p, const Appearance& look) {
   c += flush * 0.7f * std::exp(-glm::dot(p - glm::vec2(0.0f, -0.58f), p - glm::vec2(0.0f, -0.58f)) / 0.03f);
   c *= 1.0f - 0.22f * std::clamp((std::abs(p.x) - 0.95f) / 0.45f, 0.0f, 1.0f);
   c *= 1.0f - 0.2f * std::clamp((-1.75f - p.y) / 0.3f, 0.0f, 1.0f);
-  return c;
+  return c * relief_shade(p);
 }
 
 // Hair above the hairline (an arc like the mesh outline, a little lower so
@@ -151,7 +191,11 @@ glm::vec3 face_colour(glm::vec2 p, const Appearance& look, const FeatureBoxes& b
         soft_inside(inside(p, lm::kOuterLipBegin, lm::kOuterLipEnd) ? -to_lip_edge : to_lip_edge, 0.02f);
     if (lip_cover > 0.0f) {
       const float inner = distance_to_polyline(p, lm::kInnerLipBegin, lm::kInnerLipEnd);
-      c = glm::mix(c, look.lips * (0.75f + 0.25f * std::min(1.0f, inner / 0.05f)), 0.85f * lip_cover);
+      // The upper lip faces down and away from the light, the lower one up
+      // toward it (a soft sheen along its middle).
+      const bool upper = p.y > landmark(62).y;
+      const float facing = upper ? 0.82f : 1.0f + 0.08f * blob(p, {0.0f, -1.2f}, {0.18f, 0.03f});
+      c = glm::mix(c, look.lips * facing * (0.75f + 0.25f * std::min(1.0f, inner / 0.05f)), 0.85f * lip_cover);
     }
   }
   // Brows, thick at the inner end and tapering outward, with hair texture.
@@ -170,8 +214,14 @@ glm::vec3 face_colour(glm::vec2 p, const Appearance& look, const FeatureBoxes& b
   // Lashes: a dark line along each upper lid, a lighter one along the lower.
   for (const int begin : {lm::kEyeRightBegin, lm::kEyeLeftBegin}) {
     if (!(begin == lm::kEyeRightBegin ? boxes.eye_right : boxes.eye_left).contains(p)) continue;
-    const float upper = distance_to_polyline(p, begin, begin + 4);
-    c = glm::mix(c, glm::vec3(0.08f, 0.06f, 0.05f), soft_inside(upper - 0.012f, 0.012f));
+    // The upper lashes thicken toward the outer corner, as real ones do
+    // (and as an eye's outline is drawn to read at a distance): a thin even
+    // line made the eyes look small.
+    float along = 0.0f;
+    const float upper = distance_to_polyline(p, begin, begin + 4, &along);
+    const float from_outer = begin == lm::kEyeRightBegin ? along : 1.0f - along;
+    const float lash_width = 0.02f - 0.01f * from_outer;
+    c = glm::mix(c, glm::vec3(0.08f, 0.06f, 0.05f), soft_inside(upper - lash_width, 0.012f));
     const glm::vec2 lower[] = {landmark(begin + 3), landmark(begin + 4), landmark(begin + 5), landmark(begin)};
     float d_lower = 1e9f;
     for (int i = 0; i < 3; ++i) d_lower = std::min(d_lower, distance_to_segment(p, lower[i], lower[i + 1]));
