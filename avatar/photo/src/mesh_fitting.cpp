@@ -15,7 +15,7 @@ namespace {
 
 // Half the template's closed-lip slit: each inner lip keeps this far from
 // the mid-line between them.
-constexpr float kHalfSlit = 0.006f;
+constexpr float kHalfSlit = 0.0f;
 // A little smoothing so one misplaced landmark bends the mesh gently.
 constexpr float kRegularization = 1e-2f;
 
@@ -57,10 +57,9 @@ ModelLandmarks landmarks_for_fit(const ModelLandmarks& landmarks) {
   for (const auto& [upper, lower] : {std::pair{61, 67}, {62, 66}, {63, 65}}) {
     glm::vec2& u = out[static_cast<std::size_t>(upper)];
     glm::vec2& l = out[static_cast<std::size_t>(lower)];
-    if (u.y - l.y < 2 * kHalfSlit) {
-      const float middle = 0.5f * (u.y + l.y);
-      u.y = middle + kHalfSlit;
-      l.y = middle - kHalfSlit;
+    if (true) {
+      const glm::vec2 middle = 0.5f * (u + l);
+      u = middle; l = middle;
     }
   }
   return out;

@@ -39,13 +39,6 @@ bool tells_expression(std::size_t i) {
   return on_right_brow(i) || on_left_brow(i) || in(i, lm::kEyeRightBegin, lm::kEyeLeftEnd) || on_mouth(i);
 }
 
-// How the picture of landmark i moves under a morph at full intensity: the
-// skin's motion less its texture's slide (see morph.hpp).
-glm::vec2 picture_motion(const model::GenericFace& generic, const model::Morph& morph, std::size_t i) {
-  const std::uint32_t v = generic.landmark_vertices[i];
-  return glm::vec2(morph.vertex_delta[v]) - morph.uv_delta[v] * generic.texture_frame.size;
-}
-
 // Least squares with box bounds by coordinate descent: small (a few dozen
 // unknowns), convex, and exact in each coordinate.
 std::vector<double> solve_bounded(const std::vector<std::vector<double>>& columns, const std::vector<double>& target,
@@ -132,6 +125,11 @@ void keep_eye_centres(const ModelLandmarks& photo, ModelLandmarks& neutral) {
 }
 
 }  // namespace
+
+glm::vec2 picture_motion(const model::GenericFace& generic, const model::Morph& morph, std::size_t i) {
+  const std::uint32_t v = generic.landmark_vertices[i];
+  return glm::vec2(morph.vertex_delta[v]) - morph.uv_delta[v] * generic.texture_frame.size;
+}
 
 PhotoExpression estimate_expression(const model::GenericFace& generic, const ModelLandmarks& landmarks) {
   const auto& neutral_face = model::landmark_template();
