@@ -11,9 +11,16 @@
 #include "polyline_distance.hpp"
 
 namespace fw::photo {
-namespace {
-
 namespace lm = model::landmarks;
+
+float lip_opening(const ModelLandmarks& landmarks) {
+  float gap = 0;
+  for (const auto& [upper, lower] : {std::pair{61, 67}, {62, 66}, {63, 65}})
+    gap += (landmarks[static_cast<std::size_t>(upper)].y - landmarks[static_cast<std::size_t>(lower)].y) / 3.0f;
+  return gap;
+}
+
+namespace {
 
 std::vector<cv::Point2f> texture_points(const ModelLandmarks& landmarks, std::initializer_list<int> indices,
                                         const model::TextureFrame& frame, int size) {
@@ -28,14 +35,25 @@ std::vector<cv::Point> rounded(const std::vector<cv::Point2f>& points) {
   return out;
 }
 
-// How dark the line between closed lips is against the lips around it: the
-// lips' median colour scaled by this. Measured on the committed portrait
-// with closed lips (grace_hopper.jpg), whose line is about half as bright
-// as her lips.
+// How dark the line between closed lips is: the lips' median colour scaled
+// by this. About half their brightness reads as the shadow where lips
+// meet; much lighter and the lips look smeared together, much darker and
+// the line reads as a gap.
 constexpr float kLineShade = 0.55f;
+
+// Lips further apart than this (model units) show teeth or the mouth's
+// dark between them. dlib's points on closed lips lie within about 0.015
+// (a pixel or two at 80 px between the eyes): twice that is apart.
 constexpr float kApart = 0.03f;
 
-// The lips' median colour: the ring between the outer and the inner lip.
+// Half the line's width, model units (0.4 mm; a third of a pixel in the
+// default 320 px texture, with a pixel's soft edge either side).
+constexpr float kLineHalfWidth = 0.006f;
+
+bool lips_apart(const ModelLandmarks& landmarks) { return lip_opening(landmarks) > kApart; }
+
+// The lips' median colour, within the outer lip's outline (closed at rest:
+// no opening inside it).
 cv::Vec3f median_lip_colour(const cv::Mat& texture, const ModelLandmarks& neutral, const model::TextureFrame& frame) {
   cv::Mat ring = cv::Mat::zeros(texture.size(), CV_8U);
   cv::fillPoly(ring, std::vector<std::vector<cv::Point>>{rounded(texture_points(
@@ -58,15 +76,8 @@ cv::Vec3f median_lip_colour(const cv::Mat& texture, const ModelLandmarks& neutra
 
 }  // namespace
 
-float lips_apart(const ModelLandmarks& landmarks) {
-  float gap = 0;
-  for (const auto& [upper, lower] : {std::pair{61, 67}, {62, 66}, {63, 65}})
-    gap += (landmarks[static_cast<std::size_t>(upper)].y - landmarks[static_cast<std::size_t>(lower)].y) / 3.0f;
-  return gap;
-}
-
 cv::Mat fill_mouth_opening(const cv::Mat& texture, const ModelLandmarks& landmarks, const model::TextureFrame& frame) {
-  if (lips_apart(landmarks) < kApart) return texture.clone();
+  if (!lips_apart(landmarks)) return texture.clone();
   cv::Mat mask = cv::Mat::zeros(texture.size(), CV_8U);
   cv::fillPoly(mask, std::vector<std::vector<cv::Point>>{rounded(
                          texture_points(landmarks, {60, 61, 62, 63, 64, 65, 66, 67}, frame, texture.cols))},
@@ -80,7 +91,7 @@ cv::Mat fill_mouth_opening(const cv::Mat& texture, const ModelLandmarks& landmar
 }
 
 void draw_lip_line(cv::Mat& texture, const ModelLandmarks& photo, const ModelLandmarks& neutral, const model::TextureFrame& frame) {
-  if (lips_apart(photo) < kApart) return;
+  if (!lips_apart(photo)) return;
   const int size = texture.cols;
   std::vector<cv::Point2f> line = texture_points(neutral, {lm::kMouthCornerRight, 60}, frame, size);
   for (const auto& [upper, lower] : {std::pair{61, 67}, {62, 66}, {63, 65}})
@@ -89,9 +100,7 @@ void draw_lip_line(cv::Mat& texture, const ModelLandmarks& photo, const ModelLan
                                        frame, size));
   for (const cv::Point2f& p : texture_points(neutral, {64, lm::kMouthCornerLeft}, frame, size)) line.push_back(p);
   const cv::Vec3f shade = median_lip_colour(texture, neutral, frame) * kLineShade;
-  // Sizes at 84 px per unit (the default 320 px texture), scaled with it.
-  const float scale = static_cast<float>(size) / frame.size / 84.0f;
-  const float half_width = 0.5f * scale;
+  const float half_width = kLineHalfWidth * static_cast<float>(size) / frame.size;
   cv::Rect area = cv::boundingRect(line);
   area.x -= 3, area.y -= 3, area.width += 6, area.height += 6;
   area &= cv::Rect(0, 0, texture.cols, texture.rows);

@@ -12,20 +12,26 @@
 
 namespace fw::photo {
 
+/// How far apart the inner lips are, model units: the mean of the three
+/// upper-lower pairs' heights (negative where dlib crosses closed lips).
+float lip_opening(const ModelLandmarks& landmarks);
+
 /// The aligned face texture with the photo's mouth opening filled from the
-/// lips around it (OpenCV inpainting, Telea).
+/// lips around it (OpenCV inpainting, Telea), when the lips are apart; as it
+/// is when they meet (the person's own line between them stays).
 /// @param[in] texture    the aligned face texture (BGR), with the photo's expression
 /// @param[in] landmarks  the photo's landmarks (model frame)
 /// @param[in] frame      the texture's frame
 cv::Mat fill_mouth_opening(const cv::Mat& texture, const ModelLandmarks& landmarks, const model::TextureFrame& frame);
 
-/// Draws onto `texture` (BGR, the neutral face's) the line where closed lips
-/// meet: from corner to corner between the inner lips, a pixel or so wide at
-/// 84 px per model unit, no lighter than the lips' own colour in shadow and
+/// Draws onto `texture` (BGR, the neutral face's, its opening filled) the
+/// line where closed lips meet: from corner to corner between the inner lips, a pixel or so wide in
+/// the default 320 px texture, no lighter than the lips' own colour in shadow and
 /// fading toward the corners. Darker pixels already there (the photo's own
 /// line) stay as they are.
 /// @param[in] neutral  the neutral landmarks (model frame), lips closed
-float lips_apart(const ModelLandmarks& landmarks);
+/// @param[in] photo    the photo's landmarks: nothing is drawn when its lips
+///                     meet, its own line being there already
 void draw_lip_line(cv::Mat& texture, const ModelLandmarks& photo, const ModelLandmarks& neutral, const model::TextureFrame& frame);
 
 }  // namespace fw::photo

@@ -82,8 +82,10 @@ void close_mouth(ModelLandmarks& mouth) {
   };
   constexpr std::array<Pair, 3> kPairs = {Pair{61, 67, {49, 50}, {59, 58}}, Pair{62, 66, {51, 51}, {57, 57}},
                                           Pair{63, 65, {52, 53}, {56, 55}}};
-  // Closed lips keep the generic face's slit: lips squeezed onto one line
-  // would fold the picture between them.
+  // The landmarks keep the generic face's slit between closed lips: the
+  // texture's spline needs distinct points (lips squeezed onto one line
+  // would fold the picture between them). The mesh shuts it
+  // (landmarks_for_fit), so that nothing of the mouth's inside shows at rest.
   const float slit = neutral_face[62].y - neutral_face[66].y;
   float middle = 0;
   for (const Pair& pair : kPairs) {
@@ -115,7 +117,7 @@ void close_mouth(ModelLandmarks& mouth) {
 // An expression moves the lids, not the eyes: each eye's landmarks keep
 // their centre, which the model frame is built on.
 void keep_eye_centres(const ModelLandmarks& photo, ModelLandmarks& neutral) {
-  for (const auto [begin, end] : {std::pair{lm::kEyeRightBegin, lm::kEyeRightEnd},
+  for (const auto& [begin, end] : {std::pair{lm::kEyeRightBegin, lm::kEyeRightEnd},
                                   std::pair{lm::kEyeLeftBegin, lm::kEyeLeftEnd}}) {
     glm::vec2 drift(0.0f);
     for (int i = begin; i < end; ++i)
