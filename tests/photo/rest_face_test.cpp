@@ -43,13 +43,13 @@ float lip_gap(const Landmarks& p) {
 }
 
 // Lips that meet. dlib reads 0.017 on a photo of closed lips (Grace
-// Hopper's), but 0.05-0.06 on her avatar's render, whose lips meet in the
+// Hopper's) but about 0.05 on her avatar's render, whose lips meet in the
 // mesh and show her own line between them: a render is softer than the
 // photo (her texture holds 59 px per unit where her photo has 81), and dlib's
 // shape regression weighs the whole face. Lips apart read 0.09 and more (the
 // astronaut's and Jesper's neutral mouths when the photo's teeth and a slit
 // showed between them: 0.088 and 0.095; their photos: 0.13 and 0.19).
-constexpr float kClosedLipGap = 0.07f;
+constexpr float kClosedLipGap = 0.06f;
 
 float au(const PrepReport& report, int unit, codec::AuSide side) {
   return report.photo_expression[static_cast<std::size_t>(codec::au_channel(unit, side))];
