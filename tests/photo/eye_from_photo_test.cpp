@@ -108,6 +108,35 @@ TEST_F(EyeFromPhotoTest, TheEyeTextureHasTheAstronautsOwnIris) {
   expect_iris_from_photo(photo, avatar);
 }
 
+// The astronaut's irises sit high in her eyes, their tops under the upper
+// lids (0.016 and 0.034 units above the landmarks' middle): at rest the avatar's
+// iris sits as high, not centred with white showing above it.
+TEST_F(EyeFromPhotoTest, TheIrisSitsAsHighBehindTheLidsAsInThePhoto) {
+  const PreparedAvatar avatar = prepare(test::load_astronaut());
+  const cv::Mat eye_texture = decode(avatar.package.eye);
+  ASSERT_FALSE(eye_texture.empty());
+  cv::Mat gray;
+  cv::cvtColor(eye_texture, gray, cv::COLOR_BGR2GRAY);
+  // The iris's edges down the middle column: the first and the last rows
+  // darker than halfway between the white beside the iris and the darkest.
+  const cv::Mat column = gray.col(gray.cols / 2);
+  double darkest = 0;
+  cv::minMaxLoc(column, &darkest);
+  const double white = gray.at<std::uint8_t>(gray.rows / 2, gray.cols / 8);
+  int top = -1, bottom = -1;
+  for (int row = 0; row < gray.rows; ++row)
+    if (column.at<std::uint8_t>(row) < 0.5 * (white + darkest)) {
+      if (top < 0) top = row;
+      bottom = row;
+    }
+  ASSERT_GE(top, 0);
+  const float rows_above_centre = 0.5f * static_cast<float>(gray.rows) - 0.5f * static_cast<float>(top + bottom + 1);
+  // Her irises' rise turns the eyeball's texture by about 2.4 of its 96 rows;
+  // the iris left centred reads 1 row (its pattern is not symmetric), moved
+  // as in the photo 4.
+  EXPECT_GT(rows_above_centre, 2.5f) << "the iris is centred on the eyeball, below where the photo shows it";
+}
+
 TEST_F(EyeFromPhotoTest, GlassesStayOutOfTheIris) {
   const cv::Mat photo = cv::imread(test::test_photo("grace_hopper.jpg"), cv::IMREAD_COLOR);
   ASSERT_FALSE(photo.empty());

@@ -29,6 +29,26 @@ TEST(FitMesh, TheTemplatesOwnLandmarksGiveTheGenericFace) {
   EXPECT_LT(worst, 0.02f);
 }
 
+// Closed lips meet in the fit, so that at rest no slit shows the mouth's
+// inside; lips that are parted stay parted, and neither folds the mesh.
+TEST(FitMesh, ClosedLipsMeetAndPartedLipsStayApart) {
+  const model::GenericFace& generic = model::generic_face();
+  const auto vertex = [&](int landmark) { return generic.landmark_vertices[static_cast<std::size_t>(landmark)]; };
+  std::string note;
+  const MeshFit closed = fit_mesh(generic, template_landmarks(), note);
+  for (const auto& [upper, lower] : {std::pair{61, 67}, {62, 66}, {63, 65}})
+    EXPECT_EQ(closed.fitted_xy[vertex(upper)], closed.fitted_xy[vertex(lower)]) << upper << " and " << lower;
+  ModelLandmarks parted = template_landmarks();
+  for (const int lower : {65, 66, 67}) parted[static_cast<std::size_t>(lower)].y -= 0.15f;
+  const MeshFit open = fit_mesh(generic, parted, note);
+  EXPECT_NEAR(open.fitted_xy[vertex(62)].y - open.fitted_xy[vertex(66)].y,
+              parted[62].y - parted[66].y, 1e-4f);
+  for (const MeshFit* fit : {&closed, &open}) {
+    const auto problems = folds(*fit);
+    EXPECT_TRUE(problems.empty()) << problems.front();
+  }
+}
+
 // Landmarks that cross each other fold any mesh pinned to them; the fit
 // gives up some of their shape instead of refusing the photo.
 TEST(FitMesh, CrossedLandmarksAreFittedWithoutAFoldAndSaySo) {

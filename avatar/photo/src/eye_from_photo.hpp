@@ -21,7 +21,8 @@ struct EyeTexture {
 };
 
 /// The better-seen of the two eyes (more iris visible, more contrast) gives
-/// the iris and the white for both. `sampled_iris` colours the procedural
+/// the iris and the white for both; the iris is as large, and sits as high
+/// behind the lids at rest, as in the photo (FORMAT.md, "The eye"). `sampled_iris` colours the procedural
 /// eye used when neither eye's iris is found.
 EyeTexture make_eye_texture_from_photo(const cv::Mat& photo, const Alignment& alignment, const ModelLandmarks& landmarks,
                                        const model::EyeLayer& eye, std::array<std::uint8_t, 3> sampled_iris, int size);

@@ -162,6 +162,8 @@ std::optional<FoundIris> find_iris(const cv::Mat& photo, const Alignment& alignm
   }
 
   FoundIris iris;
+  iris.offset = texture_px_to_model(disc->centre, frame, kCropSize) - centre;
+  iris.radius = disc->radius * kCropUnits / static_cast<float>(kCropSize);
   iris.sclera_rgb = sclera_colour(crop, opening, *disc);
   iris.contrast = disc->score();
   // Iris pixels brighter than halfway to the white are a catchlight or a

@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <opencv2/core.hpp>
 
@@ -22,6 +23,11 @@ struct FoundIris {
   cv::Mat polar;
   glm::vec3 mean_rgb{0.0f};  ///< mean of the visible iris outside the pupil, [0,1]
   glm::vec3 sclera_rgb{0.0f};  ///< the visible white, its brightness clamped, [0,1]
+  /// Where the iris's centre lies from the middle of the eye's six landmarks,
+  /// model units, upright (+y up): most irises sit a little high, their top
+  /// under the upper lid.
+  glm::vec2 offset{0.0f};
+  float radius = 0;  ///< model units: kIrisRadiusUnits within 15 %
   float visible_fraction = 0;  ///< of the iris disc, between the lids and free of glare
   float contrast = 0;          ///< white minus iris, 8-bit luminance levels
 };

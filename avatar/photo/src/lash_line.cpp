@@ -3,27 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "polyline_distance.hpp"
+
 namespace fw::photo {
 namespace {
-
-struct Nearest {
-  float distance = 1e9f;
-  float along = 0;  ///< 0 at the polyline's first point .. 1 at its last
-};
-
-Nearest nearest_on(const std::vector<cv::Point2f>& line, cv::Point2f p) {
-  Nearest best;
-  for (std::size_t i = 0; i + 1 < line.size(); ++i) {
-    const cv::Point2f a = line[i], ab = line[i + 1] - line[i];
-    const float t = std::clamp((p - a).dot(ab) / std::max(1e-6f, ab.dot(ab)), 0.0f, 1.0f);
-    const float d = static_cast<float>(cv::norm(p - (a + t * ab)));
-    if (d < best.distance) best = {d, (static_cast<float>(i) + t) / static_cast<float>(line.size() - 1)};
-  }
-  return best;
-}
-
-// 1 within `half_width` of the line, fading to 0 over one more pixel.
-float line_cover(float distance, float half_width) { return std::clamp(1.0f + half_width - distance, 0.0f, 1.0f); }
 
 void darken(cv::Vec3b& px, float amount, float to) {
   for (int c = 0; c < 3; ++c) px[c] = cv::saturate_cast<std::uint8_t>(px[c] * (1.0f - amount * (1.0f - to)));
@@ -61,7 +44,7 @@ void draw_lash_lines(cv::Mat& lid, const std::array<std::vector<cv::Point2f>, 2>
       for (int x = area.x; x < area.x + area.width; ++x) {
         const cv::Point2f p(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
         cv::Vec3b& px = lid.at<cv::Vec3b>(y, x);
-        const Nearest top = nearest_on(upper, p), bottom = nearest_on(lower, p), fold = nearest_on(crease, p);
+        const NearestOnPolyline top = nearest_on(upper, p), bottom = nearest_on(lower, p), fold = nearest_on(crease, p);
         // The crease: a faint shadow, strongest over the middle of the lid.
         const float middle = std::clamp(1.0f - std::abs(fold.along - 0.5f) / 0.45f, 0.0f, 1.0f);
         darken(px, 0.14f * middle * std::exp(-(fold.distance * fold.distance) / (crease_spread * crease_spread)), 0.0f);

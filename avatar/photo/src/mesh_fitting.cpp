@@ -13,9 +13,10 @@
 namespace fw::photo {
 namespace {
 
-// Half the template's closed-lip slit: each inner lip keeps this far from
-// the mid-line between them.
-constexpr float kHalfSlit = 0.006f;
+// Inner lips closer than this (model units) are closed lips: the template's
+// closed slit is 0.015 at the middle, dlib's points on closed lips lie a
+// pixel or two apart or cross.
+constexpr float kClosedLipGap = 0.02f;
 // A little smoothing so one misplaced landmark bends the mesh gently.
 constexpr float kRegularization = 1e-2f;
 
@@ -57,11 +58,11 @@ ModelLandmarks landmarks_for_fit(const ModelLandmarks& landmarks) {
   for (const auto& [upper, lower] : {std::pair{61, 67}, {62, 66}, {63, 65}}) {
     glm::vec2& u = out[static_cast<std::size_t>(upper)];
     glm::vec2& l = out[static_cast<std::size_t>(lower)];
-    if (u.y - l.y < 2 * kHalfSlit) {
-      const float middle = 0.5f * (u.y + l.y);
-      u.y = middle + kHalfSlit;
-      l.y = middle - kHalfSlit;
-    }
+    // They meet: at rest nothing between them (the cavity, the photo's
+    // teeth) shows. Their whole points meet, not just their heights, so the
+    // upper lip's edge lies exactly on the lower's and no crack opens
+    // between them.
+    if (u.y - l.y < kClosedLipGap) u = l = 0.5f * (u + l);
   }
   return out;
 }

@@ -18,9 +18,10 @@ struct MeshFit {
   ThinPlateSpline warp;              ///< template frame -> this face
 };
 
-/// The landmarks as the fit uses them: the inner lips kept at least a slit
-/// apart (dlib often puts closed lips on top of each other, which would
-/// fold the mesh at the mouth).
+/// The landmarks as the fit uses them: inner lips that are closed (closer
+/// than the template's closed slit and a little more, or crossed, as dlib
+/// often puts closed lips) made to meet, each pair at its middle, so that
+/// the mouth slit is shut at rest. Parted lips are kept as they are.
 ModelLandmarks landmarks_for_fit(const ModelLandmarks& landmarks);
 
 /// Fits the generic face to the landmarks, never folding a triangle: the

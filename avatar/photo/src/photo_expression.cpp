@@ -39,13 +39,6 @@ bool tells_expression(std::size_t i) {
   return on_right_brow(i) || on_left_brow(i) || in(i, lm::kEyeRightBegin, lm::kEyeLeftEnd) || on_mouth(i);
 }
 
-// How the picture of landmark i moves under a morph at full intensity: the
-// skin's motion less its texture's slide (see morph.hpp).
-glm::vec2 picture_motion(const model::GenericFace& generic, const model::Morph& morph, std::size_t i) {
-  const std::uint32_t v = generic.landmark_vertices[i];
-  return glm::vec2(morph.vertex_delta[v]) - morph.uv_delta[v] * generic.texture_frame.size;
-}
-
 // Least squares with box bounds by coordinate descent: small (a few dozen
 // unknowns), convex, and exact in each coordinate.
 std::vector<double> solve_bounded(const std::vector<std::vector<double>>& columns, const std::vector<double>& target,
@@ -89,8 +82,10 @@ void close_mouth(ModelLandmarks& mouth) {
   };
   constexpr std::array<Pair, 3> kPairs = {Pair{61, 67, {49, 50}, {59, 58}}, Pair{62, 66, {51, 51}, {57, 57}},
                                           Pair{63, 65, {52, 53}, {56, 55}}};
-  // Closed lips keep the generic face's slit: lips squeezed onto one line
-  // would fold the picture between them.
+  // The landmarks keep the generic face's slit between closed lips: the
+  // texture's spline needs distinct points (lips squeezed onto one line
+  // would fold the picture between them). The mesh shuts it
+  // (landmarks_for_fit), so that nothing of the mouth's inside shows at rest.
   const float slit = neutral_face[62].y - neutral_face[66].y;
   float middle = 0;
   for (const Pair& pair : kPairs) {
@@ -122,7 +117,7 @@ void close_mouth(ModelLandmarks& mouth) {
 // An expression moves the lids, not the eyes: each eye's landmarks keep
 // their centre, which the model frame is built on.
 void keep_eye_centres(const ModelLandmarks& photo, ModelLandmarks& neutral) {
-  for (const auto [begin, end] : {std::pair{lm::kEyeRightBegin, lm::kEyeRightEnd},
+  for (const auto& [begin, end] : {std::pair{lm::kEyeRightBegin, lm::kEyeRightEnd},
                                   std::pair{lm::kEyeLeftBegin, lm::kEyeLeftEnd}}) {
     glm::vec2 drift(0.0f);
     for (int i = begin; i < end; ++i)
@@ -132,6 +127,11 @@ void keep_eye_centres(const ModelLandmarks& photo, ModelLandmarks& neutral) {
 }
 
 }  // namespace
+
+glm::vec2 picture_motion(const model::GenericFace& generic, const model::Morph& morph, std::size_t i) {
+  const std::uint32_t v = generic.landmark_vertices[i];
+  return glm::vec2(morph.vertex_delta[v]) - morph.uv_delta[v] * generic.texture_frame.size;
+}
 
 PhotoExpression estimate_expression(const model::GenericFace& generic, const ModelLandmarks& landmarks) {
   const auto& neutral_face = model::landmark_template();

@@ -26,6 +26,10 @@ struct PhotoExpression {
   float largest_move = 0;
 };
 
+/// How the picture of landmark `i` moves under `morph` at full intensity,
+/// model units: the skin's motion less its texture's slide (see morph.hpp).
+glm::vec2 picture_motion(const model::GenericFace& generic, const model::Morph& morph, std::size_t i);
+
 /// Fits the expressive action units (brows, cheek raiser, smile, lip corner
 /// depressor, lips parting, jaw drop) to the landmarks, each in [0, 1] and
 /// gently pulled toward 0, while free shifts and a width of the mouth and a

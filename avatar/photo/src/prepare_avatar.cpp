@@ -16,6 +16,7 @@
 #include "image_conversion.hpp"
 #include "image_inspection.hpp"
 #include "mesh_fitting.hpp"
+#include "lips_at_rest.hpp"
 #include "mouth_layer.hpp"
 #include "package_encoding.hpp"
 #include "photo_expression.hpp"
@@ -142,7 +143,8 @@ std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8
   const model::TextureFrame& frame = generic.texture_frame;
   const int size = options.texture_size;
   const cv::Mat photo_texture = extract_texture(*photo, alignment, pose_fit, frame, size);
-  const cv::Mat texture = neutralise_texture(photo_texture, frame, frontal, neutral);
+  cv::Mat texture = neutralise_texture(fill_mouth_opening(photo_texture, frontal, frame), frame, frontal, neutral);
+  draw_lip_line(texture, frontal, neutral, frame);
   const auto eyes = eye_polygons_px(neutral, frame, size);
   // The person cut from the background: the matte is the texture's alpha,
   // and what it leaves out takes the person's colours.
