@@ -24,18 +24,28 @@ namespace {
 using Landmarks = std::array<glm::vec2, model::kLandmarkCount>;
 constexpr float kRadiansPerDegree = 3.14159265f / 180.0f;
 
+// Which landmarks a likeness counts: all 68, or all but the mouth's twenty
+// (48-67). A photo of a smile or of speech has an avatar whose lips meet at
+// rest, as they must: there the two differ by the expression taken out, not
+// by the person.
+enum class Points { all, without_mouth };
+bool counted(std::size_t i, Points points) { return points == Points::all || i < 48; }
+
 // The median distance between b's landmarks and a's after the similarity
 // (rotation, scale, shift) that takes a onto b best, in b's inter-ocular
 // distances.
-float aligned_median_error(const Landmarks& a, const Landmarks& b) {
+float aligned_median_error(const Landmarks& a, const Landmarks& b, Points points = Points::all) {
   // Least-squares similarity in complex numbers: b ~ s * a + t.
   using C = std::complex<double>;
   C mean_a(0), mean_b(0);
-  for (std::size_t i = 0; i < a.size(); ++i) mean_a += C(a[i].x, a[i].y), mean_b += C(b[i].x, b[i].y);
-  mean_a /= double(a.size()), mean_b /= double(a.size());
+  double count = 0;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (counted(i, points)) mean_a += C(a[i].x, a[i].y), mean_b += C(b[i].x, b[i].y), count += 1;
+  mean_a /= count, mean_b /= count;
   C cross(0);
   double norm = 0;
   for (std::size_t i = 0; i < a.size(); ++i) {
+    if (!counted(i, points)) continue;
     const C p = C(a[i].x, a[i].y) - mean_a, q = C(b[i].x, b[i].y) - mean_b;
     cross += std::conj(p) * q;
     norm += std::norm(p);
@@ -46,6 +56,7 @@ float aligned_median_error(const Landmarks& a, const Landmarks& b) {
   const float inter_ocular = glm::length(left - right);
   std::vector<float> errors;
   for (std::size_t i = 0; i < a.size(); ++i) {
+    if (!counted(i, points)) continue;
     const C moved = s * (C(a[i].x, a[i].y) - mean_a) + mean_b;
     errors.push_back(static_cast<float>(std::abs(moved - C(b[i].x, b[i].y))) / inter_ocular);
   }
@@ -55,7 +66,8 @@ float aligned_median_error(const Landmarks& a, const Landmarks& b) {
 
 struct Person {
   std::string photo;
-  Landmarks on_photo{}, on_avatar{};
+  Landmarks on_photo{};
+  std::vector<Landmarks> on_avatar;  ///< one per render size
 };
 
 class Likeness : public ::testing::Test {
@@ -73,15 +85,18 @@ class Likeness : public ::testing::Test {
       // The neutral face seen as the photo's camera saw the head: a
       // similarity cannot undo a turn or a tilt, so a frontal render of a
       // photo taken from a little above would differ from it by the pose,
-      // not by the person.
-      test::RenderedAvatar rendered(avatar->package, 512, {0.5f, 0.5f, 0.5f});
+      // not by the person. At three sizes: dlib's points move by a fraction
+      // of a pixel with the size, as much as some changes being measured.
       codec::FaceParams as_photographed;
       as_photographed.head_yaw_rad = avatar->report.head_yaw_deg * kRadiansPerDegree;
       as_photographed.head_pitch_rad = avatar->report.head_pitch_deg * kRadiansPerDegree;
-      const auto seen =
-          test::shared_preparer().prepare(test::encode(test::to_bgr(rendered.draw(as_photographed))), {}, error);
-      ASSERT_TRUE(seen.has_value()) << "dlib finds no face on " << name << "'s avatar: " << error.message;
-      person.on_avatar = seen->report.photo_landmarks;
+      for (const int size : {448, 512, 576}) {
+        test::RenderedAvatar rendered(avatar->package, size, {0.5f, 0.5f, 0.5f});
+        const auto seen =
+            test::shared_preparer().prepare(test::encode(test::to_bgr(rendered.draw(as_photographed))), {}, error);
+        ASSERT_TRUE(seen.has_value()) << "dlib finds no face on " << name << "'s avatar: " << error.message;
+        person.on_avatar.push_back(seen->report.photo_landmarks);
+      }
       people_->push_back(person);
     }
   }
@@ -89,11 +104,31 @@ class Likeness : public ::testing::Test {
   static inline std::vector<Person>* people_ = nullptr;
 };
 
+// The mean over the render sizes of the aligned median error: one size's
+// reading of a face in glasses varied from 0.024 to 0.052.
+float likeness_error(const Person& person, const Landmarks& photo, Points points = Points::all) {
+  float sum = 0;
+  for (const Landmarks& seen : person.on_avatar) sum += aligned_median_error(seen, photo, points);
+  return sum / static_cast<float>(person.on_avatar.size());
+}
+
+// What the same measure read, without the mouth, on the avatars of the tree
+// before their lips were closed at rest and their irises placed as in the
+// photo: those changes may not cost likeness.
+float likeness_before(const std::string& photo) {
+  if (photo == "astronaut.png") return 0.0256f;
+  if (photo == "grace_hopper.jpg") return 0.0400f;
+  return 0.0251f;  // kphotoalbum_jesper.jpg
+}
+
 TEST_F(Likeness, EachAvatarsLandmarksFollowItsPhotosClosely) {
   for (const Person& person : *people_) {
-    const float error = aligned_median_error(person.on_avatar, person.on_photo);
-    std::cout << person.photo << ": median landmark error " << error << " inter-ocular\n";
+    const float error = likeness_error(person, person.on_photo);
+    const float without_mouth = likeness_error(person, person.on_photo, Points::without_mouth);
+    std::cout << person.photo << ": median landmark error " << error << " inter-ocular, without the mouth "
+              << without_mouth << "\n";
     EXPECT_LE(error, 0.05f) << person.photo;
+    EXPECT_LE(without_mouth, likeness_before(person.photo)) << person.photo;
   }
 }
 
@@ -101,8 +136,7 @@ TEST_F(Likeness, EachAvatarIsCloserToItsOwnPhotoThanToAnyOther) {
   for (const Person& person : *people_)
     for (const Person& other : *people_) {
       if (&other == &person) continue;
-      EXPECT_LT(aligned_median_error(person.on_avatar, person.on_photo),
-                aligned_median_error(person.on_avatar, other.on_photo))
+      EXPECT_LT(likeness_error(person, person.on_photo), likeness_error(person, other.on_photo))
           << person.photo << "'s avatar looks more like " << other.photo;
     }
 }
@@ -184,5 +218,25 @@ TEST_F(PosedHead, TiltedBackItIsFoundAndItsTiltTakenOut) {
   EXPECT_NEAR(far->report.head_pitch_deg, 30.0f, 10.0f);
 }
 
+
+TEST_F(Likeness, DebugRegions) {
+  const char* names[] = {"jaw","brows","nose","eyes","outer lip","inner lip"};
+  const int bounds[] = {0,17,27,36,48,60,68};
+  for (const Person& person : *people_) {
+    const Landmarks& a = person.on_avatar[1];
+    const Landmarks& b = person.on_photo;
+    // similarity on all but inner lips
+    using C = std::complex<double>;
+    C ma(0), mb(0); double n=0;
+    for (std::size_t i=0;i<60;++i) ma+=C(a[i].x,a[i].y), mb+=C(b[i].x,b[i].y), n+=1;
+    ma/=n; mb/=n; C cross(0); double norm=0;
+    for (std::size_t i=0;i<60;++i){C p=C(a[i].x,a[i].y)-ma,q=C(b[i].x,b[i].y)-mb; cross+=std::conj(p)*q; norm+=std::norm(p);}
+    C s=cross/norm;
+    glm::vec2 r(0),l(0); for(int i=0;i<6;++i) r+=b[36+i]/6.0f, l+=b[42+i]/6.0f; float io=glm::length(l-r);
+    std::cout << person.photo;
+    for (int k=0;k<6;++k){ float sum=0; for(int i=bounds[k];i<bounds[k+1];++i){C m=s*(C(a[i].x,a[i].y)-ma)+mb; sum+=float(std::abs(m-C(b[i].x,b[i].y)))/io;} std::cout << " " << names[k] << "=" << sum/(bounds[k+1]-bounds[k]); }
+    std::cout << "\n";
+  }
+}
 }  // namespace
 }  // namespace fw::photo
