@@ -70,6 +70,12 @@ bool AvatarPreparer::check_photo(std::span<const std::uint8_t> photo, PrepError&
 
 std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8_t> bytes, const PrepOptions& options,
                                                       PrepError& error) {
+  return prepare(bytes, {}, options, error);
+}
+
+std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8_t> bytes,
+                                                      std::span<const std::uint8_t> colour_bytes,
+                                                      const PrepOptions& options, PrepError& error) {
   if (options.quality < 1 || options.quality > 100)
     return fail(error, PrepErrorCode::bad_option, "quality must be 1..100");
   if (options.texture_size < 128 || options.texture_size > 512)
@@ -77,6 +83,13 @@ std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8
   if (!inspect_photo(bytes, error)) return std::nullopt;
   const auto photo = decode_photo(bytes, error);
   if (!photo) return std::nullopt;
+  std::optional<cv::Mat> repainted;
+  if (!colour_bytes.empty()) {
+    if (!inspect_photo(colour_bytes, error) || !(repainted = decode_photo(colour_bytes, error))) return std::nullopt;
+    if (repainted->size() != photo->size())
+      return fail(error, PrepErrorCode::bad_option, "the colour source must be the photo's size, upright");
+  }
+  const cv::Mat& colour_photo = repainted ? *repainted : *photo;
 
   PreparedAvatar result;
   PrepReport& report = result.report;
@@ -143,18 +156,24 @@ std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8
   const int size = options.texture_size;
   const cv::Mat photo_texture = extract_texture(*photo, alignment, pose_fit, frame, size);
   const cv::Mat texture = neutralise_texture(photo_texture, frame, frontal, neutral);
+  // What the package shows; what is measured (the matte, the skin tone, the
+  // iris) comes from `texture`.
+  const cv::Mat colour_photo_texture =
+      repainted ? extract_texture(colour_photo, alignment, pose_fit, frame, size) : photo_texture;
+  const cv::Mat colour_texture =
+      repainted ? neutralise_texture(colour_photo_texture, frame, frontal, neutral) : texture;
   const auto eyes = eye_polygons_px(neutral, frame, size);
   // The person cut from the background: the matte is the texture's alpha,
   // and what it leaves out takes the person's colours.
   const cv::Mat matte = head_matte(texture, neutral, frame);
-  cv::Mat face_texture = fill_beyond_matte(texture, matte);
+  cv::Mat face_texture = fill_beyond_matte(colour_texture, matte);
   if (options.eye_layer) {
     cv::Mat eye_alpha, alpha;
     cv::extractChannel(with_eye_holes(texture, eyes), eye_alpha, 3);
     cv::extractChannel(face_texture, alpha, 3);
     cv::insertChannel(cv::min(alpha, eye_alpha), face_texture, 3);
   }
-  const ClosedLid lid = make_closed_lid(texture, eyes);
+  const ClosedLid lid = make_closed_lid(colour_texture, eyes);
   const ThinPlateSpline& warp = fit.warp;
   const auto masks = model::render_region_masks([&](glm::vec2 p) { return warp(p); }, frame, kMaskSize);
 
@@ -170,7 +189,7 @@ std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8
   package.closed_lid_rect = {lid.uv_rect.x, lid.uv_rect.y, lid.uv_rect.x + lid.uv_rect.width,
                              lid.uv_rect.y + lid.uv_rect.height};
   if (options.eye_layer) {
-    const EyeTexture eye = make_eye_texture_from_photo(*photo, alignment, landmarks, generic.eyes[0],
+    const EyeTexture eye = make_eye_texture_from_photo(colour_photo, alignment, landmarks, generic.eyes[0],
                                                        package.iris_colour, kEyeTextureSize);
     if (!eye.warning.empty()) report.warnings.push_back(eye.warning);
     package.iris_colour = eye.iris;
@@ -179,11 +198,11 @@ std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8
   // The mouth layer shows what the photo shows between its lips, teeth
   // included: from the photo as it is, not the neutralised texture.
   package.mouth = encode_webp(
-      make_mouth_layer(photo_texture, frontal, model::fit_generic_face(generic, fit.fitted_xy)), options.quality);
+      make_mouth_layer(colour_photo_texture, frontal, model::fit_generic_face(generic, fit.fitted_xy)), options.quality);
   const auto packed = model::pack_region_masks(masks, kMaskSize);
   package.colour_masks_a = encode_webp(to_bgr_mat(packed[0]), kLosslessWebp);
   package.colour_masks_b = encode_webp(to_bgr_mat(packed[1]), kLosslessWebp);
-  package.preview = encode_webp(make_preview(texture, frame), std::min(options.quality, 60));
+  package.preview = encode_webp(make_preview(colour_texture, frame), std::min(options.quality, 60));
   report.face_texture = to_rgba_image(face_texture);
   return result;
 }
