@@ -43,9 +43,10 @@ const glm::vec3 kBackground(0.0f, 1.0f, 0.0f);
 // test is for (a flag beside the head, a collar under the chin) are
 // thousands.
 constexpr double kMaxMarkerShare = 0.001;
-// Background pixels enclosed by the head: a few antialiased pixels where
-// two edges of the silhouette meet, never a visible hole.
-constexpr int kMaxHolePixels = 12;
+// Background pixels enclosed by the head: never a visible hole. The most
+// seen is 12, at the inner corner of Jesper's eye turned 30 degrees, where
+// the eyeball leaves a sliver of the lid opening uncovered.
+constexpr int kMaxHolePixels = 20;
 
 struct Portrait {
   std::string photo, mask;

@@ -11,6 +11,7 @@
 #include "face_alignment.hpp"
 #include "face_finder.hpp"
 #include "fill_beyond_matte.hpp"
+#include "head_alpha.hpp"
 #include "head_matte.hpp"
 #include "head_pose_fit.hpp"
 #include "image_conversion.hpp"
@@ -23,6 +24,7 @@
 #include "skin_tone.hpp"
 #include "texture_extraction.hpp"
 #include "fw/model/fitted_face.hpp"
+#include "fw/model/head_shell.hpp"
 #include "fw/model/procedural_texture.hpp"
 #include "fw/model/vascular_masks.hpp"
 
@@ -163,10 +165,21 @@ std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8
   const cv::Mat colour_texture =
       repainted ? neutralise_texture(colour_photo_texture, frame, frontal, neutral) : texture;
   const auto eyes = eye_polygons_px(neutral, frame, size);
-  // The person cut from the background: the matte is the texture's alpha,
-  // and what it leaves out takes the person's colours.
-  const cv::Mat matte = head_matte(texture, neutral, frame);
-  cv::Mat face_texture = fill_beyond_matte(colour_texture, matte);
+  // The person cut from the background: what the matte leaves out takes the
+  // person's colours, and the alpha shows the head out to its outline.
+  const auto seen_at_texels = [&](const cv::Mat& source, PhotoAtTexels& at) {
+    at = photo_at_texels(source, alignment, pose_fit, frame, size);
+    return neutralise_texture(at.seen, frame, frontal, neutral);
+  };
+  PhotoAtTexels at_texels, colour_at_texels;
+  const cv::Mat seen = seen_at_texels(*photo, at_texels);
+  const cv::Mat matte = head_matte(seen, neutralise_texture(at_texels.in_photo, frame, frontal, neutral), neutral, frame);
+  const std::vector<float> outline = head_outline(matte, generic.head, frame);
+  std::vector<glm::vec2> fitted_rim;
+  for (const std::uint32_t v : model::face_rim_loop(generic.skin)) fitted_rim.push_back(fit.fitted_xy[v]);
+  const cv::Mat colour_seen = repainted ? seen_at_texels(colour_photo, colour_at_texels) : seen;
+  cv::Mat face_texture = fill_beyond_matte(mirror_only_within(colour_texture, colour_seen, matte), matte,
+                                           head_alpha(matte, outline, fitted_rim, generic.head, neutral, frame));
   if (options.eye_layer) {
     cv::Mat eye_alpha, alpha;
     cv::extractChannel(with_eye_holes(texture, eyes), eye_alpha, 3);
@@ -180,7 +193,7 @@ std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8
   model::AvatarPackage& package = result.package;
   package.generic_face_version = generic.version;
   package.fitted_vertices = fit.fitted_xy;
-  package.head_outline = head_outline(matte, generic.head, frame);
+  package.head_outline = outline;
   std::copy(neutral.begin(), neutral.end(), package.landmarks.begin());
   package.skin_tone = estimate_skin_tone(texture, masks, kMaskSize);
   package.iris_colour = sample_iris_colour(texture, eyes);
