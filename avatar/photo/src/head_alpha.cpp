@@ -15,17 +15,13 @@ namespace {
 // How far (model units) beyond the outline the alpha stays solid: the
 // silhouette's texels, whatever the filter and the soft edge, are inside.
 constexpr float kBeyondOutline = 0.1f;
-// The neck: solid to this far below the chin, gone at the second (model
-// units, inter-ocular distances; a neck shows about its own width below the
-// chin in a head-and-shoulders portrait before the collar).
-constexpr float kNeckSolid = 0.3f, kNeckGone = 0.9f;
 // The soft edge, in texture pixels per 256 (as the matte's).
 constexpr double kEdgeSigma = 1.2;
 
 }  // namespace
 
 cv::Mat head_alpha(const cv::Mat& person, std::span<const float> outline, std::span<const glm::vec2> fitted_rim,
-                   const model::HeadShell& head, const ModelLandmarks& landmarks, const model::TextureFrame& frame) {
+                   const model::HeadShell& head, const model::TextureFrame& frame) {
   const int size = person.cols;
   constexpr int kShift = 4;
   const float unit = static_cast<float>(1 << kShift);
@@ -41,13 +37,6 @@ cv::Mat head_alpha(const cv::Mat& person, std::span<const float> outline, std::s
   }
   cv::Mat shell(person.size(), CV_8U, cv::Scalar(0));
   cv::fillPoly(shell, std::vector{silhouette}, cv::Scalar(255), cv::LINE_8, kShift);
-  // The neck's end: whatever the shell shows below the chin fades out.
-  const float chin = landmarks[model::landmarks::kChin].y;
-  const float solid_to = chin - kNeckSolid, gone_at = chin - kNeckGone;
-  for (int row = 0; row < size; ++row) {
-    const float y = texture_px_to_model(cv::Point2f(0.0f, static_cast<float>(row)), frame, size).y;
-    shell.row(row) *= std::clamp((y - gone_at) / (solid_to - gone_at), 0.0f, 1.0f);
-  }
   cv::GaussianBlur(shell, shell, cv::Size(), kEdgeSigma * size / 256.0);
   return cv::max(person, shell);
 }

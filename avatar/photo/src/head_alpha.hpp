@@ -7,8 +7,9 @@
 // the person's edge (fill_beyond_matte.hpp). A side of the head seen turned
 // then shows hair where the photo saw the silhouette, not a cut-out band of
 // the matte's soft edge. Below the jaw the photo shows clothes as often as a
-// neck: the shell's neck is shown, in the jaw's colours, fading out below
-// the chin.
+// neck: the shell's neck is shown whole, in the jaw's colours, down out of
+// the frame as a portrait's neck runs (cut short by the alpha, the neck's
+// back, which takes the jaw's colour, would show below its cut front).
 #include <span>
 
 #include <glm/vec2.hpp>
@@ -26,10 +27,8 @@ namespace fw::photo {
 /// @param[in] fitted_rim the face's rim as fitted (model::face_rim_loop's
 ///                       vertices, fitted): the shell reaches past it
 /// @param[in] head       the generic head shell (its centre and rays)
-/// @param[in] landmarks  the person's landmarks, model frame (the chin)
-/// @return CV_8U, `person`'s size: 255 where the head shows, soft at the
-///         neck's end and the outline
+/// @return CV_8U, `person`'s size: 255 where the head shows, soft at the outline
 cv::Mat head_alpha(const cv::Mat& person, std::span<const float> outline, std::span<const glm::vec2> fitted_rim,
-                   const model::HeadShell& head, const ModelLandmarks& landmarks, const model::TextureFrame& frame);
+                   const model::HeadShell& head, const model::TextureFrame& frame);
 
 }  // namespace fw::photo

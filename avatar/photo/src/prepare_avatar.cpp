@@ -179,7 +179,7 @@ std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8
   for (const std::uint32_t v : model::face_rim_loop(generic.skin)) fitted_rim.push_back(fit.fitted_xy[v]);
   const cv::Mat colour_seen = repainted ? seen_at_texels(colour_photo, colour_at_texels) : seen;
   cv::Mat face_texture = fill_beyond_matte(mirror_only_within(colour_texture, colour_seen, matte), matte,
-                                           head_alpha(matte, outline, fitted_rim, generic.head, neutral, frame));
+                                           head_alpha(matte, outline, fitted_rim, generic.head, frame));
   if (options.eye_layer) {
     cv::Mat eye_alpha, alpha;
     cv::extractChannel(with_eye_holes(texture, eyes), eye_alpha, 3);
