@@ -31,7 +31,8 @@ cv::Mat head_alpha(const cv::Mat& person, std::span<const float> outline, std::s
     const glm::vec2 d(std::cos(phi), std::sin(phi));
     const float beyond = d.y < model::kNeckRaySine ? 0.0f : kBeyondOutline;
     // The shell never ends inside the face's rim (fit_head_shell).
-    const float reach = std::max(outline[k], model::ray_exit_radius(head.centre, phi, fitted_rim) + model::kShellBeyondRim);
+    const float past_rim = model::ray_exit_radius(head.centre, phi, fitted_rim) + model::kShellBeyondRim;
+    const float reach = std::max(outline[k], past_rim);
     const cv::Point2f px = model_to_texture_px(head.centre + (reach + beyond) * d, frame, size);
     silhouette.emplace_back(static_cast<int>(std::lround(px.x * unit)), static_cast<int>(std::lround(px.y * unit)));
   }

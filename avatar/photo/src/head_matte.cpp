@@ -24,15 +24,16 @@ constexpr float kSureBackgroundBeyond = 0.6f;
 // The jaw's lower part (landmarks 3..13): below it lies the neck.
 constexpr int kLowerJawBegin = 3, kLowerJawLast = 13;
 constexpr float kBelowJawMargin = 0.06f;
-// The star-shaped outline: rays 2 degrees apart, a gap of up to 2 working
-// pixels bridged, the median of 9 rays (a spike narrower than 8 degrees
-// goes), drawn back 1.5 working pixels inside (the downsized copy mixes
-// hair and background in the pixels along the edge).
 // Saturation and value (of 255) from which a cold hue is not the person's:
 // a third saturated, and bright enough for its hue to mean something.
 constexpr int kMinSaturation = 85, kMinValue = 60;
 // Slivers narrower than this many working pixels (0.3 units) are dropped.
 constexpr int kOpening = 7;
+// The star-shaped outline: rays 2 degrees apart, a gap of up to 2 working
+// pixels bridged, the median of 9 rays (a spike narrower than 8 degrees
+// goes), drawn back 2.5 working pixels (0.1 units) inside: the downsized
+// copy mixes hair and background in the pixels along the edge, and grabCut
+// takes a pixel or two of a dark background beside dark hair.
 constexpr int kRays = 180, kMedianHalfWindow = 4;
 constexpr float kMaxGap = 2.0f, kInset = 2.5f;
 // A working pixel at least this much inside the photo counts as in it.
@@ -100,8 +101,8 @@ cv::Mat seed_mask(const ModelLandmarks& l, const model::TextureFrame& frame, int
   // Sure background beyond a generous ellipse round the head: grabCut's
   // background colours then include whatever stands beside the head (a
   // flag, a wall, a window), not only the far corners.
-  cv::fillPoly(mask, std::vector{to_px(ellipse(head.centre, head.radii + glm::vec2(kSureBackgroundBeyond)), frame, size)},
-               cv::Scalar(cv::GC_PR_BGD));
+  const glm::vec2 beyond_radii = head.radii + glm::vec2(kSureBackgroundBeyond);
+  cv::fillPoly(mask, std::vector{to_px(ellipse(head.centre, beyond_radii), frame, size)}, cv::Scalar(cv::GC_PR_BGD));
   // The shoulders: beside the neck, below the jaw.
   const float chin = l[lm::kChin].y;
   const float neck_half_width = 0.5f * (l[kLowerJawLast].x - l[kLowerJawBegin].x) + 0.15f;
@@ -144,7 +145,7 @@ cv::Mat cold_saturated(const cv::Mat& bgr) {
 }  // namespace
 
 cv::Mat head_matte(const cv::Mat& texture, const cv::Mat& in_photo, const ModelLandmarks& landmarks,
-                     const model::TextureFrame& frame) {
+                   const model::TextureFrame& frame) {
   cv::Mat small, small_in_photo;
   cv::resize(texture, small, cv::Size(kWorkingSize, kWorkingSize), 0, 0, cv::INTER_AREA);
   cv::resize(in_photo, small_in_photo, small.size(), 0, 0, cv::INTER_AREA);

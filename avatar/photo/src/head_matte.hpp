@@ -27,7 +27,7 @@ namespace fw::photo {
 ///                       photo's edge, which is never the person)
 /// @param[in] landmarks  the person's landmarks, model frame
 cv::Mat head_matte(const cv::Mat& texture, const cv::Mat& in_photo, const ModelLandmarks& landmarks,
-                     const model::TextureFrame& frame);
+                   const model::TextureFrame& frame);
 
 /// The person's silhouette on each ray of the generic head's outline: how far
 /// from the head's centre the matte reaches before its first gap, bounded

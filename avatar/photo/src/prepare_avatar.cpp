@@ -158,26 +158,23 @@ std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8
   const int size = options.texture_size;
   const cv::Mat photo_texture = extract_texture(*photo, alignment, pose_fit, frame, size);
   const cv::Mat texture = neutralise_texture(photo_texture, frame, frontal, neutral);
+  const auto to_neutral = [&](const cv::Mat& t) { return neutralise_texture(t, frame, frontal, neutral); };
   // What the package shows; what is measured (the matte, the skin tone, the
   // iris) comes from `texture`.
   const cv::Mat colour_photo_texture =
       repainted ? extract_texture(colour_photo, alignment, pose_fit, frame, size) : photo_texture;
-  const cv::Mat colour_texture =
-      repainted ? neutralise_texture(colour_photo_texture, frame, frontal, neutral) : texture;
+  const cv::Mat colour_texture = repainted ? to_neutral(colour_photo_texture) : texture;
   const auto eyes = eye_polygons_px(neutral, frame, size);
   // The person cut from the background: what the matte leaves out takes the
   // person's colours, and the alpha shows the head out to its outline.
-  const auto seen_at_texels = [&](const cv::Mat& source, PhotoAtTexels& at) {
-    at = photo_at_texels(source, alignment, pose_fit, frame, size);
-    return neutralise_texture(at.seen, frame, frontal, neutral);
-  };
-  PhotoAtTexels at_texels, colour_at_texels;
-  const cv::Mat seen = seen_at_texels(*photo, at_texels);
-  const cv::Mat matte = head_matte(seen, neutralise_texture(at_texels.in_photo, frame, frontal, neutral), neutral, frame);
+  const PhotoAtTexels at_texels = photo_at_texels(*photo, alignment, pose_fit, frame, size);
+  const cv::Mat seen = to_neutral(at_texels.seen);
+  const cv::Mat matte = head_matte(seen, to_neutral(at_texels.in_photo), neutral, frame);
   const std::vector<float> outline = head_outline(matte, generic.head, frame);
   std::vector<glm::vec2> fitted_rim;
   for (const std::uint32_t v : model::face_rim_loop(generic.skin)) fitted_rim.push_back(fit.fitted_xy[v]);
-  const cv::Mat colour_seen = repainted ? seen_at_texels(colour_photo, colour_at_texels) : seen;
+  const cv::Mat colour_seen =
+      repainted ? to_neutral(photo_at_texels(colour_photo, alignment, pose_fit, frame, size).seen) : seen;
   cv::Mat face_texture = fill_beyond_matte(mirror_only_within(colour_texture, colour_seen, matte), matte,
                                            head_alpha(matte, outline, fitted_rim, generic.head, frame));
   if (options.eye_layer) {
@@ -210,8 +207,9 @@ std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8
   }
   // The mouth layer shows what the photo shows between its lips, teeth
   // included: from the photo as it is, not the neutralised texture.
-  package.mouth = encode_webp(
-      make_mouth_layer(colour_photo_texture, frontal, model::fit_generic_face(generic, fit.fitted_xy)), options.quality);
+  package.mouth =
+      encode_webp(make_mouth_layer(colour_photo_texture, frontal, model::fit_generic_face(generic, fit.fitted_xy)),
+                  options.quality);
   const auto packed = model::pack_region_masks(masks, kMaskSize);
   package.colour_masks_a = encode_webp(to_bgr_mat(packed[0]), kLosslessWebp);
   package.colour_masks_b = encode_webp(to_bgr_mat(packed[1]), kLosslessWebp);

@@ -52,7 +52,8 @@ std::vector<float> median_across_rays(const std::vector<float>& reach, int half_
   std::vector<float> out(reach.size()), window;
   for (int k = 0; k < n; ++k) {
     window.clear();
-    for (int j = -half_window; j <= half_window; ++j) window.push_back(reach[static_cast<std::size_t>(((k + j) % n + n) % n)]);
+    for (int j = -half_window; j <= half_window; ++j)
+      window.push_back(reach[static_cast<std::size_t>(((k + j) % n + n) % n)]);
     std::nth_element(window.begin(), window.begin() + half_window, window.end());
     out[static_cast<std::size_t>(k)] = window[static_cast<std::size_t>(half_window)];
   }

@@ -25,7 +25,9 @@ cv::Mat extract_texture(const cv::Mat& photo, const Alignment& alignment, const 
 /// shows the other side's background beside the head).
 struct PhotoAtTexels {
   cv::Mat seen;      ///< `size` x `size` BGR, as sampled
-  cv::Mat in_photo;  ///< CV_8U: 255 where the texel lies inside the photo, 0 beyond its edges (where `seen` repeats them)
+  /// CV_8U: 255 where the texel lies inside the photo, 0 beyond its edges
+  /// (where `seen` repeats them)
+  cv::Mat in_photo;
 };
 PhotoAtTexels photo_at_texels(const cv::Mat& photo, const Alignment& alignment, const PoseFit& fit,
                               const model::TextureFrame& frame, int size);
