@@ -18,6 +18,7 @@
 #include "image_inspection.hpp"
 #include "mesh_fitting.hpp"
 #include "mouth_layer.hpp"
+#include "neck_shadow.hpp"
 #include "package_encoding.hpp"
 #include "photo_expression.hpp"
 #include "pose_checks.hpp"
@@ -177,6 +178,7 @@ std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8
       repainted ? to_neutral(photo_at_texels(colour_photo, alignment, pose_fit, frame, size).seen) : seen;
   cv::Mat face_texture = fill_beyond_matte(mirror_only_within(colour_texture, colour_seen, matte), matte,
                                            head_alpha(matte, outline, fitted_rim, generic.head, frame));
+  shade_neck(face_texture, matte, neutral, frame);
   if (options.eye_layer) {
     cv::Mat eye_alpha, alpha;
     cv::extractChannel(with_eye_holes(texture, eyes), eye_alpha, 3);
