@@ -13,6 +13,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "fw/photo/prepare_avatar.hpp"
+#include "photo_pose.hpp"
 #include "photo_variants.hpp"
 #include "rendered_avatar.hpp"
 #include "shared_preparer.hpp"
@@ -21,8 +22,7 @@
 namespace fw::photo {
 namespace {
 
-using Landmarks = std::array<glm::vec2, model::kLandmarkCount>;
-constexpr float kRadiansPerDegree = 3.14159265f / 180.0f;
+using test_pose::Landmarks;
 
 // Which landmarks a likeness counts: all 68, or all but the mouth's twenty
 // (48-67). A photo of a smile or of speech has an avatar whose lips meet at
@@ -64,7 +64,7 @@ float aligned_median_error(const Landmarks& a, const Landmarks& b, Points points
   return errors[errors.size() / 2];
 }
 
-struct Person {
+struct PersonAndAvatar {
   std::string photo;
   Landmarks on_photo{};
   std::vector<Landmarks> on_avatar;  ///< one per render size
@@ -73,9 +73,10 @@ struct Person {
 class Likeness : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    people_ = new std::vector<Person>;
+    people_ = new std::vector<PersonAndAvatar>;
     for (const std::string name : {"astronaut.png", "grace_hopper.jpg", "kphotoalbum_jesper.jpg"}) {
-      Person person{name};
+      PersonAndAvatar person;
+      person.photo = name;
       const cv::Mat photo = cv::imread(test::test_photo(name), cv::IMREAD_COLOR);
       ASSERT_FALSE(photo.empty()) << name;
       PrepError error;
@@ -87,9 +88,7 @@ class Likeness : public ::testing::Test {
       // photo taken from a little above would differ from it by the pose,
       // not by the person. At three sizes: dlib's points move by a fraction
       // of a pixel with the size, as much as some changes being measured.
-      codec::FaceParams as_photographed;
-      as_photographed.head_yaw_rad = avatar->report.head_yaw_deg * kRadiansPerDegree;
-      as_photographed.head_pitch_rad = avatar->report.head_pitch_deg * kRadiansPerDegree;
+      const codec::FaceParams as_photographed = test_pose::as_photographed(avatar->report);
       for (const int size : {448, 512, 576}) {
         test::RenderedAvatar rendered(avatar->package, size, {0.5f, 0.5f, 0.5f});
         const auto seen =
@@ -101,12 +100,12 @@ class Likeness : public ::testing::Test {
     }
   }
   static void TearDownTestSuite() { delete people_; }
-  static inline std::vector<Person>* people_ = nullptr;
+  static inline std::vector<PersonAndAvatar>* people_ = nullptr;
 };
 
 // The mean over the render sizes of the aligned median error: one size's
 // reading of a face in glasses varied from 0.024 to 0.052.
-float likeness_error(const Person& person, const Landmarks& photo, Points points = Points::all) {
+float likeness_error(const PersonAndAvatar& person, const Landmarks& photo, Points points = Points::all) {
   float sum = 0;
   for (const Landmarks& seen : person.on_avatar) sum += aligned_median_error(seen, photo, points);
   return sum / static_cast<float>(person.on_avatar.size());
@@ -122,7 +121,7 @@ float likeness_before(const std::string& photo) {
 }
 
 TEST_F(Likeness, EachAvatarsLandmarksFollowItsPhotosClosely) {
-  for (const Person& person : *people_) {
+  for (const PersonAndAvatar& person : *people_) {
     const float error = likeness_error(person, person.on_photo);
     const float without_mouth = likeness_error(person, person.on_photo, Points::without_mouth);
     std::cout << person.photo << ": median landmark error " << error << " inter-ocular, without the mouth "
@@ -133,8 +132,8 @@ TEST_F(Likeness, EachAvatarsLandmarksFollowItsPhotosClosely) {
 }
 
 TEST_F(Likeness, EachAvatarIsCloserToItsOwnPhotoThanToAnyOther) {
-  for (const Person& person : *people_)
-    for (const Person& other : *people_) {
+  for (const PersonAndAvatar& person : *people_)
+    for (const PersonAndAvatar& other : *people_) {
       if (&other == &person) continue;
       EXPECT_LT(likeness_error(person, person.on_photo), likeness_error(person, other.on_photo))
           << person.photo << "'s avatar looks more like " << other.photo;
@@ -184,7 +183,7 @@ class PosedHead : public ::testing::Test {
 TEST_F(PosedHead, TurnedItsPoseIsFoundAndItsFrontalAvatarMatchesTheFrontalOnes) {
   for (const float yaw_deg : {30.0f, -30.0f}) {
     codec::FaceParams turned;
-    turned.head_yaw_rad = yaw_deg * kRadiansPerDegree;
+    turned.head_yaw_rad = yaw_deg * test_pose::kRadiansPerDegree;
     Landmarks remade{};
     const auto again = prepare_posed(turned, remade);
     ASSERT_TRUE(again.has_value()) << yaw_deg;
@@ -201,14 +200,14 @@ TEST_F(PosedHead, TurnedItsPoseIsFoundAndItsFrontalAvatarMatchesTheFrontalOnes) 
 // texture of a face seen from below), so only the finding is asserted.
 TEST_F(PosedHead, TiltedBackItIsFoundAndItsTiltTakenOut) {
   codec::FaceParams tilted;
-  tilted.head_pitch_rad = 20.0f * kRadiansPerDegree;
+  tilted.head_pitch_rad = 20.0f * test_pose::kRadiansPerDegree;
   Landmarks remade{};
   const auto again = prepare_posed(tilted, remade);
   ASSERT_TRUE(again.has_value());
   EXPECT_NEAR(again->report.head_pitch_deg, 20.0f, 8.0f);
   EXPECT_LE(aligned_median_error(remade, *frontal_), 0.08f);
 
-  tilted.head_pitch_rad = 30.0f * kRadiansPerDegree;
+  tilted.head_pitch_rad = 30.0f * test_pose::kRadiansPerDegree;
   test::RenderedAvatar avatar(*original_, 512, {0.5f, 0.5f, 0.5f});
   PrepError error;
   const auto far = test::shared_preparer().prepare(test::encode(test::to_bgr(avatar.draw(tilted))), {}, error);
@@ -222,7 +221,7 @@ TEST_F(PosedHead, TiltedBackItIsFoundAndItsTiltTakenOut) {
 TEST_F(Likeness, DebugRegions) {
   const char* names[] = {"jaw","brows","nose","eyes","outer lip","inner lip"};
   const int bounds[] = {0,17,27,36,48,60,68};
-  for (const Person& person : *people_) {
+  for (const PersonAndAvatar& person : *people_) {
     const Landmarks& a = person.on_avatar[1];
     const Landmarks& b = person.on_photo;
     // similarity on all but inner lips

@@ -14,6 +14,7 @@
 
 #include "fw/photo/prepare_avatar.hpp"
 #include "photo_expression.hpp"
+#include "photo_pose.hpp"
 #include "photo_variants.hpp"
 #include "rendered_avatar.hpp"
 #include "shared_preparer.hpp"
@@ -22,8 +23,7 @@
 namespace fw::photo {
 namespace {
 
-using Landmarks = std::array<glm::vec2, model::kLandmarkCount>;
-constexpr float kRadiansPerDegree = 3.14159265f / 180.0f;
+using test_pose::Landmarks;
 
 // Soukupova & Cech's eye aspect ratio ("Real-Time Eye Blink Detection using
 // Facial Landmarks", 2016): the two lid-to-lid heights over the eye's width,
@@ -82,7 +82,7 @@ float median(std::vector<float> values) {
   return values[values.size() / 2];
 }
 
-struct Person {
+struct PersonSeenAtRest {
   std::string photo;
   PrepReport report;
   float rest_eye_aspect_ratio = 0, rest_lip_gap = 0;
@@ -91,16 +91,14 @@ struct Person {
 class PersonAtRest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    people_ = new std::vector<Person>;
+    people_ = new std::vector<PersonSeenAtRest>;
     for (const std::string name : {"astronaut.png", "grace_hopper.jpg", "kphotoalbum_jesper.jpg"}) {
       const cv::Mat photo = cv::imread(test::test_photo(name), cv::IMREAD_COLOR);
       ASSERT_FALSE(photo.empty()) << name;
       PrepError error;
       const auto avatar = test::shared_preparer().prepare(test::encode(photo), {}, error);
       ASSERT_TRUE(avatar.has_value()) << name << ": " << error.message;
-      codec::FaceParams as_photographed;
-      as_photographed.head_yaw_rad = avatar->report.head_yaw_deg * kRadiansPerDegree;
-      as_photographed.head_pitch_rad = avatar->report.head_pitch_deg * kRadiansPerDegree;
+      const codec::FaceParams as_photographed = test_pose::as_photographed(avatar->report);
       std::vector<float> eye_ratios, lip_gaps;
       for (const int size : kRenderSizes) {
         test::RenderedAvatar rendered(avatar->package, size, {0.5f, 0.5f, 0.5f});
@@ -115,7 +113,7 @@ class PersonAtRest : public ::testing::Test {
     }
   }
   static void TearDownTestSuite() { delete people_; }
-  static inline std::vector<Person>* people_ = nullptr;
+  static inline std::vector<PersonSeenAtRest>* people_ = nullptr;
 };
 
 TEST_F(PersonAtRest, TheFaceIsFoundAtThePhotosPose) {
@@ -136,7 +134,7 @@ TEST(OpeningUndone, TheCheekRaiserNarrowsTheEyes) {
 
 TEST_F(PersonAtRest, EyesOpenAsFarAsInThePhoto) {
   ASSERT_EQ(people_->size(), 3u);
-  for (const Person& person : *people_) {
+  for (const PersonSeenAtRest& person : *people_) {
     const float photo_ear = mean_eye_aspect_ratio(person.report.photo_landmarks);
     const float narrowing = std::max(au(person.report, 6, codec::AuSide::left), au(person.report, 6, codec::AuSide::right));
     const float undone = opening_undone(narrowing);
@@ -152,7 +150,7 @@ TEST_F(PersonAtRest, EyesOpenAsFarAsInThePhoto) {
 
 TEST_F(PersonAtRest, LipsMeet) {
   ASSERT_EQ(people_->size(), 3u);
-  for (const Person& person : *people_) {
+  for (const PersonSeenAtRest& person : *people_) {
     std::cout << person.photo << ": lip gap photo " << lip_gap(person.report.photo_landmarks) << ", at rest "
               << person.rest_lip_gap << "\n";
     EXPECT_LT(person.rest_lip_gap, kClosedLipGap) << person.photo << "'s lips at rest are apart";

@@ -1,5 +1,6 @@
 #include "fill_beyond_matte.hpp"
 
+#include <algorithm>
 #include <vector>
 
 #include <opencv2/imgproc.hpp>
@@ -7,15 +8,20 @@
 namespace fw::photo {
 namespace {
 
-// A texel is the person's own colour only well inside the soft edge.
+// A texel is the person's own colour only well inside the soft edge, and
+// not in the last texels along it: resampling the photo mixed those with
+// what stood behind the person (a strand of hair against a flag is half flag).
 constexpr int kSolidAlpha = 250;
+constexpr int kEdgeTexelsPer320 = 2;
 
 }  // namespace
 
-cv::Mat fill_beyond_matte(const cv::Mat& texture, const cv::Mat& matte) {
+cv::Mat fill_beyond_matte(const cv::Mat& texture, const cv::Mat& matte, const cv::Mat& alpha) {
   cv::Mat colour, weight;
   texture.convertTo(colour, CV_32FC3, 1.0 / 255);
   cv::Mat solid = matte >= kSolidAlpha;
+  const int edge = std::max(1, kEdgeTexelsPer320 * texture.cols / 320);
+  cv::erode(solid, solid, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * edge + 1, 2 * edge + 1)));
   solid.convertTo(weight, CV_32F, 1.0 / 255);
   cv::Mat weight3;
   cv::merge(std::vector<cv::Mat>{weight, weight, weight}, weight3);
@@ -49,7 +55,7 @@ cv::Mat fill_beyond_matte(const cv::Mat& texture, const cv::Mat& matte) {
   texture.copyTo(filled_bgr, solid);
   cv::Mat bgra;
   cv::cvtColor(filled_bgr, bgra, cv::COLOR_BGR2BGRA);
-  cv::insertChannel(matte, bgra, 3);
+  cv::insertChannel(alpha, bgra, 3);
   return bgra;
 }
 
