@@ -25,7 +25,7 @@ precision highp float;
 in vec3 v_normal;
 in vec2 v_uv;
 #ifdef FW_ALBEDO
-in vec3 v_view;
+in float v_fresnel;
 #else
 in float v_relight;
 #endif
@@ -92,23 +92,21 @@ const float kWrap = 0.5;  // (n.l + w) / (1 + w)
 
 // Skin's specular: a broad, low lobe (Weyrich et al. 2006, "Analysis of
 // human faces using a measurement-based skin reflectance model": roughness
-// about 0.3-0.45, here Blinn-Phong's 16th power) with Schlick's Fresnel
-// from skin's normal reflectance of about 0.028 (refractive index 1.4).
-const float kSkinF0 = 0.028;
+// about 0.3-0.45, here Blinn-Phong's 16th power) times Schlick's Fresnel
+// (v_fresnel, face.vert).
 const float kSkinSpecular = 2.5;  // scale of the lobe (its normalisation and the key's strength)
 
 vec3 albedo_light(vec3 albedo, vec3 n) {
   float n_dot_l = dot(n, u_light_direction);
-  vec3 irradiance = mix(kGround, kSky, n.y * 0.5 + 0.5) + kKey * max((n_dot_l + kWrap) / (1.0 + kWrap), 0.0);
+  // Constants folded: mix(ground, sky, n.y / 2 + 1/2) and (n.l + w) / (1 + w).
+  vec3 ambient = 0.5 * (kSky + kGround) + 0.5 * (kSky - kGround) * n.y;
+  vec3 irradiance = ambient + kKey * max(n_dot_l * (1.0 / (1.0 + kWrap)) + kWrap / (1.0 + kWrap), 0.0);
   float h = max(dot(n, v_half), 0.0);
   h *= h;
   h *= h;
   h *= h;
   h *= h;
-  float grazing = 1.0 - clamp(dot(n, v_view), 0.0, 1.0);
-  float g2 = grazing * grazing;
-  float fresnel = kSkinF0 + (1.0 - kSkinF0) * g2 * g2 * grazing;
-  return albedo * irradiance + kKey * (kSkinSpecular * fresnel * h * max(n_dot_l, 0.0));
+  return albedo * irradiance + kKey * (kSkinSpecular * v_fresnel * h * max(n_dot_l, 0.0));
 }
 #endif
 

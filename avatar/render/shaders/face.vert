@@ -18,7 +18,7 @@ uniform vec3 u_camera_position;
 out vec3 v_normal;
 out vec2 v_uv;
 #ifdef FW_ALBEDO
-out vec3 v_view;     // toward the camera, unit length at the vertex
+out float v_fresnel;  // the skin's reflectance toward the camera
 #else
 out float v_relight;  // the photo's light changed by the surface's turn
 #endif
@@ -26,7 +26,18 @@ out float v_relight;  // the photo's light changed by the surface's turn
 out vec3 v_half;     // between the key light and the camera
 #endif
 
-#ifndef FW_ALBEDO
+#ifdef FW_ALBEDO
+// Schlick's Fresnel from skin's normal reflectance of about 0.028
+// (refractive index 1.4): the skin's specular strengthens toward grazing
+// angles. Per vertex: it changes slowly but at the outline.
+const float kSkinF0 = 0.028;
+
+float skin_fresnel(vec3 n, vec3 view) {
+  float grazing = 1.0 - clamp(dot(n, view), 0.0, 1.0);
+  float g2 = grazing * grazing;
+  return kSkinF0 + (1.0 - kSkinF0) * g2 * g2 * grazing;
+}
+#else
 // The photo already holds its own light. Only a change of the surface's
 // direction from the photo's (a turned head, a raised brow, a turned eye)
 // changes how much of the key light it catches: the ratio of the two. Per
@@ -46,7 +57,7 @@ void main() {
   v_uv = a_uv;
   vec3 view = normalize(u_camera_position - world.xyz);
 #ifdef FW_ALBEDO
-  v_view = view;
+  v_fresnel = skin_fresnel(normalize(v_normal), view);
 #else
   // The photo saw the face frontal and at rest: its normals, unposed. (The
   // inside of the skin's rim, seen on a turned head, takes its outside's.)
