@@ -75,7 +75,8 @@ class Likeness : public ::testing::Test {
   static void SetUpTestSuite() {
     people_ = new std::vector<Person>;
     for (const std::string name : {"astronaut.png", "grace_hopper.jpg", "kphotoalbum_jesper.jpg"}) {
-      Person person{name};
+      Person person;
+      person.photo = name;
       const cv::Mat photo = cv::imread(test::test_photo(name), cv::IMREAD_COLOR);
       ASSERT_FALSE(photo.empty()) << name;
       PrepError error;
