@@ -186,7 +186,7 @@ export async function startFacePreview(canvas, status) {
   // shell (closed wherever it shows, facing out) is drawn with culling.
   const skinTexture = uploadCanvas(gl, paintSkin(face, 512));
   const parts = [
-    { mesh: uploadMesh(gl, face.skin), texture: skinTexture, program: plain, cull: false },
+    { mesh: uploadMesh(gl, face.skin), texture: skinTexture, program: plain, cull: false, skinSpecular: 2.5 },
     ...['right', 'left'].map((side) => ({
       mesh: uploadMesh(gl, face.eyes[side].mesh),
       texture: uploadCanvas(gl, paintEye(face.eyes[side], 128)),
@@ -226,6 +226,8 @@ export async function startFacePreview(canvas, status) {
     for (const part of parts) {
       gl.useProgram(part.program);
       gl.uniformMatrix4fv(gl.getUniformLocation(part.program, 'u_model'), false, model);
+      // The skin's specular lobe (face.frag) on the face's skin only, never the head shell.
+      gl.uniform1f(gl.getUniformLocation(part.program, 'u_skin_specular'), part.skinSpecular ?? 0);
       if (part.cull) gl.enable(gl.CULL_FACE); else gl.disable(gl.CULL_FACE);
       gl.bindTexture(gl.TEXTURE_2D, part.texture);
       gl.bindVertexArray(part.mesh.vao);

@@ -14,6 +14,8 @@ const LIGHT = (() => {
 })();
 // The eye's sheen and catch-light (face.frag; FaceRenderer's kEyeSpecular).
 const EYE_SPECULAR = 1.0;
+// The skin's specular lobe on albedo faces (face.frag): the face's skin only, never the head shell.
+const SKIN_SPECULAR = 2.5;
 const UNIT = { main: 0, closedLid: 1, masksA: 2, masksB: 3 };
 
 function compile(gl, type, source) {
@@ -37,7 +39,7 @@ function program(gl, vertexSource, fragmentSource, defines) {
   gl.linkProgram(p);
   if (!gl.getProgramParameter(p, gl.LINK_STATUS)) throw new Error(`a shader program does not link: ${gl.getProgramInfoLog(p)}`);
   const names = ['u_model', 'u_view_projection', 'u_camera_position', 'u_light_direction', 'u_texture', 'u_specular',
-    'u_closed_lid', 'u_closed_lid_rect', 'u_lid_closure', 'u_masks_a', 'u_masks_b', 'u_blush_a', 'u_blush_sides', 'u_pallor'];
+    'u_closed_lid', 'u_closed_lid_rect', 'u_lid_closure', 'u_masks_a', 'u_masks_b', 'u_blush_a', 'u_blush_sides', 'u_pallor', 'u_skin_specular'];
   return { program: p, u: Object.fromEntries(names.map((n) => [n, gl.getUniformLocation(p, n)])) };
 }
 
@@ -239,6 +241,7 @@ export class FaceRenderer {
       gl.uniform1f(skin.u.u_blush_sides, frame.blush[4]);
       gl.uniform1f(skin.u.u_pallor, frame.pallor);
     }
+    gl.uniform1f(skin.u.u_skin_specular, SKIN_SPECULAR);
     mesh(face.skin, face.textures.skin, skin.u, frame.model);
     if (face.eyeCovers) {
       mesh(face.eyeCovers, face.textures.skin, skin.u, frame.model);
@@ -249,6 +252,7 @@ export class FaceRenderer {
     }
     const plain = programs.plain;
     gl.useProgram(plain.program);
+    gl.uniform1f(plain.u.u_skin_specular, 0);
     mesh(face.mouth, face.textures.mouth, plain.u, frame.model);
     // The shell faces out and is closed where it shows: its far side is culled.
     gl.enable(gl.CULL_FACE);

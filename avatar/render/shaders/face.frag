@@ -93,8 +93,11 @@ const float kWrap = 0.5;  // (n.l + w) / (1 + w)
 // Skin's specular: a broad, low lobe (Weyrich et al. 2006, "Analysis of
 // human faces using a measurement-based skin reflectance model": roughness
 // about 0.3-0.45, here Blinn-Phong's 16th power) times Schlick's Fresnel
-// (v_fresnel, face.vert).
-const float kSkinSpecular = 2.5;  // scale of the lobe (its normalisation and the key's strength)
+// (v_fresnel, face.vert). Its scale (the lobe's normalisation and the
+// key's strength) is a uniform set per part: the face's skin has it, the
+// head shell, mostly hair, does not (on hair the lobe read as a plastic
+// helmet's sheen), and one program may draw both.
+uniform float u_skin_specular;
 
 vec3 albedo_light(vec3 albedo, vec3 n) {
   float n_dot_l = dot(n, u_light_direction);
@@ -106,7 +109,7 @@ vec3 albedo_light(vec3 albedo, vec3 n) {
   h *= h;
   h *= h;
   h *= h;
-  return albedo * irradiance + kKey * (kSkinSpecular * v_fresnel * h * max(n_dot_l, 0.0));
+  return albedo * irradiance + kKey * (u_skin_specular * v_fresnel * h * max(n_dot_l, 0.0));
 }
 #endif
 

@@ -47,6 +47,9 @@ constexpr int kMinSize = 16, kMaxSize = 4096;
 // bright as a white surface facing the key light, so it reads as near white
 // on any iris.
 constexpr float kEyeSpecular = 1.0f;
+// The scale of the skin's specular lobe on albedo faces (face.frag): the
+// face's skin only, never the head shell.
+constexpr float kSkinSpecular = 2.5f;
 // Toward the key light: above and to the viewer's right, as a portrait's
 // key light usually is; unit length, as the shaders expect.
 const glm::vec3 kKeyLight = glm::normalize(glm::vec3(0.45f, 0.6f, 0.9f));
@@ -216,6 +219,7 @@ void FaceRenderer::Impl::draw_face(const GpuFace& face, const FaceDraw& draw, co
     glUniform1f(skin.blush_sides, draw.blush[4]);
     glUniform1f(skin.pallor, draw.pallor);
   }
+  glUniform1f(skin.skin_specular, kSkinSpecular);
   draw_mesh(face.skin, face.skin_texture, skin, draw.model);
   const glm::mat4 skin_mvp = camera.view_projection() * draw.model;
   if (!face.eye_layer) {
@@ -231,6 +235,7 @@ void FaceRenderer::Impl::draw_face(const GpuFace& face, const FaceDraw& draw, co
     }
   }
   const ShaderUniforms& plain = use(PartShader::plain, face.light);
+  glUniform1f(plain.skin_specular, 0.0f);
   scissor_to_opening(face, face.mouth_slit, skin_mvp);
   draw_mesh(face.mouth, face.mouth_texture, plain, draw.model);
   glDisable(GL_SCISSOR_TEST);

@@ -53,7 +53,7 @@ std::optional<std::array<ShaderVariant, kShaderCount>> build_part_shaders(std::s
                             at("u_light_direction"), at("u_specular"), at("u_texture"),
                             at("u_closed_lid"), at("u_closed_lid_rect"), at("u_lid_closure"),
                             at("u_masks_a"),    at("u_masks_b"),         at("u_blush_a"),
-                            at("u_blush_sides"), at("u_pallor")};
+                            at("u_blush_sides"), at("u_pallor"), at("u_skin_specular")};
     variants[i].program = std::move(*program);
   }
   return variants;

@@ -35,7 +35,7 @@ std::string with_defines(std::string_view source, std::span<const std::string_vi
 struct ShaderUniforms {
   GLint model = -1, view_projection = -1, camera_position = -1, light_direction = -1, specular = -1, texture = -1;
   GLint closed_lid = -1, closed_lid_rect = -1, lid_closure = -1, masks_a = -1, masks_b = -1, blush_a = -1,
-        blush_sides = -1, pallor = -1;
+        blush_sides = -1, pallor = -1, skin_specular = -1;
 };
 
 struct ShaderVariant {
