@@ -53,6 +53,8 @@ std::vector<std::uint8_t> make_demo_package(std::uint32_t index) {
   }
   package.skin_tone = to_srgb8(look.skin);
   package.iris_colour = to_srgb8(look.iris);
+  // Procedural textures are the surface's own colour: a renderer lights them.
+  package.texture_light = model::TextureLight::albedo;
   const model::RgbaImage skin = model::make_skin_texture(face, look, 256);
   package.face_texture = encode_package_image(skin, kQuality);
   package.closed_lid = encode_package_image(model::make_skin_texture(face, look, 128, /*eye_holes=*/false), kQuality);

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "fw/model/generic_face.hpp"
+#include "package_checksum.hpp"
 
 namespace fw::model {
 namespace {
@@ -149,6 +150,39 @@ TEST(AvatarPackage, RefusesAnUnknownImageType) {
   AvatarPackage p = sample_package();
   p.eye.type = "image/gif";
   EXPECT_NE(package_error(serialize_avatar_package(p)).find("expected image/webp or image/png"), std::string::npos);
+}
+
+TEST(AvatarPackage, SaysWhatItsTexturesHoldAPhotosLightByDefault) {
+  AvatarPackage parsed;
+  std::string error;
+  const auto photo = serialize_avatar_package(sample_package());
+  ASSERT_TRUE(parse_avatar_package(photo, parsed, error)) << error;
+  EXPECT_EQ(parsed.texture_light, TextureLight::photo);
+  const std::string text(photo.begin(), photo.end());
+  EXPECT_EQ(text.find("texture_light"), std::string::npos) << "a photo's package is written as before";
+
+  AvatarPackage procedural = sample_package();
+  procedural.texture_light = TextureLight::albedo;
+  ASSERT_TRUE(parse_avatar_package(serialize_avatar_package(procedural), parsed, error)) << error;
+  EXPECT_EQ(parsed.texture_light, TextureLight::albedo);
+}
+
+TEST(AvatarPackage, RefusesATextureLightItDoesNotKnow) {
+  AvatarPackage procedural = sample_package();
+  procedural.texture_light = TextureLight::albedo;
+  auto bytes = serialize_avatar_package(procedural);
+  // The manifest (at 16, its length at 8) with another value, its checksum
+  // (at 12) made right again: only the value is wrong.
+  const std::size_t length = bytes[8] | bytes[9] << 8 | bytes[10] << 16 | static_cast<std::size_t>(bytes[11]) << 24;
+  std::string manifest(bytes.begin() + 16, bytes.begin() + 16 + static_cast<std::ptrdiff_t>(length));
+  const std::size_t at = manifest.find("\"albedo\"");
+  ASSERT_NE(at, std::string::npos);
+  manifest.replace(at, 8, "\"albedx\"");
+  std::copy(manifest.begin(), manifest.end(), bytes.begin() + 16);
+  const std::uint32_t crc = crc_of({reinterpret_cast<const std::uint8_t*>(manifest.data()), manifest.size()});
+  for (int i = 0; i < 4; ++i) bytes[12 + i] = static_cast<std::uint8_t>(crc >> (8 * i));
+  const std::string error = package_error(bytes);
+  EXPECT_NE(error.find("manifest.texture_light must be \"photo\" or \"albedo\""), std::string::npos) << error;
 }
 
 }  // namespace

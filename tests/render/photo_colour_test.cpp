@@ -8,35 +8,16 @@
 
 #include "fw/model/face_reconstruction.hpp"
 #include "fw/render/avatar_appearance.hpp"
+#include "painted_face.hpp"
 
 namespace fw::render {
 namespace {
 
 constexpr int kImageSize = 256, kSmallImageSize = 96;
 
-float to_linear(std::uint8_t encoded) {
-  const float v = encoded / 255.0f;
-  return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
-}
-
-// The generic face's procedural textures (with their eye holes, closed lids
-// and blood masks) with the skin painted by `paint(x, y)`.
-template <typename Paint>
-AvatarAppearance painted_face(Paint paint) {
-  AvatarAppearance face = generic_appearance(model::Appearance{});
-  model::RgbaImage& skin = face.textures.skin;
-  for (int y = 0; y < skin.height; ++y)
-    for (int x = 0; x < skin.width; ++x) {
-      const glm::u8vec3 rgb = paint(x, y);
-      std::uint8_t* p = skin.at(x, y);
-      p[0] = rgb.r, p[1] = rgb.g, p[2] = rgb.b;
-    }
-  return face;
-}
-
-AvatarAppearance flat_face(glm::u8vec3 rgb) {
-  return painted_face([rgb](int, int) { return rgb; });
-}
+using test::flat_face;
+using test::painted_face;
+using test::to_linear;
 
 class PhotoColourTest : public ::testing::Test {
  protected:

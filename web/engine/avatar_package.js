@@ -36,6 +36,8 @@ export class AvatarPackage {
     this.handle = handle;
     this.version = module._fw_package_int(handle, 0);
     this.genericFaceVersion = module._fw_package_int(handle, 1);
+    /** What the colour textures hold: 'photo' (its own light) or 'albedo' (a procedural face's, lit by the renderer). */
+    this.textureLight = module._fw_package_int(handle, 2) === 1 ? 'albedo' : 'photo';
     const floats = (which) => copyFloats(module, module._fw_package_floats(handle, which),
       module._fw_package_floats_count(handle, which));
     /** Where each generic skin vertex lies on this face: x, y pairs, model units. */

@@ -31,10 +31,11 @@ function withDefines(source, defines) {
   return source.slice(0, lineEnd) + defines.map((name) => `#define ${name}\n`).join('') + source.slice(lineEnd);
 }
 
-function buildProgram(gl, vertexSource, fragmentSource) {
+// A variant: its defines go after the #version line of both stages (face.frag's head).
+function buildProgram(gl, vertexSource, fragmentSource, defines) {
   const program = gl.createProgram();
-  gl.attachShader(program, compile(gl, gl.VERTEX_SHADER, vertexSource));
-  gl.attachShader(program, compile(gl, gl.FRAGMENT_SHADER, fragmentSource));
+  gl.attachShader(program, compile(gl, gl.VERTEX_SHADER, withDefines(vertexSource, defines)));
+  gl.attachShader(program, compile(gl, gl.FRAGMENT_SHADER, withDefines(fragmentSource, defines)));
   gl.linkProgram(program);
   if (!gl.getProgramParameter(program, gl.LINK_STATUS)) {
     throw new Error(`program does not link: ${gl.getProgramInfoLog(program)}`);
@@ -163,6 +164,10 @@ function paintMouth() {
   return canvas;
 }
 
+// The native renderer's key light (face_renderer.cpp): above and to the
+// viewer's right, unit length.
+const KEY_LIGHT = [0.45, 0.6, 0.9].map((c, _, v) => c / Math.hypot(...v));
+
 export async function startFacePreview(canvas, status) {
   // Opaque: the shader's alpha is coverage, not transparency.
   const gl = canvas.getContext('webgl2', { antialias: true, alpha: false });
@@ -173,14 +178,15 @@ export async function startFacePreview(canvas, status) {
     fetchText('/shaders/face.frag'),
   ]);
   // The preview has no closed-lid skin or blood masks (lids open, colour
-  // unchanged), so the skin, the mouth and the head shell use the plain variant.
-  const plain = buildProgram(gl, vertexSource, fragmentSource);
-  const eye = buildProgram(gl, vertexSource, withDefines(fragmentSource, ['FW_SPECULAR']));
+  // unchanged), so the skin, the mouth and the head shell use the plain
+  // variant; its textures are painted albedo, lit by the shader (FW_ALBEDO).
+  const plain = buildProgram(gl, vertexSource, fragmentSource, ['FW_ALBEDO']);
+  const eye = buildProgram(gl, vertexSource, fragmentSource, ['FW_SPECULAR', 'FW_ALBEDO']);
   // The head shell shares the skin's texture; like the native renderer, the
   // shell (closed wherever it shows, facing out) is drawn with culling.
   const skinTexture = uploadCanvas(gl, paintSkin(face, 512));
   const parts = [
-    { mesh: uploadMesh(gl, face.skin), texture: skinTexture, program: plain, cull: false },
+    { mesh: uploadMesh(gl, face.skin), texture: skinTexture, program: plain, cull: false, skinSpecular: 2.5 },
     ...['right', 'left'].map((side) => ({
       mesh: uploadMesh(gl, face.eyes[side].mesh),
       texture: uploadCanvas(gl, paintEye(face.eyes[side], 128)),
@@ -213,13 +219,15 @@ export async function startFacePreview(canvas, status) {
       gl.useProgram(program);
       gl.uniformMatrix4fv(uniform('u_view_projection'), false, viewProjection);
       gl.uniform3fv(uniform('u_camera_position'), eyePosition);
-      gl.uniform3fv(uniform('u_light_direction'), [0.45, 0.6, 0.9]);
+      gl.uniform3fv(uniform('u_light_direction'), KEY_LIGHT);
       gl.uniform1i(uniform('u_texture'), 0);
-      gl.uniform1f(uniform('u_specular'), 0.5);
+      gl.uniform1f(uniform('u_specular'), 1.0);
     }
     for (const part of parts) {
       gl.useProgram(part.program);
       gl.uniformMatrix4fv(gl.getUniformLocation(part.program, 'u_model'), false, model);
+      // The skin's specular lobe (face.frag) on the face's skin only, never the head shell.
+      gl.uniform1f(gl.getUniformLocation(part.program, 'u_skin_specular'), part.skinSpecular ?? 0);
       if (part.cull) gl.enable(gl.CULL_FACE); else gl.disable(gl.CULL_FACE);
       gl.bindTexture(gl.TEXTURE_2D, part.texture);
       gl.bindVertexArray(part.mesh.vao);

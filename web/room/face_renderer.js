@@ -6,9 +6,16 @@
 // colour masks), then the eyes, the mouth cavity and the head shell, nearest
 // first.
 
-// The key light, above and to the viewer's right (FaceRenderer's).
-const LIGHT = [0.45, 0.6, 0.9];
-const EYE_SPECULAR = 0.5;
+// The key light, above and to the viewer's right, unit length (FaceRenderer's).
+const LIGHT = (() => {
+  const v = [0.45, 0.6, 0.9];
+  const length = Math.hypot(...v);
+  return v.map((c) => c / length);
+})();
+// The eye's sheen and catch-light (face.frag; FaceRenderer's kEyeSpecular).
+const EYE_SPECULAR = 1.0;
+// The skin's specular lobe on albedo faces (face.frag): the face's skin only, never the head shell.
+const SKIN_SPECULAR = 2.5;
 const UNIT = { main: 0, closedLid: 1, masksA: 2, masksB: 3 };
 
 function compile(gl, type, source) {
@@ -19,17 +26,20 @@ function compile(gl, type, source) {
   return shader;
 }
 
-// Variants are chosen by defines after the #version line (face.frag's head).
+// Variants are chosen by defines after the #version line of both stages (face.frag's head).
+function withDefines(source, defines) {
+  const lineEnd = source.indexOf('\n') + 1;
+  return source.slice(0, lineEnd) + defines.map((d) => `#define ${d}\n`).join('') + source.slice(lineEnd);
+}
+
 function program(gl, vertexSource, fragmentSource, defines) {
-  const lineEnd = fragmentSource.indexOf('\n') + 1;
-  const fragment = fragmentSource.slice(0, lineEnd) + defines.map((d) => `#define ${d}\n`).join('') + fragmentSource.slice(lineEnd);
   const p = gl.createProgram();
-  gl.attachShader(p, compile(gl, gl.VERTEX_SHADER, vertexSource));
-  gl.attachShader(p, compile(gl, gl.FRAGMENT_SHADER, fragment));
+  gl.attachShader(p, compile(gl, gl.VERTEX_SHADER, withDefines(vertexSource, defines)));
+  gl.attachShader(p, compile(gl, gl.FRAGMENT_SHADER, withDefines(fragmentSource, defines)));
   gl.linkProgram(p);
   if (!gl.getProgramParameter(p, gl.LINK_STATUS)) throw new Error(`a shader program does not link: ${gl.getProgramInfoLog(p)}`);
   const names = ['u_model', 'u_view_projection', 'u_camera_position', 'u_light_direction', 'u_texture', 'u_specular',
-    'u_closed_lid', 'u_closed_lid_rect', 'u_lid_closure', 'u_masks_a', 'u_masks_b', 'u_blush_a', 'u_blush_sides', 'u_pallor'];
+    'u_closed_lid', 'u_closed_lid_rect', 'u_lid_closure', 'u_masks_a', 'u_masks_b', 'u_blush_a', 'u_blush_sides', 'u_pallor', 'u_skin_specular'];
   return { program: p, u: Object.fromEntries(names.map((n) => [n, gl.getUniformLocation(p, n)])) };
 }
 
@@ -94,22 +104,28 @@ export class FaceRenderer {
   /** @param gl a WebGL2 context; vertexSource, fragmentSource: /shaders/face.vert and face.frag */
   constructor(gl, vertexSource, fragmentSource) {
     this.gl = gl;
-    const make = (defines) => program(gl, vertexSource, fragmentSource, defines);
-    this.programs = {
-      skin: make(['FW_CLOSED_LID']),
-      skinWithBlood: make(['FW_CLOSED_LID', 'FW_BLOOD']),
-      eye: make(['FW_SPECULAR']),
-      plain: make([]),
+    // One set for photo textures (their own light, relit where the face
+    // turns) and one for albedo (procedural faces: FW_ALBEDO lights them).
+    const set = (light) => {
+      const make = (defines) => program(gl, vertexSource, fragmentSource, [...defines, ...light]);
+      return {
+        skin: make(['FW_CLOSED_LID']),
+        skinWithBlood: make(['FW_CLOSED_LID', 'FW_BLOOD']),
+        eye: make(['FW_SPECULAR']),
+        plain: make([]),
+      };
     };
+    this.programSets = { photo: set([]), albedo: set(['FW_ALBEDO']) };
     this.black = black(gl);
   }
 
   /**
    * A face to draw: the avatar model (web/engine AvatarModel) and its
    * package's decoded images { faceTexture, eye, mouth, closedLid,
-   * colourMasksA, colourMasksB } with closedLidRect. Returns a handle.
+   * colourMasksA, colourMasksB } with closedLidRect, and what its textures
+   * hold (AvatarPackage.textureLight: 'photo' or 'albedo'). Returns a handle.
    */
-  addFace(avatar, images, closedLidRect) {
+  addFace(avatar, images, closedLidRect, textureLight = 'photo') {
     const gl = this.gl;
     const face = avatar.face;
     const colour = (image) => (image ? uploadImage(gl, image, true) : this.black);
@@ -128,6 +144,7 @@ export class FaceRenderer {
       },
       closedLidRect: images.closedLid ? Array.from(closedLidRect) : [0, 0, 0, 0],
       eyeLayer: Boolean(images.eye),
+      programs: this.programSets[textureLight === 'albedo' ? 'albedo' : 'photo'],
       eyeCovers: images.eye ? null : this.shareSkin(skin, this.eyeCovers(face).triangles),
     };
   }
@@ -175,7 +192,7 @@ export class FaceRenderer {
     gl.depthFunc(gl.LESS);
     gl.cullFace(gl.BACK);
     gl.enable(gl.SAMPLE_ALPHA_TO_COVERAGE);
-    for (const { program: p, u } of Object.values(this.programs)) {
+    for (const { program: p, u } of Object.values(this.programSets).flatMap((set) => Object.values(set))) {
       gl.useProgram(p);
       gl.uniformMatrix4fv(u.u_view_projection, false, camera.viewProjection);
       gl.uniform3fv(u.u_camera_position, camera.position);
@@ -211,7 +228,8 @@ export class FaceRenderer {
       gl.drawElements(gl.TRIANGLES, m.count, gl.UNSIGNED_INT, 0);
     };
     // Nearest first, as natively: what lies behind then fails the depth test.
-    const skin = frame.blood ? this.programs.skinWithBlood : this.programs.skin;
+    const programs = face.programs;
+    const skin = frame.blood ? programs.skinWithBlood : programs.skin;
     gl.useProgram(skin.program);
     bind(UNIT.closedLid, face.textures.closedLid);
     gl.uniform4fv(skin.u.u_closed_lid_rect, face.closedLidRect);
@@ -223,16 +241,18 @@ export class FaceRenderer {
       gl.uniform1f(skin.u.u_blush_sides, frame.blush[4]);
       gl.uniform1f(skin.u.u_pallor, frame.pallor);
     }
+    gl.uniform1f(skin.u.u_skin_specular, SKIN_SPECULAR);
     mesh(face.skin, face.textures.skin, skin.u, frame.model);
     if (face.eyeCovers) {
       mesh(face.eyeCovers, face.textures.skin, skin.u, frame.model);
     } else {
-      const eye = this.programs.eye;
+      const eye = programs.eye;
       gl.useProgram(eye.program);
       face.eyes.forEach((m, side) => mesh(m, face.textures.eye, eye.u, frame.eyeModels[side]));
     }
-    const plain = this.programs.plain;
+    const plain = programs.plain;
     gl.useProgram(plain.program);
+    gl.uniform1f(plain.u.u_skin_specular, 0);
     mesh(face.mouth, face.textures.mouth, plain.u, frame.model);
     // The shell faces out and is closed where it shows: its far side is culled.
     gl.enable(gl.CULL_FACE);

@@ -65,7 +65,7 @@ export class RoomView {
       const names = ['faceTexture', 'eye', 'mouth', 'closedLid', 'colourMasksA', 'colourMasksB'];
       const decoded = await Promise.all(names.map((n) => decodeImage(pkg.images[n])));
       const images = Object.fromEntries(names.map((n, i) => [n, decoded[i]]));
-      const gpu = this.renderer.addFace(model, images, pkg.closedLidRect);
+      const gpu = this.renderer.addFace(model, images, pkg.closedLidRect, pkg.textureLight);
       return { bytes, model, gpu };
     } finally {
       pkg.release();

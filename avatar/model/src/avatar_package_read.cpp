@@ -113,6 +113,16 @@ AvatarPackage read_package(std::span<const std::uint8_t> bytes) {
     }
   }
 
+  // Optional: a package without it holds a photo's light.
+  if (manifest.contains("texture_light")) {
+    const json& light = manifest.at("texture_light");
+    if (light == "albedo")
+      package.texture_light = TextureLight::albedo;
+    else if (light != "photo")
+      throw PackageError("manifest.texture_light must be \"photo\" or \"albedo\" (what the colour textures hold); "
+                         "leave it out for a photo");
+  }
+
   const json& members = manifest.at("members");
   if (!members.is_array() || members.size() > kMaxPackageMembers) throw PackageError("manifest.members is malformed");
   std::size_t at = package_layout::kHeaderBytes + manifest_size;

@@ -64,6 +64,8 @@ std::vector<std::uint8_t> serialize_avatar_package(const AvatarPackage& package)
     for (const float r : package.head_outline) outline.push_back(std::round(r * 1000.0f) / 1000.0f);
     manifest["head_outline"] = outline;
   }
+  // Written only for albedo, so that a photo's package stays as it was.
+  if (package.texture_light == TextureLight::albedo) manifest["texture_light"] = "albedo";
   // The eye layer is optional (a package without it is shown in non-masking mode).
   const auto present = [](const Member& m) { return m.name != "eye" || !m.bytes.empty(); };
   for (const Member& m : members)

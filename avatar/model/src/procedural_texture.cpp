@@ -282,11 +282,6 @@ RgbaImage make_eye_texture(const EyeLayer& eye, const Appearance& look, int size
       }
       glm::vec3 c = glm::mix(iris, sclera, std::clamp((angle - iris_angle) / 0.03f + 0.5f, 0.0f, 1.0f));
       c = glm::mix(glm::vec3(0.03f), c, std::clamp((angle - pupil_angle) / 0.02f + 0.5f, 0.0f, 1.0f));
-      if (!pattern) {
-        // A highlight, so the eye looks wet.
-        const float glint = glm::length(d - glm::vec2(-0.03f, 0.035f));
-        c = glm::mix(c, glm::vec3(1.0f), soft_inside(glint - 0.012f, 0.01f) * 0.8f);
-      }
       put(image, x, y, c, 1.0f);
     }
   return image;

@@ -68,10 +68,11 @@ EMSCRIPTEN_KEEPALIVE int fw_last_refusal() { return static_cast<int>(last_refusa
 
 EMSCRIPTEN_KEEPALIVE void fw_package_release(int handle) { packages.release(handle); }
 
-/// 0 version, 1 generic_face_version.
+/// 0 version, 1 generic_face_version, 2 texture_light (fw::model::TextureLight's value).
 EMSCRIPTEN_KEEPALIVE int fw_package_int(int handle, int which) {
   const auto* p = packages.find(handle);
   if (!p) return -1;
+  if (which == 2) return static_cast<int>(p->texture_light);
   return which == 0 ? p->version : p->generic_face_version;
 }
 

@@ -1,16 +1,20 @@
 #version 300 es
 // The one fragment shader of facewire (see face.vert), compiled once per
-// kind of part with these defines inserted after the #version line:
+// kind of part with these defines inserted after the #version line (of
+// both stages):
 //   FW_CLOSED_LID  the skin: fades in the closed lids
 //   FW_BLOOD       the skin in a frame with blush or pallor
-//   FW_SPECULAR    an eyeball: a wet highlight
+//   FW_SPECULAR    an eyeball: a wet highlight and a catch-light
+//   FW_ALBEDO      a face whose textures are albedo (a procedural face):
+//                  lit by sky, ground and a key light; without it the
+//                  textures are a photo, which holds its own light
 //   FW_ALPHA_TEST  no multisampling: alpha under 0.5 is a hole
 //   FW_SQUARE_ROOT_COLOUR  colour textures hold the square root of linear
 //                  light (the native renderer's, for llvmpipe's speed);
 //                  without it they are sRGB textures, decoded on lookup
-// and none for the mouth cavity and the head shell. Variants rather than
-// branches on uniforms: a software rasteriser runs both sides of a branch
-// for every fragment, and a frame is mostly fragments.
+// and none but FW_ALBEDO for the mouth cavity and the head shell. Variants
+// rather than branches on uniforms: a software rasteriser runs both sides
+// of a branch for every fragment, and a frame is mostly fragments.
 //
 // Colour is computed in linear light (colour textures are sRGB textures,
 // decoded on lookup, or square roots squared here) and encoded to sRGB here, because both targets store
@@ -19,15 +23,20 @@
 precision highp float;
 
 in vec3 v_normal;
-in vec3 v_rest_normal;
 in vec2 v_uv;
-in vec3 v_world;
+#ifdef FW_ALBEDO
+in float v_fresnel;
+#else
+in float v_relight;
+#endif
+#if defined(FW_ALBEDO) || defined(FW_SPECULAR)
+in vec3 v_half;
+#endif
 
 uniform sampler2D u_texture;
-uniform vec3 u_light_direction;  // toward the key light, world space
+uniform vec3 u_light_direction;  // toward the key light, world space, unit length
 
 #ifdef FW_SPECULAR
-uniform vec3 u_camera_position;
 uniform float u_specular;        // 0 .. 1 for a wet eye
 #endif
 #ifdef FW_CLOSED_LID
@@ -69,15 +78,40 @@ vec3 vascular(vec3 linear_colour) {
 }
 #endif
 
-// The photo already holds its own light. Only a change of the surface's
-// direction from the photo's (a turned head, a raised brow, a turned eye)
-// changes how much of the key light it catches: the ratio of the two.
-float relighting(vec3 n, vec3 rest) {
-  vec3 l = normalize(u_light_direction);
-  float now = 0.35 + 0.65 * max(dot(n, l), 0.0);
-  float then = 0.35 + 0.65 * max(dot(rest, l), 0.0);
-  return clamp(now / then, 0.45, 1.6);
+#ifdef FW_ALBEDO
+// Light for albedo: a sky-and-ground (hemisphere) ambient, the common
+// real-time stand-in for light from everywhere (cool from above, warm
+// bounce from below), plus a key light above and to the side, wrapped
+// (Lambert over a wider range) so the terminator is soft as it is on skin,
+// where light scatters under the surface. Together about 1 on a frontal
+// face, so the texture's colour is what the front of the face shows.
+const vec3 kSky = vec3(0.40, 0.43, 0.48);
+const vec3 kGround = vec3(0.16, 0.13, 0.11);
+const vec3 kKey = vec3(0.86, 0.83, 0.78);
+const float kWrap = 0.5;  // (n.l + w) / (1 + w)
+
+// Skin's specular: a broad, low lobe (Weyrich et al. 2006, "Analysis of
+// human faces using a measurement-based skin reflectance model": roughness
+// about 0.3-0.45, here Blinn-Phong's 16th power) times Schlick's Fresnel
+// (v_fresnel, face.vert). Its scale (the lobe's normalisation and the
+// key's strength) is a uniform set per part: the face's skin has it, the
+// head shell, mostly hair, does not (on hair the lobe read as a plastic
+// helmet's sheen), and one program may draw both.
+uniform float u_skin_specular;
+
+vec3 albedo_light(vec3 albedo, vec3 n) {
+  float n_dot_l = dot(n, u_light_direction);
+  // Constants folded: mix(ground, sky, n.y / 2 + 1/2) and (n.l + w) / (1 + w).
+  vec3 ambient = 0.5 * (kSky + kGround) + 0.5 * (kSky - kGround) * n.y;
+  vec3 irradiance = ambient + kKey * max(n_dot_l * (1.0 / (1.0 + kWrap)) + kWrap / (1.0 + kWrap), 0.0);
+  float h = max(dot(n, v_half), 0.0);
+  h *= h;
+  h *= h;
+  h *= h;
+  h *= h;
+  return albedo * irradiance + kKey * (u_skin_specular * v_fresnel * h * max(n_dot_l, 0.0));
 }
+#endif
 
 // The multisample resolve then averages encoded values: an edge pixel comes
 // out a little darker than a linear average would make it, an accepted cost.
@@ -130,24 +164,27 @@ void main() {
   if (texel.a < 0.5) discard;
 #endif
   vec3 n = normalize(v_normal);
-  vec3 rest = normalize(v_rest_normal);
-  if (!gl_FrontFacing) {
-    n = -n;
-    rest = -rest;
-  }
-  vec3 colour = texel.rgb * relighting(n, rest);
+  if (!gl_FrontFacing) n = -n;
+#ifdef FW_ALBEDO
+  vec3 colour = albedo_light(texel.rgb, n);
+#else
+  vec3 colour = texel.rgb * v_relight;
+#endif
 #ifdef FW_SPECULAR
-  // A wet eye reflects the key light: the one highlight the photo cannot
-  // hold, since the eye turns.
-  vec3 half_vector = normalize(normalize(u_light_direction) + normalize(u_camera_position - v_world));
-  // The 120th power as products of squares (64 + 32 + 16 + 8): pow() is a
-  // logarithm and an exponential for every fragment in a software renderer.
-  float s8 = max(dot(n, half_vector), 0.0);
-  s8 *= s8;
-  s8 *= s8;
-  s8 *= s8;
-  float s16 = s8 * s8, s32 = s16 * s16, s64 = s32 * s32;
-  colour += vec3(u_specular * s64 * s32 * s16 * s8);
+  // A wet eye reflects the key light: a gentle sheen (the 16th power) and a
+  // catch-light, the small bright image of the light (as of a window) on
+  // the cornea, 6 degrees of the surface's turn across, soft to 10. Both lie
+  // where the cornea faces halfway between the light and the camera, so
+  // they stay on the light's side and shift only with the cornea's bulge as
+  // the eye turns (as the first Purkinje image does), never painted on the
+  // iris. The photo cannot hold either: the eye turns.
+  float h = max(dot(n, v_half), 0.0);
+  float h16 = h * h;
+  h16 *= h16;
+  h16 *= h16;
+  h16 *= h16;
+  float catch_light = smoothstep(0.9848, 0.9945, h);  // cos 10 and 6 degrees
+  colour += vec3(u_specular * (0.06 * h16 + catch_light));
 #endif
   o_colour = vec4(encode_srgb(colour), texel.a);
 }

@@ -34,6 +34,7 @@ bool load_avatar_appearance(const model::AvatarPackage& package, AvatarAppearanc
       !decode(package.colour_masks_b, "colour_masks_b", t.masks_b))
     return false;
   t.closed_lid_rect = package.closed_lid_rect;
+  t.light = package.texture_light;
   loaded.avatar = model::make_avatar_model(model::generic_face(), package.fitted_vertices, package.head_outline);
   appearance = std::move(loaded);
   return true;
@@ -80,6 +81,7 @@ AvatarAppearance generic_appearance(const model::Appearance& look) {
   AvatarAppearance a;
   a.avatar = model::generic_avatar_model();
   const model::GenericFace& face = a.avatar.face;
+  a.textures.light = model::TextureLight::albedo;
   a.textures.skin = model::make_skin_texture(face, look);
   a.textures.eye = model::make_eye_texture(face.eyes[0], look);
   a.textures.mouth = model::make_mouth_texture();

@@ -25,6 +25,7 @@ struct GpuFace {
   GpuMesh head;  // the shell behind the face, in the skin's texture; moves only with the head pose
   GpuMesh eye_covers;  // non-masking mode only: the eye holes filled, on the skin's vertices
   bool eye_layer = true;
+  model::TextureLight light = model::TextureLight::photo;  // chooses every part's variant
   std::array<GpuMesh, 2> eyes;
   std::array<glm::vec3, 2> eye_centres{};
   std::vector<glm::uvec3> skin_triangles;  // for normals when the shape changes
@@ -42,9 +43,16 @@ struct GpuFace {
 namespace {
 
 constexpr int kMinSize = 16, kMaxSize = 4096;
-// Only the eye has a highlight of its own: the skin and the mouth keep the
-// photo's light.
-constexpr float kEyeSpecular = 0.5f;
+// The eye's sheen and catch-light (face.frag): at 1 the catch-light is as
+// bright as a white surface facing the key light, so it reads as near white
+// on any iris.
+constexpr float kEyeSpecular = 1.0f;
+// The scale of the skin's specular lobe on albedo faces (face.frag): the
+// face's skin only, never the head shell.
+constexpr float kSkinSpecular = 2.5f;
+// Toward the key light: above and to the viewer's right, as a portrait's
+// key light usually is; unit length, as the shaders expect.
+const glm::vec3 kKeyLight = glm::normalize(glm::vec3(0.45f, 0.6f, 0.9f));
 
 // Texture units: the part's own texture, then the skin's extra ones.
 enum Unit : GLint { kMainUnit = 0, kClosedLidUnit = 1, kMasksAUnit = 2, kMasksBUnit = 3 };
@@ -62,7 +70,7 @@ model::RgbaImage or_black(const model::RgbaImage& image) {
 struct FaceRenderer::Impl {
   RendererOptions options;
   std::unique_ptr<OffscreenContext> context;
-  std::array<ShaderVariant, kPartShaderCount> shaders;
+  std::array<ShaderVariant, kShaderCount> shaders;
   // Multisampled target drawn into, then resolved into a plain one to read.
   Framebuffer draw_framebuffer, resolve_framebuffer;
   Renderbuffer draw_colour, draw_depth, resolve_colour;
@@ -70,10 +78,11 @@ struct FaceRenderer::Impl {
   std::vector<GpuFace> faces;
 
   bool set_up_framebuffers(std::string& error);
-  const ShaderUniforms& use(PartShader kind) {
-    glUseProgram(shaders[static_cast<std::size_t>(kind)].program.get());
-    return shaders[static_cast<std::size_t>(kind)].uniforms;
+  const ShaderUniforms& use(std::size_t variant) {
+    glUseProgram(shaders[variant].program.get());
+    return shaders[variant].uniforms;
   }
+  const ShaderUniforms& use(PartShader kind, model::TextureLight light) { return use(shader_index(kind, light)); }
   void set_frame_uniforms(const Camera& camera);
   std::array<std::uint8_t, 4> background_texel{};  // the background as the targets store it
   void draw_face(const GpuFace& face, const FaceDraw& draw, const Camera& camera);
@@ -174,12 +183,11 @@ void bind_texture(Unit unit, const Texture& texture) {
 }  // namespace
 
 void FaceRenderer::Impl::set_frame_uniforms(const Camera& camera) {
-  const glm::vec3 light(0.45f, 0.6f, 0.9f);  // key light above and to the viewer's right
-  for (std::size_t i = 0; i < kPartShaderCount; ++i) {
-    const ShaderUniforms& u = use(static_cast<PartShader>(i));
+  for (std::size_t i = 0; i < kShaderCount; ++i) {
+    const ShaderUniforms& u = use(i);
     glUniformMatrix4fv(u.view_projection, 1, GL_FALSE, glm::value_ptr(camera.view_projection()));
     glUniform3fv(u.camera_position, 1, glm::value_ptr(camera.position));
-    glUniform3fv(u.light_direction, 1, glm::value_ptr(light));
+    glUniform3fv(u.light_direction, 1, glm::value_ptr(kKeyLight));
     glUniform1i(u.texture, kMainUnit);
     glUniform1i(u.closed_lid, kClosedLidUnit);
     glUniform1i(u.masks_a, kMasksAUnit);
@@ -198,7 +206,7 @@ void FaceRenderer::Impl::draw_face(const GpuFace& face, const FaceDraw& draw, co
   // A face without a closed-lid layer has an empty rectangle: nothing to fade in.
   const bool lids_closing = face.closed_lid_rect != glm::vec4(0.0f) &&
                             (draw.lid_closure.x > 0.0f || draw.lid_closure.y > 0.0f);
-  const ShaderUniforms& skin = use(skin_shader(lids_closing, blood));
+  const ShaderUniforms& skin = use(skin_shader(lids_closing, blood), face.light);
   if (lids_closing) {
     bind_texture(kClosedLidUnit, face.closed_lid);
     glUniform4fv(skin.closed_lid_rect, 1, glm::value_ptr(face.closed_lid_rect));
@@ -211,12 +219,13 @@ void FaceRenderer::Impl::draw_face(const GpuFace& face, const FaceDraw& draw, co
     glUniform1f(skin.blush_sides, draw.blush[4]);
     glUniform1f(skin.pallor, draw.pallor);
   }
+  glUniform1f(skin.skin_specular, kSkinSpecular);
   draw_mesh(face.skin, face.skin_texture, skin, draw.model);
   const glm::mat4 skin_mvp = camera.view_projection() * draw.model;
   if (!face.eye_layer) {
     draw_mesh(face.eye_covers, face.skin_texture, skin, draw.model);
   } else {
-    const ShaderUniforms& eye = use(PartShader::eye);
+    const ShaderUniforms& eye = use(PartShader::eye, face.light);
     for (std::size_t side = 0; side < 2; ++side) {
       const glm::vec2 yaw_pitch = draw.eye_yaw_pitch_rad[side];
       const glm::mat4 eye_model = draw.model * eye_transform(face.eye_centres[side], yaw_pitch.x, yaw_pitch.y);
@@ -225,7 +234,8 @@ void FaceRenderer::Impl::draw_face(const GpuFace& face, const FaceDraw& draw, co
       glDisable(GL_SCISSOR_TEST);
     }
   }
-  const ShaderUniforms& plain = use(PartShader::plain);
+  const ShaderUniforms& plain = use(PartShader::plain, face.light);
+  glUniform1f(plain.skin_specular, 0.0f);
   scissor_to_opening(face, face.mouth_slit, skin_mvp);
   draw_mesh(face.mouth, face.mouth_texture, plain, draw.model);
   glDisable(GL_SCISSOR_TEST);
@@ -299,6 +309,7 @@ FaceId FaceRenderer::add_face(const model::GenericFace& face, const FaceTextures
   gpu.eye_holes = face.eye_holes;
   gpu.mouth_slit = face.mouth_slit;
   gpu.eye_layer = textures.eye.width > 0;
+  gpu.light = textures.light;
   if (!gpu.eye_layer) {
     std::vector<glm::uvec3> fans;
     for (const auto& hole : face.eye_holes)

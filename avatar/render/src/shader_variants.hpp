@@ -1,12 +1,14 @@
 #pragma once
-// The fragment shader's variants (see the head of shaders/face.frag): one
-// program per kind of part, and where each one's uniforms live.
+// The shaders' variants (see the head of shaders/face.frag): one program per
+// kind of part and per kind of texture light, and where each one's uniforms
+// live.
 #include <array>
 #include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 
+#include "fw/model/avatar_package.hpp"
 #include "gl_objects.hpp"
 
 namespace fw::render {
@@ -15,6 +17,11 @@ namespace fw::render {
 // those lookups would change nothing, and llvmpipe pays for every one.
 enum class PartShader { plain, skin_closing_lids, skin_closing_lids_with_blood, skin_with_blood, eye };
 inline constexpr std::size_t kPartShaderCount = 5;
+/// Every part's variant once for photo textures and once for albedo (FW_ALBEDO).
+inline constexpr std::size_t kShaderCount = 2 * kPartShaderCount;
+
+/// Where the variant of `part` for textures holding `light` is among the built ones.
+std::size_t shader_index(PartShader part, model::TextureLight light);
 
 /// The skin's variant for a frame: `lids_closing` if either lid closes at
 /// all, `blood` if any blush or pallor shows.
@@ -28,7 +35,7 @@ std::string with_defines(std::string_view source, std::span<const std::string_vi
 struct ShaderUniforms {
   GLint model = -1, view_projection = -1, camera_position = -1, light_direction = -1, specular = -1, texture = -1;
   GLint closed_lid = -1, closed_lid_rect = -1, lid_closure = -1, masks_a = -1, masks_b = -1, blush_a = -1,
-        blush_sides = -1, pallor = -1;
+        blush_sides = -1, pallor = -1, skin_specular = -1;
 };
 
 struct ShaderVariant {
@@ -36,9 +43,10 @@ struct ShaderVariant {
   ShaderUniforms uniforms;
 };
 
-/// Builds every variant; `alpha_test` (no multisampling) makes alpha under
-/// 0.5 a hole instead of partial coverage. nullopt and `error` on failure.
-std::optional<std::array<ShaderVariant, kPartShaderCount>> build_part_shaders(std::string_view vertex_source,
+/// Builds every variant (both stages get its defines); `alpha_test` (no
+/// multisampling) makes alpha under 0.5 a hole instead of partial coverage.
+/// nullopt and `error` on failure.
+std::optional<std::array<ShaderVariant, kShaderCount>> build_part_shaders(std::string_view vertex_source,
                                                                                std::string_view fragment_source,
                                                                                bool alpha_test, std::string& error);
 

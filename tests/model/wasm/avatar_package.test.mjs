@@ -11,6 +11,9 @@ const refusals = ['damaged', 'other_format_version', 'other_generic_face'];
 
 test('the goldens hold sound and damaged packages', () => {
   assert.ok(goldens.packages.filter((p) => p.sound).length >= 2);
+  // Both kinds of texture light: a photo's (the default) and albedo.
+  const lights = goldens.packages.filter((p) => p.sound).map((p) => p.package.texture_light);
+  assert.deepEqual([...new Set(lights)].sort(), ['albedo', 'photo']);
   assert.ok(goldens.packages.filter((p) => !p.sound).length >= 8);
 });
 
@@ -27,6 +30,7 @@ for (const golden of goldens.packages.filter((p) => p.sound)) {
       assert.equal(p.genericFaceVersion, g.generic_face_version);
       assert.deepEqual([...p.skinTone], g.skin_tone);
       assert.deepEqual([...p.irisColour], g.iris_colour);
+      assert.equal(p.textureLight, g.texture_light);
       // Parsed values are the same floats, bit for bit: no arithmetic between.
       assert.deepEqual([...p.closedLidRect], g.closed_lid_rect);
       assert.deepEqual([...p.headOutline], g.head_outline);

@@ -19,7 +19,8 @@ AvatarPackage parsed(const std::vector<std::uint8_t>& bytes) {
 }
 
 // A fit unlike the photo's: wider below the eyes, a longer face, a slight
-// tilt; no eye layer (non-masking mode) and the generic head outline.
+// tilt; no eye layer (non-masking mode), the generic head outline and
+// albedo textures (a procedural face's).
 AvatarPackage synthetic_package(const AvatarPackage& seed) {
   AvatarPackage p = seed;
   const model::GenericFace& generic = model::generic_face();
@@ -34,6 +35,7 @@ AvatarPackage synthetic_package(const AvatarPackage& seed) {
   p.eye = {};
   p.skin_tone = {200, 150, 120};
   p.iris_colour = {40, 90, 60};
+  p.texture_light = model::TextureLight::albedo;
   return p;
 }
 

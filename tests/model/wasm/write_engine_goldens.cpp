@@ -126,6 +126,7 @@ json package_json(const model::AvatarPackage& p) {
   };
   return {{"version", p.version}, {"generic_face_version", p.generic_face_version},
           {"skin_tone", p.skin_tone}, {"iris_colour", p.iris_colour},
+          {"texture_light", p.texture_light == model::TextureLight::albedo ? "albedo" : "photo"},
           {"closed_lid_rect", flat(std::span<const glm::vec4>(&p.closed_lid_rect, 1))},
           {"head_outline", p.head_outline}, {"fitted_vertices", flat(p.fitted_vertices)},
           {"landmarks", flat(std::span<const glm::vec2>(p.landmarks))},

@@ -41,5 +41,14 @@ TEST(DemoFaces, TheWhitesOfTheResidentsEyesAreWhite) {
   }
 }
 
+TEST(DemoFaces, TheResidentsTexturesAreAlbedoForTheRendererToLight) {
+  for (std::uint32_t index = 0; index < 3; ++index) {
+    model::AvatarPackage package;
+    std::string error;
+    ASSERT_TRUE(model::parse_avatar_package(make_demo_package(index), package, error)) << error;
+    EXPECT_EQ(package.texture_light, model::TextureLight::albedo) << "resident " << index;
+  }
+}
+
 }  // namespace
 }  // namespace fw::server

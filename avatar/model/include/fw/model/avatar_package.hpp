@@ -26,6 +26,12 @@ inline constexpr std::size_t kMaxPackageBytes = 512 * 1024;
 inline constexpr std::size_t kMaxManifestBytes = 16 * 1024;
 inline constexpr std::size_t kMaxPackageMembers = 16;
 
+/// What a package's colour textures hold. A photo's hold the light it was
+/// taken in, so a renderer only relights where the face turns from it; a
+/// procedural face's are albedo (the surface's own colour), which a
+/// renderer lights in full.
+enum class TextureLight : std::uint8_t { photo, albedo };
+
 /// One image member: encoded bytes (WebP or PNG) and the media type.
 struct PackageImage {
   std::string type;                ///< "image/webp" or "image/png"
@@ -46,6 +52,7 @@ struct AvatarPackage {
   std::vector<float> head_outline;
   std::array<std::uint8_t, 3> skin_tone{};   ///< sRGB, median of forehead and cheeks
   std::array<std::uint8_t, 3> iris_colour{}; ///< sRGB, sampled from the photo
+  TextureLight texture_light = TextureLight::photo;  ///< the manifest's optional "texture_light"
   /// Face texture over the generic face's texture frame: alpha 0 inside the
   /// eyes and outside the person's matte (the background), soft at its edge.
   PackageImage face_texture;

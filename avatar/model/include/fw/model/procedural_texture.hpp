@@ -36,8 +36,8 @@ using IrisPattern = std::function<glm::vec3(float t, float around)>;
 /// Eyeball texture for EyeLayer's polar mapping: sclera, iris of a real
 /// size (11.7 mm across) whatever the layer's radius, limbal ring, pupil.
 /// With `iris`, the iris is that pattern (a photo's) instead of streaks of
-/// `look.iris`, and the texture has no painted highlight (the photo's own
-/// light is in it).
+/// `look.iris`. No highlight is painted: the renderer adds the catch-light
+/// where the key light's reflection lies (avatar/render's face.frag).
 RgbaImage make_eye_texture(const EyeLayer& eye, const Appearance& look, int size = 128, const IrisPattern& iris = {});
 
 /// Mouth interior: dark cavity, a hint of upper teeth and of the tongue.

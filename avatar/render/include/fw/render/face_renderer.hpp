@@ -11,6 +11,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 
+#include "fw/model/avatar_package.hpp"
 #include "fw/model/generic_face.hpp"
 #include "fw/model/image.hpp"
 #include "fw/render/camera.hpp"
@@ -29,8 +30,11 @@ struct RendererOptions {
 /// closed-lid skin and the vascular masks (model/vascular_masks.hpp). An
 /// empty closed-lid or mask image turns that effect off; an empty eye image
 /// is the non-masking mode: the eye holes are filled with the skin texture
-/// (the photo's own eyes) and no eyeball is drawn.
+/// (the photo's own eyes) and no eyeball is drawn. `light` says whether the
+/// colour textures hold a photo's light (relit only where the face turns)
+/// or albedo (lit by the renderer's sky, ground and key light).
 struct FaceTextures {
+  model::TextureLight light = model::TextureLight::photo;
   model::RgbaImage skin;
   model::RgbaImage eye;
   model::RgbaImage mouth;
