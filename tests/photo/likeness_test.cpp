@@ -224,25 +224,5 @@ TEST_F(PosedHead, TiltedBackItIsFoundAndItsTiltTakenOut) {
   EXPECT_NEAR(far->report.head_pitch_deg, 30.0f, 10.0f);
 }
 
-
-TEST_F(Likeness, DebugRegions) {
-  const char* names[] = {"jaw","brows","nose","eyes","outer lip","inner lip"};
-  const int bounds[] = {0,17,27,36,48,60,68};
-  for (const Person& person : *people_) {
-    const Landmarks& a = person.on_avatar[1];
-    const Landmarks& b = person.on_photo;
-    // similarity on all but inner lips
-    using C = std::complex<double>;
-    C ma(0), mb(0); double n=0;
-    for (std::size_t i=0;i<60;++i) ma+=C(a[i].x,a[i].y), mb+=C(b[i].x,b[i].y), n+=1;
-    ma/=n; mb/=n; C cross(0); double norm=0;
-    for (std::size_t i=0;i<60;++i){C p=C(a[i].x,a[i].y)-ma,q=C(b[i].x,b[i].y)-mb; cross+=std::conj(p)*q; norm+=std::norm(p);}
-    C s=cross/norm;
-    glm::vec2 r(0),l(0); for(int i=0;i<6;++i) r+=b[36+i]/6.0f, l+=b[42+i]/6.0f; float io=glm::length(l-r);
-    std::cout << person.photo;
-    for (int k=0;k<6;++k){ float sum=0; for(int i=bounds[k];i<bounds[k+1];++i){C m=s*(C(a[i].x,a[i].y)-ma)+mb; sum+=float(std::abs(m-C(b[i].x,b[i].y)))/io;} std::cout << " " << names[k] << "=" << sum/(bounds[k+1]-bounds[k]); }
-    std::cout << "\n";
-  }
-}
 }  // namespace
 }  // namespace fw::photo
