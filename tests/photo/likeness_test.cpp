@@ -13,6 +13,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "fw/photo/prepare_avatar.hpp"
+#include "neutral_readings.hpp"
 #include "photo_variants.hpp"
 #include "rendered_avatar.hpp"
 #include "shared_preparer.hpp"
@@ -21,8 +22,8 @@
 namespace fw::photo {
 namespace {
 
-using Landmarks = std::array<glm::vec2, model::kLandmarkCount>;
-constexpr float kRadiansPerDegree = 3.14159265f / 180.0f;
+using neutral_readings::Landmarks;
+using neutral_readings::kRadiansPerDegree;
 
 // Which landmarks a likeness counts: all 68, or all but the mouth's twenty
 // (48-67). A photo of a smile or of speech has an avatar whose lips meet at
@@ -72,33 +73,21 @@ struct Person {
 
 class Likeness : public ::testing::Test {
  protected:
+  // At seven sizes: dlib's points move by a fraction of a pixel with the
+  // size, as much as some changes being measured.
   static void SetUpTestSuite() {
     people_ = new std::vector<Person>;
-    for (const std::string name : {"astronaut.png", "grace_hopper.jpg", "kphotoalbum_jesper.jpg"}) {
-      Person person;
-      person.photo = name;
-      const cv::Mat photo = cv::imread(test::test_photo(name), cv::IMREAD_COLOR);
-      ASSERT_FALSE(photo.empty()) << name;
-      PrepError error;
-      const auto avatar = test::shared_preparer().prepare(test::encode(photo), {}, error);
-      ASSERT_TRUE(avatar.has_value()) << name << ": " << error.message;
-      person.on_photo = avatar->report.photo_landmarks;
-      // The neutral face seen as the photo's camera saw the head: a
-      // similarity cannot undo a turn or a tilt, so a frontal render of a
-      // photo taken from a little above would differ from it by the pose,
-      // not by the person. At seven sizes: dlib's points move by a fraction
-      // of a pixel with the size, as much as some changes being measured.
-      codec::FaceParams as_photographed;
-      as_photographed.head_yaw_rad = avatar->report.head_yaw_deg * kRadiansPerDegree;
-      as_photographed.head_pitch_rad = avatar->report.head_pitch_deg * kRadiansPerDegree;
-      for (const int size : {416, 448, 480, 512, 544, 576, 608}) {
-        test::RenderedAvatar rendered(avatar->package, size, {0.5f, 0.5f, 0.5f});
-        const auto seen =
-            test::shared_preparer().prepare(test::encode(test::to_bgr(rendered.draw(as_photographed))), {}, error);
-        ASSERT_TRUE(seen.has_value()) << "dlib finds no face on " << name << "'s avatar: " << error.message;
-        person.on_avatar.push_back(seen->report.photo_landmarks);
+    try {
+      for (const std::string name : neutral_readings::kPortraits) {
+        Person person;
+        person.photo = name;
+        person.on_photo = neutral_readings::prepared_portrait(name).report.photo_landmarks;
+        for (const int size : {416, 448, 480, 512, 544, 576, 608})
+          person.on_avatar.push_back(neutral_readings::seen_at_rest(name, size));
+        people_->push_back(person);
       }
-      people_->push_back(person);
+    } catch (const std::exception& e) {
+      FAIL() << e.what();
     }
   }
   static void TearDownTestSuite() { delete people_; }

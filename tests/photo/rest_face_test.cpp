@@ -10,20 +10,15 @@
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
-#include <opencv2/imgcodecs.hpp>
 
 #include "fw/photo/prepare_avatar.hpp"
+#include "neutral_readings.hpp"
 #include "photo_expression.hpp"
-#include "photo_variants.hpp"
-#include "rendered_avatar.hpp"
-#include "shared_preparer.hpp"
-#include "test_paths.hpp"
 
 namespace fw::photo {
 namespace {
 
-using Landmarks = std::array<glm::vec2, model::kLandmarkCount>;
-constexpr float kRadiansPerDegree = 3.14159265f / 180.0f;
+using neutral_readings::Landmarks;
 
 // Soukupova & Cech's eye aspect ratio ("Real-Time Eye Blink Detection using
 // Facial Landmarks", 2016): the two lid-to-lid heights over the eye's width,
@@ -92,26 +87,19 @@ class PersonAtRest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     people_ = new std::vector<Person>;
-    for (const std::string name : {"astronaut.png", "grace_hopper.jpg", "kphotoalbum_jesper.jpg"}) {
-      const cv::Mat photo = cv::imread(test::test_photo(name), cv::IMREAD_COLOR);
-      ASSERT_FALSE(photo.empty()) << name;
-      PrepError error;
-      const auto avatar = test::shared_preparer().prepare(test::encode(photo), {}, error);
-      ASSERT_TRUE(avatar.has_value()) << name << ": " << error.message;
-      codec::FaceParams as_photographed;
-      as_photographed.head_yaw_rad = avatar->report.head_yaw_deg * kRadiansPerDegree;
-      as_photographed.head_pitch_rad = avatar->report.head_pitch_deg * kRadiansPerDegree;
-      std::vector<float> eye_ratios, lip_gaps;
-      for (const int size : kRenderSizes) {
-        test::RenderedAvatar rendered(avatar->package, size, {0.5f, 0.5f, 0.5f});
-        const auto seen =
-            test::shared_preparer().prepare(test::encode(test::to_bgr(rendered.draw(as_photographed))), {}, error);
-        ASSERT_TRUE(seen.has_value()) << "dlib finds no face on " << name << "'s neutral avatar (" << size
-                                      << " px): " << error.message;
-        eye_ratios.push_back(mean_eye_aspect_ratio(seen->report.photo_landmarks));
-        lip_gaps.push_back(lip_gap(seen->report.photo_landmarks));
+    try {
+      for (const std::string name : neutral_readings::kPortraits) {
+        std::vector<float> eye_ratios, lip_gaps;
+        for (const int size : kRenderSizes) {
+          const Landmarks& seen = neutral_readings::seen_at_rest(name, size);
+          eye_ratios.push_back(mean_eye_aspect_ratio(seen));
+          lip_gaps.push_back(lip_gap(seen));
+        }
+        people_->push_back(
+            {name, neutral_readings::prepared_portrait(name).report, median(eye_ratios), median(lip_gaps)});
       }
-      people_->push_back({name, avatar->report, median(eye_ratios), median(lip_gaps)});
+    } catch (const std::exception& e) {
+      FAIL() << e.what();
     }
   }
   static void TearDownTestSuite() { delete people_; }
