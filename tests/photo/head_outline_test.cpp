@@ -19,7 +19,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "fw/photo/prepare_avatar.hpp"
-#include "photo_pose.hpp"
+#include "neutral_readings.hpp"
 #include "photo_variants.hpp"
 #include "rendered_avatar.hpp"
 #include "shared_preparer.hpp"
@@ -153,7 +153,7 @@ TEST_P(HeadOutline, NoPhotoPixelFromOutsideTheHeadAndNoHoles) {
   const std::string stem = std::filesystem::path(portrait.photo).stem().string();
   for (const float yaw_deg : {0.0f, 30.0f, -30.0f, 60.0f, -60.0f}) {
     codec::FaceParams turned;
-    turned.head_yaw_rad = yaw_deg * test_pose::kRadiansPerDegree;
+    turned.head_yaw_rad = yaw_deg * neutral_readings::kRadiansPerDegree;
     const cv::Mat seen = test::to_bgr(plain_avatar.draw(turned));
     const cv::Mat traced_seen = test::to_bgr(traced_avatar.draw(turned));
     const int head_pixels = seen.rows * seen.cols - cv::countNonZero(background_pixels(seen));

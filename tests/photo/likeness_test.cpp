@@ -13,7 +13,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "fw/photo/prepare_avatar.hpp"
-#include "photo_pose.hpp"
+#include "neutral_readings.hpp"
 #include "photo_variants.hpp"
 #include "rendered_avatar.hpp"
 #include "shared_preparer.hpp"
@@ -22,7 +22,8 @@
 namespace fw::photo {
 namespace {
 
-using test_pose::Landmarks;
+using neutral_readings::Landmarks;
+using neutral_readings::kRadiansPerDegree;
 
 // Which landmarks a likeness counts: all 68, or all but the mouth's twenty
 // (48-67). A photo of a smile or of speech has an avatar whose lips meet at
@@ -64,7 +65,7 @@ float aligned_median_error(const Landmarks& a, const Landmarks& b, Points points
   return errors[errors.size() / 2];
 }
 
-struct PersonAndAvatar {
+struct Person {
   std::string photo;
   Landmarks on_photo{};
   std::vector<Landmarks> on_avatar;  ///< one per render size
@@ -72,40 +73,30 @@ struct PersonAndAvatar {
 
 class Likeness : public ::testing::Test {
  protected:
+  // At seven sizes: dlib's points move by a fraction of a pixel with the
+  // size, as much as some changes being measured.
   static void SetUpTestSuite() {
-    people_ = new std::vector<PersonAndAvatar>;
-    for (const std::string name : {"astronaut.png", "grace_hopper.jpg", "kphotoalbum_jesper.jpg"}) {
-      PersonAndAvatar person;
-      person.photo = name;
-      const cv::Mat photo = cv::imread(test::test_photo(name), cv::IMREAD_COLOR);
-      ASSERT_FALSE(photo.empty()) << name;
-      PrepError error;
-      const auto avatar = test::shared_preparer().prepare(test::encode(photo), {}, error);
-      ASSERT_TRUE(avatar.has_value()) << name << ": " << error.message;
-      person.on_photo = avatar->report.photo_landmarks;
-      // The neutral face seen as the photo's camera saw the head: a
-      // similarity cannot undo a turn or a tilt, so a frontal render of a
-      // photo taken from a little above would differ from it by the pose,
-      // not by the person. At seven sizes: dlib's points move by a fraction
-      // of a pixel with the size, as much as some changes being measured.
-      const codec::FaceParams as_photographed = test_pose::as_photographed(avatar->report);
-      for (const int size : {416, 448, 480, 512, 544, 576, 608}) {
-        test::RenderedAvatar rendered(avatar->package, size, {0.5f, 0.5f, 0.5f});
-        const auto seen =
-            test::shared_preparer().prepare(test::encode(test::to_bgr(rendered.draw(as_photographed))), {}, error);
-        ASSERT_TRUE(seen.has_value()) << "dlib finds no face on " << name << "'s avatar: " << error.message;
-        person.on_avatar.push_back(seen->report.photo_landmarks);
+    people_ = new std::vector<Person>;
+    try {
+      for (const std::string name : neutral_readings::kPortraits) {
+        Person person;
+        person.photo = name;
+        person.on_photo = neutral_readings::prepared_portrait(name).report.photo_landmarks;
+        for (const int size : {416, 448, 480, 512, 544, 576, 608})
+          person.on_avatar.push_back(neutral_readings::seen_at_rest(name, size));
+        people_->push_back(person);
       }
-      people_->push_back(person);
+    } catch (const std::exception& e) {
+      FAIL() << e.what();
     }
   }
   static void TearDownTestSuite() { delete people_; }
-  static inline std::vector<PersonAndAvatar>* people_ = nullptr;
+  static inline std::vector<Person>* people_ = nullptr;
 };
 
 // The mean over the render sizes of the aligned median error: one size's
 // reading of a face in glasses varied from 0.024 to 0.052.
-float likeness_error(const PersonAndAvatar& person, const Landmarks& photo, Points points = Points::all) {
+float likeness_error(const Person& person, const Landmarks& photo, Points points = Points::all) {
   float sum = 0;
   for (const Landmarks& seen : person.on_avatar) sum += aligned_median_error(seen, photo, points);
   return sum / static_cast<float>(person.on_avatar.size());
@@ -126,7 +117,7 @@ float likeness_before(const std::string& photo) {
 constexpr float kReadingJitter = 1.1f;
 
 TEST_F(Likeness, EachAvatarsLandmarksFollowItsPhotosClosely) {
-  for (const PersonAndAvatar& person : *people_) {
+  for (const Person& person : *people_) {
     const float error = likeness_error(person, person.on_photo);
     const float without_mouth = likeness_error(person, person.on_photo, Points::without_mouth);
     std::cout << person.photo << ": median landmark error " << error << " inter-ocular, without the mouth "
@@ -137,8 +128,8 @@ TEST_F(Likeness, EachAvatarsLandmarksFollowItsPhotosClosely) {
 }
 
 TEST_F(Likeness, EachAvatarIsCloserToItsOwnPhotoThanToAnyOther) {
-  for (const PersonAndAvatar& person : *people_)
-    for (const PersonAndAvatar& other : *people_) {
+  for (const Person& person : *people_)
+    for (const Person& other : *people_) {
       if (&other == &person) continue;
       EXPECT_LT(likeness_error(person, person.on_photo), likeness_error(person, other.on_photo))
           << person.photo << "'s avatar looks more like " << other.photo;
@@ -188,7 +179,7 @@ class PosedHead : public ::testing::Test {
 TEST_F(PosedHead, TurnedItsPoseIsFoundAndItsFrontalAvatarMatchesTheFrontalOnes) {
   for (const float yaw_deg : {30.0f, -30.0f}) {
     codec::FaceParams turned;
-    turned.head_yaw_rad = yaw_deg * test_pose::kRadiansPerDegree;
+    turned.head_yaw_rad = yaw_deg * kRadiansPerDegree;
     Landmarks remade{};
     const auto again = prepare_posed(turned, remade);
     ASSERT_TRUE(again.has_value()) << yaw_deg;
@@ -205,14 +196,14 @@ TEST_F(PosedHead, TurnedItsPoseIsFoundAndItsFrontalAvatarMatchesTheFrontalOnes) 
 // texture of a face seen from below), so only the finding is asserted.
 TEST_F(PosedHead, TiltedBackItIsFoundAndItsTiltTakenOut) {
   codec::FaceParams tilted;
-  tilted.head_pitch_rad = 20.0f * test_pose::kRadiansPerDegree;
+  tilted.head_pitch_rad = 20.0f * kRadiansPerDegree;
   Landmarks remade{};
   const auto again = prepare_posed(tilted, remade);
   ASSERT_TRUE(again.has_value());
   EXPECT_NEAR(again->report.head_pitch_deg, 20.0f, 8.0f);
   EXPECT_LE(aligned_median_error(remade, *frontal_), 0.08f);
 
-  tilted.head_pitch_rad = 30.0f * test_pose::kRadiansPerDegree;
+  tilted.head_pitch_rad = 30.0f * kRadiansPerDegree;
   test::RenderedAvatar avatar(*original_, 512, {0.5f, 0.5f, 0.5f});
   PrepError error;
   const auto far = test::shared_preparer().prepare(test::encode(test::to_bgr(avatar.draw(tilted))), {}, error);

@@ -10,20 +10,15 @@
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
-#include <opencv2/imgcodecs.hpp>
 
 #include "fw/photo/prepare_avatar.hpp"
+#include "neutral_readings.hpp"
 #include "photo_expression.hpp"
-#include "photo_pose.hpp"
-#include "photo_variants.hpp"
-#include "rendered_avatar.hpp"
-#include "shared_preparer.hpp"
-#include "test_paths.hpp"
 
 namespace fw::photo {
 namespace {
 
-using test_pose::Landmarks;
+using neutral_readings::Landmarks;
 
 // Soukupova & Cech's eye aspect ratio ("Real-Time Eye Blink Detection using
 // Facial Landmarks", 2016): the two lid-to-lid heights over the eye's width,
@@ -82,7 +77,7 @@ float median(std::vector<float> values) {
   return values[values.size() / 2];
 }
 
-struct PersonSeenAtRest {
+struct Person {
   std::string photo;
   PrepReport report;
   float rest_eye_aspect_ratio = 0, rest_lip_gap = 0;
@@ -91,29 +86,24 @@ struct PersonSeenAtRest {
 class PersonAtRest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    people_ = new std::vector<PersonSeenAtRest>;
-    for (const std::string name : {"astronaut.png", "grace_hopper.jpg", "kphotoalbum_jesper.jpg"}) {
-      const cv::Mat photo = cv::imread(test::test_photo(name), cv::IMREAD_COLOR);
-      ASSERT_FALSE(photo.empty()) << name;
-      PrepError error;
-      const auto avatar = test::shared_preparer().prepare(test::encode(photo), {}, error);
-      ASSERT_TRUE(avatar.has_value()) << name << ": " << error.message;
-      const codec::FaceParams as_photographed = test_pose::as_photographed(avatar->report);
-      std::vector<float> eye_ratios, lip_gaps;
-      for (const int size : kRenderSizes) {
-        test::RenderedAvatar rendered(avatar->package, size, {0.5f, 0.5f, 0.5f});
-        const auto seen =
-            test::shared_preparer().prepare(test::encode(test::to_bgr(rendered.draw(as_photographed))), {}, error);
-        ASSERT_TRUE(seen.has_value()) << "dlib finds no face on " << name << "'s neutral avatar (" << size
-                                      << " px): " << error.message;
-        eye_ratios.push_back(mean_eye_aspect_ratio(seen->report.photo_landmarks));
-        lip_gaps.push_back(lip_gap(seen->report.photo_landmarks));
+    people_ = new std::vector<Person>;
+    try {
+      for (const std::string name : neutral_readings::kPortraits) {
+        std::vector<float> eye_ratios, lip_gaps;
+        for (const int size : kRenderSizes) {
+          const Landmarks& seen = neutral_readings::seen_at_rest(name, size);
+          eye_ratios.push_back(mean_eye_aspect_ratio(seen));
+          lip_gaps.push_back(lip_gap(seen));
+        }
+        people_->push_back(
+            {name, neutral_readings::prepared_portrait(name).report, median(eye_ratios), median(lip_gaps)});
       }
-      people_->push_back({name, avatar->report, median(eye_ratios), median(lip_gaps)});
+    } catch (const std::exception& e) {
+      FAIL() << e.what();
     }
   }
   static void TearDownTestSuite() { delete people_; }
-  static inline std::vector<PersonSeenAtRest>* people_ = nullptr;
+  static inline std::vector<Person>* people_ = nullptr;
 };
 
 TEST_F(PersonAtRest, TheFaceIsFoundAtThePhotosPose) {
@@ -134,7 +124,7 @@ TEST(OpeningUndone, TheCheekRaiserNarrowsTheEyes) {
 
 TEST_F(PersonAtRest, EyesOpenAsFarAsInThePhoto) {
   ASSERT_EQ(people_->size(), 3u);
-  for (const PersonSeenAtRest& person : *people_) {
+  for (const Person& person : *people_) {
     const float photo_ear = mean_eye_aspect_ratio(person.report.photo_landmarks);
     const float narrowing = std::max(au(person.report, 6, codec::AuSide::left), au(person.report, 6, codec::AuSide::right));
     const float undone = opening_undone(narrowing);
@@ -150,7 +140,7 @@ TEST_F(PersonAtRest, EyesOpenAsFarAsInThePhoto) {
 
 TEST_F(PersonAtRest, LipsMeet) {
   ASSERT_EQ(people_->size(), 3u);
-  for (const PersonSeenAtRest& person : *people_) {
+  for (const Person& person : *people_) {
     std::cout << person.photo << ": lip gap photo " << lip_gap(person.report.photo_landmarks) << ", at rest "
               << person.rest_lip_gap << "\n";
     EXPECT_LT(person.rest_lip_gap, kClosedLipGap) << person.photo << "'s lips at rest are apart";
