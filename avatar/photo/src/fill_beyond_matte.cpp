@@ -5,6 +5,8 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "soft_inside.hpp"
+
 namespace fw::photo {
 namespace {
 
@@ -50,9 +52,14 @@ cv::Mat fill_beyond_matte(const cv::Mat& texture, const cv::Mat& matte, const cv
     const cv::Mat trust = cv::min(w3 * 4.0, 1.0);  // enough weight nearby: the level's own average
     filled = normalised.mul(trust) + up.mul(cv::Scalar::all(1.0) - trust);
   }
+  // The photo's colours fade into the filled ones over a few texels inside
+  // the matte, not at its ragged edge (soft_inside.hpp).
+  const cv::Mat own = soft_inside(solid, edge);
+  cv::Mat own3;
+  cv::merge(std::vector<cv::Mat>{own, own, own}, own3);
+  const cv::Mat blended = filled + (colour - filled).mul(own3);
   cv::Mat filled_bgr;
-  filled.convertTo(filled_bgr, CV_8UC3, 255.0);
-  texture.copyTo(filled_bgr, solid);
+  blended.convertTo(filled_bgr, CV_8UC3, 255.0);
   cv::Mat bgra;
   cv::cvtColor(filled_bgr, bgra, cv::COLOR_BGR2BGRA);
   cv::insertChannel(alpha, bgra, 3);

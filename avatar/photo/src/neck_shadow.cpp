@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "face_alignment.hpp"
+#include "soft_inside.hpp"
 
 namespace fw::photo {
 namespace {
@@ -16,6 +17,10 @@ constexpr float kShadowAtJaw = 0.55f, kShadowBelow = 0.8f, kShadowDepth = 0.35f;
 constexpr int kJawFirst = 3, kJawLast = 13;
 // What the matte keeps as the person's own colour is not shaded.
 constexpr int kOwnColour = 250;
+// How far above the jaw line the shadow begins (model units), and over how
+// many texels (per 320) it fades out into the person's own colours.
+constexpr float kShadowOnset = 0.03f;
+constexpr int kSoftTexelsPer320 = 2;
 
 float smoothstep(float x) {
   const float t = std::clamp(x, 0.0f, 1.0f);
@@ -37,16 +42,23 @@ std::optional<float> jaw_at(const ModelLandmarks& l, float x) {
 void shade_neck(cv::Mat& bgra, const cv::Mat& matte, const ModelLandmarks& landmarks,
                 const model::TextureFrame& frame) {
   const int size = bgra.cols;
+  // The shadow fades out over a few texels inside the person's own colours
+  // rather than stopping at the matte's ragged edge (soft_inside.hpp).
+  const cv::Mat own = soft_inside(matte >= kOwnColour, std::max(1, kSoftTexelsPer320 * size / 320));
   for (int col = 0; col < size; ++col) {
     const glm::vec2 top = texture_px_to_model(cv::Point2f(static_cast<float>(col), 0.0f), frame, size);
     const std::optional<float> jaw = jaw_at(landmarks, top.x);
     if (!jaw) continue;
     for (int row = 0; row < size; ++row) {
-      if (matte.at<std::uint8_t>(row, col) >= kOwnColour) continue;
+      const float own_colour = own.at<float>(row, col);
+      if (own_colour >= 1.0f) continue;
       const float y = texture_px_to_model(cv::Point2f(0.0f, static_cast<float>(row)), frame, size).y;
       const float below = *jaw - y;
-      if (below < 0.0f) continue;
-      const float shade = kShadowAtJaw + (kShadowBelow - kShadowAtJaw) * smoothstep(below / kShadowDepth);
+      if (below < -kShadowOnset) continue;
+      // Into the shadow over a short way above the jaw line, not at a step.
+      const float onset = smoothstep((below + kShadowOnset) / kShadowOnset);
+      const float cast = kShadowAtJaw + (kShadowBelow - kShadowAtJaw) * smoothstep(below / kShadowDepth);
+      const float shade = 1.0f + (cast - 1.0f) * onset * (1.0f - own_colour);
       cv::Vec4b& texel = bgra.at<cv::Vec4b>(row, col);
       for (int c = 0; c < 3; ++c) texel[c] = cv::saturate_cast<std::uint8_t>(texel[c] * shade);
     }
