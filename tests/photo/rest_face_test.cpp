@@ -1,6 +1,6 @@
 // The person at rest, as an independent observer sees it: dlib's 68 points
 // on each committed portrait and on its avatar's neutral render, in the head
-// pose the photo shows (each measure the median over three render sizes).
+// pose the photo shows (each measure the median over seven render sizes).
 // The face is found; the eyes open as far as in the photo (unless the
 // photo's expression narrowed them); the lips meet.
 #include <algorithm>
@@ -69,15 +69,14 @@ float opening_undone(float intensity) {
 
 // dlib's inner-lip and lid points move by a pixel or two from one render of
 // the same face to the next (its shape regression sees the whole face), so
-// each measure is the median over renders at three sizes.
-constexpr std::array<int, 3> kRenderSizes = {448, 512, 576};
+// each measure is the median over renders at seven sizes.
 
 float median(std::vector<float> values) {
   std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2), values.end());
   return values[values.size() / 2];
 }
 
-struct Person {
+struct RestReading {
   std::string photo;
   PrepReport report;
   float rest_eye_aspect_ratio = 0, rest_lip_gap = 0;
@@ -86,11 +85,11 @@ struct Person {
 class PersonAtRest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    people_ = new std::vector<Person>;
+    people_ = new std::vector<RestReading>;
     try {
       for (const std::string name : neutral_readings::kPortraits) {
         std::vector<float> eye_ratios, lip_gaps;
-        for (const int size : kRenderSizes) {
+        for (const int size : neutral_readings::kRenderSizes) {
           const Landmarks& seen = neutral_readings::seen_at_rest(name, size);
           eye_ratios.push_back(mean_eye_aspect_ratio(seen));
           lip_gaps.push_back(lip_gap(seen));
@@ -103,7 +102,7 @@ class PersonAtRest : public ::testing::Test {
     }
   }
   static void TearDownTestSuite() { delete people_; }
-  static inline std::vector<Person>* people_ = nullptr;
+  static inline std::vector<RestReading>* people_ = nullptr;
 };
 
 TEST_F(PersonAtRest, TheFaceIsFoundAtThePhotosPose) {
@@ -124,7 +123,7 @@ TEST(OpeningUndone, TheCheekRaiserNarrowsTheEyes) {
 
 TEST_F(PersonAtRest, EyesOpenAsFarAsInThePhoto) {
   ASSERT_EQ(people_->size(), 3u);
-  for (const Person& person : *people_) {
+  for (const RestReading& person : *people_) {
     const float photo_ear = mean_eye_aspect_ratio(person.report.photo_landmarks);
     const float narrowing = std::max(au(person.report, 6, codec::AuSide::left), au(person.report, 6, codec::AuSide::right));
     const float undone = opening_undone(narrowing);
@@ -140,7 +139,7 @@ TEST_F(PersonAtRest, EyesOpenAsFarAsInThePhoto) {
 
 TEST_F(PersonAtRest, LipsMeet) {
   ASSERT_EQ(people_->size(), 3u);
-  for (const Person& person : *people_) {
+  for (const RestReading& person : *people_) {
     std::cout << person.photo << ": lip gap photo " << lip_gap(person.report.photo_landmarks) << ", at rest "
               << person.rest_lip_gap << "\n";
     EXPECT_LT(person.rest_lip_gap, kClosedLipGap) << person.photo << "'s lips at rest are apart";

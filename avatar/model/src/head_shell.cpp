@@ -11,10 +11,6 @@ namespace fw::model {
 namespace {
 
 constexpr float kTwoPi = 2.0f * std::numbers::pi_v<float>;
-// The shell always reaches at least this far beyond the face's rim, so that
-// a silhouette measured inside the rim still leaves the rim something to
-// overlap (the matte cuts the rest away).
-constexpr float kMinBeyondRim = 0.05f;
 
 // How one ray is stretched: within the generic rim in proportion to the
 // fitted rim, beyond it from the fitted rim to the person's outline.
@@ -77,7 +73,7 @@ HeadShell fit_head_shell(const GenericFace& generic, std::span<const glm::vec2> 
                shell.outline[k], 0.0f};
     if (!(map.generic_rim > 0) || !(map.fitted_rim > 0)) map.generic_rim = map.fitted_rim = 1.0f;  // unreachable
     const float wanted = outline.empty() ? map.generic_outline + map.fitted_rim - map.generic_rim : outline[k];
-    map.fitted_outline = std::max(wanted, map.fitted_rim + kMinBeyondRim);
+    map.fitted_outline = std::max(wanted, map.fitted_rim + kShellBeyondRim);
     maps.push_back(map);
     // Colour from where the person is, even where the shell reaches past them.
     colour_radius.push_back(unseen_colour_radius(phi, map.fitted_rim, wanted));

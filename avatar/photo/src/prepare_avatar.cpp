@@ -11,6 +11,7 @@
 #include "face_alignment.hpp"
 #include "face_finder.hpp"
 #include "fill_beyond_matte.hpp"
+#include "head_alpha.hpp"
 #include "head_matte.hpp"
 #include "head_pose_fit.hpp"
 #include "image_conversion.hpp"
@@ -18,12 +19,14 @@
 #include "mesh_fitting.hpp"
 #include "lips_at_rest.hpp"
 #include "mouth_layer.hpp"
+#include "neck_shadow.hpp"
 #include "package_encoding.hpp"
 #include "photo_expression.hpp"
 #include "pose_checks.hpp"
 #include "skin_tone.hpp"
 #include "texture_extraction.hpp"
 #include "fw/model/fitted_face.hpp"
+#include "fw/model/head_shell.hpp"
 #include "fw/model/procedural_texture.hpp"
 #include "fw/model/vascular_masks.hpp"
 
@@ -71,6 +74,12 @@ bool AvatarPreparer::check_photo(std::span<const std::uint8_t> photo, PrepError&
 
 std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8_t> bytes, const PrepOptions& options,
                                                       PrepError& error) {
+  return prepare(bytes, {}, options, error);
+}
+
+std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8_t> bytes,
+                                                      std::span<const std::uint8_t> colour_bytes,
+                                                      const PrepOptions& options, PrepError& error) {
   if (options.quality < 1 || options.quality > 100)
     return fail(error, PrepErrorCode::bad_option, "quality must be 1..100");
   if (options.texture_size < 128 || options.texture_size > 512)
@@ -78,6 +87,13 @@ std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8
   if (!inspect_photo(bytes, error)) return std::nullopt;
   const auto photo = decode_photo(bytes, error);
   if (!photo) return std::nullopt;
+  std::optional<cv::Mat> repainted;
+  if (!colour_bytes.empty()) {
+    if (!inspect_photo(colour_bytes, error) || !(repainted = decode_photo(colour_bytes, error))) return std::nullopt;
+    if (repainted->size() != photo->size())
+      return fail(error, PrepErrorCode::bad_option, "the colour source must be the photo's size, upright");
+  }
+  const cv::Mat& colour_photo = repainted ? *repainted : *photo;
 
   PreparedAvatar result;
   PrepReport& report = result.report;
@@ -143,27 +159,48 @@ std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8
   const model::TextureFrame& frame = generic.texture_frame;
   const int size = options.texture_size;
   const cv::Mat photo_texture = extract_texture(*photo, alignment, pose_fit, frame, size);
-  cv::Mat texture = neutralise_texture(fill_mouth_opening(photo_texture, frontal, frame), frame, frontal, neutral);
-  draw_lip_line(texture, frontal, neutral, frame);
+  // The photo's parted lips filled and the line where closed lips meet
+  // drawn, on the neutral face (lips_at_rest).
+  const auto to_neutral_at_rest = [&](const cv::Mat& t) {
+    cv::Mat at_rest = neutralise_texture(fill_mouth_opening(t, frontal, frame), frame, frontal, neutral);
+    draw_lip_line(at_rest, frontal, neutral, frame);
+    return at_rest;
+  };
+  const cv::Mat texture = to_neutral_at_rest(photo_texture);
+  const auto to_neutral = [&](const cv::Mat& t) { return neutralise_texture(t, frame, frontal, neutral); };
+  // What the package shows; what is measured (the matte, the skin tone, the
+  // iris) comes from `texture`.
+  const cv::Mat colour_photo_texture =
+      repainted ? extract_texture(colour_photo, alignment, pose_fit, frame, size) : photo_texture;
+  const cv::Mat colour_texture = repainted ? to_neutral_at_rest(colour_photo_texture) : texture;
   const auto eyes = eye_polygons_px(neutral, frame, size);
-  // The person cut from the background: the matte is the texture's alpha,
-  // and what it leaves out takes the person's colours.
-  const cv::Mat matte = head_matte(texture, neutral, frame);
-  cv::Mat face_texture = fill_beyond_matte(texture, matte);
+  // The person cut from the background: what the matte leaves out takes the
+  // person's colours, and the alpha shows the head out to its outline.
+  const PhotoAtTexels at_texels = photo_at_texels(*photo, alignment, pose_fit, frame, size);
+  const cv::Mat seen = to_neutral(at_texels.seen);
+  const cv::Mat matte = head_matte(seen, to_neutral(at_texels.in_photo), neutral, frame);
+  const std::vector<float> outline = head_outline(matte, generic.head, frame);
+  std::vector<glm::vec2> fitted_rim;
+  for (const std::uint32_t v : model::face_rim_loop(generic.skin)) fitted_rim.push_back(fit.fitted_xy[v]);
+  const cv::Mat colour_seen =
+      repainted ? to_neutral(photo_at_texels(colour_photo, alignment, pose_fit, frame, size).seen) : seen;
+  cv::Mat face_texture = fill_beyond_matte(mirror_only_within(colour_texture, colour_seen, matte), matte,
+                                           head_alpha(matte, outline, fitted_rim, generic.head, frame));
+  shade_neck(face_texture, matte, neutral, frame);
   if (options.eye_layer) {
     cv::Mat eye_alpha, alpha;
     cv::extractChannel(with_eye_holes(texture, eyes), eye_alpha, 3);
     cv::extractChannel(face_texture, alpha, 3);
     cv::insertChannel(cv::min(alpha, eye_alpha), face_texture, 3);
   }
-  const ClosedLid lid = make_closed_lid(texture, eyes);
+  const ClosedLid lid = make_closed_lid(colour_texture, eyes);
   const ThinPlateSpline& warp = fit.warp;
   const auto masks = model::render_region_masks([&](glm::vec2 p) { return warp(p); }, frame, kMaskSize);
 
   model::AvatarPackage& package = result.package;
   package.generic_face_version = generic.version;
   package.fitted_vertices = fit.fitted_xy;
-  package.head_outline = head_outline(matte, generic.head, frame);
+  package.head_outline = outline;
   std::copy(neutral.begin(), neutral.end(), package.landmarks.begin());
   package.skin_tone = estimate_skin_tone(texture, masks, kMaskSize);
   package.iris_colour = sample_iris_colour(texture, eyes);
@@ -172,7 +209,7 @@ std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8
   package.closed_lid_rect = {lid.uv_rect.x, lid.uv_rect.y, lid.uv_rect.x + lid.uv_rect.width,
                              lid.uv_rect.y + lid.uv_rect.height};
   if (options.eye_layer) {
-    const EyeTexture eye = make_eye_texture_from_photo(*photo, alignment, landmarks, generic.eyes[0],
+    const EyeTexture eye = make_eye_texture_from_photo(colour_photo, alignment, landmarks, generic.eyes[0],
                                                        package.iris_colour, kEyeTextureSize);
     if (!eye.warning.empty()) report.warnings.push_back(eye.warning);
     package.iris_colour = eye.iris;
@@ -180,12 +217,13 @@ std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8
   }
   // The mouth layer shows what the photo shows between its lips, teeth
   // included: from the photo as it is, not the neutralised texture.
-  package.mouth = encode_webp(
-      make_mouth_layer(photo_texture, frontal, model::fit_generic_face(generic, fit.fitted_xy)), options.quality);
+  package.mouth =
+      encode_webp(make_mouth_layer(colour_photo_texture, frontal, model::fit_generic_face(generic, fit.fitted_xy)),
+                  options.quality);
   const auto packed = model::pack_region_masks(masks, kMaskSize);
   package.colour_masks_a = encode_webp(to_bgr_mat(packed[0]), kLosslessWebp);
   package.colour_masks_b = encode_webp(to_bgr_mat(packed[1]), kLosslessWebp);
-  package.preview = encode_webp(make_preview(texture, frame), std::min(options.quality, 60));
+  package.preview = encode_webp(make_preview(colour_texture, frame), std::min(options.quality, 60));
   report.face_texture = to_rgba_image(face_texture);
   return result;
 }

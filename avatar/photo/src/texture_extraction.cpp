@@ -18,16 +18,24 @@ constexpr float kSeenFrom = 0.35f, kSeenFully = 0.75f;
 // How far (model units) a texel may lie behind the nearest surface at its
 // place in the photo and still count as in front.
 constexpr float kOcclusionSlack = 0.06f;
+// A mirror texel counts as the person's where the matte is at least this.
+constexpr int kMirrorOnPerson = 250, kMirrorEdgeTexelsPer320 = 3;
 
 float smoothstep(float from, float to, float x) {
   const float t = std::clamp((x - from) / (to - from), 0.0f, 1.0f);
   return t * t * (3.0f - 2.0f * t);
 }
 
-}  // namespace
+// The photo sampled at each texel's point, and how well the photo sees it.
+struct Sampled {
+  cv::Mat photo;         // BGR, `size` x `size`
+  cv::Mat seen;          // CV_32F, 0 (turned away or hidden) .. 1
+  cv::Mat map_x, map_y;  // where each texel lies in the photo sampled
+  cv::Size photo_size;   // of the photo sampled
+};
 
-cv::Mat extract_texture(const cv::Mat& full_photo, const Alignment& full_alignment, const PoseFit& fit,
-                        const model::TextureFrame& frame, int size) {
+Sampled sample_through_pose(const cv::Mat& full_photo, const Alignment& full_alignment, const PoseFit& fit,
+                            const model::TextureFrame& frame, int size) {
   const PhotoForSampling sampling = photo_for_sampling(full_photo, full_alignment, frame, size);
   const HeadPose& pose = fit.pose;
   // The surface point behind each texel; its normal from the neighbours'.
@@ -80,6 +88,25 @@ cv::Mat extract_texture(const cv::Mat& full_photo, const Alignment& full_alignme
 
   cv::Mat sampled;
   cv::remap(sampling.photo, sampled, map_x, map_y, cv::INTER_LINEAR, cv::BORDER_REPLICATE);
+  return {sampled, seen, map_x, map_y, sampling.photo.size()};
+}
+
+}  // namespace
+
+PhotoAtTexels photo_at_texels(const cv::Mat& photo, const Alignment& alignment, const PoseFit& fit,
+                              const model::TextureFrame& frame, int size) {
+  const Sampled sampled = sample_through_pose(photo, alignment, fit, frame, size);
+  PhotoAtTexels out{sampled.photo, {}};
+  cv::remap(cv::Mat(sampled.photo_size, CV_8U, cv::Scalar(255)), out.in_photo, sampled.map_x, sampled.map_y,
+            cv::INTER_LINEAR, cv::BORDER_CONSTANT, cv::Scalar(0));
+  return out;
+}
+
+cv::Mat extract_texture(const cv::Mat& photo, const Alignment& alignment, const PoseFit& fit,
+                        const model::TextureFrame& frame, int size) {
+  const Sampled sampled_photo = sample_through_pose(photo, alignment, fit, frame, size);
+  const cv::Mat& sampled = sampled_photo.photo;
+  const cv::Mat& seen = sampled_photo.seen;
   // Fill from the mirror image where this side is seen worse than that one.
   cv::Mat texture = sampled.clone();
   for (int row = 0; row < size; ++row)
@@ -94,6 +121,17 @@ cv::Mat extract_texture(const cv::Mat& full_photo, const Alignment& full_alignme
       texture.at<cv::Vec3b>(row, col) = (own * w + other * w_mirror) / (w + w_mirror);
     }
   return texture;
+}
+
+cv::Mat mirror_only_within(const cv::Mat& texture, const cv::Mat& seen, const cv::Mat& matte) {
+  cv::Mat mirrored;
+  cv::flip(matte, mirrored, 1);  // the texture frame is centred on the face's midline
+  // Not the last texels along the edge either: those mix hair with what stood behind it.
+  const int edge = std::max(1, kMirrorEdgeTexelsPer320 * texture.cols / 320);
+  cv::erode(mirrored, mirrored, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * edge + 1, 2 * edge + 1)));
+  cv::Mat out = texture.clone();
+  seen.copyTo(out, mirrored < kMirrorOnPerson);
+  return out;
 }
 
 }  // namespace fw::photo

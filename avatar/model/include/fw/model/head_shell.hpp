@@ -30,6 +30,11 @@ float ray_exit_radius(glm::vec2 centre, float phi, std::span<const glm::vec2> po
 /// The angle of ray k of an outline with `count` rays.
 float outline_ray_angle(std::size_t k, std::size_t count);
 
+/// The fitted shell always reaches at least this far (model units) beyond
+/// the face's rim, so that a silhouette measured inside the rim still leaves
+/// the rim something to overlap.
+inline constexpr float kShellBeyondRim = 0.05f;
+
 /// Rays pointing this far down (sine of the angle below it) run into the
 /// neck and the clothes: the photo's matte says nothing useful there.
 inline constexpr float kNeckRaySine = -0.6f;

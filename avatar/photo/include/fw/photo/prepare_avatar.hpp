@@ -87,6 +87,16 @@ class AvatarPreparer {
   std::optional<PreparedAvatar> prepare(std::span<const std::uint8_t> photo, const PrepOptions& options,
                                         PrepError& error);
 
+  /// As prepare(), but every texture's colours are sampled from
+  /// `colour_source` (the same photo repainted: the same size, upright)
+  /// while the face, its fit and the head's matte are all found on `photo`.
+  /// What the photo's pixels become is then visible in the package: paint
+  /// everything but the head a marker colour, and any marker in a render is
+  /// background the matte let through.
+  std::optional<PreparedAvatar> prepare(std::span<const std::uint8_t> photo,
+                                        std::span<const std::uint8_t> colour_source, const PrepOptions& options,
+                                        PrepError& error);
+
  private:
   explicit AvatarPreparer(std::unique_ptr<FaceFinder> finder);
   std::unique_ptr<FaceFinder> finder_;
