@@ -322,7 +322,9 @@ function wireControls(client, mutes, toggleMute) {
 function placeOverlays(client, view) {
   const overlay = $('overlay');
   const wanted = view.tiles.map((t) => ({ ...t, self: false }));
-  if (view.selfTile) wanted.push({ id: client.you, name: `${identity.name} (you)`, rect: view.selfTile, drawn: true, self: true });
+  // The self view is small (90 px wide on a phone): "You" fits where a name
+  // and "(you)" would be cut; the people list gives the name.
+  if (view.selfTile) wanted.push({ id: client.you, name: 'You', rect: view.selfTile, drawn: true, self: true });
   while (overlay.children.length > wanted.length) overlay.lastChild.remove();
   while (overlay.children.length < wanted.length) {
     const tile = document.createElement('div');
