@@ -18,7 +18,8 @@ namespace fw::photo {
 /// Darkens, in place, the texels of `bgra` below the jaw's lower part
 /// (landmarks 3..13) that are not the person's own (`matte` under full):
 /// to about half their brightness just under the jaw line, easing to four
-/// fifths a third of a unit below it.
+/// fifths a third of a unit below it; beside the jaw's lower part, and
+/// towards the person's own colours, the shadow fades out.
 void shade_neck(cv::Mat& bgra, const cv::Mat& matte, const ModelLandmarks& landmarks,
                 const model::TextureFrame& frame);
 

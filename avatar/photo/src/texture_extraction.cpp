@@ -8,6 +8,8 @@
 #include <glm/geometric.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "soft_inside.hpp"
+
 namespace fw::photo {
 namespace {
 
@@ -126,11 +128,18 @@ cv::Mat extract_texture(const cv::Mat& photo, const Alignment& alignment, const 
 cv::Mat mirror_only_within(const cv::Mat& texture, const cv::Mat& seen, const cv::Mat& matte) {
   cv::Mat mirrored;
   cv::flip(matte, mirrored, 1);  // the texture frame is centred on the face's midline
-  // Not the last texels along the edge either: those mix hair with what stood behind it.
+  // Not the last texels along the edge either (those mix hair with what
+  // stood behind it), and blended over a few more: switched at the mirrored
+  // matte's ragged edge, the mirror showed its steps along the jaw.
   const int edge = std::max(1, kMirrorEdgeTexelsPer320 * texture.cols / 320);
-  cv::erode(mirrored, mirrored, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * edge + 1, 2 * edge + 1)));
-  cv::Mat out = texture.clone();
-  seen.copyTo(out, mirrored < kMirrorOnPerson);
+  const cv::Mat weight = soft_inside(mirrored >= kMirrorOnPerson, edge);
+  cv::Mat mirror, own, weight3;
+  texture.convertTo(mirror, CV_32FC3);
+  seen.convertTo(own, CV_32FC3);
+  cv::merge(std::vector<cv::Mat>{weight, weight, weight}, weight3);
+  const cv::Mat blended = own + (mirror - own).mul(weight3);
+  cv::Mat out;
+  blended.convertTo(out, texture.type());
   return out;
 }
 
