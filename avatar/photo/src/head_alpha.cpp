@@ -29,7 +29,10 @@ cv::Mat head_alpha(const cv::Mat& person, std::span<const float> outline, std::s
   for (std::size_t k = 0; k < outline.size(); ++k) {
     const float phi = model::outline_ray_angle(k, outline.size());
     const glm::vec2 d(std::cos(phi), std::sin(phi));
-    const float beyond = d.y < model::kNeckRaySine ? 0.0f : kBeyondOutline;
+    // The neck's rays too: cut at the outline, the neck's side showed a
+    // ragged dark scribble on a head turned 60 degrees (the shell samples
+    // its texels there, and mipmaps mixed in the alpha beyond them).
+    const float beyond = kBeyondOutline;
     // The shell never ends inside the face's rim (fit_head_shell).
     const float past_rim = model::ray_exit_radius(head.centre, phi, fitted_rim) + model::kShellBeyondRim;
     const float reach = std::max(outline[k], past_rim);
