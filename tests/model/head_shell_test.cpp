@@ -44,8 +44,9 @@ TEST(HeadShell, ReachesPastTheFaceRimAndStaysBehindIt) {
     const glm::vec3 p = face.head.mesh.positions[v];
     const glm::vec2 xy(p);
     const float phi = std::atan2(xy.y - face.head.centre.y, xy.x - face.head.centre.x);
-    if (glm::length(xy - face.head.centre) < ray_exit_radius(face.head.centre, phi, rim))
+    if (glm::length(xy - face.head.centre) < ray_exit_radius(face.head.centre, phi, rim)) {
       EXPECT_LT(p.z, face_depth(xy) - 0.25f) << "shell vertex " << v << " pokes through the face";
+    }
   }
 }
 

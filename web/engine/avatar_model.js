@@ -8,7 +8,7 @@ import { FACE_PARAMS_FLOATS, faceParamsFloats } from './face_params_floats.js';
 import { copyFloats, copyUint32, lastError } from './wasm_module.js';
 
 // Numbers of avatar/model/wasm/avatar_exports.cpp.
-const PART = { skin: 0, eyeRight: 1, eyeLeft: 2, mouthCavity: 3, head: 4 };
+const PART = { skin: 0, eyeRight: 1, eyeLeft: 2, mouthCavity: 3, head: 4, eyeSocketRight: 5, eyeSocketLeft: 6 };
 const MESH_FIELD = { positions: 0, uvs: 1, normals: 3 };
 const FLOATS = { textureFrame: 0, eyeCentres: 1, eyeShapes: 2, headCentre: 3, headOutline: 4 };
 const INDICES = { landmarkVertices: 0, eyeHoleRight: 1, eyeHoleLeft: 2, mouthSlit: 3, triangleRegions: 4 };
@@ -42,11 +42,12 @@ function readFace(module, handle) {
   const [originX, originY, size] = floats(FLOATS.textureFrame);
   const centres = floats(FLOATS.eyeCentres);
   const shapes = floats(FLOATS.eyeShapes);
-  const eye = (side, part) => ({
+  const eye = (side, part, socketPart) => ({
     centre: centres.slice(side * 3, side * 3 + 3),
     radius: shapes[side * 2],
     capAngleRad: shapes[side * 2 + 1],
     mesh: readMesh(module, handle, part),
+    socket: readMesh(module, handle, socketPart),  // fw/model/eye_socket.hpp: its far wall, seen through the hole
   });
   return {
     textureFrame: { origin: [originX, originY], size },
@@ -55,7 +56,7 @@ function readFace(module, handle) {
     landmarkVertices: indices(INDICES.landmarkVertices),
     eyeHoles: [indices(INDICES.eyeHoleRight), indices(INDICES.eyeHoleLeft)],  // [right, left]
     mouthSlit: indices(INDICES.mouthSlit),
-    eyes: [eye(0, PART.eyeRight), eye(1, PART.eyeLeft)],  // [right, left]
+    eyes: [eye(0, PART.eyeRight, PART.eyeSocketRight), eye(1, PART.eyeLeft, PART.eyeSocketLeft)],  // [right, left]
     mouthCavity: readMesh(module, handle, PART.mouthCavity),
     head: {
       centre: floats(FLOATS.headCentre),

@@ -136,6 +136,8 @@ export class FaceRenderer {
       avatar,
       skin,
       eyes: face.eyes.map((e) => uploadMesh(gl, e.mesh)),
+      sockets: face.eyes.map((e) => uploadMesh(gl, e.socket)),
+      holeFans: face.eyeHoles.map((hole) => this.shareSkin(skin, fan(hole))),
       mouth: uploadMesh(gl, face.mouthCavity),
       head: uploadMesh(gl, face.head.mesh),
       textures: {
@@ -153,9 +155,7 @@ export class FaceRenderer {
   // holes are filled by fans over their rims, on the skin's own vertices.
   eyeCovers(face) {
     const gl = this.gl;
-    const fans = [];
-    for (const hole of face.eyeHoles) for (let i = 1; i + 1 < hole.length; ++i) fans.push(hole[0], hole[i], hole[i + 1]);
-    return { triangles: Uint32Array.from(fans) };
+    return { triangles: Uint32Array.from(face.eyeHoles.flatMap((hole) => Array.from(fan(hole)))) };
   }
 
   // A mesh of other triangles over the skin's vertex buffers.
@@ -177,7 +177,9 @@ export class FaceRenderer {
   /** Frees a face's GL objects. */
   removeFace(face) {
     const gl = this.gl;
-    for (const mesh of [face.skin, face.mouth, face.head, ...face.eyes, face.eyeCovers]) if (mesh) gl.deleteVertexArray(mesh.vao);
+    for (const mesh of [face.skin, face.mouth, face.head, ...face.eyes, ...face.sockets, ...face.holeFans, face.eyeCovers]) {
+      if (mesh) gl.deleteVertexArray(mesh.vao);
+    }
     for (const t of Object.values(face.textures)) if (t !== this.black) gl.deleteTexture(t);
   }
 
@@ -248,7 +250,10 @@ export class FaceRenderer {
     } else {
       const eye = programs.eye;
       gl.useProgram(eye.program);
-      face.eyes.forEach((m, side) => mesh(m, face.textures.eye, eye.u, frame.eyeModels[side]));
+      face.eyes.forEach((m, side) => {
+        mesh(m, face.textures.eye, eye.u, frame.eyeModels[side]);
+        this.drawSocket(face, side, eye.u, frame.model, mesh);
+      });
     }
     const plain = programs.plain;
     gl.useProgram(plain.program);
@@ -259,4 +264,41 @@ export class FaceRenderer {
     mesh(face.head, face.textures.skin, plain.u, frame.model);
     gl.disable(gl.CULL_FACE);
   }
+
+  // The eye socket's far wall where the hole is open, as the native
+  // draw_socket (fw/model/eye_socket.hpp): the stencil marks the hole, the
+  // socket is drawn from inside there, and the mark is taken out again
+  // (no scissor here, so the next hole must not find it).
+  drawSocket(face, side, u, model, mesh) {
+    const gl = this.gl;
+    const markHole = (value) => {
+      gl.stencilFunc(gl.ALWAYS, value, 0xff);
+      gl.stencilOp(gl.KEEP, gl.KEEP, gl.REPLACE);
+      gl.colorMask(false, false, false, false);
+      gl.depthMask(false);
+      mesh(face.holeFans[side], face.textures.eye, u, model);
+      gl.colorMask(true, true, true, true);
+      gl.depthMask(true);
+    };
+    gl.enable(gl.STENCIL_TEST);
+    markHole(1);
+    gl.stencilFunc(gl.EQUAL, 1, 0xff);
+    gl.stencilOp(gl.KEEP, gl.KEEP, gl.KEEP);
+    gl.uniform1f(u.u_specular, 0);
+    gl.enable(gl.CULL_FACE);
+    gl.cullFace(gl.FRONT);
+    mesh(face.sockets[side], face.textures.eye, u, model);
+    gl.cullFace(gl.BACK);
+    gl.disable(gl.CULL_FACE);
+    gl.uniform1f(u.u_specular, EYE_SPECULAR);
+    markHole(0);
+    gl.disable(gl.STENCIL_TEST);
+  }
+}
+
+/** A hole spanned by a fan over its rim's vertices (the skin's). */
+function fan(hole) {
+  const triangles = [];
+  for (let i = 1; i + 1 < hole.length; ++i) triangles.push(hole[0], hole[i], hole[i + 1]);
+  return Uint32Array.from(triangles);
 }

@@ -61,8 +61,9 @@ async function main() {
   document.title = `facewire: ${identity.room}`;
   const canvas = $('room-canvas');
   $('stage').style.setProperty('--tile-background', TILE_BACKGROUND_CSS);
-  // Opaque: the shader's alpha is coverage, not transparency.
-  const gl = canvas.getContext('webgl2', { antialias: true, alpha: false, preserveDrawingBuffer: true });
+  // Opaque: the shader's alpha is coverage, not transparency. The stencil
+  // marks an eye's open hole for its socket (face_renderer.js drawSocket).
+  const gl = canvas.getContext('webgl2', { antialias: true, alpha: false, preserveDrawingBuffer: true, stencil: true });
   if (!gl) return fail('this browser has no WebGL2, which the room needs');
 
   const ownPackage = fetchOwnPackage(identity.asset);

@@ -14,6 +14,7 @@
 #include "face_params_floats.hpp"
 #include "fw/model/avatar_model.hpp"
 #include "fw/model/avatar_package.hpp"
+#include "fw/model/eye_socket.hpp"
 #include "fw/model/face_reconstruction.hpp"
 #include "fw/model/mesh.hpp"
 
@@ -26,13 +27,17 @@ namespace {
 using fw::model::Mesh;
 
 // Numbers shared with web/engine/avatar_model.js.
-enum Part { skin = 0, eye_right = 1, eye_left = 2, mouth_cavity = 3, head_shell = 4, part_count = 5 };
+enum Part {
+  skin = 0, eye_right = 1, eye_left = 2, mouth_cavity = 3, head_shell = 4, eye_socket_right = 5, eye_socket_left = 6,
+  part_count = 7
+};
 enum MeshField { positions = 0, uvs = 1, triangles = 2, normals = 3 };
 enum FloatsField { texture_frame = 0, eye_centres = 1, eye_shapes = 2, head_centre = 3, head_outline = 4 };
 enum IndexField { landmark_vertices = 0, eye_hole_right = 1, eye_hole_left = 2, mouth_slit = 3, triangle_regions = 4 };
 
 struct Avatar {
   fw::model::AvatarModel model;
+  std::array<Mesh, 2> eye_sockets;                               // fw/model/eye_socket.hpp, of the fitted face
   std::array<std::vector<glm::vec3>, part_count> rest_normals;  // each mesh's, at rest
   std::array<float, 3> frame_floats{};                           // texture frame
   std::array<float, 6> centres{}, shapes{};
@@ -42,8 +47,11 @@ struct Avatar {
 
 fw::wasm::Handles<Avatar> avatars;
 
-const Mesh& mesh_of(const fw::model::GenericFace& face, int part) {
+const Mesh& mesh_of(const Avatar& a, int part) {
+  const fw::model::GenericFace& face = a.model.face;
   switch (part) {
+    case eye_socket_right: return a.eye_sockets[0];
+    case eye_socket_left: return a.eye_sockets[1];
     case eye_right: return face.eyes[0].mesh;
     case eye_left: return face.eyes[1].mesh;
     case mouth_cavity: return face.mouth_cavity;
@@ -56,7 +64,8 @@ int add_avatar(fw::model::AvatarModel model) {
   auto a = std::make_unique<Avatar>();
   a->model = std::move(model);
   const fw::model::GenericFace& face = a->model.face;
-  for (int part = 0; part < part_count; ++part) a->rest_normals[part] = fw::model::vertex_normals(mesh_of(face, part));
+  for (std::size_t side = 0; side < 2; ++side) a->eye_sockets[side] = fw::model::eye_socket_mesh(face, side);
+  for (int part = 0; part < part_count; ++part) a->rest_normals[part] = fw::model::vertex_normals(mesh_of(*a, part));
   a->frame_floats = {face.texture_frame.origin.x, face.texture_frame.origin.y, face.texture_frame.size};
   for (std::size_t side = 0; side < 2; ++side) {
     for (int k = 0; k < 3; ++k) a->centres[side * 3 + k] = face.eyes[side].centre[k];
@@ -73,7 +82,7 @@ std::span<const float> as_floats(const std::vector<T>& v) {
 }
 
 std::span<const float> mesh_floats(const Avatar& a, int part, int field) {
-  const Mesh& mesh = mesh_of(a.model.face, part);
+  const Mesh& mesh = mesh_of(a, part);
   if (field == positions) return as_floats(mesh.positions);
   if (field == uvs) return as_floats(mesh.uvs);
   if (field == normals) return as_floats(a.rest_normals[static_cast<std::size_t>(part)]);
@@ -131,11 +140,11 @@ EMSCRIPTEN_KEEPALIVE int fw_avatar_mesh_floats_count(int handle, int part, int f
 /// A part's triangles, three vertex indices each.
 EMSCRIPTEN_KEEPALIVE const std::uint32_t* fw_avatar_triangles(int handle, int part) {
   const Avatar* a = avatars.find(handle);
-  return a ? &mesh_of(a->model.face, part).triangles.data()->x : nullptr;
+  return a ? &mesh_of(*a, part).triangles.data()->x : nullptr;
 }
 EMSCRIPTEN_KEEPALIVE int fw_avatar_triangles_count(int handle, int part) {
   const Avatar* a = avatars.find(handle);
-  return a ? static_cast<int>(mesh_of(a->model.face, part).triangles.size() * 3) : 0;
+  return a ? static_cast<int>(mesh_of(*a, part).triangles.size() * 3) : 0;
 }
 
 EMSCRIPTEN_KEEPALIVE const float* fw_avatar_floats(int handle, int which) {

@@ -6,6 +6,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "fw/model/eye_socket.hpp"
 #include "fw/render/offscreen_context.hpp"
 #include "gpu_resources.hpp"
 #include "screen_rect.hpp"
@@ -27,6 +28,8 @@ struct GpuFace {
   bool eye_layer = true;
   model::TextureLight light = model::TextureLight::photo;  // chooses every part's variant
   std::array<GpuMesh, 2> eyes;
+  std::array<GpuMesh, 2> eye_sockets;     // fw/model/eye_socket.hpp: drawn from inside, within the hole
+  std::array<GpuMesh, 2> eye_hole_fans;   // each hole spanned, on the skin's vertices: marks where it is
   std::array<glm::vec3, 2> eye_centres{};
   std::vector<glm::uvec3> skin_triangles;  // for normals when the shape changes
   std::vector<glm::vec3> skin_positions;   // the current shape's, for the openings' rectangles
@@ -86,6 +89,7 @@ struct FaceRenderer::Impl {
   void set_frame_uniforms(const Camera& camera);
   std::array<std::uint8_t, 4> background_texel{};  // the background as the targets store it
   void draw_face(const GpuFace& face, const FaceDraw& draw, const Camera& camera);
+  void draw_socket(const GpuFace& face, std::size_t side, const ShaderUniforms& eye, const glm::mat4& model);
   PixelRect drawn_rect(std::span<const FaceDraw> draws, const Camera& camera) const;
   void scissor_to_opening(const GpuFace& face, std::span<const std::uint32_t> outline, const glm::mat4& mvp);
 };
@@ -117,12 +121,13 @@ bool FaceRenderer::Impl::set_up_framebuffers(std::string& error) {
   glBindRenderbuffer(GL_RENDERBUFFER, draw_depth.get());
   // A float depth: as fine as 24 bits over [0, 1] or finer, the same
   // pixels, and measured a hundredth cheaper per frame in llvmpipe, which
-  // tests depth for every sample.
-  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT32F, w, h);
+  // tests depth for every sample. The stencil marks an eye's open hole
+  // (draw_socket).
+  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH32F_STENCIL8, w, h);
   draw_framebuffer = generate<Framebuffer, glGenFramebuffers>();
   glBindFramebuffer(GL_FRAMEBUFFER, draw_framebuffer.get());
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, draw_colour.get());
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, draw_depth.get());
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, draw_depth.get());
   if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
     error = "the GL driver cannot render into a " + std::to_string(w) + "x" + std::to_string(h) + " framebuffer";
     return false;
@@ -196,6 +201,35 @@ void FaceRenderer::Impl::set_frame_uniforms(const Camera& camera) {
   }
 }
 
+void FaceRenderer::Impl::draw_socket(const GpuFace& face, std::size_t side, const ShaderUniforms& eye,
+                                     const glm::mat4& model) {
+  // Where the hole is open (the skin and the lids in front of it left it
+  // so): the stencil marks it, nothing else is written.
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_ALWAYS, 1, 0xff);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  glDepthMask(GL_FALSE);
+  draw_mesh(face.eye_hole_fans[side], face.eye_texture, eye, model);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthMask(GL_TRUE);
+  // The socket's far wall there, for the lines of sight that pass beside
+  // the eyeball: front faces culled, it never covers the eyeball, and a
+  // wall has no wet sheen. Elsewhere (the temple, where the skin curves
+  // back behind the sphere) the stencil keeps it out.
+  glStencilFunc(GL_EQUAL, 1, 0xff);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  glUniform1f(eye.specular, 0.0f);
+  glEnable(GL_CULL_FACE);
+  glCullFace(GL_FRONT);
+  draw_mesh(face.eye_sockets[side], face.eye_texture, eye, model);
+  glCullFace(GL_BACK);
+  glDisable(GL_CULL_FACE);
+  glUniform1f(eye.specular, kEyeSpecular);
+  glClear(GL_STENCIL_BUFFER_BIT);  // within the opening's scissor: the next hole starts unmarked
+  glDisable(GL_STENCIL_TEST);
+}
+
 void FaceRenderer::Impl::draw_face(const GpuFace& face, const FaceDraw& draw, const Camera& camera) {
   // Nearest first: what lies behind (the eyeballs, the mouth cavity, the
   // head shell behind the face) then fails the depth test before it is
@@ -231,6 +265,7 @@ void FaceRenderer::Impl::draw_face(const GpuFace& face, const FaceDraw& draw, co
       const glm::mat4 eye_model = draw.model * eye_transform(face.eye_centres[side], yaw_pitch.x, yaw_pitch.y);
       scissor_to_opening(face, face.eye_holes[side], skin_mvp);
       draw_mesh(face.eyes[side], face.eye_texture, eye, eye_model);
+      draw_socket(face, side, eye, draw.model);
       glDisable(GL_SCISSOR_TEST);
     }
   }
@@ -288,6 +323,7 @@ FaceId FaceRenderer::add_face(const model::GenericFace& face, const FaceTextures
   gpu.head = upload_mesh(face.head.mesh);
   for (std::size_t side = 0; side < 2; ++side) {
     gpu.eyes[side] = upload_mesh(face.eyes[side].mesh);
+    gpu.eye_sockets[side] = upload_mesh(model::eye_socket_mesh(face, side));
     gpu.eye_centres[side] = face.eyes[side].centre;
   }
   gpu.skin_triangles = face.skin.triangles;
@@ -310,12 +346,15 @@ FaceId FaceRenderer::add_face(const model::GenericFace& face, const FaceTextures
   gpu.mouth_slit = face.mouth_slit;
   gpu.eye_layer = textures.eye.width > 0;
   gpu.light = textures.light;
-  if (!gpu.eye_layer) {
-    std::vector<glm::uvec3> fans;
-    for (const auto& hole : face.eye_holes)
-      for (std::size_t i = 1; i + 1 < hole.size(); ++i) fans.emplace_back(hole[0], hole[i], hole[i + 1]);
-    gpu.eye_covers = share_vertices(gpu.skin, fans);
+  std::vector<glm::uvec3> fans;
+  for (std::size_t side = 0; side < 2; ++side) {
+    std::vector<glm::uvec3> hole_fan;
+    const auto& hole = face.eye_holes[side];
+    for (std::size_t i = 1; i + 1 < hole.size(); ++i) hole_fan.emplace_back(hole[0], hole[i], hole[i + 1]);
+    gpu.eye_hole_fans[side] = share_vertices(gpu.skin, hole_fan);
+    fans.insert(fans.end(), hole_fan.begin(), hole_fan.end());
   }
+  if (!gpu.eye_layer) gpu.eye_covers = share_vertices(gpu.skin, fans);
   gpu.skin_texture = upload_texture(textures.skin, TexelEncoding::srgb_colour);
   gpu.eye_texture = upload_texture(or_black(textures.eye), TexelEncoding::srgb_colour);
   gpu.mouth_texture = upload_texture(textures.mouth, TexelEncoding::srgb_colour);
@@ -360,7 +399,7 @@ model::RgbaImage FaceRenderer::render(std::span<const FaceDraw> draws, const Cam
   // Targets store what they are given, and the background is given in sRGB.
   const glm::vec3 background = impl.options.background;
   glClearColor(background.r, background.g, background.b, 1.0f);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   // Only the head shell is culled (draw_face): the skin is open, and a

@@ -30,6 +30,9 @@ constexpr float kCapAngle = 2.6f;
 // The lids rest on the globe: it sits as far forward as the eye contour
 // allows, this much behind it.
 constexpr float kLidClearance = 0.6f / model::kMillimetresPerUnit;
+// The contour's points (landmarks 36-41 or 42-47) from the first: the
+// upper lid's two are the 2nd and 3rd, the lower lid's the 5th and 6th.
+constexpr std::size_t kUpperLid = 1, kLowerLid = 4;
 
 float smoothstep(float from, float to, float x) {
   const float t = std::clamp((x - from) / (to - from), 0.0f, 1.0f);
@@ -103,17 +106,24 @@ void build_eyes(model::GenericFace& face) {
       contour.push_back(face.skin.positions[static_cast<std::size_t>(i)]);
       centre_xy += glm::vec2(contour.back()) / 6.0f;
     }
-    // The centre goes as far forward as it may with no point of the contour,
-    // nor of any chord across the opening (a closed lid spans the opening),
-    // having the eyeball in front of it.
+    // The centre goes as far forward as it may with no point of the lid
+    // margins (the contour's edges), nor of a chord from the upper lid to
+    // the lower (where the closed lid lies), having the eyeball in front of
+    // it. Not the chord from corner to corner: a real cornea stands well in
+    // front of the line between the eye's corners (the closed lid curves
+    // over it), and held behind that line the eyeball sat so deep that a
+    // turned head's iris slid to the far side of the opening.
     float centre_z = 1e9f;
-    for (std::size_t i = 0; i < contour.size(); ++i)
-      for (std::size_t j = i + 1; j < contour.size(); ++j)
-        for (int step = 0; step <= 8; ++step) {
-          const glm::vec3 p = glm::mix(contour[i], contour[j], static_cast<float>(step) / 8.0f);
-          const float front = front_at(glm::length(glm::vec2(p) - centre_xy));
-          if (front >= 0.0f) centre_z = std::min(centre_z, p.z - kLidClearance - front);
-        }
+    const auto behind = [&](glm::vec3 a, glm::vec3 b) {
+      for (int step = 0; step <= 8; ++step) {
+        const glm::vec3 p = glm::mix(a, b, static_cast<float>(step) / 8.0f);
+        const float front = front_at(glm::length(glm::vec2(p) - centre_xy));
+        if (front >= 0.0f) centre_z = std::min(centre_z, p.z - kLidClearance - front);
+      }
+    };
+    for (std::size_t i = 0; i < contour.size(); ++i) behind(contour[i], contour[(i + 1) % contour.size()]);
+    for (const std::size_t upper : {kUpperLid, kUpperLid + 1})
+      for (const std::size_t lower : {kLowerLid, kLowerLid + 1}) behind(contour[upper], contour[lower]);
     model::EyeLayer& eye = face.eyes[static_cast<std::size_t>(side)];
     eye.radius = kEyeballRadius;
     eye.cap_angle_rad = kCapAngle;
