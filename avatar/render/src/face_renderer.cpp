@@ -1,6 +1,7 @@
 #include "fw/render/face_renderer.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <vector>
 
@@ -76,10 +77,18 @@ struct FaceRenderer::Impl {
   Renderbuffer draw_colour, draw_depth, resolve_colour;
   GLsizei samples = 0;
   std::vector<GpuFace> faces;
+  std::size_t current_variant = 0;  // the program in use, for profiles
+  FrameProfile* profile = nullptr;
+  std::chrono::steady_clock::time_point part_start;
+  // Profiling only: waits for what was asked of GL since the last part
+  // ended and books its time to `part` (and to the program in use if
+  // `with_variant`).
+  void end_part(std::string_view part, bool with_variant);
 
   bool set_up_framebuffers(std::string& error);
   const ShaderUniforms& use(std::size_t variant) {
     glUseProgram(shaders[variant].program.get());
+    current_variant = variant;
     return shaders[variant].uniforms;
   }
   const ShaderUniforms& use(PartShader kind, model::TextureLight light) { return use(shader_index(kind, light)); }
@@ -89,6 +98,15 @@ struct FaceRenderer::Impl {
   PixelRect drawn_rect(std::span<const FaceDraw> draws, const Camera& camera) const;
   void scissor_to_opening(const GpuFace& face, std::span<const std::uint32_t> outline, const glm::mat4& mvp);
 };
+
+void FaceRenderer::Impl::end_part(std::string_view part, bool with_variant) {
+  if (!profile) return;
+  glFinish();
+  const auto now = std::chrono::steady_clock::now();
+  profile->add(part, with_variant ? shader_name(current_variant) : std::string(),
+               std::chrono::duration<double>(now - part_start).count());
+  part_start = now;
+}
 
 void FaceRenderer::Impl::scissor_to_opening(const GpuFace& face, std::span<const std::uint32_t> outline,
                                             const glm::mat4& mvp) {
@@ -221,9 +239,11 @@ void FaceRenderer::Impl::draw_face(const GpuFace& face, const FaceDraw& draw, co
   }
   glUniform1f(skin.skin_specular, kSkinSpecular);
   draw_mesh(face.skin, face.skin_texture, skin, draw.model);
+  end_part("skin", true);
   const glm::mat4 skin_mvp = camera.view_projection() * draw.model;
   if (!face.eye_layer) {
     draw_mesh(face.eye_covers, face.skin_texture, skin, draw.model);
+    end_part("eye covers", true);
   } else {
     const ShaderUniforms& eye = use(PartShader::eye, face.light);
     for (std::size_t side = 0; side < 2; ++side) {
@@ -233,17 +253,20 @@ void FaceRenderer::Impl::draw_face(const GpuFace& face, const FaceDraw& draw, co
       draw_mesh(face.eyes[side], face.eye_texture, eye, eye_model);
       glDisable(GL_SCISSOR_TEST);
     }
+    end_part("eyes", true);
   }
   const ShaderUniforms& plain = use(PartShader::plain, face.light);
   glUniform1f(plain.skin_specular, 0.0f);
   scissor_to_opening(face, face.mouth_slit, skin_mvp);
   draw_mesh(face.mouth, face.mouth_texture, plain, draw.model);
   glDisable(GL_SCISSOR_TEST);
+  end_part("mouth", true);
   // The shell is closed wherever it can be seen, with its triangles facing
   // out: its far side need not be drawn at all.
   glEnable(GL_CULL_FACE);
   draw_mesh(face.head, face.skin_texture, plain, draw.model);
   glDisable(GL_CULL_FACE);
+  end_part("shell", true);
 }
 
 FaceRenderer::FaceRenderer() : impl_(std::make_unique<Impl>()) {}
@@ -345,6 +368,11 @@ void FaceRenderer::set_face_shape(FaceId id, std::span<const glm::vec3> position
 model::RgbaImage FaceRenderer::render(std::span<const FaceDraw> draws, const Camera& camera) {
   Impl& impl = *impl_;
   impl.context->make_current();
+  if (impl.profile) {
+    glFinish();
+    impl.part_start = std::chrono::steady_clock::now();
+    ++impl.profile->frames;
+  }
   const int w = impl.options.width, h = impl.options.height;
   glBindFramebuffer(GL_FRAMEBUFFER, impl.draw_framebuffer.get());
   glViewport(0, 0, w, h);
@@ -356,6 +384,7 @@ model::RgbaImage FaceRenderer::render(std::span<const FaceDraw> draws, const Cam
   const std::size_t row = static_cast<std::size_t>(w) * 4;
   for (std::size_t i = 0; i < row; i += 4) std::copy_n(impl.background_texel.data(), 4, image.at(0, 0) + i);
   for (int y = 1; y < h; ++y) std::copy_n(image.at(0, 0), row, image.at(0, y));
+  impl.end_part("background", false);
   if (drawn.width <= 0 || drawn.height <= 0) return image;
   // Targets store what they are given, and the background is given in sRGB.
   const glm::vec3 background = impl.options.background;
@@ -373,6 +402,7 @@ model::RgbaImage FaceRenderer::render(std::span<const FaceDraw> draws, const Cam
     glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
     glEnable(GL_SAMPLE_ALPHA_TO_ONE);
   }
+  impl.end_part("clear", false);
   impl.set_frame_uniforms(camera);
   for (const FaceDraw& draw : draws) {
     if (draw.face >= impl.faces.size()) continue;  // an id from another renderer: nothing to draw
@@ -386,6 +416,7 @@ model::RgbaImage FaceRenderer::render(std::span<const FaceDraw> draws, const Cam
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, impl.resolve_framebuffer.get());
   const int x0 = drawn.x, y0 = drawn.y, x1 = drawn.x + drawn.width, y1 = drawn.y + drawn.height;
   glBlitFramebuffer(x0, y0, x1, y1, x0, y0, x1, y1, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  impl.end_part("resolve", false);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, impl.resolve_framebuffer.get());
   std::vector<std::uint8_t> bottom_up(static_cast<std::size_t>(drawn.width) * drawn.height * 4);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
@@ -393,8 +424,11 @@ model::RgbaImage FaceRenderer::render(std::span<const FaceDraw> draws, const Cam
   const std::size_t drawn_row = static_cast<std::size_t>(drawn.width) * 4;
   for (int y = y0; y < y1; ++y)
     std::copy_n(bottom_up.data() + static_cast<std::size_t>(y - y0) * drawn_row, drawn_row, image.at(x0, h - 1 - y));
+  impl.end_part("readback", false);
   return image;
 }
+
+void FaceRenderer::set_profile(FrameProfile* profile) { impl_->profile = profile; }
 
 std::string FaceRenderer::renderer_name() { return impl_->context->renderer_name(); }
 int FaceRenderer::width() const { return impl_->options.width; }

@@ -29,6 +29,14 @@ std::size_t shader_index(PartShader part, model::TextureLight light) {
   return static_cast<std::size_t>(part) + (light == model::TextureLight::albedo ? kPartShaderCount : 0);
 }
 
+std::string shader_name(std::size_t index) {
+  static constexpr std::array<std::string_view, kPartShaderCount> kParts{
+      "plain", "skin_closing_lids", "skin_closing_lids_with_blood", "skin_with_blood", "eye"};
+  std::string name(kParts[index % kPartShaderCount]);
+  if (index >= kPartShaderCount) name += "+albedo";
+  return name;
+}
+
 std::optional<std::array<ShaderVariant, kShaderCount>> build_part_shaders(std::string_view vertex_source,
                                                                           std::string_view fragment_source,
                                                                           bool alpha_test, std::string& error) {

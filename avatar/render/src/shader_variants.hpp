@@ -23,6 +23,10 @@ inline constexpr std::size_t kShaderCount = 2 * kPartShaderCount;
 /// Where the variant of `part` for textures holding `light` is among the built ones.
 std::size_t shader_index(PartShader part, model::TextureLight light);
 
+/// The variant's name, for profiles: the part's ("plain", "skin_closing_lids",
+/// "skin_closing_lids_with_blood", "skin_with_blood", "eye"), "+albedo" for FW_ALBEDO.
+std::string shader_name(std::size_t index);
+
 /// The skin's variant for a frame: `lids_closing` if either lid closes at
 /// all, `blood` if any blush or pallor shows.
 PartShader skin_shader(bool lids_closing, bool blood);
