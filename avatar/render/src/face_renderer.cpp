@@ -9,6 +9,7 @@
 
 #include "fw/render/offscreen_context.hpp"
 #include "gpu_resources.hpp"
+#include "opaque_texels.hpp"
 #include "screen_rect.hpp"
 #include "shader_variants.hpp"
 
@@ -38,6 +39,14 @@ struct GpuFace {
   // all of it with the skin's current shape.
   glm::vec3 rigid_low{0.0f}, rigid_high{0.0f}, box_low{0.0f}, box_high{0.0f};
   Texture skin_texture, eye_texture, mouth_texture, closed_lid, masks_a, masks_b;
+  // Which of the skin's and the shell's triangles read only opaque texels
+  // (opaque_texels.hpp), sorted first in each frame; the skin's uvs move
+  // with its shape, so its opacity is found again then.
+  OpaqueTexels skin_opaque;
+  TexelOpacity skin_opacity, head_opacity;
+  std::vector<glm::vec2> skin_uvs;
+  std::vector<glm::vec3> head_positions;
+  std::vector<glm::vec2> head_uvs;
   glm::vec4 closed_lid_rect{0.0f};
 };
 
@@ -94,7 +103,12 @@ struct FaceRenderer::Impl {
   const ShaderUniforms& use(PartShader kind, model::TextureLight light) { return use(shader_index(kind, light)); }
   void set_frame_uniforms(const Camera& camera);
   std::array<std::uint8_t, 4> background_texel{};  // the background as the targets store it
-  void draw_face(const GpuFace& face, const FaceDraw& draw, const Camera& camera);
+  void draw_face(GpuFace& face, const FaceDraw& draw, const Camera& camera);
+  // Sorts `mesh`'s triangles that read only opaque texels in this frame first.
+  void sort_for_frame(GpuMesh& mesh, const TexelOpacity& opacity, std::span<const glm::vec3> positions,
+                      std::span<const glm::vec2> uvs, const glm::mat4& mvp);
+  std::vector<glm::uvec3> sorted_triangles;  // scratch
+  void draw_mesh(const GpuMesh& mesh, const Texture& texture, const ShaderUniforms& uniforms, const glm::mat4& model);
   PixelRect drawn_rect(std::span<const FaceDraw> draws, const Camera& camera) const;
   void scissor_to_opening(const GpuFace& face, std::span<const std::uint32_t> outline, const glm::mat4& mvp);
 };
@@ -185,20 +199,36 @@ void grow_box(std::span<const glm::vec3> points, glm::vec3& low, glm::vec3& high
   }
 }
 
-void draw_mesh(const GpuMesh& mesh, const Texture& texture, const ShaderUniforms& uniforms, const glm::mat4& model) {
-  glUniformMatrix4fv(uniforms.model, 1, GL_FALSE, glm::value_ptr(model));
-  glActiveTexture(GL_TEXTURE0 + kMainUnit);
-  glBindTexture(GL_TEXTURE_2D, texture.get());
-  glBindVertexArray(mesh.vertex_array.get());
-  glDrawElements(GL_TRIANGLES, mesh.index_count, GL_UNSIGNED_INT, nullptr);
-}
-
 void bind_texture(Unit unit, const Texture& texture) {
   glActiveTexture(GL_TEXTURE0 + unit);
   glBindTexture(GL_TEXTURE_2D, texture.get());
 }
 
 }  // namespace
+
+void FaceRenderer::Impl::draw_mesh(const GpuMesh& mesh, const Texture& texture, const ShaderUniforms& uniforms,
+                                   const glm::mat4& model) {
+  glUniformMatrix4fv(uniforms.model, 1, GL_FALSE, glm::value_ptr(model));
+  glActiveTexture(GL_TEXTURE0 + kMainUnit);
+  glBindTexture(GL_TEXTURE_2D, texture.get());
+  glBindVertexArray(mesh.vertex_array.get());
+  if (samples == 0) {
+    glDrawElements(GL_TRIANGLES, mesh.index_count, GL_UNSIGNED_INT, nullptr);
+    return;
+  }
+  // Triangles that read only opaque texels cover every sample with alpha to
+  // coverage or without: without, llvmpipe does less (opaque_texels.hpp).
+  if (mesh.opaque_index_count > 0) {
+    glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+    glDisable(GL_SAMPLE_ALPHA_TO_ONE);
+    glDrawElements(GL_TRIANGLES, mesh.opaque_index_count, GL_UNSIGNED_INT, nullptr);
+    glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+    glEnable(GL_SAMPLE_ALPHA_TO_ONE);
+  }
+  if (mesh.index_count > mesh.opaque_index_count)
+    glDrawElements(GL_TRIANGLES, mesh.index_count - mesh.opaque_index_count, GL_UNSIGNED_INT,
+                   reinterpret_cast<const void*>(static_cast<std::uintptr_t>(mesh.opaque_index_count) * sizeof(GLuint)));
+}
 
 void FaceRenderer::Impl::set_frame_uniforms(const Camera& camera) {
   for (std::size_t i = 0; i < kShaderCount; ++i) {
@@ -214,7 +244,15 @@ void FaceRenderer::Impl::set_frame_uniforms(const Camera& camera) {
   }
 }
 
-void FaceRenderer::Impl::draw_face(const GpuFace& face, const FaceDraw& draw, const Camera& camera) {
+void FaceRenderer::Impl::sort_for_frame(GpuMesh& mesh, const TexelOpacity& opacity, std::span<const glm::vec3> positions,
+                                        std::span<const glm::vec2> uvs, const glm::mat4& mvp) {
+  if (samples == 0) return;  // no alpha to coverage to spare
+  const std::size_t opaque = sort_opaque_first(opacity, positions, uvs, mvp,
+                                               glm::vec2(options.width, options.height), sorted_triangles);
+  set_triangle_order(mesh, sorted_triangles, opaque);
+}
+
+void FaceRenderer::Impl::draw_face(GpuFace& face, const FaceDraw& draw, const Camera& camera) {
   // Nearest first: what lies behind (the eyeballs, the mouth cavity, the
   // head shell behind the face) then fails the depth test before it is
   // shaded, which a software renderer feels (llvmpipe only without
@@ -238,9 +276,10 @@ void FaceRenderer::Impl::draw_face(const GpuFace& face, const FaceDraw& draw, co
     glUniform1f(skin.pallor, draw.pallor);
   }
   glUniform1f(skin.skin_specular, kSkinSpecular);
+  const glm::mat4 skin_mvp = camera.view_projection() * draw.model;
+  sort_for_frame(face.skin, face.skin_opacity, face.skin_positions, face.skin_uvs, skin_mvp);
   draw_mesh(face.skin, face.skin_texture, skin, draw.model);
   end_part("skin", true);
-  const glm::mat4 skin_mvp = camera.view_projection() * draw.model;
   if (!face.eye_layer) {
     draw_mesh(face.eye_covers, face.skin_texture, skin, draw.model);
     end_part("eye covers", true);
@@ -264,6 +303,7 @@ void FaceRenderer::Impl::draw_face(const GpuFace& face, const FaceDraw& draw, co
   // The shell is closed wherever it can be seen, with its triangles facing
   // out: its far side need not be drawn at all.
   glEnable(GL_CULL_FACE);
+  sort_for_frame(face.head, face.head_opacity, face.head_positions, face.head_uvs, skin_mvp);
   draw_mesh(face.head, face.skin_texture, plain, draw.model);
   glDisable(GL_CULL_FACE);
   end_part("shell", true);
@@ -339,9 +379,27 @@ FaceId FaceRenderer::add_face(const model::GenericFace& face, const FaceTextures
       for (std::size_t i = 1; i + 1 < hole.size(); ++i) fans.emplace_back(hole[0], hole[i], hole[i + 1]);
     gpu.eye_covers = share_vertices(gpu.skin, fans);
   }
-  gpu.skin_texture = upload_texture(textures.skin, TexelEncoding::srgb_colour);
-  gpu.eye_texture = upload_texture(or_black(textures.eye), TexelEncoding::srgb_colour);
-  gpu.mouth_texture = upload_texture(textures.mouth, TexelEncoding::srgb_colour);
+  // Alpha to coverage is left out where it changes nothing (opaque_texels.hpp):
+  // the eyeballs and the mouth cavity are opaque in all but odd textures,
+  // the skin and the shell are sorted in each frame.
+  const std::vector<MipLevel> skin_levels = square_root_light_mipmaps(textures.skin);
+  gpu.skin_texture = upload_colour_levels(skin_levels);
+  gpu.skin_opaque = OpaqueTexels(skin_levels);
+  gpu.skin_uvs = face.skin.uvs;
+  gpu.skin_opacity = texel_opacity(face.skin.triangles, gpu.skin_uvs, gpu.skin_opaque);
+  gpu.head_positions = face.head.mesh.positions;
+  gpu.head_uvs = face.head.mesh.uvs;
+  gpu.head_opacity = texel_opacity(face.head.mesh.triangles, gpu.head_uvs, gpu.skin_opaque);
+  const auto opaque_when_all_is = [](const std::vector<MipLevel>& levels, const model::Mesh& mesh, GpuMesh& gpu_mesh) {
+    if (texel_opacity(mesh.triangles, mesh.uvs, OpaqueTexels(levels)).all_opaque())
+      set_triangle_order(gpu_mesh, mesh.triangles, mesh.triangles.size());
+  };
+  const std::vector<MipLevel> eye_levels = square_root_light_mipmaps(or_black(textures.eye));
+  gpu.eye_texture = upload_colour_levels(eye_levels);
+  for (std::size_t side = 0; side < 2; ++side) opaque_when_all_is(eye_levels, face.eyes[side].mesh, gpu.eyes[side]);
+  const std::vector<MipLevel> mouth_levels = square_root_light_mipmaps(textures.mouth);
+  gpu.mouth_texture = upload_colour_levels(mouth_levels);
+  opaque_when_all_is(mouth_levels, face.mouth_cavity, gpu.mouth);
   gpu.closed_lid = upload_texture(or_black(textures.closed_lid), TexelEncoding::srgb_colour);
   gpu.closed_lid_rect = textures.closed_lid.width > 0 ? textures.closed_lid_rect : glm::vec4(0.0f);
   gpu.masks_a = upload_texture(or_black(textures.masks_a), TexelEncoding::linear_data);
@@ -359,6 +417,8 @@ void FaceRenderer::set_face_shape(FaceId id, std::span<const glm::vec3> position
   mesh.uvs.assign(uvs.begin(), uvs.end());
   mesh.triangles = face.skin_triangles;
   update_mesh(face.skin, mesh);
+  face.skin_uvs = mesh.uvs;
+  face.skin_opacity = texel_opacity(face.skin_triangles, face.skin_uvs, face.skin_opaque);
   face.skin_positions = std::move(mesh.positions);
   face.box_low = face.rigid_low;
   face.box_high = face.rigid_high;
