@@ -299,17 +299,16 @@ void FaceRenderer::Impl::draw_face(GpuFace& face, const FaceDraw& draw, const Ca
     glDisable(GL_CULL_FACE);
     end_part("eyes", true);
   }
-  const ShaderUniforms& plain = use(PartShader::plain, face.light);
-  glUniform1f(plain.skin_specular, 0.0f);
+  const ShaderUniforms& matte = use(PartShader::matte, face.light);
   scissor_to_opening(face, face.mouth_slit, skin_mvp);
-  draw_mesh(face.mouth, face.mouth_texture, plain, draw.model);
+  draw_mesh(face.mouth, face.mouth_texture, matte, draw.model);
   glDisable(GL_SCISSOR_TEST);
   end_part("mouth", true);
   // The shell is closed wherever it can be seen, with its triangles facing
   // out: its far side need not be drawn at all.
   glEnable(GL_CULL_FACE);
   sort_for_frame(face.head, face.head_opacity, face.head_positions, face.head_uvs, skin_mvp);
-  draw_mesh(face.head, face.skin_texture, plain, draw.model);
+  draw_mesh(face.head, face.skin_texture, matte, draw.model);
   glDisable(GL_CULL_FACE);
   end_part("shell", true);
 }

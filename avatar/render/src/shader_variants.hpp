@@ -15,8 +15,11 @@ namespace fw::render {
 
 // The skin uses plain when its lids are open and it has no blood colour:
 // those lookups would change nothing, and llvmpipe pays for every one.
-enum class PartShader { plain, skin_closing_lids, skin_closing_lids_with_blood, skin_with_blood, eye };
-inline constexpr std::size_t kPartShaderCount = 5;
+// The mouth cavity and the head shell use matte: plain without the skin's
+// specular (FW_MATTE), whose maths and two varyings they would pay for with
+// a zero scale.
+enum class PartShader { plain, skin_closing_lids, skin_closing_lids_with_blood, skin_with_blood, eye, matte };
+inline constexpr std::size_t kPartShaderCount = 6;
 /// Every part's variant once for photo textures and once for albedo (FW_ALBEDO).
 inline constexpr std::size_t kShaderCount = 2 * kPartShaderCount;
 
@@ -24,7 +27,7 @@ inline constexpr std::size_t kShaderCount = 2 * kPartShaderCount;
 std::size_t shader_index(PartShader part, model::TextureLight light);
 
 /// The variant's name, for profiles: the part's ("plain", "skin_closing_lids",
-/// "skin_closing_lids_with_blood", "skin_with_blood", "eye"), "+albedo" for FW_ALBEDO.
+/// "skin_closing_lids_with_blood", "skin_with_blood", "eye", "matte"), "+albedo" for FW_ALBEDO.
 std::string shader_name(std::size_t index);
 
 /// The skin's variant for a frame: `lids_closing` if either lid closes at
