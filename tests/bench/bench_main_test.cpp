@@ -19,6 +19,20 @@ TEST(BenchRender, PrintsOneJsonObjectWithTheAgreedKeys) {
   EXPECT_FALSE(json.at("renderer").get<std::string>().empty());
 }
 
+TEST(BenchRender, ProfilePrintsMillisecondsPerPartAndVariantForBothScenes) {
+  const auto result = test::run_command(test::bin("facewire-bench") + " render --json --profile --seconds 0.1", false);
+  ASSERT_EQ(result.status, 0) << result.output;
+  const auto json = nlohmann::json::parse(result.output, nullptr, false);
+  ASSERT_TRUE(json.is_object()) << result.output;
+  for (const char* scene : {"profile_1face_256", "profile_8faces_640x480"}) {
+    const auto& profile = json.at(scene);
+    EXPECT_GE(profile.at("frames").get<int>(), 3) << scene;
+    for (const char* part : {"shape", "clear", "skin", "eyes", "mouth", "shell", "resolve", "readback"})
+      EXPECT_GE(profile.at("parts_ms").at(part).get<double>(), 0.0) << scene << " " << part;
+    EXPECT_GE(profile.at("variants_ms").at("plain+albedo").get<double>(), 0.0) << scene;
+  }
+}
+
 TEST(BenchPrep, PrintsMillisecondsPerPhotoAndPackageBytes) {
   const auto result = test::run_command(test::bin("facewire-bench") + " prep --json --repeats 1", false);
   ASSERT_EQ(result.status, 0) << result.output;

@@ -3,6 +3,8 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <map>
+#include <tuple>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -21,18 +23,23 @@ struct RenderBenchArgs {
   double seconds = 3.0;
   int samples = 4;
   bool json = false;
+  bool profile = false;
 };
 
 struct Measured {
   double fps = 0;
   int frames = 0;
+  render::FrameProfile profile;  // filled only when profiled
 };
 
 // Renders `faces` heads that keep turning and changing expression (so no
 // frame repeats the last) for about `seconds`, and reports whole frames per
 // second including each face's reconstruction and the read-back: what a
-// client pays for every frame.
-Measured measure(int width, int height, int faces, const RenderBenchArgs& args, std::string* renderer_name) {
+// client pays for every frame. `profiled`: each part of a frame timed
+// apart (render::FrameProfile), the reconstruction and shape upload as
+// "shape"; its frames are slower, so its rate is not reported.
+Measured measure(int width, int height, int faces, const RenderBenchArgs& args, bool profiled,
+                 std::string* renderer_name) {
   render::RendererOptions options;
   options.width = width;
   options.height = height;
@@ -56,10 +63,12 @@ Measured measure(int width, int height, int faces, const RenderBenchArgs& args, 
 
   renderer->render(draws, camera);  // warm-up: shader compilation, first uploads
   using clock = std::chrono::steady_clock;
-  const auto start = clock::now();
   Measured m;
+  if (profiled) renderer->set_profile(&m.profile);
+  const auto start = clock::now();
   double elapsed = 0;
   while (elapsed < args.seconds || m.frames < 3) {
+    const auto shape_start = clock::now();
     for (int i = 0; i < faces; ++i) {
       const float t = static_cast<float>(m.frames + 7 * i);
       codec::FaceParams params;
@@ -73,18 +82,20 @@ Measured measure(int width, int height, int faces, const RenderBenchArgs& args, 
       draws[static_cast<std::size_t>(i)] = render::face_draw(draws[static_cast<std::size_t>(i)].face, params,
                                                              render::place_in_row(i, faces));
     }
+    if (profiled) m.profile.add("shape", "", std::chrono::duration<double>(clock::now() - shape_start).count());
     renderer->render(draws, camera);
     ++m.frames;
     elapsed = std::chrono::duration<double>(clock::now() - start).count();
   }
   m.fps = m.frames / elapsed;
+  renderer->set_profile(nullptr);
   return m;
 }
 
 void run(const RenderBenchArgs& args) {
   std::string renderer_name;
-  const Measured one = measure(256, 256, 1, args, &renderer_name);
-  const Measured eight = measure(640, 480, 8, args, nullptr);
+  const Measured one = measure(256, 256, 1, args, false, &renderer_name);
+  const Measured eight = measure(640, 480, 8, args, false, nullptr);
   nlohmann::json out = {
       {"benchmark", "render"},
       {"renderer", renderer_name},
@@ -96,11 +107,26 @@ void run(const RenderBenchArgs& args) {
       {"skin_triangles", model::generic_face().skin.triangles.size()},
       {"skin_vertices", model::generic_face().skin.positions.size()},
   };
+  if (args.profile) {
+    for (const auto& [key, width, height, faces] : {std::tuple{"profile_1face_256", 256, 256, 1},
+                                                    std::tuple{"profile_8faces_640x480", 640, 480, 8}}) {
+      const Measured profiled = measure(width, height, faces, args, true, nullptr);
+      const auto rounded = [](std::map<std::string, double, std::less<>> ms) {
+        for (auto& [name, value] : ms) value = std::round(value * 1000) / 1000;
+        return ms;
+      };
+      out[key] = {{"frames", profiled.profile.frames},
+                  {"parts_ms", rounded(profiled.profile.per_frame_ms(false))},
+                  {"variants_ms", rounded(profiled.profile.per_frame_ms(true))}};
+    }
+  }
   if (args.json) {
     std::cout << out.dump() << "\n";
   } else {
     std::cout << "renderer " << renderer_name << "\n1 face 256x256:     " << out["fps_1face_256"] << " fps\n"
               << "8 faces 640x480:    " << out["fps_8faces_640x480"] << " fps\n";
+    for (const char* key : {"profile_1face_256", "profile_8faces_640x480"})
+      if (out.contains(key)) std::cout << key << " (ms a frame, each part waited for): " << out[key].dump() << "\n";
   }
 }
 
@@ -114,6 +140,9 @@ void add_render_bench(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--samples", args->samples, "anti-aliasing samples")->check(CLI::Range(0, 16))->capture_default_str();
   cmd->add_flag("--json", args->json, "print one JSON object");
+  cmd->add_flag("--profile", args->profile,
+                "also time each part of a frame and each shader variant (waiting for each part: slower frames), "
+                "in milliseconds a frame");
   cmd->callback([args] { run(*args); });
 }
 

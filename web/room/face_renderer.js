@@ -251,6 +251,7 @@ export class FaceRenderer {
       const eye = programs.eye;
       gl.useProgram(eye.program);
       face.eyes.forEach((m, side) => {
+        if (frame.lidClosure[side] >= 1) return;  // shut: the lids hide it (as natively)
         mesh(m, face.textures.eye, eye.u, frame.eyeModels[side]);
         this.drawSocket(face, side, eye.u, frame.model, mesh);
       });

@@ -5,6 +5,9 @@
 //   FW_CLOSED_LID  the skin: fades in the closed lids
 //   FW_BLOOD       the skin in a frame with blush or pallor
 //   FW_SPECULAR    an eyeball: a wet highlight and a catch-light
+//   FW_MATTE       a part without the skin's specular (the mouth cavity,
+//                  the head shell): the same light as with u_skin_specular
+//                  0, for less work per fragment
 //   FW_ALBEDO      a face whose textures are albedo (a procedural face):
 //                  lit by sky, ground and a key light; without it the
 //                  textures are a photo, which holds its own light
@@ -12,7 +15,8 @@
 //   FW_SQUARE_ROOT_COLOUR  colour textures hold the square root of linear
 //                  light (the native renderer's, for llvmpipe's speed);
 //                  without it they are sRGB textures, decoded on lookup
-// and none but FW_ALBEDO for the mouth cavity and the head shell. Variants
+// and none but FW_ALBEDO (and natively FW_MATTE) for the mouth cavity and
+// the head shell. Variants
 // rather than branches on uniforms: a software rasteriser runs both sides
 // of a branch for every fragment, and a frame is mostly fragments.
 //
@@ -24,12 +28,16 @@ precision highp float;
 
 in vec3 v_normal;
 in vec2 v_uv;
-#ifdef FW_ALBEDO
+#if defined(FW_ALBEDO) && !defined(FW_MATTE)
+#define FW_SKIN_SPECULAR
+#endif
+#ifdef FW_SKIN_SPECULAR
 in float v_fresnel;
-#else
+#endif
+#ifndef FW_ALBEDO
 in float v_relight;
 #endif
-#if defined(FW_ALBEDO) || defined(FW_SPECULAR)
+#if defined(FW_SKIN_SPECULAR) || defined(FW_SPECULAR)
 in vec3 v_half;
 #endif
 
@@ -96,20 +104,27 @@ const float kWrap = 0.5;  // (n.l + w) / (1 + w)
 // (v_fresnel, face.vert). Its scale (the lobe's normalisation and the
 // key's strength) is a uniform set per part: the face's skin has it, the
 // head shell, mostly hair, does not (on hair the lobe read as a plastic
-// helmet's sheen), and one program may draw both.
+// helmet's sheen), and one program may draw both; natively the mouth and
+// the shell use FW_MATTE instead.
+#ifdef FW_SKIN_SPECULAR
 uniform float u_skin_specular;
+#endif
 
 vec3 albedo_light(vec3 albedo, vec3 n) {
   float n_dot_l = dot(n, u_light_direction);
   // Constants folded: mix(ground, sky, n.y / 2 + 1/2) and (n.l + w) / (1 + w).
   vec3 ambient = 0.5 * (kSky + kGround) + 0.5 * (kSky - kGround) * n.y;
   vec3 irradiance = ambient + kKey * max(n_dot_l * (1.0 / (1.0 + kWrap)) + kWrap / (1.0 + kWrap), 0.0);
+#ifndef FW_SKIN_SPECULAR
+  return albedo * irradiance;
+#else
   float h = max(dot(n, v_half), 0.0);
   h *= h;
   h *= h;
   h *= h;
   h *= h;
   return albedo * irradiance + kKey * (u_skin_specular * v_fresnel * h * max(n_dot_l, 0.0));
+#endif
 }
 #endif
 

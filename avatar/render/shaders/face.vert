@@ -1,7 +1,7 @@
 #version 300 es
 // The one vertex shader of facewire: loaded by the native OSMesa renderer
 // (desktop GL with ARB_ES3_compatibility) and by WebGL2 in the browser. It
-// gets the same defines as face.frag (see there): FW_ALBEDO and
+// gets the same defines as face.frag (see there): FW_ALBEDO, FW_MATTE and
 // FW_SPECULAR choose what light it hands on.
 precision highp float;
 
@@ -17,16 +17,20 @@ uniform vec3 u_camera_position;
 
 out vec3 v_normal;
 out vec2 v_uv;
-#ifdef FW_ALBEDO
+#if defined(FW_ALBEDO) && !defined(FW_MATTE)
+#define FW_SKIN_SPECULAR
+#endif
+#ifdef FW_SKIN_SPECULAR
 out float v_fresnel;  // the skin's reflectance toward the camera
-#else
+#endif
+#ifndef FW_ALBEDO
 out float v_relight;  // the photo's light changed by the surface's turn
 #endif
-#if defined(FW_ALBEDO) || defined(FW_SPECULAR)
+#if defined(FW_SKIN_SPECULAR) || defined(FW_SPECULAR)
 out vec3 v_half;     // between the key light and the camera
 #endif
 
-#ifdef FW_ALBEDO
+#ifdef FW_SKIN_SPECULAR
 // Schlick's Fresnel from skin's normal reflectance of about 0.028
 // (refractive index 1.4): the skin's specular strengthens toward grazing
 // angles. Per vertex: it changes slowly but at the outline.
@@ -37,7 +41,8 @@ float skin_fresnel(vec3 n, vec3 view) {
   float g2 = grazing * grazing;
   return kSkinF0 + (1.0 - kSkinF0) * g2 * g2 * grazing;
 }
-#else
+#endif
+#ifndef FW_ALBEDO
 // The photo already holds its own light. Only a change of the surface's
 // direction from the photo's (a turned head, a raised brow, a turned eye)
 // changes how much of the key light it catches: the ratio of the two. Per
@@ -56,14 +61,15 @@ void main() {
   v_normal = mat3(u_model) * a_normal;
   v_uv = a_uv;
   vec3 view = normalize(u_camera_position - world.xyz);
-#ifdef FW_ALBEDO
+#ifdef FW_SKIN_SPECULAR
   v_fresnel = skin_fresnel(normalize(v_normal), view);
-#else
+#endif
+#ifndef FW_ALBEDO
   // The photo saw the face frontal and at rest: its normals, unposed. (The
   // inside of the skin's rim, seen on a turned head, takes its outside's.)
   v_relight = relighting(normalize(v_normal), normalize(a_rest_normal));
 #endif
-#if defined(FW_ALBEDO) || defined(FW_SPECULAR)
+#if defined(FW_SKIN_SPECULAR) || defined(FW_SPECULAR)
   v_half = normalize(u_light_direction + view);
 #endif
   gl_Position = u_view_projection * world;

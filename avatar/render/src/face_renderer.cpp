@@ -1,6 +1,7 @@
 #include "fw/render/face_renderer.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <vector>
 
@@ -9,6 +10,7 @@
 #include "fw/model/eye_socket.hpp"
 #include "fw/render/offscreen_context.hpp"
 #include "gpu_resources.hpp"
+#include "opaque_texels.hpp"
 #include "screen_rect.hpp"
 #include "shader_variants.hpp"
 
@@ -40,6 +42,14 @@ struct GpuFace {
   // all of it with the skin's current shape.
   glm::vec3 rigid_low{0.0f}, rigid_high{0.0f}, box_low{0.0f}, box_high{0.0f};
   Texture skin_texture, eye_texture, mouth_texture, closed_lid, masks_a, masks_b;
+  // Which of the skin's and the shell's triangles read only opaque texels
+  // (opaque_texels.hpp), sorted first in each frame; the skin's uvs move
+  // with its shape, so its opacity is found again then.
+  OpaqueTexels skin_opaque;
+  TexelOpacity skin_opacity, head_opacity;
+  std::vector<glm::vec2> skin_uvs;
+  std::vector<glm::vec3> head_positions;
+  std::vector<glm::vec2> head_uvs;
   glm::vec4 closed_lid_rect{0.0f};
 };
 
@@ -79,20 +89,42 @@ struct FaceRenderer::Impl {
   Renderbuffer draw_colour, draw_depth, resolve_colour;
   GLsizei samples = 0;
   std::vector<GpuFace> faces;
+  std::size_t current_variant = 0;  // the program in use, for profiles
+  FrameProfile* profile = nullptr;
+  std::chrono::steady_clock::time_point part_start;
+  // Profiling only: waits for what was asked of GL since the last part
+  // ended and books its time to `part` (and to the program in use if
+  // `with_variant`).
+  void end_part(std::string_view part, bool with_variant);
 
   bool set_up_framebuffers(std::string& error);
   const ShaderUniforms& use(std::size_t variant) {
     glUseProgram(shaders[variant].program.get());
+    current_variant = variant;
     return shaders[variant].uniforms;
   }
   const ShaderUniforms& use(PartShader kind, model::TextureLight light) { return use(shader_index(kind, light)); }
   void set_frame_uniforms(const Camera& camera);
   std::array<std::uint8_t, 4> background_texel{};  // the background as the targets store it
-  void draw_face(const GpuFace& face, const FaceDraw& draw, const Camera& camera);
+  void draw_face(GpuFace& face, const FaceDraw& draw, const Camera& camera);
   void draw_socket(const GpuFace& face, std::size_t side, const ShaderUniforms& eye, const glm::mat4& model);
+  // Sorts `mesh`'s triangles that read only opaque texels in this frame first.
+  void sort_for_frame(GpuMesh& mesh, const TexelOpacity& opacity, std::span<const glm::vec3> positions,
+                      std::span<const glm::vec2> uvs, const glm::mat4& mvp);
+  std::vector<glm::uvec3> sorted_triangles;  // scratch
+  void draw_mesh(const GpuMesh& mesh, const Texture& texture, const ShaderUniforms& uniforms, const glm::mat4& model);
   PixelRect drawn_rect(std::span<const FaceDraw> draws, const Camera& camera) const;
   void scissor_to_opening(const GpuFace& face, std::span<const std::uint32_t> outline, const glm::mat4& mvp);
 };
+
+void FaceRenderer::Impl::end_part(std::string_view part, bool with_variant) {
+  if (!profile) return;
+  glFinish();
+  const auto now = std::chrono::steady_clock::now();
+  profile->add(part, with_variant ? shader_name(current_variant) : std::string(),
+               std::chrono::duration<double>(now - part_start).count());
+  part_start = now;
+}
 
 void FaceRenderer::Impl::scissor_to_opening(const GpuFace& face, std::span<const std::uint32_t> outline,
                                             const glm::mat4& mvp) {
@@ -172,20 +204,36 @@ void grow_box(std::span<const glm::vec3> points, glm::vec3& low, glm::vec3& high
   }
 }
 
-void draw_mesh(const GpuMesh& mesh, const Texture& texture, const ShaderUniforms& uniforms, const glm::mat4& model) {
-  glUniformMatrix4fv(uniforms.model, 1, GL_FALSE, glm::value_ptr(model));
-  glActiveTexture(GL_TEXTURE0 + kMainUnit);
-  glBindTexture(GL_TEXTURE_2D, texture.get());
-  glBindVertexArray(mesh.vertex_array.get());
-  glDrawElements(GL_TRIANGLES, mesh.index_count, GL_UNSIGNED_INT, nullptr);
-}
-
 void bind_texture(Unit unit, const Texture& texture) {
   glActiveTexture(GL_TEXTURE0 + unit);
   glBindTexture(GL_TEXTURE_2D, texture.get());
 }
 
 }  // namespace
+
+void FaceRenderer::Impl::draw_mesh(const GpuMesh& mesh, const Texture& texture, const ShaderUniforms& uniforms,
+                                   const glm::mat4& model) {
+  glUniformMatrix4fv(uniforms.model, 1, GL_FALSE, glm::value_ptr(model));
+  glActiveTexture(GL_TEXTURE0 + kMainUnit);
+  glBindTexture(GL_TEXTURE_2D, texture.get());
+  glBindVertexArray(mesh.vertex_array.get());
+  if (samples == 0) {
+    glDrawElements(GL_TRIANGLES, mesh.index_count, GL_UNSIGNED_INT, nullptr);
+    return;
+  }
+  // Triangles that read only opaque texels cover every sample with alpha to
+  // coverage or without: without, llvmpipe does less (opaque_texels.hpp).
+  if (mesh.opaque_index_count > 0) {
+    glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+    glDisable(GL_SAMPLE_ALPHA_TO_ONE);
+    glDrawElements(GL_TRIANGLES, mesh.opaque_index_count, GL_UNSIGNED_INT, nullptr);
+    glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+    glEnable(GL_SAMPLE_ALPHA_TO_ONE);
+  }
+  if (mesh.index_count > mesh.opaque_index_count)
+    glDrawElements(GL_TRIANGLES, mesh.index_count - mesh.opaque_index_count, GL_UNSIGNED_INT,
+                   reinterpret_cast<const void*>(static_cast<std::uintptr_t>(mesh.opaque_index_count) * sizeof(GLuint)));
+}
 
 void FaceRenderer::Impl::set_frame_uniforms(const Camera& camera) {
   for (std::size_t i = 0; i < kShaderCount; ++i) {
@@ -205,6 +253,8 @@ void FaceRenderer::Impl::draw_socket(const GpuFace& face, std::size_t side, cons
                                      const glm::mat4& model) {
   // Where the hole is open (the skin and the lids in front of it left it
   // so): the stencil marks it, nothing else is written.
+  // Called in the eyes' loop, back faces culled; the fan faces either way.
+  glDisable(GL_CULL_FACE);
   glEnable(GL_STENCIL_TEST);
   glStencilFunc(GL_ALWAYS, 1, 0xff);
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
@@ -224,13 +274,20 @@ void FaceRenderer::Impl::draw_socket(const GpuFace& face, std::size_t side, cons
   glCullFace(GL_FRONT);
   draw_mesh(face.eye_sockets[side], face.eye_texture, eye, model);
   glCullFace(GL_BACK);
-  glDisable(GL_CULL_FACE);
   glUniform1f(eye.specular, kEyeSpecular);
   glClear(GL_STENCIL_BUFFER_BIT);  // within the opening's scissor: the next hole starts unmarked
   glDisable(GL_STENCIL_TEST);
 }
 
-void FaceRenderer::Impl::draw_face(const GpuFace& face, const FaceDraw& draw, const Camera& camera) {
+void FaceRenderer::Impl::sort_for_frame(GpuMesh& mesh, const TexelOpacity& opacity, std::span<const glm::vec3> positions,
+                                        std::span<const glm::vec2> uvs, const glm::mat4& mvp) {
+  if (samples == 0) return;  // no alpha to coverage to spare
+  const std::size_t opaque = sort_opaque_first(opacity, positions, uvs, mvp,
+                                               glm::vec2(options.width, options.height), sorted_triangles);
+  set_triangle_order(mesh, sorted_triangles, opaque);
+}
+
+void FaceRenderer::Impl::draw_face(GpuFace& face, const FaceDraw& draw, const Camera& camera) {
   // Nearest first: what lies behind (the eyeballs, the mouth cavity, the
   // head shell behind the face) then fails the depth test before it is
   // shaded, which a software renderer feels (llvmpipe only without
@@ -254,13 +311,23 @@ void FaceRenderer::Impl::draw_face(const GpuFace& face, const FaceDraw& draw, co
     glUniform1f(skin.pallor, draw.pallor);
   }
   glUniform1f(skin.skin_specular, kSkinSpecular);
-  draw_mesh(face.skin, face.skin_texture, skin, draw.model);
   const glm::mat4 skin_mvp = camera.view_projection() * draw.model;
+  sort_for_frame(face.skin, face.skin_opacity, face.skin_positions, face.skin_uvs, skin_mvp);
+  draw_mesh(face.skin, face.skin_texture, skin, draw.model);
+  end_part("skin", true);
   if (!face.eye_layer) {
     draw_mesh(face.eye_covers, face.skin_texture, skin, draw.model);
+    end_part("eye covers", true);
   } else {
     const ShaderUniforms& eye = use(PartShader::eye, face.light);
+    // An eyeball is a sphere but for a small cap at its back, with its
+    // triangles facing out: seen through its hole, its far half is hidden
+    // by its near half and need not be drawn (2 % of a frame).
+    glEnable(GL_CULL_FACE);
     for (std::size_t side = 0; side < 2; ++side) {
+      // Shut, the lids hide the eye; drawn, its turning changed a pixel or
+      // two where the closed lids' corner covers part of a pixel.
+      if (draw.lid_closure[static_cast<glm::length_t>(side)] >= 1.0f) continue;
       const glm::vec2 yaw_pitch = draw.eye_yaw_pitch_rad[side];
       const glm::mat4 eye_model = draw.model * eye_transform(face.eye_centres[side], yaw_pitch.x, yaw_pitch.y);
       scissor_to_opening(face, face.eye_holes[side], skin_mvp);
@@ -268,17 +335,21 @@ void FaceRenderer::Impl::draw_face(const GpuFace& face, const FaceDraw& draw, co
       draw_socket(face, side, eye, draw.model);
       glDisable(GL_SCISSOR_TEST);
     }
+    glDisable(GL_CULL_FACE);
+    end_part("eyes", true);
   }
-  const ShaderUniforms& plain = use(PartShader::plain, face.light);
-  glUniform1f(plain.skin_specular, 0.0f);
+  const ShaderUniforms& matte = use(PartShader::matte, face.light);
   scissor_to_opening(face, face.mouth_slit, skin_mvp);
-  draw_mesh(face.mouth, face.mouth_texture, plain, draw.model);
+  draw_mesh(face.mouth, face.mouth_texture, matte, draw.model);
   glDisable(GL_SCISSOR_TEST);
+  end_part("mouth", true);
   // The shell is closed wherever it can be seen, with its triangles facing
   // out: its far side need not be drawn at all.
   glEnable(GL_CULL_FACE);
-  draw_mesh(face.head, face.skin_texture, plain, draw.model);
+  sort_for_frame(face.head, face.head_opacity, face.head_positions, face.head_uvs, skin_mvp);
+  draw_mesh(face.head, face.skin_texture, matte, draw.model);
   glDisable(GL_CULL_FACE);
+  end_part("shell", true);
 }
 
 FaceRenderer::FaceRenderer() : impl_(std::make_unique<Impl>()) {}
@@ -355,9 +426,27 @@ FaceId FaceRenderer::add_face(const model::GenericFace& face, const FaceTextures
     fans.insert(fans.end(), hole_fan.begin(), hole_fan.end());
   }
   if (!gpu.eye_layer) gpu.eye_covers = share_vertices(gpu.skin, fans);
-  gpu.skin_texture = upload_texture(textures.skin, TexelEncoding::srgb_colour);
-  gpu.eye_texture = upload_texture(or_black(textures.eye), TexelEncoding::srgb_colour);
-  gpu.mouth_texture = upload_texture(textures.mouth, TexelEncoding::srgb_colour);
+  // Alpha to coverage is left out where it changes nothing (opaque_texels.hpp):
+  // the eyeballs and the mouth cavity are opaque in all but odd textures,
+  // the skin and the shell are sorted in each frame.
+  const std::vector<MipLevel> skin_levels = square_root_light_mipmaps(textures.skin);
+  gpu.skin_texture = upload_colour_levels(skin_levels);
+  gpu.skin_opaque = OpaqueTexels(skin_levels);
+  gpu.skin_uvs = face.skin.uvs;
+  gpu.skin_opacity = texel_opacity(face.skin.triangles, gpu.skin_uvs, gpu.skin_opaque);
+  gpu.head_positions = face.head.mesh.positions;
+  gpu.head_uvs = face.head.mesh.uvs;
+  gpu.head_opacity = texel_opacity(face.head.mesh.triangles, gpu.head_uvs, gpu.skin_opaque);
+  const auto opaque_when_all_is = [](const std::vector<MipLevel>& levels, const model::Mesh& mesh, GpuMesh& gpu_mesh) {
+    if (texel_opacity(mesh.triangles, mesh.uvs, OpaqueTexels(levels)).all_opaque())
+      set_triangle_order(gpu_mesh, mesh.triangles, mesh.triangles.size());
+  };
+  const std::vector<MipLevel> eye_levels = square_root_light_mipmaps(or_black(textures.eye));
+  gpu.eye_texture = upload_colour_levels(eye_levels);
+  for (std::size_t side = 0; side < 2; ++side) opaque_when_all_is(eye_levels, face.eyes[side].mesh, gpu.eyes[side]);
+  const std::vector<MipLevel> mouth_levels = square_root_light_mipmaps(textures.mouth);
+  gpu.mouth_texture = upload_colour_levels(mouth_levels);
+  opaque_when_all_is(mouth_levels, face.mouth_cavity, gpu.mouth);
   gpu.closed_lid = upload_texture(or_black(textures.closed_lid), TexelEncoding::srgb_colour);
   gpu.closed_lid_rect = textures.closed_lid.width > 0 ? textures.closed_lid_rect : glm::vec4(0.0f);
   gpu.masks_a = upload_texture(or_black(textures.masks_a), TexelEncoding::linear_data);
@@ -375,6 +464,8 @@ void FaceRenderer::set_face_shape(FaceId id, std::span<const glm::vec3> position
   mesh.uvs.assign(uvs.begin(), uvs.end());
   mesh.triangles = face.skin_triangles;
   update_mesh(face.skin, mesh);
+  face.skin_uvs = mesh.uvs;
+  face.skin_opacity = texel_opacity(face.skin_triangles, face.skin_uvs, face.skin_opaque);
   face.skin_positions = std::move(mesh.positions);
   face.box_low = face.rigid_low;
   face.box_high = face.rigid_high;
@@ -384,6 +475,11 @@ void FaceRenderer::set_face_shape(FaceId id, std::span<const glm::vec3> position
 model::RgbaImage FaceRenderer::render(std::span<const FaceDraw> draws, const Camera& camera) {
   Impl& impl = *impl_;
   impl.context->make_current();
+  if (impl.profile) {
+    glFinish();
+    impl.part_start = std::chrono::steady_clock::now();
+    ++impl.profile->frames;
+  }
   const int w = impl.options.width, h = impl.options.height;
   glBindFramebuffer(GL_FRAMEBUFFER, impl.draw_framebuffer.get());
   glViewport(0, 0, w, h);
@@ -395,6 +491,7 @@ model::RgbaImage FaceRenderer::render(std::span<const FaceDraw> draws, const Cam
   const std::size_t row = static_cast<std::size_t>(w) * 4;
   for (std::size_t i = 0; i < row; i += 4) std::copy_n(impl.background_texel.data(), 4, image.at(0, 0) + i);
   for (int y = 1; y < h; ++y) std::copy_n(image.at(0, 0), row, image.at(0, y));
+  impl.end_part("background", false);
   if (drawn.width <= 0 || drawn.height <= 0) return image;
   // Targets store what they are given, and the background is given in sRGB.
   const glm::vec3 background = impl.options.background;
@@ -402,8 +499,8 @@ model::RgbaImage FaceRenderer::render(std::span<const FaceDraw> draws, const Cam
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
-  // Only the head shell is culled (draw_face): the skin is open, and a
-  // turned head shows the inside of its rim.
+  // Only the head shell and the eyeballs are culled (draw_face): the skin
+  // is open, and a turned head shows the inside of its rim.
   glCullFace(GL_BACK);
   // Soft edges (the eye holes, the head's outline) as coverage; what is
   // drawn stays opaque.
@@ -412,6 +509,7 @@ model::RgbaImage FaceRenderer::render(std::span<const FaceDraw> draws, const Cam
     glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
     glEnable(GL_SAMPLE_ALPHA_TO_ONE);
   }
+  impl.end_part("clear", false);
   impl.set_frame_uniforms(camera);
   for (const FaceDraw& draw : draws) {
     if (draw.face >= impl.faces.size()) continue;  // an id from another renderer: nothing to draw
@@ -425,6 +523,7 @@ model::RgbaImage FaceRenderer::render(std::span<const FaceDraw> draws, const Cam
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, impl.resolve_framebuffer.get());
   const int x0 = drawn.x, y0 = drawn.y, x1 = drawn.x + drawn.width, y1 = drawn.y + drawn.height;
   glBlitFramebuffer(x0, y0, x1, y1, x0, y0, x1, y1, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  impl.end_part("resolve", false);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, impl.resolve_framebuffer.get());
   std::vector<std::uint8_t> bottom_up(static_cast<std::size_t>(drawn.width) * drawn.height * 4);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
@@ -432,8 +531,11 @@ model::RgbaImage FaceRenderer::render(std::span<const FaceDraw> draws, const Cam
   const std::size_t drawn_row = static_cast<std::size_t>(drawn.width) * 4;
   for (int y = y0; y < y1; ++y)
     std::copy_n(bottom_up.data() + static_cast<std::size_t>(y - y0) * drawn_row, drawn_row, image.at(x0, h - 1 - y));
+  impl.end_part("readback", false);
   return image;
 }
+
+void FaceRenderer::set_profile(FrameProfile* profile) { impl_->profile = profile; }
 
 std::string FaceRenderer::renderer_name() { return impl_->context->renderer_name(); }
 int FaceRenderer::width() const { return impl_->options.width; }

@@ -93,6 +93,16 @@ GpuMesh share_vertices(const GpuMesh& mesh, const std::vector<glm::uvec3>& trian
   return shared;
 }
 
+void set_triangle_order(GpuMesh& gpu, const std::vector<glm::uvec3>& triangles, std::size_t opaque_count) {
+  glBindVertexArray(gpu.vertex_array.get());  // the element buffer binding is the vertex array's
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gpu.indices.get());
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(triangles.size() * sizeof(glm::uvec3)),
+               triangles.data(), GL_DYNAMIC_DRAW);
+  glBindVertexArray(0);
+  gpu.index_count = static_cast<GLsizei>(triangles.size() * 3);
+  gpu.opaque_index_count = static_cast<GLsizei>(std::min(opaque_count, triangles.size()) * 3);
+}
+
 void update_mesh(GpuMesh& gpu, const model::Mesh& mesh) {
   const auto replace = [](const Buffer& buffer, const auto& data) {
     glBindBuffer(GL_ARRAY_BUFFER, buffer.get());
@@ -103,28 +113,41 @@ void update_mesh(GpuMesh& gpu, const model::Mesh& mesh) {
   replace(gpu.uvs, mesh.uvs);
 }
 
-Texture upload_texture(const model::RgbaImage& image, TexelEncoding encoding) {
-  auto texture = generate<Texture, glGenTextures>();
-  glBindTexture(GL_TEXTURE_2D, texture.get());
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  if (encoding == TexelEncoding::srgb_colour) {
-    // Made here, once, rather than decoded on every lookup (colour_mipmaps.hpp).
-    const std::vector<MipLevel> levels = square_root_light_mipmaps(image);
-    for (std::size_t i = 0; i < levels.size(); ++i)
-      glTexImage2D(GL_TEXTURE_2D, static_cast<GLint>(i), GL_RGBA8, levels[i].width, levels[i].height, 0, GL_RGBA,
-                   GL_UNSIGNED_BYTE, levels[i].texels.data());
-  } else {
-    std::vector<std::uint8_t> flipped(image.pixels.size());
-    const std::size_t row = static_cast<std::size_t>(image.width) * 4;
-    for (int y = 0; y < image.height; ++y)
-      std::copy_n(image.at(0, y), row, flipped.data() + static_cast<std::size_t>(image.height - 1 - y) * row);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, flipped.data());
-    glGenerateMipmap(GL_TEXTURE_2D);
-  }
+namespace {
+
+void set_sampling() {
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+}  // namespace
+
+Texture upload_colour_levels(const std::vector<MipLevel>& levels) {
+  auto texture = generate<Texture, glGenTextures>();
+  glBindTexture(GL_TEXTURE_2D, texture.get());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  for (std::size_t i = 0; i < levels.size(); ++i)
+    glTexImage2D(GL_TEXTURE_2D, static_cast<GLint>(i), GL_RGBA8, levels[i].width, levels[i].height, 0, GL_RGBA,
+                 GL_UNSIGNED_BYTE, levels[i].texels.data());
+  set_sampling();
+  return texture;
+}
+
+Texture upload_texture(const model::RgbaImage& image, TexelEncoding encoding) {
+  // Made here, once, rather than decoded on every lookup (colour_mipmaps.hpp).
+  if (encoding == TexelEncoding::srgb_colour) return upload_colour_levels(square_root_light_mipmaps(image));
+  auto texture = generate<Texture, glGenTextures>();
+  glBindTexture(GL_TEXTURE_2D, texture.get());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  std::vector<std::uint8_t> flipped(image.pixels.size());
+  const std::size_t row = static_cast<std::size_t>(image.width) * 4;
+  for (int y = 0; y < image.height; ++y)
+    std::copy_n(image.at(0, y), row, flipped.data() + static_cast<std::size_t>(image.height - 1 - y) * row);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, flipped.data());
+  glGenerateMipmap(GL_TEXTURE_2D);
+  set_sampling();
   return texture;
 }
 

@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "fw/model/image.hpp"
+#include "colour_mipmaps.hpp"
 #include "fw/model/mesh.hpp"
 #include "gl_objects.hpp"
 
@@ -21,12 +22,19 @@ struct GpuMesh {
   VertexArray vertex_array;
   Buffer positions, normals, uvs, rest_normals, indices;
   GLsizei index_count = 0;
+  /// The first indices draw triangles that read only opaque texels
+  /// (opaque_texels.hpp): drawn without alpha to coverage.
+  GLsizei opaque_index_count = 0;
 };
 GpuMesh upload_mesh(const model::Mesh& mesh);
 
 /// More triangles over `mesh`'s vertex buffers (a vertex array of their own
 /// sharing the buffers), so they follow every update_mesh of `mesh`.
 GpuMesh share_vertices(const GpuMesh& mesh, const std::vector<glm::uvec3>& triangles);
+
+/// Replaces the mesh's triangles (the same ones, reordered) with
+/// `triangles`, whose first `opaque_count` read only opaque texels.
+void set_triangle_order(GpuMesh& gpu, const std::vector<glm::uvec3>& triangles, std::size_t opaque_count);
 
 /// New positions and uvs (and so normals) for a mesh of the same topology;
 /// the rest normals stay.
@@ -40,5 +48,9 @@ enum class TexelEncoding { srgb_colour, linear_data };
 /// An RGBA8 texture with mipmaps, clamped at the edges. Rows are flipped on
 /// upload because images run top-down and texture v runs up.
 Texture upload_texture(const model::RgbaImage& image, TexelEncoding encoding);
+
+/// A colour texture from its levels (square_root_light_mipmaps), as
+/// upload_texture makes it from an image.
+Texture upload_colour_levels(const std::vector<MipLevel>& levels);
 
 }  // namespace fw::render

@@ -29,6 +29,14 @@ std::size_t shader_index(PartShader part, model::TextureLight light) {
   return static_cast<std::size_t>(part) + (light == model::TextureLight::albedo ? kPartShaderCount : 0);
 }
 
+std::string shader_name(std::size_t index) {
+  static constexpr std::array<std::string_view, kPartShaderCount> kParts{
+      "plain", "skin_closing_lids", "skin_closing_lids_with_blood", "skin_with_blood", "eye", "matte"};
+  std::string name(kParts[index % kPartShaderCount]);
+  if (index >= kPartShaderCount) name += "+albedo";
+  return name;
+}
+
 std::optional<std::array<ShaderVariant, kShaderCount>> build_part_shaders(std::string_view vertex_source,
                                                                           std::string_view fragment_source,
                                                                           bool alpha_test, std::string& error) {
@@ -44,6 +52,7 @@ std::optional<std::array<ShaderVariant, kShaderCount>> build_part_shaders(std::s
       case PartShader::skin_closing_lids_with_blood: defines.insert(defines.end(), {"FW_CLOSED_LID", "FW_BLOOD"}); break;
       case PartShader::skin_with_blood: defines.push_back("FW_BLOOD"); break;
       case PartShader::eye: defines.push_back("FW_SPECULAR"); break;
+      case PartShader::matte: defines.push_back("FW_MATTE"); break;
     }
     auto program = build_program(with_defines(vertex_source, defines), with_defines(fragment_source, defines), error);
     if (!program) return std::nullopt;

@@ -15,13 +15,20 @@ namespace fw::render {
 
 // The skin uses plain when its lids are open and it has no blood colour:
 // those lookups would change nothing, and llvmpipe pays for every one.
-enum class PartShader { plain, skin_closing_lids, skin_closing_lids_with_blood, skin_with_blood, eye };
-inline constexpr std::size_t kPartShaderCount = 5;
+// The mouth cavity and the head shell use matte: plain without the skin's
+// specular (FW_MATTE), whose maths and two varyings they would pay for with
+// a zero scale.
+enum class PartShader { plain, skin_closing_lids, skin_closing_lids_with_blood, skin_with_blood, eye, matte };
+inline constexpr std::size_t kPartShaderCount = 6;
 /// Every part's variant once for photo textures and once for albedo (FW_ALBEDO).
 inline constexpr std::size_t kShaderCount = 2 * kPartShaderCount;
 
 /// Where the variant of `part` for textures holding `light` is among the built ones.
 std::size_t shader_index(PartShader part, model::TextureLight light);
+
+/// The variant's name, for profiles: the part's ("plain", "skin_closing_lids",
+/// "skin_closing_lids_with_blood", "skin_with_blood", "eye", "matte"), "+albedo" for FW_ALBEDO.
+std::string shader_name(std::size_t index);
 
 /// The skin's variant for a frame: `lids_closing` if either lid closes at
 /// all, `blood` if any blush or pallor shows.

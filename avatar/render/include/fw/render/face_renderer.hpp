@@ -15,6 +15,7 @@
 #include "fw/model/generic_face.hpp"
 #include "fw/model/image.hpp"
 #include "fw/render/camera.hpp"
+#include "fw/render/frame_profile.hpp"
 
 namespace fw::render {
 
@@ -76,6 +77,11 @@ class FaceRenderer {
 
   /// Draws `draws` as seen by `camera` and reads the image back.
   model::RgbaImage render(std::span<const FaceDraw> draws, const Camera& camera);
+
+  /// While `profile` is set (not null), render() waits for each part of a
+  /// frame to finish and adds its time to `profile`, which must outlive
+  /// the setting; nullptr stops it. For measuring only: it slows frames.
+  void set_profile(FrameProfile* profile);
 
   /// GL_RENDERER of the context (llvmpipe on machines without a GPU).
   std::string renderer_name();
