@@ -171,12 +171,15 @@ TEST_F(RoomViewEyeContact, AFaceAttendingItsNeighbourLooksTowardThatNeighbour) {
   EXPECT_EQ(plan_.others[1].id, 3u);
   // The head is turned toward the neighbour: its far eye is foreshortened,
   // the near one (the person's right) is measured. Its iris lies well off
-  // the opening's middle toward the neighbour (the face attending the
-  // viewer keeps its irises within a few hundredths of it).
+  // the opening's middle toward the neighbour: it reads 0.061, where the
+  // face attending the viewer keeps its irises within 0.006 of it. (This
+  // read 0.08 and more while the head shell showed dark through the hole's
+  // outer corner beside a deep-set eyeball and counted as iris; the eye
+  // socket shows the white there now.)
   const EyeMeasure eye = measure_eye(image_, plan_.layout.camera, head_of(4), model::Side::right);
   ASSERT_GT(eye.opening_width, 12.0f) << "the eye is large enough to measure";
   ASSERT_GT(eye.iris_pixels, 10) << "an iris is seen in the opening";
-  EXPECT_GT(eye.offset(), 0.08f) << "iris at " << eye.iris_x << ", opening centre " << eye.opening_centre_x;
+  EXPECT_GT(eye.offset(), 0.04f) << "iris at " << eye.iris_x << ", opening centre " << eye.opening_centre_x;
 }
 
 }  // namespace
