@@ -154,7 +154,6 @@ export class FaceRenderer {
   // Without an eye layer the face texture keeps the photo's eyes: the eye
   // holes are filled by fans over their rims, on the skin's own vertices.
   eyeCovers(face) {
-    const gl = this.gl;
     return { triangles: Uint32Array.from(face.eyeHoles.flatMap((hole) => Array.from(fan(hole)))) };
   }
 

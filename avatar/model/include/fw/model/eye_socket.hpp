@@ -25,7 +25,7 @@ namespace fw::model {
 Mesh eye_socket_mesh(const GenericFace& face, std::size_t side);
 
 /// The socket's radius for `face`'s eye on `side`: what eye_socket_mesh
-/// builds, for tests and renderers that bound what they draw.
+/// builds (the tests check the hole against it).
 float eye_socket_radius(const GenericFace& face, std::size_t side);
 
 }  // namespace fw::model
