@@ -9,7 +9,7 @@ import { copyFloats, copyUint32, lastError } from './wasm_module.js';
 
 // Numbers of avatar/model/wasm/avatar_exports.cpp.
 const PART = { skin: 0, eyeRight: 1, eyeLeft: 2, mouthCavity: 3, head: 4, eyeSocketRight: 5, eyeSocketLeft: 6 };
-const MESH_FIELD = { positions: 0, uvs: 1, normals: 3 };
+const MESH_FIELD = { positions: 0, uvs: 1, normals: 3, photoLightNormals: 4 };
 const FLOATS = { textureFrame: 0, eyeCentres: 1, eyeShapes: 2, headCentre: 3, headOutline: 4 };
 const INDICES = { landmarkVertices: 0, eyeHoleRight: 1, eyeHoleLeft: 2, mouthSlit: 3, triangleRegions: 4 };
 
@@ -26,7 +26,10 @@ function readMesh(module, handle, part) {
   return {
     positions: floats(MESH_FIELD.positions),  // x, y, z per vertex, model units
     uvs: floats(MESH_FIELD.uvs),              // u, v per vertex, v up
-    normals: floats(MESH_FIELD.normals),      // at rest (the shader's rest normals)
+    normals: floats(MESH_FIELD.normals),      // at rest
+    // Under which the photo saw each vertex's colour (the shader's rest
+    // normals): the normals at rest but on the head's back (head_back.hpp).
+    photoLightNormals: floats(MESH_FIELD.photoLightNormals),
     triangles: copyUint32(module, module._fw_avatar_triangles(handle, part),
       module._fw_avatar_triangles_count(handle, part)),
   };

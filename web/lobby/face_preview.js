@@ -43,17 +43,21 @@ function buildProgram(gl, vertexSource, fragmentSource, defines) {
   return program;
 }
 
-// Area-weighted vertex normals, as avatar/model computes them.
+// Area-weighted vertex normals, as avatar/model computes them once for a
+// mesh (welded_vertex_normals): vertices at one position share a normal, so
+// the head shell's texture seams do not crease its shading.
 function vertexNormals(positions, triangles) {
-  const normals = positions.map(() => [0, 0, 0]);
+  const sums = new Map();
+  const key = (p) => p.join(',');
+  for (const p of positions) sums.set(key(p), [0, 0, 0]);
   for (const [a, b, c] of triangles) {
     const [pa, pb, pc] = [positions[a], positions[b], positions[c]];
     const u = [pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]];
     const v = [pc[0] - pa[0], pc[1] - pa[1], pc[2] - pa[2]];
     const n = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]];
-    for (const i of [a, b, c]) for (let k = 0; k < 3; ++k) normals[i][k] += n[k];
+    for (const i of [a, b, c]) for (let k = 0; k < 3; ++k) sums.get(key(positions[i]))[k] += n[k];
   }
-  return normals.map(([x, y, z]) => {
+  return positions.map((p) => sums.get(key(p))).map(([x, y, z]) => {
     const length = Math.hypot(x, y, z) || 1;
     return [x / length, y / length, z / length];
   });
@@ -127,12 +131,69 @@ function paintSkin(face, size) {
     path(brow);
     g.stroke();
   }
+  paintHeadBack(g, face, size);
   g.globalCompositeOperation = 'destination-out';
   for (const eye of EYES) {
     path(eye);
     g.fill();
   }
   return canvas;
+}
+
+const smoothstep = (a, b, x) => {
+  const t = Math.min(1, Math.max(0, (x - a) / (b - a)));
+  return t * t * (3 - 2 * t);
+};
+
+// The head's back and its sides behind the silhouette take their colour from
+// a disc in the texture's lower left corner (avatar/model's head_back.hpp,
+// whose uvs the asset's head shell carries): the colour just inside the
+// outline on each ray at the disc's rim, turning toward its centre, the back
+// pole, into the crown's colour, except on the neck's rays. This painted
+// face is uniform between its features, so one texel a ray stands for the
+// native painter's smoothed average.
+function paintHeadBack(g, face, size) {
+  const PATCH = { centre: [0.07, 0.07], radius: 0.055 };  // head_back.hpp's kHeadBackPatch
+  const { origin, size: frame } = face.texture_frame;
+  const { centre, outline } = face.head;
+  const pixels = g.getImageData(0, 0, size, size).data;
+  const colourAt = ([x, y]) => {
+    const px = Math.min(size - 1, Math.max(0, Math.floor(((x - origin[0]) / frame) * size)));
+    const py = Math.min(size - 1, Math.max(0, Math.floor((1 - (y - origin[1]) / frame) * size)));
+    return [0, 1, 2].map((c) => pixels[(py * size + px) * 4 + c]);
+  };
+  const rayColour = (phi) => {
+    const at = (((phi / (2 * Math.PI)) % 1) + 1) % 1 * outline.length;
+    const k = Math.floor(at) % outline.length;
+    const r = outline[k] + (outline[(k + 1) % outline.length] - outline[k]) * (at - Math.floor(at));
+    // head_shell.cpp's unseen_colour_radius: 0.32 inside the silhouette; the
+    // neck's rays, whose silhouette is off the texture, take the jaw's skin.
+    const radius = Math.sin(phi) < -0.6 ? 1.6 : r - 0.32;
+    return colourAt([centre[0] + radius * Math.cos(phi), centre[1] + radius * Math.sin(phi)]);
+  };
+  const crown = rayColour(Math.PI / 2);
+  const reach = PATCH.radius * 1.25;
+  const x0 = Math.floor((PATCH.centre[0] - reach) * size), x1 = Math.ceil((PATCH.centre[0] + reach) * size);
+  const y0 = Math.floor((1 - PATCH.centre[1] - reach) * size), y1 = Math.ceil((1 - PATCH.centre[1] + reach) * size);
+  const patch = g.createImageData(x1 - x0, y1 - y0);
+  for (let y = y0; y < y1; ++y) {
+    for (let x = x0; x < x1; ++x) {
+      const dx = ((x + 0.5) / size - PATCH.centre[0]) / PATCH.radius;
+      const dy = (1 - (y + 0.5) / size - PATCH.centre[1]) / PATCH.radius;
+      const t = Math.min(1, Math.hypot(dx, dy));
+      const phi = Math.atan2(dy, dx);
+      const edge = rayColour(phi);
+      const hair = smoothstep(-0.65, -0.25, Math.sin(phi));
+      const front = smoothstep(0.4, 1, t);
+      const i = ((y - y0) * (x1 - x0) + (x - x0)) * 4;
+      for (let c = 0; c < 3; ++c) {
+        const back = edge[c] + (crown[c] - edge[c]) * hair;
+        patch.data[i + c] = back + (edge[c] - back) * front;
+      }
+      patch.data[i + 3] = 255;
+    }
+  }
+  g.putImageData(patch, Math.max(0, x0), Math.max(0, y0));
 }
 
 // Eyeball texture: the front pole at the centre, angle linear in radius.

@@ -53,7 +53,9 @@ function buffer(gl, location, data, size, usage) {
 }
 
 // A mesh with positions, normals, uvs and rest normals (the shader's four
-// attributes); `dynamic` for the skin, whose shape changes every frame.
+// attributes: the photo's light was seen under the rest normals,
+// photoLightNormals where a mesh has them); `dynamic` for the skin, whose
+// shape changes every frame.
 function uploadMesh(gl, mesh, dynamic = false) {
   const vao = gl.createVertexArray();
   gl.bindVertexArray(vao);
@@ -61,7 +63,7 @@ function uploadMesh(gl, mesh, dynamic = false) {
   const positions = buffer(gl, 0, mesh.positions, 3, usage);
   const normals = buffer(gl, 1, mesh.normals, 3, usage);
   const uvs = buffer(gl, 2, mesh.uvs, 2, usage);
-  buffer(gl, 3, mesh.normals, 3, gl.STATIC_DRAW);
+  buffer(gl, 3, mesh.photoLightNormals ?? mesh.normals, 3, gl.STATIC_DRAW);
   gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, gl.createBuffer());
   gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, mesh.triangles, gl.STATIC_DRAW);
   gl.bindVertexArray(null);

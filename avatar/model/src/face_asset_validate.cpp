@@ -110,7 +110,7 @@ bool behind_face(glm::vec3 p, glm::vec2 centre, std::span<const glm::vec2> rim) 
 }
 
 // The head shell must be closed wherever it can be seen: with coincident
-// vertices welded (the back pole is repeated for its texture seams), every
+// vertices welded (those along the silhouette are copied for a texture seam), every
 // edge is shared by exactly two triangles, once in each direction, except
 // around an opening behind the face. Anything else leaves a hole the
 // background shows through when the head turns.

@@ -7,6 +7,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "fw/model/head_back.hpp"
+
 namespace fw::model {
 namespace {
 
@@ -33,7 +35,10 @@ std::vector<std::uint32_t> face_rim_loop(const Mesh& skin) {
 
 float unseen_colour_radius(float phi, float rim, float outline) {
   if (std::sin(phi) < kNeckRaySine) return rim - 0.15f;
-  return outline - 0.22f;
+  // Deep enough inside that the colour is the person's: the last tenths of
+  // a unit inside a photo's outline are often a pale fringe (wisps of hair
+  // against the background, the matte's soft edge).
+  return outline - 0.32f;
 }
 
 float outline_ray_angle(std::size_t k, std::size_t count) {
@@ -55,8 +60,15 @@ float ray_exit_radius(glm::vec2 centre, float phi, std::span<const glm::vec2> po
   return best;
 }
 
-HeadShell fit_head_shell(const GenericFace& generic, std::span<const glm::vec2> fitted_xy,
-                         std::span<const float> outline) {
+namespace {
+
+// Each ray's stretch, and where its hidden part takes its colour.
+struct ShellRays {
+  std::vector<RayMap> maps;
+  std::vector<float> colour_radius;
+};
+
+ShellRays shell_rays(const GenericFace& generic, std::span<const glm::vec2> fitted_xy, std::span<const float> outline) {
   const HeadShell& shell = generic.head;
   const std::size_t count = shell.outline.size();
   assert(outline.empty() || outline.size() == count);
@@ -65,8 +77,7 @@ HeadShell fit_head_shell(const GenericFace& generic, std::span<const glm::vec2> 
     generic_rim.emplace_back(generic.skin.positions[v]);
     fitted_rim.push_back(fitted_xy[v]);
   }
-  std::vector<RayMap> maps;
-  std::vector<float> colour_radius;
+  ShellRays rays;
   for (std::size_t k = 0; k < count; ++k) {
     const float phi = outline_ray_angle(k, count);
     RayMap map{ray_exit_radius(shell.centre, phi, generic_rim), ray_exit_radius(shell.centre, phi, fitted_rim),
@@ -74,10 +85,27 @@ HeadShell fit_head_shell(const GenericFace& generic, std::span<const glm::vec2> 
     if (!(map.generic_rim > 0) || !(map.fitted_rim > 0)) map.generic_rim = map.fitted_rim = 1.0f;  // unreachable
     const float wanted = outline.empty() ? map.generic_outline + map.fitted_rim - map.generic_rim : outline[k];
     map.fitted_outline = std::max(wanted, map.fitted_rim + kShellBeyondRim);
-    maps.push_back(map);
+    rays.maps.push_back(map);
     // Colour from where the person is, even where the shell reaches past them.
-    colour_radius.push_back(unseen_colour_radius(phi, map.fitted_rim, wanted));
+    rays.colour_radius.push_back(unseen_colour_radius(phi, map.fitted_rim, wanted));
   }
+  return rays;
+}
+
+}  // namespace
+
+std::vector<float> unseen_colour_radii(const GenericFace& generic, std::span<const glm::vec2> fitted_xy,
+                                       std::span<const float> outline) {
+  return shell_rays(generic, fitted_xy, outline).colour_radius;
+}
+
+HeadShell fit_head_shell(const GenericFace& generic, std::span<const glm::vec2> fitted_xy,
+                         std::span<const float> outline) {
+  const HeadShell& shell = generic.head;
+  const std::size_t count = shell.outline.size();
+  const ShellRays rays = shell_rays(generic, fitted_xy, outline);
+  const std::vector<RayMap>& maps = rays.maps;
+  const std::vector<float>& colour_radius = rays.colour_radius;
   // Every vertex lies on a ray (the poles at the centre, on all of them).
   const auto ray_of = [&](glm::vec2 d) {
     const float at = std::atan2(d.y, d.x) / kTwoPi * static_cast<float>(count);
@@ -92,8 +120,11 @@ HeadShell fit_head_shell(const GenericFace& generic, std::span<const glm::vec2> 
     const glm::vec2 moved = r < 1e-6f ? p : shell.centre + d * (maps[ray_of(d)](r) / r);
     fitted.mesh.positions[v].x = moved.x;
     fitted.mesh.positions[v].y = moved.y;
-    // A vertex the photo shows has its own position as its uv; the others
-    // take their ray's colour, moved to where the person's is.
+    // A vertex the photo shows has its own position as its uv; one behind
+    // the silhouette keeps its place on the head's back (head_back.hpp);
+    // the others, hidden behind the face, take their ray's colour, moved to
+    // where the person's is.
+    if (on_head_back_patch(shell.mesh.uvs[v])) continue;
     const glm::vec2 colour_point = frame.to_model(shell.mesh.uvs[v]);
     if (glm::length(colour_point - p) < 1e-3f) {
       fitted.mesh.uvs[v] = frame.to_uv(moved);

@@ -1,6 +1,7 @@
 #include "fw/model/mesh.hpp"
 
 #include <map>
+#include <tuple>
 #include <utility>
 
 #include <glm/geometric.hpp>
@@ -22,6 +23,23 @@ std::vector<glm::vec3> vertex_normals(const Mesh& mesh) {
   for (glm::vec3& n : normals) {
     const float length = glm::length(n);
     if (length > 0.0f) n /= length;
+  }
+  return normals;
+}
+
+std::vector<glm::vec3> welded_vertex_normals(const Mesh& mesh) {
+  std::vector<glm::vec3> normals(mesh.positions.size(), glm::vec3(0.0f));
+  for (const glm::uvec3& t : mesh.triangles) {
+    const glm::vec3 n = glm::cross(mesh.positions[t.y] - mesh.positions[t.x], mesh.positions[t.z] - mesh.positions[t.x]);
+    for (int k = 0; k < 3; ++k) normals[t[k]] += n;
+  }
+  const auto key = [](const glm::vec3& p) { return std::tuple(p.x, p.y, p.z); };
+  std::map<std::tuple<float, float, float>, glm::vec3> sums;
+  for (std::size_t v = 0; v < normals.size(); ++v) sums[key(mesh.positions[v])] += normals[v];
+  for (std::size_t v = 0; v < normals.size(); ++v) {
+    const glm::vec3 n = sums[key(mesh.positions[v])];
+    const float length = glm::length(n);
+    normals[v] = length > 0.0f ? n / length : glm::vec3(0.0f);
   }
   return normals;
 }

@@ -4,9 +4,13 @@
 #include <cassert>
 #include <cmath>
 #include <span>
+#include <vector>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+
+#include "fw/model/head_back.hpp"
+#include "fw/model/head_shell.hpp"
 
 namespace fw::model {
 namespace {
@@ -256,6 +260,10 @@ RgbaImage make_skin_texture(const GenericFace& face, const Appearance& look, int
       }
       put(image, x, y, face_colour(p, look, boxes), in_eye ? 0.0f : 1.0f);
     }
+  // The generic face is its own fit, with the generic outline.
+  std::vector<glm::vec2> own_xy;
+  for (const glm::vec3& p : face.skin.positions) own_xy.emplace_back(p);
+  paint_head_back(image, face.texture_frame, face.head.centre, unseen_colour_radii(face, own_xy, {}));
   return image;
 }
 

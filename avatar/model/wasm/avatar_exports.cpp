@@ -16,6 +16,7 @@
 #include "fw/model/avatar_package.hpp"
 #include "fw/model/eye_socket.hpp"
 #include "fw/model/face_reconstruction.hpp"
+#include "fw/model/head_back.hpp"
 #include "fw/model/mesh.hpp"
 
 namespace fw::wasm {
@@ -31,7 +32,7 @@ enum Part {
   skin = 0, eye_right = 1, eye_left = 2, mouth_cavity = 3, head_shell = 4, eye_socket_right = 5, eye_socket_left = 6,
   part_count = 7
 };
-enum MeshField { positions = 0, uvs = 1, triangles = 2, normals = 3 };
+enum MeshField { positions = 0, uvs = 1, triangles = 2, normals = 3, photo_light_normals = 4 };
 enum FloatsField { texture_frame = 0, eye_centres = 1, eye_shapes = 2, head_centre = 3, head_outline = 4 };
 enum IndexField { landmark_vertices = 0, eye_hole_right = 1, eye_hole_left = 2, mouth_slit = 3, triangle_regions = 4 };
 
@@ -39,6 +40,9 @@ struct Avatar {
   fw::model::AvatarModel model;
   std::array<Mesh, 2> eye_sockets;                               // fw/model/eye_socket.hpp, of the fitted face
   std::array<std::vector<glm::vec3>, part_count> rest_normals;  // each mesh's, at rest
+  // Under which a photo saw each vertex's colour (head_back.hpp): the rest
+  // normals but on the head shell's back.
+  std::array<std::vector<glm::vec3>, part_count> photo_light_normals;
   std::array<float, 3> frame_floats{};                           // texture frame
   std::array<float, 6> centres{}, shapes{};
   std::vector<std::uint32_t> regions;
@@ -65,7 +69,12 @@ int add_avatar(fw::model::AvatarModel model) {
   a->model = std::move(model);
   const fw::model::GenericFace& face = a->model.face;
   for (std::size_t side = 0; side < 2; ++side) a->eye_sockets[side] = fw::model::eye_socket_mesh(face, side);
-  for (int part = 0; part < part_count; ++part) a->rest_normals[part] = fw::model::vertex_normals(mesh_of(*a, part));
+  for (int part = 0; part < part_count; ++part) {
+    a->rest_normals[part] = fw::model::welded_vertex_normals(mesh_of(*a, part));
+    a->photo_light_normals[part] = part == head_shell
+                                       ? fw::model::photo_light_normals(face.head.mesh, a->rest_normals[part])
+                                       : a->rest_normals[part];
+  }
   a->frame_floats = {face.texture_frame.origin.x, face.texture_frame.origin.y, face.texture_frame.size};
   for (std::size_t side = 0; side < 2; ++side) {
     for (int k = 0; k < 3; ++k) a->centres[side * 3 + k] = face.eyes[side].centre[k];
@@ -86,6 +95,7 @@ std::span<const float> mesh_floats(const Avatar& a, int part, int field) {
   if (field == positions) return as_floats(mesh.positions);
   if (field == uvs) return as_floats(mesh.uvs);
   if (field == normals) return as_floats(a.rest_normals[static_cast<std::size_t>(part)]);
+  if (field == photo_light_normals) return as_floats(a.photo_light_normals[static_cast<std::size_t>(part)]);
   return {};
 }
 

@@ -1,5 +1,6 @@
 #include "fw/photo/prepare_avatar.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -20,12 +21,14 @@
 #include "lips_at_rest.hpp"
 #include "mouth_layer.hpp"
 #include "neck_shadow.hpp"
+#include "outline_band.hpp"
 #include "package_encoding.hpp"
 #include "photo_expression.hpp"
 #include "pose_checks.hpp"
 #include "skin_tone.hpp"
 #include "texture_extraction.hpp"
 #include "fw/model/fitted_face.hpp"
+#include "fw/model/head_back.hpp"
 #include "fw/model/head_shell.hpp"
 #include "fw/model/procedural_texture.hpp"
 #include "fw/model/vascular_masks.hpp"
@@ -54,6 +57,15 @@ cv::Mat make_preview(const cv::Mat& texture, const model::TextureFrame& frame) {
   cv::Mat preview;
   cv::resize(texture(crop), preview, cv::Size(kPreviewSize, kPreviewSize), 0, 0, cv::INTER_AREA);
   return preview;
+}
+
+// The head's back and hidden sides (model/head_back.hpp), from the colours
+// just inside the person's outline (at `colour_radius` on each ray).
+void paint_unseen_head(cv::Mat& bgra, const model::GenericFace& generic, std::span<const float> colour_radius) {
+  model::RgbaImage rgba = to_rgba_image(bgra);
+  model::paint_head_back(rgba, generic.texture_frame, generic.head.centre, colour_radius);
+  const cv::Mat painted(rgba.height, rgba.width, CV_8UC4, rgba.pixels.data());
+  cv::cvtColor(painted, bgra, cv::COLOR_RGBA2BGRA);
 }
 
 }  // namespace
@@ -187,6 +199,17 @@ std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8
   cv::Mat face_texture = fill_beyond_matte(mirror_only_within(colour_texture, colour_seen, matte), matte,
                                            head_alpha(matte, outline, fitted_rim, generic.head, frame));
   shade_neck(face_texture, matte, neutral, frame);
+  // The sides of a turned head: no streaks from the outline, and a back.
+  const std::vector<float> unseen_colour_radius = model::unseen_colour_radii(generic, fit.fitted_xy, outline);
+  // Only the shell's texels: the face's own, out to its rim, stay sharp
+  // (blurred, its jaw line moved under dlib's eye).
+  std::vector<float> band_begins(outline.size());
+  for (std::size_t k = 0; k < outline.size(); ++k)
+    band_begins[k] = std::max(unseen_colour_radius[k],
+                              model::ray_exit_radius(generic.head.centre, model::outline_ray_angle(k, outline.size()),
+                                                     fitted_rim));
+  smooth_outline_band(face_texture, outline, band_begins, generic.head.centre, frame);
+  paint_unseen_head(face_texture, generic, unseen_colour_radius);
   if (options.eye_layer) {
     cv::Mat eye_alpha, alpha;
     cv::extractChannel(with_eye_holes(texture, eyes), eye_alpha, 3);

@@ -8,6 +8,8 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "fw/model/eye_socket.hpp"
+#include "fw/model/head_back.hpp"
+#include "fw/model/mesh.hpp"
 #include "fw/render/offscreen_context.hpp"
 #include "gpu_resources.hpp"
 #include "opaque_texels.hpp"
@@ -391,7 +393,8 @@ FaceId FaceRenderer::add_face(const model::GenericFace& face, const FaceTextures
   GpuFace gpu;
   gpu.skin = upload_mesh(face.skin);
   gpu.mouth = upload_mesh(face.mouth_cavity);
-  gpu.head = upload_mesh(face.head.mesh);
+  gpu.head = upload_mesh(face.head.mesh,
+                         model::photo_light_normals(face.head.mesh, model::welded_vertex_normals(face.head.mesh)));
   for (std::size_t side = 0; side < 2; ++side) {
     gpu.eyes[side] = upload_mesh(face.eyes[side].mesh);
     gpu.eye_sockets[side] = upload_mesh(model::eye_socket_mesh(face, side));

@@ -55,15 +55,17 @@ std::optional<Program> build_program(std::string_view vertex_source, std::string
   return std::nullopt;
 }
 
-GpuMesh upload_mesh(const model::Mesh& mesh) {
+GpuMesh upload_mesh(const model::Mesh& mesh, const std::vector<glm::vec3>& rest_normals) {
   GpuMesh gpu;
   gpu.vertex_array = generate<VertexArray, glGenVertexArrays>();
   glBindVertexArray(gpu.vertex_array.get());
   gpu.positions = array_buffer(0, mesh.positions, 3);
-  const std::vector<glm::vec3> normals = model::vertex_normals(mesh);
+  // Welded: the head shell's seams must not crease its shading. A mesh
+  // updated every frame (update_mesh, the skin) has no coincident vertices.
+  const std::vector<glm::vec3> normals = model::welded_vertex_normals(mesh);
   gpu.normals = array_buffer(1, normals, 3);
   gpu.uvs = array_buffer(2, mesh.uvs, 2);
-  gpu.rest_normals = array_buffer(3, normals, 3);
+  gpu.rest_normals = array_buffer(3, rest_normals.empty() ? normals : rest_normals, 3);
   gpu.indices = generate<Buffer, glGenBuffers>();
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gpu.indices.get());
   glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.triangles.size() * sizeof(glm::uvec3)),

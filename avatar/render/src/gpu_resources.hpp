@@ -26,7 +26,9 @@ struct GpuMesh {
   /// (opaque_texels.hpp): drawn without alpha to coverage.
   GLsizei opaque_index_count = 0;
 };
-GpuMesh upload_mesh(const model::Mesh& mesh);
+/// `rest_normals` (the shader's, under which a photo texture saw its light):
+/// the mesh's own normals when empty.
+GpuMesh upload_mesh(const model::Mesh& mesh, const std::vector<glm::vec3>& rest_normals = {});
 
 /// More triangles over `mesh`'s vertex buffers (a vertex array of their own
 /// sharing the buffers), so they follow every update_mesh of `mesh`.

@@ -26,6 +26,8 @@ function checkAvatar(avatar, golden, what) {
   });
   checkMesh(face.mouthCavity, golden.mouth_cavity, `${what} mouth cavity`);
   checkMesh(face.head.mesh, golden.head.mesh, `${what} head shell`);
+  assertClose(face.head.mesh.photoLightNormals, golden.head.mesh.photo_light_normals, NORMAL_TOLERANCE,
+    `${what} head shell photo light normals`);
   assertClose(face.head.outline, golden.head.outline, POSITION_TOLERANCE, `${what} head outline`);
   golden.morphs.forEach((g, channel) => {
     const morph = avatar.morph(channel);

@@ -24,6 +24,7 @@
 #include "fw/model/expressions.hpp"
 #include "fw/model/face_reconstruction.hpp"
 #include "fw/model/file_io.hpp"
+#include "fw/model/head_back.hpp"
 #include "fw/model/mesh.hpp"
 #include "fw/render/avatar_appearance.hpp"
 #include "fw/render/camera.hpp"
@@ -43,8 +44,17 @@ json flat(std::span<const T> v) {
 template <typename T>
 json flat(const std::vector<T>& v) { return flat(std::span<const T>(v)); }
 
+// The rest normals the renderer uploads (welded across texture seams).
 json mesh_json(const model::Mesh& m) {
-  return {{"positions", flat(m.positions)}, {"uvs", flat(m.uvs)}, {"normals", flat(model::vertex_normals(m))}};
+  return {{"positions", flat(m.positions)}, {"uvs", flat(m.uvs)}, {"normals", flat(model::welded_vertex_normals(m))}};
+}
+
+// The head shell's, with the normals its photo's light is taken to have been
+// seen under (head_back.hpp).
+json head_mesh_json(const model::Mesh& m) {
+  json j = mesh_json(m);
+  j["photo_light_normals"] = flat(model::photo_light_normals(m, model::welded_vertex_normals(m)));
+  return j;
 }
 
 json face_params_json(const codec::FaceParams& p) {
@@ -115,7 +125,7 @@ json avatar_json(const model::AvatarModel& avatar) {
           {"eyes", eyes},
           {"mouth_cavity", mesh_json(face.mouth_cavity)},
           {"head", {{"centre", {face.head.centre.x, face.head.centre.y}}, {"outline", face.head.outline},
-                    {"mesh", mesh_json(face.head.mesh)}}},
+                    {"mesh", head_mesh_json(face.head.mesh)}}},
           {"morphs", morphs},
           {"frames", shapes}};
 }

@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "fw/model/depth_profile.hpp"
+#include "fw/model/head_back.hpp"
 #include "fw/model/head_shell.hpp"
 
 namespace fw::facegen {
@@ -95,6 +96,39 @@ bool hidden_behind_face(glm::vec3 p) {
   return on_the_cut && glm::length(glm::vec2(p.x / 1.38f, (p.y + 0.24f) / 1.84f)) < kHiddenFootprint;
 }
 
+// Where a point of the shell takes its colour on the head's back: its
+// direction around the head, and how far it lies from the back pole toward
+// the side (a quarter turn about the centre).
+glm::vec2 head_back_uv(glm::vec3 p) {
+  const glm::vec3 d = p - kCentre;
+  const float from_back = std::acos(std::clamp(-d.z / glm::length(d), -1.0f, 1.0f));
+  return model::head_back_uv(std::atan2(d.y, d.x), from_back / (0.5f * kPi));
+}
+
+// A triangle with a corner behind the silhouette takes all its colour from
+// the head's back: one spanning the silhouette would otherwise stretch the
+// texture between the photo and the disc across the whole texture. Its
+// other corners get a copy of their own, at the same place, with a uv on
+// the disc (a texture seam along the silhouette).
+void use_head_back_across_silhouette(model::Mesh& mesh, std::size_t vertex_count) {
+  std::vector<std::uint32_t> copy_of(vertex_count, 0);
+  for (glm::uvec3& triangle : mesh.triangles) {
+    bool behind = false;
+    for (int c = 0; c < 3; ++c) behind = behind || model::on_head_back_patch(mesh.uvs[triangle[c]]);
+    if (!behind) continue;
+    for (int c = 0; c < 3; ++c) {
+      const std::uint32_t v = triangle[c];
+      if (model::on_head_back_patch(mesh.uvs[v])) continue;
+      if (copy_of[v] == 0) {
+        copy_of[v] = static_cast<std::uint32_t>(mesh.positions.size());
+        mesh.positions.push_back(mesh.positions[v]);
+        mesh.uvs.push_back(head_back_uv(mesh.positions[v]));
+      }
+      triangle[c] = copy_of[v];
+    }
+  }
+}
+
 glm::vec3 ray_direction(int ring, int segment) {
   const float theta = kPi * static_cast<float>(ring) / kRaysFrontToBack;
   const float phi = 2.0f * kPi * static_cast<float>(segment) / kRaysAround;
@@ -125,8 +159,8 @@ HeadShell build_head_shell(const model::Mesh& skin, const model::TextureFrame& f
   for (int s = 0; s < kRaysAround; ++s) {
     const auto& ray = rays[static_cast<std::size_t>(s)];
     // The silhouette seen from the front: the ring point farthest out. The
-    // photo shows the ray from the face's rim up to it; the rest (behind the
-    // face, and the back) takes the ray's colour from nearer the centre.
+    // photo shows the ray from the face's rim up to it; what is hidden behind
+    // the face takes the ray's colour from nearer the centre.
     std::size_t silhouette = 0;
     for (std::size_t i = 0; i < ray.size(); ++i)
       if (glm::length(glm::vec2(ray[i]) - shell.centre) > glm::length(glm::vec2(ray[silhouette]) - shell.centre))
@@ -139,20 +173,18 @@ HeadShell build_head_shell(const model::Mesh& skin, const model::TextureFrame& f
                                                         glm::vec2(std::cos(phi), std::sin(phi));
     for (std::size_t i = 0; i < ray.size(); ++i) {
       const glm::vec2 p(ray[i]);
-      const bool seen = i <= silhouette && glm::length(p - shell.centre) >= rim_radius;
+      const bool seen = glm::length(p - shell.centre) >= rim_radius;
       mesh.positions.push_back(ray[i]);
-      mesh.uvs.push_back(frame.to_uv(seen ? p : unseen_colour));
+      // Behind the silhouette: the head's back (head_back.hpp).
+      mesh.uvs.push_back(i > silhouette ? head_back_uv(ray[i]) : frame.to_uv(seen ? p : unseen_colour));
     }
   }
-  // The back pole once per segment, each copy with its segment's colour, so
-  // the back does not smear the face across the head (the copies coincide:
-  // the surface is closed though its texture has seams there).
+  // The back pole, at the centre of the head's back.
   const glm::vec3 back_pole = kCentre - shell_radius({0, 0, -1}) * glm::vec3(0, 0, 1);
-  const std::uint32_t first_back_pole = static_cast<std::uint32_t>(mesh.positions.size());
-  for (int s = 0; s < kRaysAround; ++s) {
-    mesh.positions.push_back(back_pole);
-    mesh.uvs.push_back(mesh.uvs[static_cast<std::size_t>(1 + s * (kRaysFrontToBack - 1) + kRaysFrontToBack - 2)]);
-  }
+  const auto back_pole_index = static_cast<std::uint32_t>(mesh.positions.size());
+  mesh.positions.push_back(back_pole);
+  mesh.uvs.push_back(head_back_uv(back_pole));
+  const std::size_t vertices_before_copies = mesh.positions.size();
 
   const auto at = [](int ring, int s) {  // ring 1..kRaysFrontToBack-1
     return static_cast<std::uint32_t>(1 + (s % kRaysAround) * (kRaysFrontToBack - 1) + (ring - 1));
@@ -168,9 +200,9 @@ HeadShell build_head_shell(const model::Mesh& skin, const model::TextureFrame& f
       add(at(ring, s), at(ring + 1, s), at(ring + 1, s + 1));
       add(at(ring, s), at(ring + 1, s + 1), at(ring, s + 1));
     }
-    mesh.triangles.emplace_back(at(kRaysFrontToBack - 1, s), first_back_pole + static_cast<std::uint32_t>(s),
-                                at(kRaysFrontToBack - 1, s + 1));
+    mesh.triangles.emplace_back(at(kRaysFrontToBack - 1, s), back_pole_index, at(kRaysFrontToBack - 1, s + 1));
   }
+  use_head_back_across_silhouette(mesh, vertices_before_copies);
   return shell;
 }
 

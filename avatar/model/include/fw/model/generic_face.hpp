@@ -17,7 +17,7 @@
 
 namespace fw::model {
 
-inline constexpr int kGenericFaceVersion = 5;
+inline constexpr int kGenericFaceVersion = 6;
 
 /// Named skin regions. Every skin triangle belongs to exactly one. The names
 /// (kFaceRegionNames) are what the asset file stores; the order is fixed.

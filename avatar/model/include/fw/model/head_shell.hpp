@@ -47,6 +47,13 @@ inline constexpr float kNeckRaySine = -0.6f;
 /// @param outline  the silhouette's radius on the ray
 float unseen_colour_radius(float phi, float rim, float outline);
 
+/// For each ray of the head's outline, how far from the shell's centre
+/// (model units) the hidden parts of the ray take their colour: the radius
+/// that unseen_colour_radius gives for the fitted rim and `outline` (empty:
+/// the generic outline moved with the face's rim), as fit_head_shell uses it.
+std::vector<float> unseen_colour_radii(const GenericFace& generic, std::span<const glm::vec2> fitted_xy,
+                                       std::span<const float> outline);
+
 /// The face's outer boundary loop (the longest boundary loop of the skin).
 std::vector<std::uint32_t> face_rim_loop(const Mesh& skin);
 

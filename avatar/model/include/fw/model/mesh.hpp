@@ -19,6 +19,12 @@ struct Mesh {
 /// @return #V unit normals (zero for a vertex no triangle uses)
 std::vector<glm::vec3> vertex_normals(const Mesh& mesh);
 
+/// vertex_normals, with vertices at exactly the same position sharing one
+/// normal: copies of a vertex that exist only for a texture seam (the head
+/// shell's poles and silhouette) must not crease its shading. Sorts the
+/// positions: for meshes whose normals are made once, not every frame.
+std::vector<glm::vec3> welded_vertex_normals(const Mesh& mesh);
+
 /// The closed boundary loops of a mesh whose triangles are consistently
 /// wound, each in the direction its triangles traverse it. A loop is a list of
 /// vertex indices without repeating the first. Empty if the mesh is closed;
