@@ -11,18 +11,12 @@
 #include <glm/vec3.hpp>
 
 #include "fw/model/head_shell.hpp"
+#include "fw/model/srgb.hpp"
 
 namespace fw::model {
 namespace {
 
 constexpr float kFullTurn = 2.0f * std::numbers::pi_v<float>;
-
-// Averages are taken in linear light: averaging sRGB codes darkens a mix of
-// hair and skin.
-float linear_from_code(std::uint8_t code) { return std::pow(static_cast<float>(code) / 255.0f, 2.2f); }
-std::uint8_t code_from_linear(float linear) {
-  return static_cast<std::uint8_t>(std::pow(std::clamp(linear, 0.0f, 1.0f), 1.0f / 2.2f) * 255.0f + 0.5f);
-}
 
 float smooth_ramp(float edge0, float edge1, float x) {
   const float t = std::clamp((x - edge0) / (edge1 - edge0), 0.0f, 1.0f);
@@ -45,7 +39,7 @@ std::optional<glm::vec3> ray_colour(const RgbaImage& texture, const TextureFrame
       if (x < 0 || y < 0 || x >= texture.width || y >= texture.height) continue;
       const std::uint8_t* px = texture.at(x, y);
       if (px[3] < 128) continue;
-      sum += glm::vec3(linear_from_code(px[0]), linear_from_code(px[1]), linear_from_code(px[2]));
+      sum += glm::vec3(linear_from_srgb(px[0]), linear_from_srgb(px[1]), linear_from_srgb(px[2]));
       ++count;
     }
   if (count == 0) return std::nullopt;
@@ -109,11 +103,6 @@ void paint_head_back(RgbaImage& texture, const TextureFrame& frame, glm::vec2 sh
     top_weight += w;
   }
   top /= top_weight;
-  const auto around = [&](float phi) {  // between the two nearest rays
-    const float at = std::fmod(phi / kFullTurn + 1.0f, 1.0f) * static_cast<float>(n);
-    const auto k = static_cast<std::size_t>(at) % n;
-    return glm::mix(rays[k], rays[(k + 1) % n], at - std::floor(at));
-  };
   // The disc and a margin of a quarter of its radius, clamped to the rim.
   const float reach = kHeadBackPatch.radius * 1.25f;
   const auto pixel_range = [&](float low, float high, int size) {
@@ -130,7 +119,7 @@ void paint_head_back(RgbaImage& texture, const TextureFrame& frame, glm::vec2 sh
       const glm::vec2 d = (uv - c) / kHeadBackPatch.radius;
       const float t = std::min(1.0f, glm::length(d));
       const float phi = std::atan2(d.y, d.x);
-      const glm::vec3 edge = around(phi);
+      const glm::vec3 edge = between_rays(std::span<const glm::vec3>(rays), phi);
       // Going back, the sides and the crown become the top's colour; the
       // neck's rays keep the neck's but for the back of the skull above
       // the nape, so that every direction meets in one colour at the pole.
@@ -138,9 +127,9 @@ void paint_head_back(RgbaImage& texture, const TextureFrame& frame, glm::vec2 sh
       const glm::vec3 back = glm::mix(edge, top, crown);
       const glm::vec3 colour = glm::mix(back, edge, smooth_ramp(0.4f, 1.0f, t));
       std::uint8_t* px = texture.at(x, y);
-      px[0] = code_from_linear(colour.r);
-      px[1] = code_from_linear(colour.g);
-      px[2] = code_from_linear(colour.b);
+      px[0] = srgb_from_linear(colour.r);
+      px[1] = srgb_from_linear(colour.g);
+      px[2] = srgb_from_linear(colour.b);
       px[3] = 255;
     }
 }

@@ -8,18 +8,25 @@
 
 namespace fw::model {
 
-std::vector<glm::vec3> vertex_normals(const Mesh& mesh) {
-  std::vector<glm::vec3> normals(mesh.positions.size(), glm::vec3(0.0f));
+namespace {
+
+// Each vertex's sum of its triangles' cross products, not yet unit length.
+std::vector<glm::vec3> area_weighted_sums(const Mesh& mesh) {
+  std::vector<glm::vec3> sums(mesh.positions.size(), glm::vec3(0.0f));
   for (const glm::uvec3& t : mesh.triangles) {
     const glm::vec3& a = mesh.positions[t.x];
     const glm::vec3& b = mesh.positions[t.y];
     const glm::vec3& c = mesh.positions[t.z];
     // The cross product's length is twice the area: larger faces weigh more.
     const glm::vec3 n = glm::cross(b - a, c - a);
-    normals[t.x] += n;
-    normals[t.y] += n;
-    normals[t.z] += n;
+    sums[t.x] += n;
+    sums[t.y] += n;
+    sums[t.z] += n;
   }
+  return sums;
+}
+
+std::vector<glm::vec3> unit_lengths(std::vector<glm::vec3> normals) {
   for (glm::vec3& n : normals) {
     const float length = glm::length(n);
     if (length > 0.0f) n /= length;
@@ -27,21 +34,17 @@ std::vector<glm::vec3> vertex_normals(const Mesh& mesh) {
   return normals;
 }
 
+}  // namespace
+
+std::vector<glm::vec3> vertex_normals(const Mesh& mesh) { return unit_lengths(area_weighted_sums(mesh)); }
+
 std::vector<glm::vec3> welded_vertex_normals(const Mesh& mesh) {
-  std::vector<glm::vec3> normals(mesh.positions.size(), glm::vec3(0.0f));
-  for (const glm::uvec3& t : mesh.triangles) {
-    const glm::vec3 n = glm::cross(mesh.positions[t.y] - mesh.positions[t.x], mesh.positions[t.z] - mesh.positions[t.x]);
-    for (int k = 0; k < 3; ++k) normals[t[k]] += n;
-  }
+  std::vector<glm::vec3> normals = area_weighted_sums(mesh);
   const auto key = [](const glm::vec3& p) { return std::tuple(p.x, p.y, p.z); };
-  std::map<std::tuple<float, float, float>, glm::vec3> sums;
-  for (std::size_t v = 0; v < normals.size(); ++v) sums[key(mesh.positions[v])] += normals[v];
-  for (std::size_t v = 0; v < normals.size(); ++v) {
-    const glm::vec3 n = sums[key(mesh.positions[v])];
-    const float length = glm::length(n);
-    normals[v] = length > 0.0f ? n / length : glm::vec3(0.0f);
-  }
-  return normals;
+  std::map<std::tuple<float, float, float>, glm::vec3> welded;
+  for (std::size_t v = 0; v < normals.size(); ++v) welded[key(mesh.positions[v])] += normals[v];
+  for (std::size_t v = 0; v < normals.size(); ++v) normals[v] = welded[key(mesh.positions[v])];
+  return unit_lengths(std::move(normals));
 }
 
 std::vector<std::vector<std::uint32_t>> boundary_loops(const Mesh& mesh) {

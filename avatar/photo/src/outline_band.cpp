@@ -7,6 +7,7 @@
 
 #include "face_alignment.hpp"
 #include "fw/model/head_shell.hpp"
+#include "fw/model/srgb.hpp"
 
 namespace fw::photo {
 namespace {
@@ -16,15 +17,6 @@ constexpr float kFullTurn = 2.0f * std::numbers::pi_v<float>;
 constexpr float kWidestHalfArc = kFullTurn / 16.0f;
 constexpr int kSamplesEachSide = 6;
 
-// A value of the ray table at any angle, linear between the rays.
-float between_rays(std::span<const float> per_ray, float phi) {
-  const auto n = static_cast<float>(per_ray.size());
-  const float at = std::fmod(phi / kFullTurn + 1.0f, 1.0f) * n;
-  const auto k = static_cast<std::size_t>(at) % per_ray.size();
-  const float f = at - std::floor(at);
-  return per_ray[k] * (1.0f - f) + per_ray[(k + 1) % per_ray.size()] * f;
-}
-
 }  // namespace
 
 void smooth_outline_band(cv::Mat& bgra, std::span<const float> outline, std::span<const float> inner,
@@ -32,15 +24,15 @@ void smooth_outline_band(cv::Mat& bgra, std::span<const float> outline, std::spa
   assert(bgra.type() == CV_8UC4 && outline.size() == inner.size() && !outline.empty());
   const int size = bgra.cols;
   const cv::Mat source = bgra.clone();
-  // Linear light, premultiplied by alpha: averaging codes darkens a mix,
-  // and texels outside the head must not bring their colour in.
+  // Linear light (srgb.hpp), premultiplied by alpha: texels outside the
+  // head must not bring their colour in.
   cv::Mat linear(source.size(), CV_32FC4);
   for (int y = 0; y < size; ++y)
     for (int x = 0; x < size; ++x) {
       const cv::Vec4b c = source.at<cv::Vec4b>(y, x);
       const float a = c[3] / 255.0f;
-      linear.at<cv::Vec4f>(y, x) = {std::pow(c[0] / 255.0f, 2.2f) * a, std::pow(c[1] / 255.0f, 2.2f) * a,
-                                    std::pow(c[2] / 255.0f, 2.2f) * a, a};
+      linear.at<cv::Vec4f>(y, x) = {model::linear_from_srgb(c[0]) * a, model::linear_from_srgb(c[1]) * a,
+                                    model::linear_from_srgb(c[2]) * a, a};
     }
   const auto sample = [&](glm::vec2 p) {  // bilinear, zero off the texture
     const cv::Point2f px = model_to_texture_px(p, frame, size);
@@ -64,7 +56,7 @@ void smooth_outline_band(cv::Mat& bgra, std::span<const float> outline, std::spa
       const float r = std::hypot(d.x, d.y);
       const float phi = std::atan2(d.y, d.x);
       if (std::sin(phi) < model::kNeckRaySine || r < 1e-3f) continue;
-      const float begin = between_rays(inner, phi), end = between_rays(outline, phi);
+      const float begin = model::between_rays(inner, phi), end = model::between_rays(outline, phi);
       if (r <= begin || end <= begin) continue;
       const float reach = std::clamp((r - begin) / (end - begin), 0.0f, 1.0f) * kWidestHalfArc;
       cv::Vec4f sum(0, 0, 0, 0);
@@ -76,7 +68,7 @@ void smooth_outline_band(cv::Mat& bgra, std::span<const float> outline, std::spa
       }
       if (!(sum[3] > 0.0f)) continue;
       for (int c = 0; c < 3; ++c)
-        out[c] = static_cast<uchar>(std::pow(std::clamp(sum[c] / sum[3], 0.0f, 1.0f), 1.0f / 2.2f) * 255.0f + 0.5f);
+        out[c] = model::srgb_from_linear(sum[c] / sum[3]);
     }
 }
 

@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 
+#include "fw/model/srgb.hpp"
+
 namespace fw::render {
 namespace {
 
@@ -15,10 +17,7 @@ struct LinearLevel {
 
 LinearLevel decode(const model::RgbaImage& srgb) {
   std::array<float, 256> to_linear{};
-  for (std::size_t v = 0; v < to_linear.size(); ++v) {
-    const double e = static_cast<double>(v) / 255.0;
-    to_linear[v] = static_cast<float>(e <= 0.04045 ? e / 12.92 : std::pow((e + 0.055) / 1.055, 2.4));
-  }
+  for (std::size_t v = 0; v < to_linear.size(); ++v) to_linear[v] = model::linear_from_srgb(static_cast<std::uint8_t>(v));
   LinearLevel level{srgb.width, srgb.height, std::vector<float>(srgb.pixels.size())};
   for (int y = 0; y < srgb.height; ++y) {
     const std::uint8_t* row = srgb.at(0, srgb.height - 1 - y);

@@ -5,6 +5,8 @@
 // beyond it stretches to the person's silhouette on that ray (measured from
 // the photo's matte and carried in the package), so the hair, ears and neck
 // of the shell match the person's outline and stay joined to the face.
+#include <cmath>
+#include <numbers>
 #include <span>
 
 #include <glm/vec2.hpp>
@@ -29,6 +31,18 @@ float ray_exit_radius(glm::vec2 centre, float phi, std::span<const glm::vec2> po
 
 /// The angle of ray k of an outline with `count` rays.
 float outline_ray_angle(std::size_t k, std::size_t count);
+
+/// A table with one value a ray (an outline's radii, colours along it) at
+/// any angle `phi` (radians): linear between the two nearest rays.
+template <typename T>
+T between_rays(std::span<const T> per_ray, float phi) {
+  const auto n = static_cast<float>(per_ray.size());
+  const float turns = phi / (2.0f * std::numbers::pi_v<float>);
+  const float at = (turns - std::floor(turns)) * n;
+  const auto k = static_cast<std::size_t>(at) % per_ray.size();
+  const float f = at - std::floor(at);
+  return per_ray[k] * (1.0f - f) + per_ray[(k + 1) % per_ray.size()] * f;
+}
 
 /// The fitted shell always reaches at least this far (model units) beyond
 /// the face's rim, so that a silhouette measured inside the rim still leaves
