@@ -23,7 +23,7 @@ build_packages=(
   libglm-dev                                  # vector maths (model, physics)
   libosmesa6-dev libgl-dev mesa-utils         # offscreen GL renderer (llvmpipe)
   libpng-dev libwebp-dev zlib1g-dev           # image members of avatar packages
-  libjpeg-dev                                 # photos: the client downsizes them before upload
+  libjpeg-dev                                 # photos: decoded by the server, downsized by the client
   libdlib-dev libdlib-data                    # face detector + 68-landmark model
   nlohmann-json3-dev libcli11-dev libspdlog-dev
   libicu-dev                                  # display names: NFC and character classes

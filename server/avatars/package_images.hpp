@@ -1,5 +1,5 @@
 #pragma once
-// Encoding and shrinking the images of avatar packages (OpenCV's WebP), for
+// Encoding and shrinking the images of avatar packages (libwebp), for
 // the demo faces and the preview packages.
 #include <optional>
 

@@ -3,7 +3,6 @@
 #include <CLI/CLI.hpp>
 
 #include "command_line.hpp"
-#include "fw/photo/photo_limits.hpp"
 #include "prep_command.hpp"
 #include "render_scene_command.hpp"
 #include "script_command.hpp"
@@ -12,7 +11,6 @@
 #include "token_command.hpp"
 
 int main(int argc, char** argv) {
-  fw::photo::enforce_decoder_pixel_limit(argv);
   CLI::App app{"facewire server: hosts the avatars' faces and streams them to clients"};
   fw::server::add_serve_command(app);
   fw::server::add_prep_command(app);

@@ -4,7 +4,6 @@
 
 #include <CLI/CLI.hpp>
 
-#include "fw/photo/photo_limits.hpp"
 #include "codec_bench.hpp"
 #include "fanout_bench.hpp"
 #include "prep_bench.hpp"
@@ -12,7 +11,6 @@
 #include "sim_bench.hpp"
 
 int main(int argc, char** argv) {
-  fw::photo::enforce_decoder_pixel_limit(argv);
   CLI::App app{"facewire benchmarks"};
   app.require_subcommand(1);
   fw::bench::add_render_bench(app);

@@ -122,24 +122,3 @@ TEST(ImageInspection, ALowerPixelLimitIsReadFromTheHeaderAndNamed) {
 
 }  // namespace
 }  // namespace fw::photo
-
-namespace fw::photo {
-namespace {
-
-// ctest runs this with OPENCV_IO_MAX_IMAGE_PIXELS as facewire-server sets it
-// for itself: OpenCV itself refuses what the header check would.
-TEST(DecoderPixelLimit, OpenCvRefusesPastFortyMegapixels) {
-  ASSERT_NE(std::getenv("OPENCV_IO_MAX_IMAGE_PIXELS"), nullptr);
-  std::vector<uchar> bytes;
-  cv::imencode(".png", cv::Mat::zeros(6000, 7000, CV_8UC1), bytes);
-  bool refused = false;
-  try {
-    refused = cv::imdecode(bytes, cv::IMREAD_GRAYSCALE).empty();
-  } catch (const cv::Exception&) {
-    refused = true;
-  }
-  EXPECT_TRUE(refused) << "42 megapixels decoded despite the limit";
-}
-
-}  // namespace
-}  // namespace fw::photo

@@ -1,0 +1,100 @@
+#include "photo_decoders.hpp"
+
+#include <gtest/gtest.h>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "decode_photo.hpp"
+#include "photo_variants.hpp"
+
+namespace fw::photo {
+namespace {
+
+// OpenCV's imdecode(IMREAD_COLOR), which facewire's photos went through
+// before, is the observer here: the direct decoders must give its pixels.
+cv::Mat opencv_decode(const std::vector<std::uint8_t>& bytes) { return cv::imdecode(bytes, cv::IMREAD_COLOR); }
+
+void expect_same_pixels(const std::vector<std::uint8_t>& bytes, const std::string& what) {
+  PrepError error;
+  const auto ours = decode_photo(bytes, error);
+  ASSERT_TRUE(ours.has_value()) << what << ": " << error.message;
+  const cv::Mat reference = opencv_decode(bytes);
+  ASSERT_FALSE(reference.empty()) << what;
+  ASSERT_EQ(ours->type(), CV_8UC3) << what;
+  ASSERT_EQ(ours->size(), reference.size()) << what;
+  EXPECT_EQ(cv::norm(*ours, reference, cv::NORM_INF), 0.0) << what << " differs from OpenCV's decoding";
+}
+
+// A crop of the portrait (a real photo's texture) in the given OpenCV type.
+cv::Mat portrait_crop(int type) {
+  const cv::Mat bgr = test::load_astronaut()(cv::Rect(100, 40, 301, 257)).clone();  // odd sizes
+  cv::Mat out;
+  switch (type) {
+    case CV_8UC1: cv::cvtColor(bgr, out, cv::COLOR_BGR2GRAY); break;
+    case CV_8UC4:
+      cv::cvtColor(bgr, out, cv::COLOR_BGR2BGRA);
+      for (int y = 0; y < out.rows; ++y)
+        for (int x = 0; x < out.cols; ++x) out.at<cv::Vec4b>(y, x)[3] = static_cast<std::uint8_t>((x * 7 + y) % 256);
+      break;
+    case CV_16UC3: bgr.convertTo(out, CV_16UC3, 257.0); out += cv::Scalar(91, 3, 200); break;
+    default: out = bgr;
+  }
+  return out;
+}
+
+std::vector<std::uint8_t> encode(const cv::Mat& image, const char* extension, std::vector<int> parameters = {}) {
+  std::vector<std::uint8_t> bytes;
+  EXPECT_TRUE(cv::imencode(extension, image, bytes, parameters)) << extension;
+  return bytes;
+}
+
+TEST(PhotoDecoders, JpegComesOutAsOpenCvDecodedIt) {
+  expect_same_pixels(encode(portrait_crop(CV_8UC3), ".jpg"), "colour JPEG");
+  expect_same_pixels(encode(portrait_crop(CV_8UC1), ".jpg"), "grey JPEG");
+  expect_same_pixels(encode(portrait_crop(CV_8UC3), ".jpg", {cv::IMWRITE_JPEG_PROGRESSIVE, 1}), "progressive JPEG");
+  expect_same_pixels(encode(portrait_crop(CV_8UC3), ".jpg", {cv::IMWRITE_JPEG_QUALITY, 40}), "JPEG at quality 40");
+}
+
+TEST(PhotoDecoders, PngComesOutAsOpenCvDecodedIt) {
+  expect_same_pixels(encode(portrait_crop(CV_8UC3), ".png"), "colour PNG");
+  expect_same_pixels(encode(portrait_crop(CV_8UC1), ".png"), "grey PNG");
+  expect_same_pixels(encode(portrait_crop(CV_8UC4), ".png"), "PNG with alpha");
+  expect_same_pixels(encode(portrait_crop(CV_16UC3), ".png"), "16-bit PNG");
+  cv::Mat bits = portrait_crop(CV_8UC1) > 128;
+  expect_same_pixels(encode(bits, ".png", {cv::IMWRITE_PNG_BILEVEL, 1}), "one-bit PNG");
+}
+
+TEST(PhotoDecoders, WebpComesOutAsOpenCvDecodedIt) {
+  expect_same_pixels(encode(portrait_crop(CV_8UC3), ".webp", {cv::IMWRITE_WEBP_QUALITY, 80}), "lossy WebP");
+  expect_same_pixels(encode(portrait_crop(CV_8UC3), ".webp", {cv::IMWRITE_WEBP_QUALITY, 101}), "lossless WebP");
+  expect_same_pixels(encode(portrait_crop(CV_8UC4), ".webp", {cv::IMWRITE_WEBP_QUALITY, 90}), "WebP with alpha");
+}
+
+TEST(PhotoDecoders, TheDecodersOwnHeaderReadingRefusesPastFortyMegapixels) {
+  // The header check stops these first; the decoders check again with the
+  // dimensions they read themselves.
+  const std::vector<std::uint8_t> huge = encode(cv::Mat::zeros(6000, 7000, CV_8UC1), ".png");
+  PrepError error;
+  EXPECT_FALSE(decode_photo(huge, error).has_value());
+  EXPECT_EQ(error.code, PrepErrorCode::too_many_pixels);
+  EXPECT_NE(error.message.find("scale it down"), std::string::npos) << error.message;
+}
+
+TEST(PhotoDecoders, ADamagedPhotoIsUndecodableWithAReason) {
+  for (const char* extension : {".jpg", ".png", ".webp"}) {
+    std::vector<std::uint8_t> bytes = encode(portrait_crop(CV_8UC3), extension);
+    bytes.resize(bytes.size() / 3);  // cut off: the header is whole, the pixels are not
+    for (std::size_t i = bytes.size() / 2; i < bytes.size(); i += 7) bytes[i] ^= 0x5a;
+    PrepError error;
+    const auto decoded = decode_photo(bytes, error);
+    if (decoded) continue;  // libjpeg pads a cut JPEG with grey, as OpenCV's decoding did
+    EXPECT_EQ(error.code, PrepErrorCode::undecodable) << extension;
+    EXPECT_NE(error.message.find("damaged"), std::string::npos) << extension << ": " << error.message;
+  }
+  PrepError error;
+  EXPECT_FALSE(decode_photo(std::vector<std::uint8_t>{'G', 'I', 'F', '8', '9', 'a'}, error).has_value());
+  EXPECT_EQ(error.code, PrepErrorCode::not_an_image);
+}
+
+}  // namespace
+}  // namespace fw::photo
