@@ -1,6 +1,11 @@
 #include "photo_decoders.hpp"
 
+#include <algorithm>
+#include <cstdio>  // before jpeglib.h, which uses FILE
+#include <cstdlib>
+
 #include <gtest/gtest.h>
+#include <jpeglib.h>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -53,6 +58,48 @@ TEST(PhotoDecoders, JpegComesOutAsOpenCvDecodedIt) {
   expect_same_pixels(encode(portrait_crop(CV_8UC1), ".jpg"), "grey JPEG");
   expect_same_pixels(encode(portrait_crop(CV_8UC3), ".jpg", {cv::IMWRITE_JPEG_PROGRESSIVE, 1}), "progressive JPEG");
   expect_same_pixels(encode(portrait_crop(CV_8UC3), ".jpg", {cv::IMWRITE_JPEG_QUALITY, 40}), "JPEG at quality 40");
+}
+
+// A CMYK JPEG as Adobe's tools write it (inks inverted, an Adobe marker),
+// which cv::imencode cannot make: libjpeg writes it from the portrait.
+std::vector<std::uint8_t> adobe_cmyk_jpeg(const cv::Mat& bgr) {
+  jpeg_compress_struct info{};
+  jpeg_error_mgr errors{};
+  info.err = jpeg_std_error(&errors);
+  jpeg_create_compress(&info);
+  unsigned char* out = nullptr;
+  unsigned long size = 0;
+  jpeg_mem_dest(&info, &out, &size);
+  info.image_width = static_cast<JDIMENSION>(bgr.cols);
+  info.image_height = static_cast<JDIMENSION>(bgr.rows);
+  info.input_components = 4;
+  info.in_color_space = JCS_CMYK;
+  jpeg_set_defaults(&info);
+  info.write_Adobe_marker = TRUE;
+  jpeg_start_compress(&info, TRUE);
+  std::vector<std::uint8_t> row(static_cast<std::size_t>(bgr.cols) * 4);
+  while (info.next_scanline < info.image_height) {
+    const auto* pixel = bgr.ptr<cv::Vec3b>(static_cast<int>(info.next_scanline));
+    for (int x = 0; x < bgr.cols; ++x) {
+      // Inverted inks: 255 is no ink. Black takes what the three share.
+      const int k = std::max({pixel[x][0], pixel[x][1], pixel[x][2]});
+      row[4 * x + 0] = pixel[x][2];
+      row[4 * x + 1] = pixel[x][1];
+      row[4 * x + 2] = pixel[x][0];
+      row[4 * x + 3] = static_cast<std::uint8_t>(k);
+    }
+    JSAMPROW rows[1] = {row.data()};
+    jpeg_write_scanlines(&info, rows, 1);
+  }
+  jpeg_finish_compress(&info);
+  std::vector<std::uint8_t> bytes(out, out + size);
+  jpeg_destroy_compress(&info);
+  std::free(out);
+  return bytes;
+}
+
+TEST(PhotoDecoders, AdobeCmykJpegComesOutAsOpenCvDecodedIt) {
+  expect_same_pixels(adobe_cmyk_jpeg(portrait_crop(CV_8UC3)), "Adobe CMYK JPEG");
 }
 
 TEST(PhotoDecoders, PngComesOutAsOpenCvDecodedIt) {
