@@ -1,7 +1,5 @@
 #include "decode_photo.hpp"
 
-#include <cstring>
-
 #include "fw/photo/photo_limits.hpp"
 #include "photo_decoders.hpp"
 
@@ -13,20 +11,22 @@ bool decodable_size(std::uint64_t width, std::uint64_t height, PrepError& error)
     return false;
   }
   if (width * height > kMaxPhotoPixels) {
-    error = {PrepErrorCode::too_many_pixels,
-             "the image is " + std::to_string(width) + " x " + std::to_string(height) + " pixels, more than the " +
-                 std::to_string(kMaxPhotoPixels / 1000000) + " megapixels accepted: scale it down"};
+    // Worded as inspect_photo's refusal, which comes first for any photo whose
+    // header and image data agree.
+    error = {PrepErrorCode::too_many_pixels, "the photo is " + std::to_string(width) + "x" + std::to_string(height) +
+                                                 " pixels; at most " + std::to_string(kMaxPhotoPixels / 1000000) +
+                                                 " megapixels is accepted: scale it down"};
     return false;
   }
   return true;
 }
 
-std::optional<cv::Mat> decode_photo(std::span<const std::uint8_t> bytes, PrepError& error) {
-  if (bytes.size() >= 3 && bytes[0] == 0xff && bytes[1] == 0xd8 && bytes[2] == 0xff) return decode_jpeg_photo(bytes, error);
-  if (bytes.size() >= 8 && std::memcmp(bytes.data(), "\x89PNG\r\n\x1a\n", 8) == 0) return decode_png_photo(bytes, error);
-  if (bytes.size() >= 12 && std::memcmp(bytes.data(), "RIFF", 4) == 0 && std::memcmp(bytes.data() + 8, "WEBP", 4) == 0)
-    return decode_webp_photo(bytes, error);
-  error = {PrepErrorCode::not_an_image, "the file is not a JPEG, PNG or WebP image"};
+std::optional<cv::Mat> decode_photo(std::span<const std::uint8_t> bytes, const PhotoHeader& header, PrepError& error) {
+  switch (header.format) {
+    case PhotoFormat::jpeg: return decode_jpeg_photo(bytes, error);
+    case PhotoFormat::png: return decode_png_photo(bytes, error);
+    case PhotoFormat::webp: return decode_webp_photo(bytes, error);
+  }
   return std::nullopt;
 }
 

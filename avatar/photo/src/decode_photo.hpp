@@ -6,11 +6,13 @@
 #include <opencv2/core.hpp>
 
 #include "fw/photo/prep_error.hpp"
+#include "image_inspection.hpp"
 
 namespace fw::photo {
 
-/// Decodes an inspected JPEG, PNG or WebP to 8-bit BGR, turned upright by its EXIF
-/// orientation; grayscale photos come out as three equal channels.
-std::optional<cv::Mat> decode_photo(std::span<const std::uint8_t> bytes, PrepError& error);
+/// Decodes a photo that inspect_photo passed, by the format it found, to
+/// 8-bit BGR, turned upright by its EXIF orientation; grayscale photos come
+/// out as three equal channels.
+std::optional<cv::Mat> decode_photo(std::span<const std::uint8_t> bytes, const PhotoHeader& header, PrepError& error);
 
 }  // namespace fw::photo

@@ -96,12 +96,14 @@ std::optional<PreparedAvatar> AvatarPreparer::prepare(std::span<const std::uint8
     return fail(error, PrepErrorCode::bad_option, "quality must be 1..100");
   if (options.texture_size < 128 || options.texture_size > 512)
     return fail(error, PrepErrorCode::bad_option, "texture size must be 128..512 pixels");
-  if (!inspect_photo(bytes, error)) return std::nullopt;
-  const auto photo = decode_photo(bytes, error);
+  const auto header = inspect_photo(bytes, error);
+  if (!header) return std::nullopt;
+  const auto photo = decode_photo(bytes, *header, error);
   if (!photo) return std::nullopt;
   std::optional<cv::Mat> repainted;
   if (!colour_bytes.empty()) {
-    if (!inspect_photo(colour_bytes, error) || !(repainted = decode_photo(colour_bytes, error))) return std::nullopt;
+    const auto colour_header = inspect_photo(colour_bytes, error);
+    if (!colour_header || !(repainted = decode_photo(colour_bytes, *colour_header, error))) return std::nullopt;
     if (repainted->size() != photo->size())
       return fail(error, PrepErrorCode::bad_option, "the colour source must be the photo's size, upright");
   }
