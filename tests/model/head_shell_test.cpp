@@ -50,6 +50,29 @@ TEST(HeadShell, ReachesPastTheFaceRimAndStaysBehindIt) {
   }
 }
 
+// The shell meets the face along the face's whole rim: on every outline
+// ray a vertex of the shell lies on the rim, just behind it. Where the
+// shell's rings fell where they might, it stood up to 0.23 in front of the
+// rim at the temples (a second outline across a turned face) and up to 0.48
+// behind it under the jaw (a jaw that stood off the neck).
+TEST(HeadShell, MeetsTheFaceAlongItsRim) {
+  const GenericFace& face = generic_face();
+  std::vector<glm::vec3> rim;
+  for (std::uint32_t v : face_rim_loop(face.skin)) rim.push_back(face.skin.positions[v]);
+  for (std::size_t k = 0; k < face.head.outline.size(); ++k) {
+    const float phi = outline_ray_angle(k, face.head.outline.size());
+    const glm::vec2 direction(std::cos(phi), std::sin(phi));
+    const auto [radius, depth] = ray_exit(face.head.centre, phi, rim);
+    ASSERT_GT(radius, 0.0f) << "ray " << k;
+    const glm::vec2 on_rim = face.head.centre + radius * direction;
+    bool met = false;
+    for (const glm::vec3& p : face.head.mesh.positions)
+      met = met || (glm::length(glm::vec2(p) - on_rim) < 2e-3f && p.z < depth && p.z > depth - 0.05f);
+    EXPECT_TRUE(met) << "ray " << k << ": no shell vertex just behind the rim at (" << on_rim.x << ", " << on_rim.y
+                     << ", " << depth << ")";
+  }
+}
+
 TEST(HeadShell, IsTheSizeOfAHeadWithANeck) {
   glm::vec3 low(1e9f), high(-1e9f);
   for (const glm::vec3& p : generic_face().head.mesh.positions) low = glm::min(low, p), high = glm::max(high, p);

@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cmath>
 #include <numbers>
+#include <type_traits>
 
 #include <glm/geometric.hpp>
 
@@ -45,19 +46,39 @@ float outline_ray_angle(std::size_t k, std::size_t count) {
   return kTwoPi * static_cast<float>(k) / static_cast<float>(count);
 }
 
-float ray_exit_radius(glm::vec2 centre, float phi, std::span<const glm::vec2> polygon) {
+namespace {
+
+// Where the ray leaves the loop (its outermost crossing), and the loop's
+// depth there (0 for a flat polygon).
+template <typename Point>
+RayExit exit_through(glm::vec2 centre, float phi, std::span<const Point> loop) {
   const glm::vec2 d(std::cos(phi), std::sin(phi));
-  float best = 0.0f;
-  for (std::size_t i = 0; i < polygon.size(); ++i) {
-    const glm::vec2 a = polygon[i] - centre, b = polygon[(i + 1) % polygon.size()] - centre;
+  RayExit best;
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const Point& from = loop[i];
+    const Point& to = loop[(i + 1) % loop.size()];
+    const glm::vec2 a = glm::vec2(from) - centre, b = glm::vec2(to) - centre;
     const glm::vec2 e = b - a;
     const float denominator = d.x * e.y - d.y * e.x;
     if (std::abs(denominator) < 1e-9f) continue;
     const float t = (a.x * e.y - a.y * e.x) / denominator;   // along the ray
     const float s = (a.x * d.y - a.y * d.x) / denominator;   // along the edge
-    if (t > 0 && s >= 0 && s <= 1) best = std::max(best, t);
+    if (t > 0 && s >= 0 && s <= 1 && t > best.radius) {
+      best.radius = t;
+      if constexpr (std::is_same_v<Point, glm::vec3>) best.depth = from.z + s * (to.z - from.z);
+    }
   }
   return best;
+}
+
+}  // namespace
+
+float ray_exit_radius(glm::vec2 centre, float phi, std::span<const glm::vec2> polygon) {
+  return exit_through(centre, phi, polygon).radius;
+}
+
+RayExit ray_exit(glm::vec2 centre, float phi, std::span<const glm::vec3> loop) {
+  return exit_through(centre, phi, loop);
 }
 
 namespace {

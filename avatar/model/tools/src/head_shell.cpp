@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include <glm/geometric.hpp>
 
@@ -129,6 +130,37 @@ void use_head_back_across_silhouette(model::Mesh& mesh, std::size_t vertex_count
   }
 }
 
+// How far behind the face's rim the shell passes (model units): just enough
+// that depth testing always keeps the face in front where they meet.
+constexpr float kRimGap = 0.02f;
+
+// Moves the ring point of one ray nearest the face's rim onto the rim, just
+// behind it, so that the shell meets the face along its whole rim. Left
+// where the rays happen to put them, the shell's coarse triangles crossed
+// the rim: in front of the face's rim at the temples and cheeks (a second
+// outline across a turned face), and up to 0.5 units behind it under the
+// jaw (the face's jaw stood off the neck, a doubled jaw line). Returns the
+// index of the point moved, or none.
+std::optional<std::size_t> meet_the_rim(std::vector<glm::vec3>& ray, glm::vec2 centre, model::RayExit rim,
+                                        std::size_t silhouette) {
+  if (!(rim.radius > 0)) return std::nullopt;
+  const auto radius = [&](std::size_t i) { return glm::length(glm::vec2(ray[i]) - centre); };
+  // The ray's last point inside the rim and its first beyond: the nearer of
+  // the two moves, if the points on either side of it then still run
+  // outward through the rim (so the move folds no triangle).
+  std::size_t beyond = 1;
+  while (beyond < silhouette && radius(beyond) < rim.radius) ++beyond;
+  const auto movable = [&](std::size_t i) {
+    return i > 0 && i < silhouette && radius(i - 1) < rim.radius && radius(i + 1) > rim.radius;
+  };
+  std::size_t chosen = rim.radius - radius(beyond - 1) < radius(beyond) - rim.radius ? beyond - 1 : beyond;
+  if (!movable(chosen)) chosen = chosen == beyond ? beyond - 1 : beyond;
+  if (!movable(chosen)) return std::nullopt;
+  const glm::vec2 d = glm::normalize(glm::vec2(ray[chosen]) - centre);
+  ray[chosen] = glm::vec3(centre + rim.radius * d, rim.depth - kRimGap);
+  return chosen;
+}
+
 glm::vec3 ray_direction(int ring, int segment) {
   const float theta = kPi * static_cast<float>(ring) / kRaysFrontToBack;
   const float phi = 2.0f * kPi * static_cast<float>(segment) / kRaysAround;
@@ -151,9 +183,10 @@ HeadShell build_head_shell(const model::Mesh& skin, const model::TextureFrame& f
       rays[static_cast<std::size_t>(s)].push_back(kCentre + shell_radius(d) * d);
     }
 
-  std::vector<glm::vec2> rim;
-  for (std::uint32_t v : model::face_rim_loop(skin)) rim.emplace_back(skin.positions[v]);
+  std::vector<glm::vec3> rim;
+  for (std::uint32_t v : model::face_rim_loop(skin)) rim.push_back(skin.positions[v]);
 
+  std::vector<int> rim_ring(kRaysAround, -1);  // each ray's ring on the face's rim, -1 for none
   mesh.positions.push_back(kCentre + shell_radius({0, 0, 1}) * glm::vec3(0, 0, 1));
   mesh.uvs.push_back(frame.to_uv(shell.centre));
   for (int s = 0; s < kRaysAround; ++s) {
@@ -165,15 +198,18 @@ HeadShell build_head_shell(const model::Mesh& skin, const model::TextureFrame& f
     for (std::size_t i = 0; i < ray.size(); ++i)
       if (glm::length(glm::vec2(ray[i]) - shell.centre) > glm::length(glm::vec2(ray[silhouette]) - shell.centre))
         silhouette = i;
+    const float phi = model::outline_ray_angle(static_cast<std::size_t>(s), kRaysAround);
+    const model::RayExit crossing = model::ray_exit(shell.centre, phi, rim);
+    const auto on_rim = meet_the_rim(rays[static_cast<std::size_t>(s)], shell.centre, crossing, silhouette);
+    rim_ring[static_cast<std::size_t>(s)] = on_rim ? static_cast<int>(*on_rim) + 1 : -1;
     const float radius = glm::length(glm::vec2(ray[silhouette]) - shell.centre);
     shell.outline.push_back(radius);
-    const float phi = model::outline_ray_angle(static_cast<std::size_t>(s), kRaysAround);
-    const float rim_radius = model::ray_exit_radius(shell.centre, phi, rim);
+    const float rim_radius = crossing.radius;
     const glm::vec2 unseen_colour = shell.centre + model::unseen_colour_radius(phi, rim_radius, radius) *
                                                         glm::vec2(std::cos(phi), std::sin(phi));
     for (std::size_t i = 0; i < ray.size(); ++i) {
       const glm::vec2 p(ray[i]);
-      const bool seen = glm::length(p - shell.centre) >= rim_radius;
+      const bool seen = glm::length(p - shell.centre) >= rim_radius - 1e-4f;  // the point on the rim too
       mesh.positions.push_back(ray[i]);
       // Behind the silhouette: the head's back (head_back.hpp).
       mesh.uvs.push_back(i > silhouette ? head_back_uv(ray[i]) : frame.to_uv(seen ? p : unseen_colour));
@@ -196,7 +232,15 @@ HeadShell build_head_shell(const model::Mesh& skin, const model::TextureFrame& f
   };
   for (int s = 0; s < kRaysAround; ++s) {
     add(0u, at(1, s), at(1, s + 1));
+    const int next = (s + 1) % kRaysAround;
     for (int ring = 1; ring + 1 < kRaysFrontToBack; ++ring) {
+      // Split each quad along the rim where the rim crosses it, so that the
+      // rim is an edge of the shell and no triangle reaches across it.
+      if (rim_ring[static_cast<std::size_t>(s)] == ring + 1 && rim_ring[static_cast<std::size_t>(next)] == ring) {
+        add(at(ring, s), at(ring + 1, s), at(ring, s + 1));
+        add(at(ring + 1, s), at(ring + 1, s + 1), at(ring, s + 1));
+        continue;
+      }
       add(at(ring, s), at(ring + 1, s), at(ring + 1, s + 1));
       add(at(ring, s), at(ring + 1, s + 1), at(ring, s + 1));
     }

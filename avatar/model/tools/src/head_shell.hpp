@@ -6,7 +6,8 @@
 namespace fw::facegen {
 
 /// A closed low-polygon head around the face's `skin`, its front set back
-/// behind the face so the face overlaps it, with uvs in `frame`.
+/// behind the face so the face overlaps it, meeting the face along its rim
+/// just behind it, with uvs in `frame`.
 model::HeadShell build_head_shell(const model::Mesh& skin, const model::TextureFrame& frame);
 
 }  // namespace fw::facegen

@@ -29,6 +29,13 @@ HeadShell fit_head_shell(const GenericFace& generic, std::span<const glm::vec2> 
 /// does not cross it.
 float ray_exit_radius(glm::vec2 centre, float phi, std::span<const glm::vec2> polygon);
 
+/// The same for a loop in space seen from the front (the face's rim), with
+/// the loop's depth where the ray leaves it, interpolated along its edge.
+struct RayExit {
+  float radius = 0.0f, depth = 0.0f;
+};
+RayExit ray_exit(glm::vec2 centre, float phi, std::span<const glm::vec3> loop);
+
 /// The angle of ray k of an outline with `count` rays.
 float outline_ray_angle(std::size_t k, std::size_t count);
 
