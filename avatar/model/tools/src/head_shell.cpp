@@ -190,7 +190,7 @@ HeadShell build_head_shell(const model::Mesh& skin, const model::TextureFrame& f
   mesh.positions.push_back(kCentre + shell_radius({0, 0, 1}) * glm::vec3(0, 0, 1));
   mesh.uvs.push_back(frame.to_uv(shell.centre));
   for (int s = 0; s < kRaysAround; ++s) {
-    const auto& ray = rays[static_cast<std::size_t>(s)];
+    auto& ray = rays[static_cast<std::size_t>(s)];
     // The silhouette seen from the front: the ring point farthest out. The
     // photo shows the ray from the face's rim up to it; what is hidden behind
     // the face takes the ray's colour from nearer the centre.
@@ -200,16 +200,15 @@ HeadShell build_head_shell(const model::Mesh& skin, const model::TextureFrame& f
         silhouette = i;
     const float phi = model::outline_ray_angle(static_cast<std::size_t>(s), kRaysAround);
     const model::RayExit crossing = model::ray_exit(shell.centre, phi, rim);
-    const auto on_rim = meet_the_rim(rays[static_cast<std::size_t>(s)], shell.centre, crossing, silhouette);
+    const auto on_rim = meet_the_rim(ray, shell.centre, crossing, silhouette);
     rim_ring[static_cast<std::size_t>(s)] = on_rim ? static_cast<int>(*on_rim) + 1 : -1;
     const float radius = glm::length(glm::vec2(ray[silhouette]) - shell.centre);
     shell.outline.push_back(radius);
-    const float rim_radius = crossing.radius;
-    const glm::vec2 unseen_colour = shell.centre + model::unseen_colour_radius(phi, rim_radius, radius) *
+    const glm::vec2 unseen_colour = shell.centre + model::unseen_colour_radius(phi, crossing.radius, radius) *
                                                         glm::vec2(std::cos(phi), std::sin(phi));
     for (std::size_t i = 0; i < ray.size(); ++i) {
       const glm::vec2 p(ray[i]);
-      const bool seen = glm::length(p - shell.centre) >= rim_radius - 1e-4f;  // the point on the rim too
+      const bool seen = glm::length(p - shell.centre) >= crossing.radius - 1e-4f;  // the point on the rim too
       mesh.positions.push_back(ray[i]);
       // Behind the silhouette: the head's back (head_back.hpp).
       mesh.uvs.push_back(i > silhouette ? head_back_uv(ray[i]) : frame.to_uv(seen ? p : unseen_colour));
