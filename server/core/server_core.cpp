@@ -4,6 +4,15 @@
 #include "server_keys.hpp"
 
 namespace fw::server {
+namespace {
+
+std::vector<StoredAvatar> both(const std::vector<StoredAvatar>& a, const std::vector<StoredAvatar>& b) {
+  std::vector<StoredAvatar> all = a;
+  all.insert(all.end(), b.begin(), b.end());
+  return all;
+}
+
+}  // namespace
 
 std::unique_ptr<ServerCore> ServerCore::open(const ServerConfig& config, std::string& error) {
   auto metrics = std::make_unique<Metrics>();
@@ -16,12 +25,17 @@ std::unique_ptr<ServerCore> ServerCore::open(const ServerConfig& config, std::st
   if (server_key.empty()) return nullptr;
   auto demo_avatars = make_demo_avatars(config, *store, error);
   if (!demo_avatars) return nullptr;
-  return std::unique_ptr<ServerCore>(
-      new ServerCore(config, std::move(metrics), std::move(store), std::move(server_key), std::move(*demo_avatars)));
+  // Stored with or without the lobby: a cluster node seats them when it
+  // comes to own the lobby, whatever it was started with.
+  auto residents = store_resident_faces(*store, error);
+  if (!residents) return nullptr;
+  return std::unique_ptr<ServerCore>(new ServerCore(config, std::move(metrics), std::move(store), std::move(server_key),
+                                                    std::move(*demo_avatars), std::move(*residents)));
 }
 
 ServerCore::ServerCore(const ServerConfig& config, std::unique_ptr<Metrics> metrics, std::unique_ptr<AvatarStore> store,
-                       std::string server_key, std::vector<StoredAvatar> demo_avatars)
+                       std::string server_key, std::vector<StoredAvatar> demo_avatars,
+                       std::vector<StoredAvatar> residents)
     : config_(config),
       metrics_(std::move(metrics)),
       physics_lod_(config_.physics && config_.physics_lod),
@@ -29,6 +43,8 @@ ServerCore::ServerCore(const ServerConfig& config, std::unique_ptr<Metrics> metr
       store_(std::move(store)),
       server_key_(std::move(server_key)),
       demo_avatars_(std::move(demo_avatars)),
+      residents_(std::move(residents)),
+      own_faces_(both(demo_avatars_, residents_)),
       workers_(static_cast<std::size_t>(config_.workers)),
       speech_(static_cast<std::size_t>(config_.speech_threads), config_.speech_queue),
       rooms_(RoomServices{config_, *metrics_, physics_lod_, abuse_, workers_, *store_, demo_avatars_, bus_,
@@ -44,7 +60,7 @@ void ServerCore::open_demo_room() {
     state_.ready = true;
     return;
   }
-  fw::server::open_demo_room(rooms_, demo_avatars_, [this] { state_.ready = true; });
+  fw::server::open_demo_room(rooms_, residents_, [this] { state_.ready = true; });
 }
 
 void ServerCore::start_draining() {

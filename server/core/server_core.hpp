@@ -65,8 +65,12 @@ class ServerCore {
   /// Signs avatar keys: DATA/server.key, until a cluster node adopts the
   /// cluster's (before any request is served).
   std::string& server_key() { return server_key_; }
-  /// Procedural faces for clients that join without a package (and the lobby).
+  /// Procedural faces for clients that join without a package.
   const std::vector<StoredAvatar>& demo_avatars() const { return demo_avatars_; }
+  /// The lobby's residents' faces, prepared from portraits (resident_faces.hpp).
+  const std::vector<StoredAvatar>& residents() const { return residents_; }
+  /// Both: the server's own faces, nobody's to delete and never swept.
+  const std::vector<StoredAvatar>& own_faces() const { return own_faces_; }
   ServerState& state() { return state_; }
   boost::asio::thread_pool& workers() { return workers_; }
   SpeechWorker& speech() { return speech_; }
@@ -79,7 +83,7 @@ class ServerCore {
 
  private:
   ServerCore(const ServerConfig& config, std::unique_ptr<Metrics> metrics, std::unique_ptr<AvatarStore> store,
-             std::string server_key, std::vector<StoredAvatar> demo_avatars);
+             std::string server_key, std::vector<StoredAvatar> demo_avatars, std::vector<StoredAvatar> residents);
 
   const ServerConfig config_;
   /// Made before the store, which counts into it, and so apart.
@@ -91,6 +95,8 @@ class ServerCore {
   std::unique_ptr<AvatarStore> store_;
   std::string server_key_;
   const std::vector<StoredAvatar> demo_avatars_;
+  const std::vector<StoredAvatar> residents_;
+  const std::vector<StoredAvatar> own_faces_;
   ServerState state_;
   boost::asio::thread_pool workers_;  ///< room ticks, encoding
   SpeechWorker speech_;               ///< chat lines' lip-sync tracks (speech_worker.hpp)

@@ -149,7 +149,7 @@ std::string node_name(const ServerConfig& config, unsigned short http_port) {
 
 ApiServices api_services(ServerCore& core) {
   return {core.config(), core.metrics(),      core.physics_lod(), core.abuse(), core.store(),
-          core.rooms(),  core.demo_avatars(), core.server_key(),  core.state()};
+          core.rooms(),  core.own_faces(),    core.server_key(),  core.state()};
 }
 
 UploadServices upload_services(ServerCore& core) {
@@ -159,7 +159,7 @@ UploadServices upload_services(ServerCore& core) {
 
 ClusterServices cluster_services(ServerCore& core) {
   return {core.config(),       core.abuse(),   core.addresses(), core.tokens(), core.store(),    core.server_key(),
-          core.demo_avatars(), core.workers(), core.room_bus(),  core.rooms(),  core.sessions(), core.state()};
+          core.residents(),    core.workers(), core.room_bus(),  core.rooms(),  core.sessions(), core.state()};
 }
 
 /// Runs `ioc` on `threads` threads, this one included, until it stops.
@@ -184,7 +184,7 @@ int run_network_server(const ServerConfig& config) {
   PhotoPreparation photos(upload_services(*core), photo_worker);
   AvatarRepreparation repreparation(core->store(), photo_worker);
   std::set<std::string> own_faces;
-  for (const StoredAvatar& face : core->demo_avatars()) own_faces.insert(face.asset);
+  for (const StoredAvatar& face : core->own_faces()) own_faces.insert(face.asset);
   AvatarSweeper sweeper(core->store(), std::move(own_faces), config.avatar_retention_days);
   const HttpServices http{core->config(), core->metrics(), core->abuse(), core->addresses(), photos, api,
                           core->session_services()};

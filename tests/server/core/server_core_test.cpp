@@ -79,19 +79,31 @@ TEST(ServerCore, SaysWhyItCannotOpenTheStore) {
   std::filesystem::remove(file);
 }
 
-TEST(ServerCore, TheLobbyNeedsThreeDemoFaces) {
+TEST(ServerCore, AClientWithoutAPackageNeedsADemoFace) {
   ServerConfig config = InMemoryServer::test_config();
   config.demo_room = true;
-  config.demo_faces = 2;
+  config.demo_faces = 0;
   config.data = (std::filesystem::temp_directory_path() / ("fw-lobby-" + std::to_string(::getpid()))).string();
   std::string error;
   EXPECT_EQ(ServerCore::open(config, error), nullptr);
-  EXPECT_NE(error.find("at least 3"), std::string::npos) << error;
+  EXPECT_NE(error.find("at least 1"), std::string::npos) << error;
   std::filesystem::remove_all(config.data);
 }
 
+TEST(ServerCore, StoresTheResidentsFacesApartFromTheDemoFaces) {
+  InMemoryServer server(InMemoryServer::test_config(1));
+  const auto& residents = server.core().residents();
+  ASSERT_EQ(residents.size(), 3u);
+  for (const StoredAvatar& face : residents) {
+    EXPECT_TRUE(server.core().store().get(face.asset)) << "stored like an upload";
+    EXPECT_NE(face.asset, server.core().demo_avatars()[0].asset)
+        << "a client without a package is never given a resident's face";
+  }
+  EXPECT_EQ(server.core().own_faces().size(), 4u) << "the server's own: nobody's to delete";
+}
+
 TEST(ServerCore, IsReadyOnceTheLobbyIsSeated) {
-  ServerConfig config = InMemoryServer::test_config(3);
+  ServerConfig config = InMemoryServer::test_config(1);
   config.demo_room = true;
   InMemoryServer server(config);
   EXPECT_TRUE(eventually([&] { return server.core().state().ready.load(); }));
@@ -103,6 +115,8 @@ TEST(ServerCore, IsReadyOnceTheLobbyIsSeated) {
   auto visitor = server.join("lobby", "Visitor");
   ASSERT_TRUE(visitor->welcome);
   EXPECT_EQ(visitor->welcome->avatars[0].name, "Ada") << "she leads";
+  for (std::size_t i = 0; i < 3; ++i)
+    EXPECT_EQ(visitor->welcome->avatars[i].asset, server.core().residents()[i].asset) << "each in her or his own face";
 }
 
 TEST(ServerCore, ADrainTellsEveryoneAndRefusesNewcomers) {
