@@ -23,6 +23,12 @@ constexpr float kShadowOnset = 0.03f;
 constexpr int kSoftTexelsPer320 = 2;
 // Over how far (model units) beside the jaw's lower part it fades out.
 constexpr float kSideFade = 0.15f;
+// Each texel takes the shadow averaged over this many points a side: where
+// the jaw runs steeply, below the ear, the shadow's onset is a fraction of a
+// texel wide across the jaw line. Taken at each texel's centre, each column
+// went dark at once a few rows below its neighbour, a staircase that a turned
+// head stretched along its jaw.
+constexpr int kSamplesPerSide = 4;
 
 float smoothstep(float x) {
   const float t = std::clamp(x, 0.0f, 1.0f);
@@ -46,6 +52,34 @@ JawLine jaw_at(const ModelLandmarks& l, float x) {
   return {end.y, std::abs(x - end.x)};
 }
 
+// How much the shadow takes off the brightness at p (model units): 0 above
+// the jaw line and beside the jaw's lower part, 1 - kShadowAtJaw under it.
+float darkening(const ModelLandmarks& l, glm::vec2 p) {
+  const JawLine jaw = jaw_at(l, p.x);
+  const float below = jaw.y - p.y;
+  if (below < -kShadowOnset) return 0.0f;
+  // Beside the jaw the shadow fades out rather than stopping at a
+  // vertical edge, which a turned head shows on its cheek.
+  const float along = 1.0f - smoothstep(jaw.beside / kSideFade);
+  // Into the shadow over a short way above the jaw line, not at a step.
+  const float onset = smoothstep((below + kShadowOnset) / kShadowOnset);
+  const float cast = kShadowAtJaw + (kShadowBelow - kShadowAtJaw) * smoothstep(below / kShadowDepth);
+  return (1.0f - cast) * onset * along;
+}
+
+// The darkening averaged over the texel's area.
+float texel_darkening(const ModelLandmarks& l, int col, int row, const model::TextureFrame& frame, int size) {
+  float sum = 0.0f;
+  for (int i = 0; i < kSamplesPerSide; ++i)
+    for (int j = 0; j < kSamplesPerSide; ++j) {
+      const cv::Point2f offset((static_cast<float>(i) + 0.5f) / kSamplesPerSide - 0.5f,
+                               (static_cast<float>(j) + 0.5f) / kSamplesPerSide - 0.5f);
+      sum += darkening(l, texture_px_to_model(cv::Point2f(static_cast<float>(col), static_cast<float>(row)) + offset,
+                                              frame, size));
+    }
+  return sum / (kSamplesPerSide * kSamplesPerSide);
+}
+
 }  // namespace
 
 void shade_neck(cv::Mat& bgra, const cv::Mat& matte, const ModelLandmarks& landmarks,
@@ -54,27 +88,15 @@ void shade_neck(cv::Mat& bgra, const cv::Mat& matte, const ModelLandmarks& landm
   // The shadow fades out over a few texels inside the person's own colours
   // rather than stopping at the matte's ragged edge (soft_inside.hpp).
   const cv::Mat own = soft_inside(matte >= kOwnColour, std::max(1, kSoftTexelsPer320 * size / 320));
-  for (int col = 0; col < size; ++col) {
-    const glm::vec2 top = texture_px_to_model(cv::Point2f(static_cast<float>(col), 0.0f), frame, size);
-    const JawLine jaw = jaw_at(landmarks, top.x);
-    // Beside the jaw the shadow fades out rather than stopping at a
-    // vertical edge, which a turned head shows on its cheek.
-    const float along = 1.0f - smoothstep(jaw.beside / kSideFade);
-    if (along <= 0.0f) continue;
-    for (int row = 0; row < size; ++row) {
+  for (int row = 0; row < size; ++row)
+    for (int col = 0; col < size; ++col) {
       const float own_colour = own.at<float>(row, col);
       if (own_colour >= 1.0f) continue;
-      const float y = texture_px_to_model(cv::Point2f(0.0f, static_cast<float>(row)), frame, size).y;
-      const float below = jaw.y - y;
-      if (below < -kShadowOnset) continue;
-      // Into the shadow over a short way above the jaw line, not at a step.
-      const float onset = smoothstep((below + kShadowOnset) / kShadowOnset);
-      const float cast = kShadowAtJaw + (kShadowBelow - kShadowAtJaw) * smoothstep(below / kShadowDepth);
-      const float shade = 1.0f + (cast - 1.0f) * onset * along * (1.0f - own_colour);
+      const float shade = 1.0f - texel_darkening(landmarks, col, row, frame, size) * (1.0f - own_colour);
+      if (shade >= 1.0f) continue;
       cv::Vec4b& texel = bgra.at<cv::Vec4b>(row, col);
       for (int c = 0; c < 3; ++c) texel[c] = cv::saturate_cast<std::uint8_t>(texel[c] * shade);
     }
-  }
 }
 
 }  // namespace fw::photo
