@@ -40,14 +40,22 @@ model::RgbaImage decoded(const model::PackageImage& image) {
   return pixels;
 }
 
-/// Mean absolute difference of two images' colour channels, 0..255.
-double mean_difference(const model::RgbaImage& a, const model::RgbaImage& b) {
+/// The largest mean absolute difference of the colour channels over any
+/// 8x8 block of two images, 0..255: a change of a small region (a shadow
+/// under the jaw) shows, which a mean over the whole texture would drown.
+double worst_block_difference(const model::RgbaImage& a, const model::RgbaImage& b) {
+  constexpr int kBlock = 8;
   if (a.width != b.width || a.height != b.height) return 255;
-  double sum = 0;
-  for (int y = 0; y < a.height; ++y)
-    for (int x = 0; x < a.width; ++x)
-      for (int c = 0; c < 3; ++c) sum += std::abs(int(a.at(x, y)[c]) - int(b.at(x, y)[c]));
-  return sum / (3.0 * a.width * a.height);
+  double worst = 0;
+  for (int by = 0; by + kBlock <= a.height; by += kBlock)
+    for (int bx = 0; bx + kBlock <= a.width; bx += kBlock) {
+      double sum = 0;
+      for (int y = by; y < by + kBlock; ++y)
+        for (int x = bx; x < bx + kBlock; ++x)
+          for (int c = 0; c < 3; ++c) sum += std::abs(int(a.at(x, y)[c]) - int(b.at(x, y)[c]));
+      worst = std::max(worst, sum / (3.0 * kBlock * kBlock));
+    }
+  return worst;
 }
 
 TEST(ResidentFaces, AreTheLobbysThreeEachWithAFaceOfTheirOwn) {
@@ -84,8 +92,9 @@ TEST(ResidentFaces, AreTheirPortraitsAsPreparedToday) {
     for (std::size_t i = 0; i < shipped.fitted_vertices.size(); ++i)
       worst = std::max(worst, glm::distance(shipped.fitted_vertices[i], today->package.fitted_vertices[i]));
     EXPECT_LT(worst, 1e-3f) << "the fit moved" << kRemake;
-    // The same face texture, up to a JPEG-like rounding of a level on average.
-    EXPECT_LT(mean_difference(decoded(shipped.face_texture), decoded(today->package.face_texture)), 1.0)
+    // The same face texture, but for rounding: 2 levels in any 8x8 block.
+    // Averaging the neck's shadow over each texel moved blocks by 4 to 6.
+    EXPECT_LT(worst_block_difference(decoded(shipped.face_texture), decoded(today->package.face_texture)), 2.0)
         << "the face texture changed" << kRemake;
   }
 }
