@@ -9,13 +9,12 @@
 import { mat4 } from '../shared/mat4.js';
 import { TURN_SHARE, aimAt, reaim, reaimAtViewer } from './gaze_reaim.js';
 import { decodeImage } from './face_renderer.js';
+import { RetargetEasing } from './retarget_easing.js';
 import { NEUTRAL_FACE as NEUTRAL } from './mute_list.js';
 import { MM_PER_UNIT, VIEW_DISTANCE_MM, eyeMidMm, screenOrder, seatToRoom, serverSeat, viewSeats } from './view_geometry.js';
 import { tileLayout } from './tile_layout.js';
 import { FRAME_ABOVE_EYES, FRAME_ACROSS, FRAME_BELOW_EYES } from './face_frame.js';
 
-/** How long a face takes to turn to a new target in the view (s): the server's head moves as smoothly. */
-const RETARGET_S = 0.35;
 const BACKGROUND = [0.16, 0.17, 0.2];
 /** A face tile's background as CSS: what the neck fades into over the canvas (room_page.js). */
 export const TILE_BACKGROUND_CSS = `rgb(${BACKGROUND.map((c) => Math.round(c * 255)).join(' ')})`;
@@ -33,7 +32,7 @@ export class RoomView {
     this.client = client;
     this.faces = new Map();   // avatar id -> { bytes, model, gpu } once its package is built
     this.building = new Map();  // avatar id -> bytes being built
-    this.retarget = new Map();  // avatar id -> { key, since }
+    this.retarget = new RetargetEasing();
     this.generic = engine.genericAvatar();
     const eyeCentres = this.generic.face.eyes.map((e) => e.centre);
     this.eyeMid = eyeMidMm(eyeCentres);
@@ -114,17 +113,6 @@ export class RoomView {
     return { server: seatToRoom(server, this.eyeMid), view: inView, viewer: target === this.client.you, key: `${target}` };
   }
 
-  /** The weight of the re-aim, eased in over RETARGET_S after a change of target. */
-  easing(id, key, nowMs) {
-    const last = this.retarget.get(id);
-    if (!last || last.key !== key) {
-      this.retarget.set(id, { key, since: nowMs });
-      return 0;
-    }
-    const t = Math.min(1, (nowMs - last.since) / 1000 / RETARGET_S);
-    return t * t * (3 - 2 * t);
-  }
-
   /** Draws one frame on a canvas of `width` x `height` CSS pixels at `pixelRatio`. */
   draw(width, height, pixelRatio, nowMs) {
     const gl = this.gl;
@@ -155,18 +143,21 @@ export class RoomView {
         // Muted: at rest, aimed at nobody (not even re-aimed at the viewer).
         const aim = muted ? null : this.targets(info.id, entry, serverSeats, viewPlaces);
         let params = this.mutes ? this.mutes.faceOf(info.id, info.name, client.you, decoded) : decoded;
-        if (aim) {
-          const weight = this.easing(info.id, aim.key, nowMs);
-          const view = aimAt(seat, this.eyeMid, aim.view);
-          const serverAim = aimAt(serverSeats.get(info.id), this.eyeMid, aim.server);
-          if (aim.viewer) {
-            params = reaimAtViewer(decoded, serverAim, view, this.vergence, weight);
-          } else {
-            view.yaw *= TURN_SHARE;
-            params = reaim(decoded, serverAim, view, weight);
-          }
+        if (muted) {
+          this.retarget.forget(info.id);
         } else {
-          this.retarget.delete(info.id);
+          let full = decoded;  // attending nobody here: the stream's own aim
+          if (aim) {
+            const view = aimAt(seat, this.eyeMid, aim.view);
+            const serverAim = aimAt(serverSeats.get(info.id), this.eyeMid, aim.server);
+            if (aim.viewer) {
+              full = reaimAtViewer(decoded, serverAim, view, this.vergence);
+            } else {
+              view.yaw *= TURN_SHARE;
+              full = reaim(decoded, serverAim, view);
+            }
+          }
+          params = this.retarget.params(info.id, aim ? aim.key : 'nobody', decoded, full, nowMs);
         }
         this.drawnParams.set(info.id, params);
         this.drawTile(info.id, rect, layout.nameBand, height, pixelRatio, face, params, placeOf(seat), this.tileCamera(seat, rect, layout.nameBand));
@@ -186,7 +177,11 @@ export class RoomView {
       this.selfTile = rect;
       this.selfDrawnMs ??= nowMs;
     }
-    for (const id of this.drawnParams.keys()) if (!client.avatars.has(id)) this.drawnParams.delete(id);
+    for (const id of this.drawnParams.keys()) {
+      if (client.avatars.has(id)) continue;
+      this.drawnParams.delete(id);
+      this.retarget.forget(id);
+    }
     this.frames += 1;
   }
 
