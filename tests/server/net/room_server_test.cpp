@@ -41,7 +41,7 @@ TEST_P(RoomServerTest, TheLobbyIsAliveWithPreviewsFirst) {
   ASSERT_TRUE(client->welcome) << (client->closing ? client->closing->reason : "no answer");
   const auto& welcome = *client->welcome;
   EXPECT_EQ(welcome.room, "lobby");
-  ASSERT_EQ(welcome.avatars.size(), 4u);  // Ada, Bruno, Chidi and the newcomer
+  ASSERT_EQ(welcome.avatars.size(), 4u);  // Ada, Bruno, Grace and the newcomer
   EXPECT_FALSE(welcome.avatars[0].person);
   EXPECT_EQ(welcome.avatars.back().id, welcome.you);
   EXPECT_TRUE(welcome.avatars.back().person);
