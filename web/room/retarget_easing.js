@@ -22,9 +22,9 @@ export function aimOffset(params, decoded) {
   };
 }
 
-const ZERO = aimOffset(
-  { head_yaw_rad: 0, head_pitch_rad: 0, eye_left: { yaw_rad: 0, pitch_rad: 0 }, eye_right: { yaw_rad: 0, pitch_rad: 0 } },
-  { head_yaw_rad: 0, head_pitch_rad: 0, eye_left: { yaw_rad: 0, pitch_rad: 0 }, eye_right: { yaw_rad: 0, pitch_rad: 0 } });
+const ZERO = {
+  head_yaw_rad: 0, head_pitch_rad: 0, eye_left: { yaw_rad: 0, pitch_rad: 0 }, eye_right: { yaw_rad: 0, pitch_rad: 0 },
+};
 
 function mixOffsets(a, b, t) {
   const m = (x, y) => x + (y - x) * t;
