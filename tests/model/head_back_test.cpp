@@ -108,6 +108,16 @@ TEST(HeadBack, IsPaintedSmoothFromTheColoursInsideTheOutline) {
   // A texel's step along the crown's edge with the skin is up to 0.07 (the
   // disc is 14 texels across here); a strand left in would step by 0.5.
   EXPECT_LT(largest_step, 0.1f) << "a strand runs back across the head";
+  // Behind the band of the ears, the sides are the crown's colour on every
+  // ray above the ear lobes, though the silhouette there is skin: a head
+  // turned 60 degrees shows its side back to about t = 0.33, and a side
+  // in the cheeks' colour read as bald. The silhouette keeps its own.
+  const float side_rays[] = {-0.3f, 0.0f, 0.5f, std::numbers::pi_v<float> - 0.5f, std::numbers::pi_v<float> + 0.3f};
+  for (const float phi : side_rays) {
+    EXPECT_LT(glm::length(texel(texture, head_back_uv(phi, 0.7f)) - pole), 0.03f) << phi;
+    if (std::abs(std::sin(phi)) < 0.35f)
+      EXPECT_LT(glm::length(texel(texture, head_back_uv(phi, 0.99f)) - skin), 0.05f) << phi;
+  }
   // The neck's rays keep the skin's colour far back along the neck.
   const glm::vec3 neck = texel(texture, head_back_uv(-std::numbers::pi_v<float> / 2.0f, 0.75f));
   EXPECT_LT(glm::length(neck - skin), 0.03f);

@@ -123,9 +123,16 @@ void paint_head_back(RgbaImage& texture, const TextureFrame& frame, glm::vec2 sh
       // Going back, the sides and the crown become the top's colour; the
       // neck's rays keep the neck's but for the back of the skull above
       // the nape, so that every direction meets in one colour at the pole.
+      // The silhouette's own colour reaches back only over the band that
+      // holds the ears (t above about 0.75; in profile the ear sits just
+      // behind the head's widest section): behind them, on every ray above
+      // the ear lobes, a head is its hair, or its crown's skin if bald.
+      // Reaching back half the way, the skin of the cheeks at the sides of
+      // the photo covered the sides of the head, and a head turned 60
+      // degrees read as bald behind its hairline.
       const float crown = std::max(smooth_ramp(-0.65f, -0.25f, std::sin(phi)), 1.0f - smooth_ramp(0.3f, 0.6f, t));
       const glm::vec3 back = glm::mix(edge, top, crown);
-      const glm::vec3 colour = glm::mix(back, edge, smooth_ramp(0.4f, 1.0f, t));
+      const glm::vec3 colour = glm::mix(back, edge, smooth_ramp(0.7f, 0.95f, t));
       std::uint8_t* px = texture.at(x, y);
       px[0] = srgb_from_linear(colour.r);
       px[1] = srgb_from_linear(colour.g);
