@@ -107,6 +107,30 @@ TEST_F(PhotoColourTest, TurningTheHeadShadesTheSideTurnedFromTheLight) {
   EXPECT_GT(darker, skin_pixels / 10) << "a turned head is shaded where it turned away from the light";
 }
 
+// A photo's texels at a grazing angle (the sides of a head, seen from the
+// front) hold the photo's broad light, not the little that the key light
+// alone would leave there: relit by the full ratio of the key's light on
+// them now to then, the side of a head turned toward the light came out
+// up to 1.6 times as bright as the photo, a pale mask's rim.
+TEST_F(PhotoColourTest, TurningTheHeadTowardTheLightBrightensThePhotoLittle) {
+  const glm::u8vec3 skin(181, 122, 94);
+  const AvatarAppearance face = flat_face(skin);
+  codec::FaceParams turned;
+  turned.head_yaw_rad = 1.0f;  // toward the key light, its left side (at rest in shadow) now lit
+  const model::RgbaImage image = render(face, turned);
+  int skin_pixels = 0, brighter = 0;
+  for (int y = 0; y < kImageSize; ++y)
+    for (int x = 0; x < kImageSize; ++x) {
+      const std::uint8_t* p = image.at(x, y);
+      if (p[0] < 60) continue;  // background, eyes, mouth
+      ++skin_pixels;
+      // 1.1 times the texture's light is red 189; 1.6 times, 224.
+      brighter += to_linear(p[0]) > 1.12f * to_linear(skin.r);
+    }
+  ASSERT_GT(skin_pixels, 2000);
+  EXPECT_LT(brighter, skin_pixels / 100) << "of " << skin_pixels << " skin pixels";
+}
+
 TEST_F(PhotoColourTest, TexturesAreFilteredAndWrittenInLinearLight) {
   // Single-texel black and white stripes, shown several times smaller than
   // the texture: each pixel averages many texels. In light, half black and

@@ -48,10 +48,17 @@ float skin_fresnel(vec3 n, vec3 view) {
 // changes how much of the key light it catches: the ratio of the two. Per
 // vertex: the ratio changes as slowly as the shape does (the photo holds
 // the detail), and a fragment then pays one multiplication for it.
+//
+// The ratio darkens freely but brightens by a tenth at most: "then" takes
+// the photo to have been lit by our key light alone, and a photo's light
+// is broader (a room's, a flash's), so its texels at a grazing angle (the
+// sides of a head seen from the front) are nothing like as dark as that
+// says. Up to 1.6 times brighter, the side of a head turned toward the
+// light came out pale, a mask's rim.
 float relighting(vec3 n, vec3 rest) {
   float now = 0.35 + 0.65 * max(dot(n, u_light_direction), 0.0);
   float then = 0.35 + 0.65 * max(dot(rest, u_light_direction), 0.0);
-  return clamp(now / then, 0.45, 1.6);
+  return clamp(now / then, 0.45, 1.1);
 }
 #endif
 
