@@ -77,5 +77,32 @@ TEST(NeckShadow, ItsEdgeRunsAlongASteepJawWithoutSteps) {
     EXPECT_NEAR(edges[i], mean_edge + per_row * (rows[i] - mean_row), 0.1f) << "row " << rows[i];
 }
 
+// Down a column: the first row where the shading falls below the middle
+// of its range (from the lit face above into the shadow), or -1.
+int edge_down_column(const cv::Mat& bgra, int col) {
+  for (int row = 0; row < bgra.rows; ++row)
+    if (bgra.at<cv::Vec4b>(row, col)[0] / float(kNeckGrey) < 0.78f) return row;
+  return -1;
+}
+
+// Beside the jaw's lower part the edge climbs toward the ear, as the jaw's
+// ramus does. Kept at the jaw end's height, it ran straight back across the
+// side of a turned head, a ledge under the cheek.
+TEST(NeckShadow, BesideTheJawItsEdgeRisesTowardTheEar) {
+  cv::Mat bgra(kTexels, kTexels, CV_8UC4, cv::Scalar(kNeckGrey, kNeckGrey, kNeckGrey, 255));
+  const cv::Mat matte(kTexels, kTexels, CV_8U, cv::Scalar(0));
+  const ModelLandmarks jaw = steep_jaw();
+  shade_neck(bgra, matte, jaw, kTextureFrame);
+  const float end_x = jaw[3].x;  // the jaw's lower part ends at x = -0.5
+  const auto column = [&](float beside) {
+    return static_cast<int>(model_to_texture_px({end_x - beside, 0.0f}, kTextureFrame, kTexels).x);
+  };
+  const int near = edge_down_column(bgra, column(0.05f)), far = edge_down_column(bgra, column(0.1f));
+  ASSERT_GE(near, 0);
+  ASSERT_GE(far, 0);
+  // 0.05 units further out, 0.15 units higher: about 9 texels.
+  EXPECT_GT(near - far, 5) << "the edge stays level beside the jaw";
+}
+
 }  // namespace
 }  // namespace fw::photo

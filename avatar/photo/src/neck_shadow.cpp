@@ -21,8 +21,12 @@ constexpr int kOwnColour = 250;
 // many texels (per 320) it fades out into the person's own colours.
 constexpr float kShadowOnset = 0.03f;
 constexpr int kSoftTexelsPer320 = 2;
-// Over how far (model units) beside the jaw's lower part it fades out.
-constexpr float kSideFade = 0.15f;
+// Beside the jaw's lower part the shadow's edge rises as steeply as the
+// jaw's ramus does toward the ear (seen from the front, the ramus stands
+// nearly edge-on at the face's side), fading out over kSideFade (model
+// units). Kept level there, the edge ran straight back across the side of
+// a turned head as a ledge under the cheek.
+constexpr float kRamusRise = 3.0f, kSideFade = 0.3f;
 // Each texel takes the shadow averaged over this many points a side: where
 // the jaw runs steeply, below the ear, the shadow's onset is a fraction of a
 // texel wide across the jaw line. Taken at each texel's centre, each column
@@ -36,7 +40,7 @@ float smoothstep(float x) {
 }
 
 // The jaw line at x: its height, and how far x lies beside the jaw's lower
-// part (0 under it; beside it the line keeps its end's height).
+// part (0 under it; beside it the line rises from its end, kRamusRise).
 struct JawLine {
   float y = 0, beside = 0;
 };
@@ -49,7 +53,8 @@ JawLine jaw_at(const ModelLandmarks& l, float x) {
   }
   const glm::vec2 first = l[kJawFirst], last = l[kJawLast];
   const glm::vec2 end = std::abs(x - first.x) < std::abs(x - last.x) ? first : last;
-  return {end.y, std::abs(x - end.x)};
+  const float beside = std::abs(x - end.x);
+  return {end.y + kRamusRise * beside, beside};
 }
 
 // How much the shadow takes off the brightness at p (model units): 0 above
