@@ -245,10 +245,34 @@ TEST(BehaviorRoomCommands, ExpressAndFacsShowOnTheFace) {
   run(room, 1.5);
   EXPECT_GT(room.face(2).au_intensity(12), 0.5f);
   EXPECT_EQ(label(room.snapshot(2).emotion_template), "joy");
-  ASSERT_EQ(room.facs(2, "ClearAllFrame BeginKeyFrame 26 1.0 Animate 3 \"Texture\" end"), "");
+  ASSERT_EQ(room.facs(2, "ClearAllFrame BeginKeyFrame 26 2.0 Animate 3 \"Texture\" end"), "");
   run(room, 0.5);
   EXPECT_NEAR(room.face(2).au_intensity(26), 1.0f, 1e-5f);
   EXPECT_EQ(room.face(2).au_intensity(12), 0);  // the sentence wins over the autonomous expression
+}
+
+// KeepAllFrame: the sentence acts on the face as it is (a smile stays while
+// the jaw drops); ClearAllFrame: on the neutral face.
+TEST(BehaviorRoomCommands, KeepAllFrameKeepsTheFaceClearAllFrameStartsFromNeutral) {
+  for (const bool keep : {true, false}) {
+    BehaviorRoom room = make_room(4, 0);
+    room.add(1, "a");
+    room.add(2, "b");
+    ASSERT_EQ(room.express(2, "joy", 0.9f, 5), "");
+    run(room, 1.5);
+    const float smile = room.face(2).au_intensity(12);
+    ASSERT_GT(smile, 0.5f);
+    const std::string sentence = std::string(keep ? "KeepAllFrame" : "ClearAllFrame") +
+                                 " BeginKeyFrame 26 1.6 Animate 3 \"Texture\" end";
+    ASSERT_EQ(room.facs(2, sentence), "");
+    run(room, 0.1);
+    if (keep) EXPECT_NEAR(room.face(2).au_intensity(12), smile, 1e-5f) << "the smile it found, not neutral";
+    else EXPECT_LT(room.face(2).au_intensity(12), 0.4f * smile) << "on its way from neutral";
+    run(room, 0.4);
+    EXPECT_NEAR(room.face(2).au_intensity(26), 0.8f, 1e-5f);
+    if (keep) EXPECT_NEAR(room.face(2).au_intensity(12), smile, 1e-5f);
+    else EXPECT_EQ(room.face(2).au_intensity(12), 0);
+  }
 }
 
 TEST(BehaviorRoomCommands, CunningTeasingAndBlushAreExpressionsToo) {

@@ -80,6 +80,9 @@ struct BehaviorRoom::Impl {
     VascularState vascular;
     std::optional<AuTrack> facs;
     double facs_t_s = 0;
+    /// The expression's AU targets after the last tick, speech aside: the
+    /// face a KeepAllFrame sentence keeps (a line's jaw is not kept).
+    AuTargets expression_au{};
     ConversationGaze talk;
     FaceScan scan;
     // The line being said: since when (room time), how long, and its mouth.
@@ -295,6 +298,7 @@ struct BehaviorRoom::Impl {
       p.au = f.facs->at(f.facs_t_s);
       if (f.facs_t_s >= f.facs->length_s()) f.facs.reset();
     }
+    f.expression_au = p.au;
     speak_tick(f, p);
     f.eyes.write(p);
     const float pitch_lids = lid_follows_pitch(f.eyes.eye().pitch_rad);
@@ -444,7 +448,7 @@ std::string BehaviorRoom::facs(FaceId face, std::string_view sentence) {
   if (!f) return std::string("no avatar ") + std::to_string(face) + " in this room";
   AuTrack track;
   std::string error;
-  if (!facs_track(sentence, track, error)) return error;
+  if (!facs_track(sentence, f->expression_au, track, error)) return error;
   f->facs = std::move(track);
   f->facs_t_s = 0;
   f->mind.hold_expression(f->facs->length_s());

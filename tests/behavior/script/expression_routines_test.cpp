@@ -45,7 +45,7 @@ TEST(ExpressionRoutines, ThePapersAngerSentence) {
   for (std::size_t i = 0; i < paper.size(); ++i) {
     EXPECT_EQ(aus[i].au, paper[i].first);
     EXPECT_DOUBLE_EQ(aus[i].intensity, paper[i].second) << "AU " << aus[i].au;
-    EXPECT_DOUBLE_EQ(aus[i].face_intensity, std::min(paper[i].second, 1.0)) << "AU " << aus[i].au;
+    EXPECT_DOUBLE_EQ(aus[i].face_intensity, paper[i].second / 2) << "AU " << aus[i].au << ": 2 is the full strength";
     EXPECT_EQ(aus[i].carried, aus[i].au != 42);
   }
   ASSERT_EQ(anger.plays.size(), 2u);
@@ -76,12 +76,12 @@ TEST(ExpressionRoutines, ActionUnitsOutsideFacsAreErrors) {
 }
 
 TEST(ExpressionRoutines, IntensitiesAreBounded) {
-  const auto errors = errors_of(parse_expression("ClearAllFrame BeginKeyFrame 4 5.5 12 -0.5 end"));
+  const auto errors = errors_of(parse_expression("ClearAllFrame BeginKeyFrame 4 2.5 12 -0.5 end"));
   ASSERT_EQ(errors.size(), 2u);
-  EXPECT_NE(errors[0].message.find("the intensity 5.5 of AU 4 is out of range: write 0 to 5"), std::string::npos)
+  EXPECT_NE(errors[0].message.find("the intensity 2.5 of AU 4 is out of range: write 0 to 2"), std::string::npos)
       << errors[0].message;
   EXPECT_EQ(errors[0].position, (SourcePosition{1, 31}));
-  EXPECT_TRUE(parse_expression("ClearAllFrame BeginKeyFrame 4 5.0 12 0 end").ok());
+  EXPECT_TRUE(parse_expression("ClearAllFrame BeginKeyFrame 4 2.0 12 0 end").ok());
 }
 
 TEST(ExpressionRoutines, AnActionUnitOncePerKeyframe) {

@@ -60,8 +60,8 @@ SemanticValue au_intensity(RoutineCall& call) {
     call.diagnostics.error(strength.position, "the intensity " + number_text(intensity) + " of AU " +
                                                   std::to_string(au) + " is out of range: write 0 to " +
                                                   number_text(kMaxAuIntensity) +
-                                                  " (1 is the action unit at its full defined strength; faces show "
-                                                  "at most 1)");
+                                                  " (the paper's scale: 2 is the action unit at its full strength, "
+                                                  "1 half of it)");
     ok = false;
   }
   Keyframe& keyframe = animation->keyframes.back();
@@ -85,7 +85,7 @@ SemanticValue au_intensity(RoutineCall& call) {
   AuIntensity entry;
   entry.au = static_cast<int>(au);
   entry.intensity = intensity;
-  entry.face_intensity = intensity < 1.0 ? intensity : 1.0;
+  entry.face_intensity = intensity / kMaxAuIntensity;
   entry.carried = carried;
   entry.position = number.position;
   keyframe.aus.push_back(entry);

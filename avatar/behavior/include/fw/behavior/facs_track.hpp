@@ -9,6 +9,7 @@
 
 #include "fw/codec/face_params.hpp"
 #include "fw/model/expressions.hpp"
+#include "fw/script/script_meaning.hpp"
 
 namespace fw::behavior {
 
@@ -28,8 +29,19 @@ struct AuTrack {
   AuTargets at(double t_s) const;
 };
 
-/// The track of the first expression sentence in `sentence`; false and
-/// `error` (the script's first error, or "no expression sentence") if none.
+/// The track of expression sentence `animation` on a face whose action-unit
+/// targets are `current` when it starts. ClearAllFrame starts from the
+/// neutral face, each keyframe a full pose (unlisted AUs at 0), and releases
+/// to neutral; KeepAllFrame starts from `current`, each keyframe sets the AUs
+/// it lists and keeps the others as they were, and releases back to
+/// `current`. A written intensity x weighs x / 2 (script::AuIntensity).
+AuTrack animation_track(const script::KeyframeAnimation& animation, const AuTargets& current);
+
+/// The track of the first expression sentence in `sentence`, on a face at
+/// `current` (as animation_track); false and `error` (the script's first
+/// error with its line and column, or "no expression sentence") if none.
+bool facs_track(std::string_view sentence, const AuTargets& current, AuTrack& track, std::string& error);
+/// The same on a neutral face.
 bool facs_track(std::string_view sentence, AuTrack& track, std::string& error);
 
 /// A track that eases into one of avatar/model's expressions (cunning,

@@ -11,8 +11,8 @@ namespace fw::script {
 /// - begin_keyframe(): start a keyframe (a full pose: unlisted AUs are 0);
 /// - au_intensity(au: integer, intensity: number): one action unit of the
 ///   keyframe; AU numbers must be FACS codes (facs.hpp), intensities lie in
-///   [0, kMaxAuIntensity]: 1 is the action unit at its full defined
-///   strength, more is allowed as in the paper, faces show at most 1; an AU
+///   [0, kMaxAuIntensity], the paper's scale: 2 is the action unit at its
+///   full strength, the face's weight is half the written intensity; an AU
 ///   faces do not carry (e.g. 42) is kept with a warning;
 /// - animate(steps: integer, shading: optional text): play through the
 ///   keyframes so far in `steps` steps (shading defaults to "Texture"); in an

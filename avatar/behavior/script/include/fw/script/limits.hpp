@@ -23,7 +23,10 @@ inline constexpr std::size_t kMaxDisplacements = 1000;     ///< control-point li
 inline constexpr std::size_t kMaxStages = 32;              ///< stages in one vascular emotion
 inline constexpr std::size_t kMaxMpcas = 16;               ///< region intensities in one vascular expression
 inline constexpr long long kMaxSteps = 10000;              ///< steps of one Animate or Hold
-inline constexpr double kMaxAuIntensity = 5.0;             ///< written AU intensity (the paper goes to 2.0)
+/// Written AU intensity: the paper's scale, on which 2.0 is an action unit at
+/// its full strength (its anger writes AU 4 at 2.0), so half of it is the
+/// face's weight (AuIntensity::face_intensity).
+inline constexpr double kMaxAuIntensity = 2.0;
 inline constexpr long long kMaxControlPoint = 9999;        ///< control-point index in an AU definition
 inline constexpr double kMaxDisplacement = 1000.0;         ///< |dx|, |dy|, |dz| in an AU definition
 inline constexpr std::size_t kMaxShadingBytes = 64;        ///< the shading string of Animate

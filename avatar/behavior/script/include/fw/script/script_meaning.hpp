@@ -16,8 +16,11 @@ namespace fw::script {
 /// One action unit of a keyframe.
 struct AuIntensity {
   int au = 0;                 ///< FACS number
-  double intensity = 0;       ///< as written, in [0, kMaxAuIntensity]: 1 is the action unit's full defined strength
-  double face_intensity = 0;  ///< what a face can show: intensity clamped to [0, 1] (FaceParams' range)
+  double intensity = 0;       ///< as written, in [0, kMaxAuIntensity]: the paper's scale, 2 is the action unit at full strength
+  /// The face's weight (FaceParams, 0 to 1): intensity / 2, the scale of the
+  /// built-in expressions (avatar/model expressions.cpp, whose anger is the
+  /// paper's halved), so a script and `express` at the same strength agree.
+  double face_intensity = 0;
   bool carried = true;        ///< false: FaceParams has no channel for this action unit, it moves nothing
   SourcePosition position;
 };
