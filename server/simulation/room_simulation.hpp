@@ -73,7 +73,7 @@ struct SnubCommand {
   double seconds = 10;
 };
 struct FacsCommand {
-  std::string sentence;     ///< a FACS expression sentence (face scripts)
+  std::string sentence;     ///< a face script: an expression sentence, a vascular emotion, or one of each (room_script.hpp)
 };
 using AvatarCommand = std::variant<ExpressCommand, LookAtCommand, SnubCommand, FacsCommand>;
 
@@ -122,8 +122,9 @@ class RoomSimulation {
   std::vector<AvatarId> avatars() const;
 
   /// A person's command; an empty string when accepted, else why not (an
-  /// unknown emotion, a target not in the room, a FACS sentence that does
-  /// not parse: the message says what was wrong).
+  /// unknown emotion, a target not in the room, a face script that does
+  /// not parse (its line and column) or passes a room's bounds: the message
+  /// says what was wrong).
   std::string command(AvatarId avatar, const AvatarCommand& command);
   /// A chat line from `avatar`: the avatar says it in its language (with
   /// lip sync, after the lines it is still saying, once the line's track is

@@ -6,9 +6,13 @@
 #include <cstdio>
 #include <map>
 #include <set>
+#include <fstream>
+#include <sstream>
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+
+#include "test_paths.hpp"
 
 namespace fw::behavior {
 namespace {
@@ -273,6 +277,34 @@ TEST(BehaviorRoomCommands, KeepAllFrameKeepsTheFaceClearAllFrameStartsFromNeutra
     if (keep) EXPECT_NEAR(room.face(2).au_intensity(12), smile, 1e-5f);
     else EXPECT_EQ(room.face(2).au_intensity(12), 0);
   }
+}
+
+// A vascular script sent as a command plays its episode on the sender's
+// face only (the paper's blushing, avatar/behavior/script/examples).
+TEST(BehaviorRoomCommands, AVascularScriptBlushesTheSenderAlone) {
+  std::ifstream in(test::source_path("avatar/behavior/script/examples/blushing.fws"));
+  std::stringstream blushing;
+  blushing << in.rdbuf();
+  BehaviorRoom room = make_room(6, 0);
+  room.add(1, "a");
+  room.add(2, "b");
+  run(room, 1.0);
+  const auto cheeks = [&](FaceId id) {
+    return room.face(id).blush[static_cast<std::size_t>(codec::ColourRegion::cheek_left)];
+  };
+  ASSERT_EQ(cheeks(1), 0);
+  ASSERT_EQ(cheeks(2), 0);
+  ASSERT_EQ(room.facs(2, blushing.str()), "");
+  float peak = 0, other = 0;
+  for (int i = 0; i < 15 * 30; ++i) {  // 15 s of the episode's 20
+    room.tick();
+    peak = std::max(peak, cheeks(2));
+    other = std::max(other, cheeks(1));
+  }
+  EXPECT_GT(peak, 0.5f) << "the sender's cheeks (blush1 0.9 x 0.6, blush2 0.8 x 0.8)";
+  EXPECT_EQ(other, 0) << "the other face stays as it was";
+  run(room, 6);
+  EXPECT_EQ(cheeks(2), 0) << "the episode ends after its 20 s";
 }
 
 TEST(BehaviorRoomCommands, CunningTeasingAndBlushAreExpressionsToo) {

@@ -18,6 +18,7 @@
 #include "fw/behavior/face_scan.hpp"
 #include "fw/behavior/facs_track.hpp"
 #include "fw/behavior/mimicry.hpp"
+#include "fw/behavior/room_script.hpp"
 #include "fw/behavior/vascular_episode.hpp"
 
 namespace fw::behavior {
@@ -443,16 +444,24 @@ std::string BehaviorRoom::express(FaceId face, std::string_view emotion, float i
   return {};
 }
 
-std::string BehaviorRoom::facs(FaceId face, std::string_view sentence) {
+std::string BehaviorRoom::facs(FaceId face, std::string_view script) {
   Impl::Face* f = impl_->find(face);
   if (!f) return std::string("no avatar ") + std::to_string(face) + " in this room";
-  AuTrack track;
-  std::string error;
-  if (!facs_track(sentence, f->expression_au, track, error)) return error;
-  f->facs = std::move(track);
-  f->facs_t_s = 0;
-  f->mind.hold_expression(f->facs->length_s());
-  impl_->event(face, "command facs");
+  RoomScript read;
+  if (std::string error = read_room_script(script, read); !error.empty()) return error;
+  std::string what = "command script";
+  if (read.animation) {
+    f->facs = animation_track(*read.animation, f->expression_au);
+    f->facs_t_s = 0;
+    f->mind.hold_expression(f->facs->length_s());
+    what += " (expression sentence)";
+  }
+  if (read.emotion) {
+    // On this face only, at the strengths the script wrote.
+    f->vascular.start(*read.emotion, kRoomScriptEpisodeS, 1.0f);
+    what += " (vascular " + read.emotion->name + ")";
+  }
+  impl_->event(face, std::move(what));
   return {};
 }
 

@@ -61,8 +61,11 @@ class BehaviorRoom {
   std::string snub(FaceId face, FaceId target, double seconds);
   /// `emotion`: a primary's name or "neutral"; intensity 0..1; seconds 0..60.
   std::string express(FaceId face, std::string_view emotion, float intensity, double seconds);
-  /// A FACS expression sentence (face scripts), played over autonomy.
-  std::string facs(FaceId face, std::string_view sentence);
+  /// A face script (room_script.hpp): its expression sentence played over
+  /// autonomy (KeepAllFrame from the face as it is), its vascular emotion
+  /// as an episode of kRoomScriptEpisodeS on this face alone. The error,
+  /// if any, gives the script's line and column or the bound it passes.
+  std::string facs(FaceId face, std::string_view script);
   /// The face's mood (the emotion it holds between expressions), and that
   /// mood given back: a room restored on another server keeps its moods.
   EmotionPoint mood(FaceId face) const;
