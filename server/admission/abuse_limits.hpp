@@ -19,6 +19,10 @@ struct AbuseLimits {
   BucketRate joins{1.0, 20};
   /// Chat lines from one address, over all its connections.
   BucketRate chat{2.0, 10};
+  /// Face scripts (FACS commands) from one address, over all its
+  /// connections: each is read on its room's strand, so a crowd of
+  /// connections from one address may not keep rooms reading.
+  BucketRate scripts{2.0, 10};
   /// Chat lines into one room, from everyone in it.
   BucketRate room_chat{5.0, 20};
   /// Joins into one room, from every address together.

@@ -34,6 +34,7 @@ BucketRate rate_of(const AbuseLimits& limits, AddressRate rate) {
     case AddressRate::chat: return limits.chat;
     case AddressRate::upload: return limits.uploads;
     case AddressRate::room_creation: return limits.room_creations;
+    case AddressRate::script: return limits.scripts;
   }
   return {};
 }

@@ -20,8 +20,8 @@
 
 namespace fw::server {
 
-enum class AddressRate { join, chat, upload, room_creation };
-inline constexpr std::size_t kAddressRateCount = 4;
+enum class AddressRate { join, chat, upload, room_creation, script };
+inline constexpr std::size_t kAddressRateCount = 5;
 
 /// The bucket of `rate` under `limits`.
 BucketRate rate_of(const AbuseLimits& limits, AddressRate rate);

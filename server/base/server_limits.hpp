@@ -59,6 +59,11 @@ inline constexpr double kUpstreamBytesPerSecond = 64 * 1024;
 inline constexpr double kUpstreamByteBurst = 64 * 1024;
 inline constexpr double kChatLinesPerSecond = 2;
 inline constexpr double kChatBurst = 5;
+/// Face scripts (FACS commands, PROTOCOL.md 5.5) from one connection: each
+/// is a performance of seconds, so one a second is more than a person
+/// plays; the burst lets a few be tried in a row after a typo.
+inline constexpr double kScriptsPerSecond = 1;
+inline constexpr double kScriptBurst = 3;
 /// Kernel send buffer of a room connection (Linux doubles it).
 inline constexpr int kSocketSendBufferBytes = 16 * 1024;
 /// Messages held between a hello and its welcome.

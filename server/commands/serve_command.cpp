@@ -170,6 +170,7 @@ void add_address_limit_flags(CLI::App& cmd, ServerConfig& config) {
   add_rate_flag(cmd, "--joins-per-minute", abuse.joins, 60, "room joins from one address a minute");
   add_rate_flag(cmd, "--chat-per-minute", abuse.chat, 60, "chat lines from one address a minute");
   add_rate_flag(cmd, "--room-chat-per-minute", abuse.room_chat, 60, "chat lines into one room a minute");
+  add_rate_flag(cmd, "--scripts-per-minute", abuse.scripts, 60, "face scripts (FACS commands) from one address a minute");
   add_rate_flag(cmd, "--room-joins-per-minute", abuse.room_joins, 60, "joins into one room a minute, from everyone");
   add_rate_flag(cmd, "--uploads-per-minute", abuse.uploads, 60, "uploads from one address a minute");
   add_rate_flag(cmd, "--rooms-per-hour", abuse.room_creations, 3600, "rooms one address may create an hour");

@@ -34,7 +34,7 @@ std::string wait_text(double seconds) { return std::to_string(static_cast<long>(
 
 ClientSession::ClientSession(const SessionServices& services, net::any_io_executor executor, std::string peer)
     : services_(services), executor_(std::move(executor)), peer_(std::move(peer)), clock_(executor_),
-      message_tokens_(limits::kMessageBurst), byte_tokens_(limits::kUpstreamByteBurst), chat_tokens_(limits::kChatBurst) {}
+      message_tokens_(limits::kMessageBurst), byte_tokens_(limits::kUpstreamByteBurst), chat_tokens_(limits::kChatBurst), script_tokens_(limits::kScriptBurst) {}
 
 ClientSession::~ClientSession() {
   if (counted_) services_.metrics.connections.fetch_sub(1);
@@ -204,6 +204,7 @@ void ClientSession::refill_tokens(std::chrono::steady_clock::time_point now) {
   message_tokens_ = std::min(limits::kMessageBurst, message_tokens_ + elapsed * limits::kMessagesPerSecond);
   byte_tokens_ = std::min(limits::kUpstreamByteBurst, byte_tokens_ + elapsed * limits::kUpstreamBytesPerSecond);
   chat_tokens_ = std::min(limits::kChatBurst, chat_tokens_ + elapsed * limits::kChatLinesPerSecond);
+  script_tokens_ = std::min(limits::kScriptBurst, script_tokens_ + elapsed * limits::kScriptsPerSecond);
 }
 
 void ClientSession::on_message(std::span<const std::uint8_t> message) {
@@ -436,7 +437,32 @@ void ClientSession::handle_chat(std::span<const std::uint8_t> message) {
 void ClientSession::handle_command(std::span<const std::uint8_t> message) {
   codec::Command command;
   if (const auto e = codec::read_message(message, command); e != MessageError::ok) return malformed(e, "command");
+  if (command.kind == codec::Command::Kind::facs) {
+    if (auto refusal = script_refusal()) {
+      auto result = encode_shared(codec::CommandResult{command.request_id, std::move(*refusal)});
+      queued_bytes_.fetch_add(result->size(), std::memory_order_relaxed);  // as deliver() does
+      return do_deliver(std::move(result));
+    }
+  }
   room_->command(avatar_, std::move(command));
+}
+
+// A script over the connection's or its address's rate is refused with a
+// command result, not a closing: a typo's retries are no flood, and the
+// address may be shared (a household, an office behind one NAT). The
+// message rate (50 a second) still closes a real flood.
+std::optional<std::string> ClientSession::script_refusal() {
+  if (script_tokens_ < 1) {
+    services_.abuse.note(Abuse::script_rate, peer_, "face scripts over the connection's rate");
+    return "too many scripts; at most " + std::to_string(static_cast<int>(limits::kScriptsPerSecond)) +
+           " a second: try again in " + wait_text((1 - script_tokens_) / limits::kScriptsPerSecond);
+  }
+  if (const auto wait = services_.addresses.take(AddressRate::script, address_key(peer_))) {
+    services_.abuse.note(Abuse::script_rate, peer_, "face scripts over its address's rate");
+    return "too many scripts from your address; try again in " + wait_text(*wait);
+  }
+  script_tokens_ -= 1;
+  return std::nullopt;
 }
 
 void ClientSession::handle_set_rate(std::span<const std::uint8_t> message) {

@@ -104,6 +104,9 @@ class ClientSession : public RoomConnection, public std::enable_shared_from_this
   void handle_resync(std::span<const std::uint8_t> message);
   void handle_chat(std::span<const std::uint8_t> message);
   void handle_command(std::span<const std::uint8_t> message);
+  /// Why a face script may not be played now (the connection's or the
+  /// address's script rate), nullopt when it may; takes its tokens.
+  std::optional<std::string> script_refusal();
   void handle_set_rate(std::span<const std::uint8_t> message);
   void handle_ping(std::span<const std::uint8_t> message);
   void malformed(codec::MessageError error, const char* what);
@@ -143,7 +146,7 @@ class ClientSession : public RoomConnection, public std::enable_shared_from_this
   std::size_t socket_queue_ = 0;
   std::uint64_t written_at_sample_ = 0;
   bool socket_known_ = false;
-  double message_tokens_, byte_tokens_, chat_tokens_;
+  double message_tokens_, byte_tokens_, chat_tokens_, script_tokens_;
   bool counted_ = false;
   bool transport_gone_ = false;
   codec::CloseCode close_code_ = codec::CloseCode::normal;

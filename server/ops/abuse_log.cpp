@@ -39,6 +39,7 @@ std::string_view abuse_name(Abuse kind) {
     case Abuse::block_connection_limit: return "block_connection_limit";
     case Abuse::connection_evicted: return "connection_evicted";
     case Abuse::room_share: return "room_share";
+    case Abuse::script_rate: return "script_rate";
     case Abuse::count_: break;
   }
   return "unknown";

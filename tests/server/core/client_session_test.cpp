@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <future>
+#include <map>
 
 #include <boost/asio/post.hpp>
 #include <fw/codec/byte_writer.hpp>
@@ -324,6 +325,73 @@ TEST(ClientSessionLimits, MoreChatLinesThanTheChatBurstAreAFlood) {
   EXPECT_NE(peer->closing->reason.find("chat lines"), std::string::npos);
   EXPECT_TRUE(eventually([&] { return server.core().metrics().chat_lines.load() == limits::kChatBurst; }))
       << "the burst itself is relayed";
+}
+
+codec::Command script_command(std::uint32_t request_id) {
+  codec::Command command;
+  command.request_id = request_id;
+  command.kind = codec::Command::Kind::facs;
+  command.sentence = "KeepAllFrame BeginKeyFrame 12 1.0 Animate 3 \"Texture\" end";
+  return command;
+}
+
+/// The answers `peer` got to the commands it sent, by request id.
+std::map<std::uint32_t, std::string> results_of(test::InMemoryPeer& peer, std::size_t count) {
+  EXPECT_TRUE(peer.read_until([&] { return peer.results.size() >= count; }));
+  std::map<std::uint32_t, std::string> errors;
+  for (const auto& result : peer.results) errors[result.request_id] = result.error;
+  return errors;
+}
+
+TEST(ClientSessionLimits, ScriptsPastTheConnectionsBurstAreRefusedWithTheRateAndTheConnectionStays) {
+  InMemoryServer server;
+  auto peer = server.join("r", "Scripter");
+  ASSERT_TRUE(peer->welcome);
+  const auto burst = static_cast<std::uint32_t>(limits::kScriptBurst);
+  for (std::uint32_t i = 1; i <= burst + 1; ++i) peer->send(script_command(i));
+  const auto errors = results_of(*peer, burst + 1);
+  for (std::uint32_t i = 1; i <= burst; ++i) EXPECT_EQ(errors.at(i), "") << "script " << i << " of the burst";
+  EXPECT_EQ(errors.at(burst + 1).rfind("too many scripts; at most 1 a second: try again in 1 s", 0), 0u)
+      << errors.at(burst + 1);
+  EXPECT_EQ(server.core().abuse().count(Abuse::script_rate), 1u);
+  peer->read_for(1100ms);
+  peer->send(script_command(100));
+  EXPECT_EQ(results_of(*peer, burst + 2).at(100), "") << "a second later one more is played";
+  EXPECT_FALSE(peer->closing);
+}
+
+TEST(ClientSessionLimits, AScriptOverTheSentencesBytesIsAMalformedCommand) {
+  InMemoryServer server;
+  auto peer = server.join("r", "Verbose");
+  ASSERT_TRUE(peer->welcome);
+  // Laid out by hand (the codec's writer asserts the limit): a FACS command
+  // whose sentence is one byte over its 4096.
+  std::vector<std::uint8_t> head;
+  codec::write_message(script_command(1), head);
+  std::vector<std::uint8_t> bytes(head.begin(), head.begin() + 3);  // type, request id 1, kind
+  codec::ByteWriter w(bytes);
+  const std::string sentence(codec::kMaxSentenceBytes + 1, ' ');
+  w.varint(static_cast<std::uint32_t>(sentence.size()));
+  w.bytes(std::span(reinterpret_cast<const std::uint8_t*>(sentence.data()), sentence.size()));
+  peer->send_bytes(std::move(bytes));
+  EXPECT_EQ(closed_with(*peer), CloseCode::protocol_error);
+  EXPECT_NE(peer->closing->reason.find("malformed command"), std::string::npos) << peer->closing->reason;
+}
+
+TEST(ClientSessionLimits, ScriptsPastTheAddresssRateAreRefusedOnAnyOfItsConnections) {
+  InMemoryServer server(config_with([](ServerConfig& c) { c.abuse.scripts = {1.0 / 60, 4}; }));
+  auto ann = server.join("r", "Ann");
+  auto bob = server.join("r", "Bob");  // the same address
+  ASSERT_TRUE(ann->welcome && bob->welcome);
+  for (std::uint32_t i = 1; i <= 3; ++i) ann->send(script_command(i));
+  ASSERT_EQ(results_of(*ann, 3), (std::map<std::uint32_t, std::string>{{1, ""}, {2, ""}, {3, ""}}));
+  bob->send(script_command(4));
+  bob->send(script_command(5));
+  const auto errors = results_of(*bob, 2);
+  EXPECT_EQ(errors.at(4), "") << "the address's fourth";
+  EXPECT_EQ(errors.at(5).rfind("too many scripts from your address; try again in ", 0), 0u) << errors.at(5);
+  EXPECT_EQ(server.core().abuse().count(Abuse::script_rate), 1u);
+  EXPECT_FALSE(bob->closing);
 }
 
 TEST(ClientSessionLimits, OnlyAFewMessagesMayWaitForTheWelcome) {

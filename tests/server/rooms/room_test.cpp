@@ -159,7 +159,7 @@ TEST(InMemoryRoom, CommandsAreAnsweredAcceptedOrRefusedAndTheConnectionStays) {
   EXPECT_NE(errors[8], "") << "an unknown emotion";
   EXPECT_EQ(errors[9], "");
   EXPECT_NE(errors[10], "") << "a target not in the room";
-  EXPECT_NE(errors[11], "") << "a sentence that does not parse";
+  EXPECT_EQ(errors[11].rfind("script 1:1: ", 0), 0u) << "a sentence that does not parse, answered where: " << errors[11];
   for (const auto& [id, error] : errors) EXPECT_LE(error.size(), codec::kMaxReasonBytes);
   EXPECT_FALSE(bob->closing);
   EXPECT_TRUE(ann->results.empty()) << "results go to the sender only";

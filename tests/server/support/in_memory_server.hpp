@@ -133,6 +133,7 @@ class InMemoryServer {
     // address may do is raised, so that a test can seat many; the tests of
     // those limits set them back.
     config.abuse.joins = config.abuse.chat = config.abuse.room_creations = config.abuse.room_joins = {1e6, 1e6};
+    config.abuse.scripts = {1e6, 1e6};
     config.abuse.seats_per_address = 64;
     config.abuse.rooms_per_address = config.abuse.rooms_per_block = 100000;
     config.abuse.seats_per_block = 64;
