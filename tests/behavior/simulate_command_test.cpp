@@ -16,6 +16,7 @@
 
 #include "fw/behavior/scene_file.hpp"
 #include "fw/render/image_codec.hpp"
+#include "test_paths.hpp"
 #include "render_scene_command.hpp"
 #include "room_simulation.hpp"
 #include "run_command.hpp"
@@ -175,6 +176,28 @@ TEST(RoomSimulation, CommandsReachTheFacesAndBadOnesSayWhy) {
   EXPECT_TRUE(room.resting(b));
   room.remove_avatar(a);
   EXPECT_EQ(room.avatars(), (std::vector<AvatarId>{b}));
+}
+
+// The server's room (physics face and all) plays a person's vascular script
+// on that person's face alone.
+TEST(RoomSimulation, AVascularScriptColoursItsSendersFaceAlone) {
+  std::ifstream in(fw::test::source_path("avatar/behavior/script/examples/blushing.fws"));
+  const std::string blushing{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  RoomSimulationOptions o;
+  o.seed = 3;
+  RoomSimulation room(o);
+  const AvatarId a = room.add_avatar({"a", true});
+  const AvatarId b = room.add_avatar({"b", true});
+  ASSERT_EQ(room.command(a, FacsCommand{blushing}), "");
+  const auto cheek = static_cast<std::size_t>(codec::ColourRegion::cheek_right);
+  float sender = 0, other = 0;
+  for (int i = 0; i < 8 * 30; ++i) {
+    room.tick();
+    sender = std::max(sender, room.face(a).blush[cheek]);
+    other = std::max(other, room.face(b).blush[cheek]);
+  }
+  EXPECT_GT(sender, 0.5f);
+  EXPECT_EQ(other, 0);
 }
 
 TEST(RoomSimulation, EventsCarryTheTickTheyHappenedAt) {
