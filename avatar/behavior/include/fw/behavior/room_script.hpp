@@ -8,7 +8,7 @@
 //
 // The bounds keep one command's cost and effect small: the bytes bound the
 // parse (linear in its input, face-script README "Limits"; the worst script
-// of 4096 bytes reads in tens of microseconds, room_script_timing_test.cpp),
+// of 4096 bytes reads in under 0.1 ms, room_script_timing_test.cpp),
 // the counts and the length bound what a face is made to do.
 #include <cstddef>
 #include <optional>
