@@ -279,14 +279,22 @@ function wireControls(client, mutes, toggleMute) {
     });
     buttons.append(button);
   }
+  // A script may run over lines (a vascular emotion, comments), so the box
+  // is a text area: Enter starts a new line, Ctrl+Enter (or the button) plays.
   $('facs-form').addEventListener('submit', (event) => {
     event.preventDefault();
-    const sentence = $('facs').value.trim();
-    if (!sentence) return;
-    const id = client.facs(sentence);
+    const script = $('facs').value.trim();
+    if (!script) return;
+    const id = client.facs(script);
     const submit = event.target.querySelector('button');
-    submit.dataset.label = 'FACS sentence';
+    submit.dataset.label = 'Face script';
     pending.set(id, submit);
+  });
+  $('facs').addEventListener('keydown', (event) => {
+    if (event.key === 'Enter' && (event.ctrlKey || event.metaKey)) {
+      event.preventDefault();
+      $('facs-form').requestSubmit();
+    }
   });
   $('chat-form').addEventListener('submit', (event) => {
     event.preventDefault();

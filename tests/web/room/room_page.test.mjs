@@ -243,3 +243,30 @@ test('the room fits a phone without sideways scrolling', { timeout: 60000 }, asy
   for (const tile of (await room(page)).tiles) assert.ok(tile.rect.x >= 0 && tile.rect.x + tile.rect.w <= 390, JSON.stringify(tile.rect));
   assert.deepEqual(web.pageErrors, []);
 });
+
+test('the face-script box plays a vascular emotion over several lines and answers a bad script with its line and column', { timeout: 60000 }, async () => {
+  const page = pages.web;
+  assert.ok(page, 'the first person joined (the first test)');
+  const result = page.locator('#command-result');
+  await page.fill('#facs', 'ClearAllFrame\nBeginKeyFrame\n  12 strong\nend');
+  await page.click('#facs-form button');
+  await page.waitForFunction(() => /refused/.test(document.getElementById('command-result').textContent), null, { timeout: 10000 });
+  assert.match(await result.textContent(), /refused: script 3:\d+: /);
+  // The example as a person would paste it: comments, brackets over lines.
+  await page.fill('#facs', readFileSync(sourceFile('avatar/behavior/script/examples/blushing.fws'), 'utf8'));
+  await page.press('#facs', 'Control+Enter');
+  await page.waitForFunction(() => /on your face now/.test(document.getElementById('command-result').textContent), null, { timeout: 10000 });
+  // The cheeks redden on the sender's stream (blush channels 41-45), a
+  // stage of the 20 s episode after another.
+  const blush = () => page.evaluate(() => {
+    const { client } = window.facewireRoom;
+    return Math.max(...(client.face(client.you)?.blush ?? [0]));
+  });
+  let most = 0;
+  for (let i = 0; i < 20 && most < 0.2; ++i) {
+    await page.waitForTimeout(250);
+    most = Math.max(most, await blush());
+  }
+  assert.ok(most >= 0.2, `the sender's blush reached ${most.toFixed(2)}`);
+  assert.deepEqual(web.pageErrors, []);
+});
