@@ -73,10 +73,11 @@ MessageError read_message(std::span<const std::uint8_t> bytes, Hello& m) {
   if (!is_readable_version(m.protocol_version)) return MessageError::unsupported_version;
   MessageError error = MessageError::ok;
   const std::uint8_t flags = r.u8();
-  if (!r.failed() && (flags & ~7u) != 0) fail(error, MessageError::bad_flags);
+  if (!r.failed() && (flags & ~15u) != 0) fail(error, MessageError::bad_flags);
   m.timestamps = (flags & 1u) != 0;
   m.no_packages = (flags & 2u) != 0;
   m.own_package = (flags & 4u) != 0;
+  m.preview = (flags & 8u) != 0;
   m.max_bps = read_bounded(r, 4, kMaxBitsPerSecond, error);
   read_string(r, kMaxRoomNameBytes, m.room, error);
   read_string(r, kMaxDisplayNameBytes, m.name, error);
@@ -143,10 +144,11 @@ MessageError read_message(std::span<const std::uint8_t> bytes, Command& m) {
   m.request_id = r.varint(5);
   const std::uint8_t kind = r.u8();
   if (r.failed()) return failure_of(r);
-  if (kind > static_cast<std::uint8_t>(Command::Kind::facs)) return MessageError::value_out_of_range;
+  if (kind > static_cast<std::uint8_t>(Command::Kind::check)) return MessageError::value_out_of_range;
   m.kind = static_cast<Command::Kind>(kind);
   m.emotion.clear();
   m.sentence.clear();
+  m.override_face = {};
   switch (m.kind) {
     case Command::Kind::express: {
       read_string(r, kMaxEmotionBytes, m.emotion, error);
@@ -162,8 +164,19 @@ MessageError read_message(std::span<const std::uint8_t> bytes, Command& m) {
       m.duration_ms = read_bounded(r, 3, kMaxCommandMs, error);
       break;
     case Command::Kind::facs:
+    case Command::Kind::check:
       read_string(r, kMaxSentenceBytes, m.sentence, error, /*allow_layout=*/true);
       break;
+    case Command::Kind::override_face: {
+      const std::uint8_t part = r.u8();
+      m.override_face.index = r.u8();
+      m.override_face.side = r.u8();
+      m.override_face.value = r.i16_le();
+      if (!r.failed() && (part > kLastOverridePart || m.override_face.side > 2))
+        fail(error, MessageError::value_out_of_range);
+      m.override_face.part = static_cast<OverridePart>(part);
+      break;
+    }
   }
   return finish(r, error);
 }

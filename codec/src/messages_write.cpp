@@ -47,7 +47,8 @@ void write_message(const Hello& m, std::vector<std::uint8_t>& out) {
   ByteWriter w(out);
   w.u8(first_byte(MessageType::hello));
   w.u16_le(m.protocol_version);
-  w.u8(static_cast<std::uint8_t>((m.timestamps ? 1 : 0) | (m.no_packages ? 2 : 0) | (m.own_package ? 4 : 0)));
+  w.u8(static_cast<std::uint8_t>((m.timestamps ? 1 : 0) | (m.no_packages ? 2 : 0) | (m.own_package ? 4 : 0) |
+                                (m.preview ? 8 : 0)));
   w.varint(m.max_bps);
   write_string(w, m.room);
   write_string(w, m.name);
@@ -110,8 +111,16 @@ void write_message(const Command& m, std::vector<std::uint8_t>& out) {
       w.varint(m.duration_ms);
       break;
     case Command::Kind::facs:
+    case Command::Kind::check:
       assert(m.sentence.size() <= kMaxSentenceBytes);
       write_string(w, m.sentence);
+      break;
+    case Command::Kind::override_face:
+      assert(m.override_face.side <= 2);
+      w.u8(static_cast<std::uint8_t>(m.override_face.part));
+      w.u8(m.override_face.index);
+      w.u8(m.override_face.side);
+      w.i16_le(m.override_face.value);
       break;
   }
 }

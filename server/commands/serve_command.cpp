@@ -82,6 +82,17 @@ void add_room_flags(CLI::App& cmd, ServerConfig& config) {
              std::to_string(std::chrono::seconds(limits::kIdlePersonTimeout).count()) + ")")
       ->check(CLI::Range(0.1, 86400.0));
   cmd.add_flag("!--no-demo-room", config.demo_room, "do not open the demo room 'lobby'");
+  cmd.add_option("--max-previews", config.previews.max, "face-lab previews at once on the server")
+      ->check(CLI::Range(std::size_t{0}, std::size_t{100'000}))
+      ->capture_default_str();
+  cmd.add_option("--previews-per-address", config.previews.per_address, "face-lab previews at once from one address")
+      ->check(CLI::Range(std::size_t{0}, std::size_t{1'000}))
+      ->capture_default_str();
+  cmd.add_option_function<long>(
+         "--preview-idle-seconds", [&config](long seconds) { config.previews.idle = std::chrono::seconds(seconds); },
+         "a face-lab preview whose page changes nothing for this long ends (default " +
+             std::to_string(config.previews.idle.count()) + ")")
+      ->check(CLI::Range(1L, 86400L));
 }
 
 void add_limit_flags(CLI::App& cmd, ServerConfig& config) {

@@ -24,6 +24,17 @@ struct SessionTimeouts {
   std::chrono::milliseconds idle_person = limits::kIdlePersonTimeout;
 };
 
+/// Face-lab previews (PROTOCOL.md 5.16): each a private room of one, which
+/// costs a room's tick and physics face, so they are bounded on the server
+/// (--max-previews) and per address (--previews-per-address: a person with a
+/// lab open in two tabs), and one whose page changes nothing for `idle`
+/// (--preview-idle-seconds) ends, as a lab left open in a forgotten tab.
+struct PreviewLimits {
+  std::size_t max = 32;
+  std::size_t per_address = 2;
+  std::chrono::seconds idle{600};
+};
+
 struct ServerConfig {
   std::string http = "127.0.0.1:8080";
   std::string tcp;               ///< empty: no TCP port
@@ -79,6 +90,7 @@ struct ServerConfig {
   std::size_t photo_threads = 2;
   SessionTimeouts timeouts;
   AbuseLimits abuse;             ///< per address and per room
+  PreviewLimits previews;        ///< face-lab previews
   // Cluster (server/CLUSTER.md).
   std::string redis;             ///< redis://HOST:PORT[/DB]; empty: one process, no cluster
   std::string redis_password_file;  ///< the Redis password's file, instead of the URL's; empty: none

@@ -275,7 +275,9 @@ void ClientSession::handle_hello(std::span<const std::uint8_t> message) {
                       : "that is not the key of this face: only who uploaded it may wear it",
                   Abuse::face_not_yours);
   if (!claim_token(hello)) return;
-  RoomOpening opening = services_.rooms.open_for(hello.room, address_key(peer_));
+  preview_ = hello.preview;
+  RoomOpening opening = preview_ ? services_.rooms.open_preview(address_key(peer_))
+                                 : services_.rooms.open_for(hello.room, address_key(peer_));
   if (!opening.room) return refuse(opening.code, opening.refusal, opening.abuse);
   room_ = std::move(opening.room);
   state_ = State::joining;
@@ -528,6 +530,11 @@ void ClientSession::on_clock() {
     do_close(CloseCode::idle_timeout,
              "nothing heard for " + seconds_text(timeouts.idle) + "; send a ping at least every " +
                  seconds_text(timeouts.idle / 3));
+  } else if (state_ == State::joined && preview_ && now - last_sent_ > services_.config.previews.idle) {
+    // A lab left open in a forgotten tab holds a room's tick for nothing.
+    quick_close_ = true;
+    do_close(CloseCode::idle_timeout, "the face-lab preview ended: nothing changed for " +
+                                          seconds_text(services_.config.previews.idle) + "; reload the page to go on");
   } else if (state_ == State::joined && now - last_sent_ > timeouts.idle_person && (writing_ || socket_queue_ > 0) &&
              now - read_progress_ > timeouts.idle_person) {
     // Nothing but pings came, and what waits for the person is not taken

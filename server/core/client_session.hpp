@@ -152,6 +152,7 @@ class ClientSession : public RoomConnection, public std::enable_shared_from_this
   codec::CloseCode close_code_ = codec::CloseCode::normal;
   std::string close_reason_;
   bool quick_close_ = false;  ///< closing_quickly()
+  bool preview_ = false;      ///< the hello asked for a face-lab preview (PROTOCOL.md 5.16)
 };
 
 }  // namespace fw::server

@@ -40,6 +40,7 @@ std::string_view abuse_name(Abuse kind) {
     case Abuse::connection_evicted: return "connection_evicted";
     case Abuse::room_share: return "room_share";
     case Abuse::script_rate: return "script_rate";
+    case Abuse::preview_limit: return "preview_limit";
     case Abuse::count_: break;
   }
   return "unknown";

@@ -45,6 +45,7 @@ enum class Abuse {
   connection_evicted,        ///< a connection that had sent nothing useful yet gave its place to a newcomer
   room_share,                ///< an address or its block holds its share of rooms, or only fresh blocks may open one
   script_rate,               ///< face scripts over the connection's or the address's rate
+  preview_limit,             ///< an address, or the server, holds its most face-lab previews
   count_,                    ///< not a kind: how many there are
 };
 inline constexpr std::size_t kAbuseKinds = static_cast<std::size_t>(Abuse::count_);

@@ -31,6 +31,8 @@ AvatarCommand to_simulation(const codec::Command& c) {
     case codec::Command::Kind::express: return ExpressCommand{c.emotion, c.intensity, seconds};
     case codec::Command::Kind::look_at: return LookAtCommand{c.target, seconds};
     case codec::Command::Kind::snub: return SnubCommand{c.target, seconds};
+    case codec::Command::Kind::override_face: return OverrideCommand{c.override_face};
+    case codec::Command::Kind::check: return CheckCommand{c.sentence};
     case codec::Command::Kind::facs: break;
   }
   return FacsCommand{c.sentence};

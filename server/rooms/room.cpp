@@ -13,8 +13,9 @@ namespace net = boost::asio;
 namespace {
 
 RoomSimulationOptions simulation_options(const ServerConfig& config, std::uint64_t seed,
-                                         std::shared_ptr<TrackMaker> track_maker) {
+                                         std::shared_ptr<TrackMaker> track_maker, bool preview) {
   RoomSimulationOptions options{seed, config.tick_hz, config.physics, config.physics_sleeps};
+  options.preview = preview;
   options.track_maker = std::move(track_maker);
   options.id_space = config.avatar_id_space;
   // Ticks never run ahead of the clock, so this many of them last at least as long.
@@ -34,11 +35,11 @@ std::unique_ptr<RoomRole> make_role(Room& room, RoomRoleKind kind) {
 }  // namespace
 
 Room::Room(const RoomServices& services, RoomRegistry& registry, std::string name, bool persistent,
-           std::uint64_t seed, RoomRoleKind role)
-    : services_(services), registry_(registry), name_(std::move(name)), persistent_(persistent),
+           std::uint64_t seed, RoomRoleKind role, bool preview)
+    : services_(services), registry_(registry), name_(std::move(name)), persistent_(persistent), preview_(preview),
       strand_(net::make_strand(services.workers)), timer_(strand_),
       track_maker_(std::make_shared<RoomTrackMaker>(services.speech, strand_, services.metrics.unsaid_lines)),
-      simulation_(simulation_options(services.config, seed, track_maker_)), role_(make_role(*this, role)),
+      simulation_(simulation_options(services.config, seed, track_maker_, preview)), role_(make_role(*this, role)),
       kind_(role) {
   services_.metrics.rooms.fetch_add(1);
 }
@@ -95,6 +96,9 @@ void Room::do_join(JoinRequest request) {
 
 void Room::join_successor(JoinRequest request) {
   if (!request.connection) return;
+  // A preview is nobody's to open again by name: its page asks for a new one.
+  if (preview_)
+    return request.connection->close(codec::CloseCode::normal, "the face-lab preview ended; reload the page");
   if (auto room = registry_.find_or_create(name_)) return room->join(std::move(request));
   if (services_.draining.load())
     request.connection->close(codec::CloseCode::shutting_down, "the server is shutting down; try again soon");

@@ -48,13 +48,16 @@ struct RoomCounts {
 class Room : public std::enable_shared_from_this<Room> {
  public:
   /// A room of `registry` (which closes it when nobody keeps it open),
-  /// starting in `role`.
+  /// starting in `role`; a face-lab `preview` simulates its avatar under
+  /// the person's overrides (RoomSimulationOptions::preview).
   Room(const RoomServices& services, RoomRegistry& registry, std::string name, bool persistent, std::uint64_t seed,
-       RoomRoleKind role);
+       RoomRoleKind role, bool preview = false);
   ~Room();
 
   const std::string& name() const { return name_; }
   bool persistent() const { return persistent_; }
+  /// A face-lab preview (RoomRegistry::open_preview).
+  bool preview() const { return preview_; }
   std::size_t avatar_count() const { return counts_.avatars.load(); }
   std::size_t person_count() const { return counts_.persons.load(); }
   /// Nobody keeps the room open here (owner: no person at all; bridge: no
@@ -131,6 +134,7 @@ class Room : public std::enable_shared_from_this<Room> {
   RoomRegistry& registry_;
   std::string name_;
   bool persistent_;
+  bool preview_;
   boost::asio::strand<boost::asio::thread_pool::executor_type> strand_;
   boost::asio::steady_timer timer_;
   /// Makes the simulation's lines' tracks on the server's SpeechWorker.

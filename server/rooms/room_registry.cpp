@@ -43,7 +43,8 @@ std::string share_refusal_text(RoomShareRefusal why, const RoomShareLimits& limi
 }  // namespace
 
 RoomRegistry::RoomRegistry(const RoomServices& services, AddressLimits& addresses)
-    : services_(services), addresses_(addresses), shares_(room_shares_of(services.config)) {}
+    : services_(services), addresses_(addresses), shares_(room_shares_of(services.config)),
+      preview_counts_(services.config.previews) {}
 RoomRegistry::~RoomRegistry() = default;
 
 std::shared_ptr<Room> RoomRegistry::find_or_create(const std::string& name, bool persistent, bool place) {
@@ -78,7 +79,23 @@ std::vector<std::shared_ptr<Room>> RoomRegistry::all() const {
   std::lock_guard lock(mutex_);
   std::vector<std::shared_ptr<Room>> rooms;
   for (const auto& [name, room] : rooms_) rooms.push_back(room);
+  for (const auto& [name, room] : previews_) rooms.push_back(room);
   return rooms;
+}
+
+RoomOpening RoomRegistry::open_preview(const std::string& address) {
+  std::lock_guard lock(mutex_);
+  if (closed_) return RoomOpening::refused(codec::CloseCode::shutting_down, "the server is shutting down; try again soon");
+  if (auto refusal = preview_counts_.may_open(address))
+    return RoomOpening::refused(refusal->code, std::move(refusal->why), Abuse::preview_limit);
+  // '~' is not in a hello's room names: nobody can ask for this room.
+  const std::string name = "~lab-" + std::to_string(next_preview_++);
+  // Always owned here, never placed on the bus: nobody else joins it.
+  auto room = std::make_shared<Room>(services_, *this, name, false, next_seed_++, RoomRoleKind::owner, true);
+  previews_.emplace(name, room);
+  preview_counts_.opened(name, address);
+  room->start();
+  return RoomOpening::opened(room);
 }
 
 RoomOpening RoomRegistry::open_for(const std::string& name, const std::string& address) {
@@ -109,6 +126,12 @@ RoomOpening RoomRegistry::open_for(const std::string& name, const std::string& a
 void RoomRegistry::remove_if_empty(const std::shared_ptr<Room>& room) {
   std::lock_guard lock(mutex_);
   if (!room->unpeopled() || room->persistent()) return;
+  if (const auto preview = previews_.find(room->name()); preview != previews_.end() && preview->second == room) {
+    previews_.erase(preview);
+    preview_counts_.closed(room->name());
+    room->close();
+    return;
+  }
   auto it = rooms_.find(room->name());
   if (it == rooms_.end() || it->second != room) return;
   rooms_.erase(it);
@@ -130,6 +153,11 @@ void RoomRegistry::close_all_rooms() {
     closed_ = true;
     rooms.swap(rooms_);
     for (const auto& [name, room] : rooms) shares_.closed(name);
+    for (auto& [name, room] : previews_) {
+      preview_counts_.closed(name);
+      rooms.emplace(name, std::move(room));
+    }
+    previews_.clear();
   }
   for (auto& [name, room] : rooms) room->close();
 }

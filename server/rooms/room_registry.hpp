@@ -14,6 +14,7 @@
 #include "fw/codec/messages.hpp"
 #include "abuse_log.hpp"
 #include "address_limits.hpp"
+#include "preview_limits.hpp"
 #include "room_services.hpp"
 #include "room_shares.hpp"
 
@@ -66,9 +67,14 @@ class RoomRegistry {
   /// shares of open rooms (RoomShares), and the server holds fewer than its
   /// maximum (its last rooms only for a block that holds none).
   RoomOpening open_for(const std::string& name, const std::string& address);
-  /// The room called `name` if this node holds it (owned or bridged).
+  /// A face-lab preview for a person from `address` (PROTOCOL.md 5.16): a
+  /// private room of one, owned here, under a name no hello can give (so
+  /// nobody else joins it) and never listed; refused past the server's or
+  /// the address's share of previews (PreviewLimits).
+  RoomOpening open_preview(const std::string& address);
+  /// The room called `name` if this node holds it (owned or bridged); never a preview.
   std::shared_ptr<Room> find(const std::string& name) const;
-  /// Every room this node holds.
+  /// Every room this node holds, previews too.
   std::vector<std::shared_ptr<Room>> all() const;
   /// Closes and forgets `room` if nobody is in it any more.
   void remove_if_empty(const std::shared_ptr<Room>& room);
@@ -85,6 +91,10 @@ class RoomRegistry {
   AddressLimits& addresses_;
   mutable std::mutex mutex_;
   std::map<std::string, std::shared_ptr<Room>> rooms_;
+  /// Face-lab previews, apart from the rooms: not found by name, not listed.
+  std::map<std::string, std::shared_ptr<Room>> previews_;
+  PreviewCounts preview_counts_;
+  std::uint64_t next_preview_ = 1;
   /// Who opened the rooms open_for() opened.
   RoomShares shares_;
   std::uint64_t next_seed_ = 1;

@@ -17,6 +17,8 @@
 #include "fw/physics/face_simulation.hpp"
 #include "fw/physics/tissue_model.hpp"
 #include "avatar_ids.hpp"
+#include "face_overrides.hpp"
+#include "script_check.hpp"
 
 namespace fw::server {
 namespace {
@@ -142,7 +144,16 @@ struct RoomSimulation::State {
     AvatarSetup setup;
     PhysicsFace physics;
     codec::FaceParams face;
+    /// A preview's (options.preview): what its page set, and a FACS
+    /// sentence played while its behaviour is off, with its time so far.
+    FaceOverrides overrides = {};
+    std::optional<behavior::AuTrack> played = {};
+    double played_s = 0;
   };
+
+  /// A preview's override or FACS sentence (the room's behaviour plays a
+  /// sentence too, for when the page turns behaviour on); "" or why not.
+  std::string preview_command(AvatarId id, const AvatarCommand& command);
   RoomSimulationOptions options;
   AvatarIds ids;
   behavior::BehaviorRoom room;
@@ -257,7 +268,27 @@ void RoomSimulation::remove_avatar(AvatarId avatar) {
 
 std::vector<AvatarId> RoomSimulation::avatars() const { return state_->room.faces(); }
 
+std::string RoomSimulation::State::preview_command(AvatarId id, const AvatarCommand& command) {
+  const auto it = avatars.find(id);
+  if (it == avatars.end()) return "you are not in this room";
+  Avatar& a = it->second;
+  if (const auto* o = std::get_if<OverrideCommand>(&command)) return set_override(a.overrides, o->change);
+  const auto& facs = std::get<FacsCommand>(command);
+  behavior::AuTrack track;
+  std::string error;
+  if (!behavior::facs_track(facs.sentence, track, error)) return error;
+  a.played = std::move(track);
+  a.played_s = 0;
+  return room.facs(id, facs.sentence);
+}
+
 std::string RoomSimulation::command(AvatarId avatar, const AvatarCommand& command) {
+  if (const auto* check = std::get_if<CheckCommand>(&command)) return check_script(check->script);
+  if (std::holds_alternative<OverrideCommand>(command) && !state_->options.preview)
+    return "overrides are for a face-lab preview (lab.html); in a room, use express or a FACS sentence";
+  if (state_->options.preview &&
+      (std::holds_alternative<OverrideCommand>(command) || std::holds_alternative<FacsCommand>(command)))
+    return state_->preview_command(avatar, command);
   behavior::BehaviorRoom& room = state_->room;
   std::string result = std::visit(
       [&](const auto& c) -> std::string {
@@ -265,7 +296,8 @@ std::string RoomSimulation::command(AvatarId avatar, const AvatarCommand& comman
         if constexpr (std::is_same_v<T, ExpressCommand>) return room.express(avatar, c.emotion, c.intensity, c.seconds);
         else if constexpr (std::is_same_v<T, LookAtCommand>) return room.look_at(avatar, c.target, c.seconds);
         else if constexpr (std::is_same_v<T, SnubCommand>) return room.snub(avatar, c.target, c.seconds);
-        else return room.facs(avatar, c.sentence);
+        else if constexpr (std::is_same_v<T, FacsCommand>) return room.facs(avatar, c.sentence);
+        else return "a command this room does not take";  // overrides and checks are answered above
       },
       command);
   state_->collect_events();
@@ -315,6 +347,18 @@ void RoomSimulation::tick() {
   const double now_s = s.room.tick_index() * s.room.dt_s();
   for (auto& [id, a] : s.avatars) {
     a.face = s.room.face(id);
+    if (s.options.preview) {
+      // Before the physics face, as a room's behaviour targets are.
+      std::optional<behavior::AuTargets> played;
+      if (a.played && !a.overrides.behaviour) {
+        a.played_s += s.room.dt_s();
+        played = a.played->at(a.played_s);
+        if (a.played_s >= a.played->length_s()) a.played.reset();
+      } else {
+        a.played.reset();  // with behaviour on, the behaviour plays it
+      }
+      apply_overrides(a.overrides, a.face, played ? &*played : nullptr);
+    }
     const std::uint64_t seed = s.options.seed ^ id;
     if (!s.options.physics) {
       a.physics.resting = true;  // no physics face to step

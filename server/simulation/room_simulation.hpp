@@ -45,6 +45,10 @@ struct RoomSimulationOptions {
   /// Makes the lines' lip-sync tracks (track_maker.hpp); null: at once, on
   /// the caller's thread (ImmediateTrackMaker).
   std::shared_ptr<TrackMaker> track_maker{};
+  /// A face-lab preview (PROTOCOL.md 5.16): every avatar's own behaviour
+  /// starts off, and its person's overrides (face_overrides.hpp) hold its
+  /// face; a room's avatars refuse overrides.
+  bool preview = false;
 };
 
 struct AvatarSetup {
@@ -75,7 +79,16 @@ struct SnubCommand {
 struct FacsCommand {
   std::string sentence;     ///< a face script: an expression sentence, a vascular emotion, or one of each (room_script.hpp)
 };
-using AvatarCommand = std::variant<ExpressCommand, LookAtCommand, SnubCommand, FacsCommand>;
+/// A face-lab preview's override (face_overrides.hpp), held until changed.
+struct OverrideCommand {
+  codec::FaceOverride change;
+};
+/// A face script to parse without playing it (script_check.hpp).
+struct CheckCommand {
+  std::string script;
+};
+using AvatarCommand =
+    std::variant<ExpressCommand, LookAtCommand, SnubCommand, FacsCommand, OverrideCommand, CheckCommand>;
 
 /// Something that happened in the room at a tick (recorded in scenes,
 /// logged by the server).
@@ -123,8 +136,9 @@ class RoomSimulation {
 
   /// A person's command; an empty string when accepted, else why not (an
   /// unknown emotion, a target not in the room, a face script that does
-  /// not parse (its line and column) or passes a room's bounds: the message
-  /// says what was wrong).
+  /// not parse (its line and column) or passes a room's bounds, an override
+  /// outside a preview or of nothing the face has: the message says what
+  /// was wrong). A check only parses its script.
   std::string command(AvatarId avatar, const AvatarCommand& command);
   /// A chat line from `avatar`: the avatar says it in its language (with
   /// lip sync, after the lines it is still saying, once the line's track is

@@ -146,6 +146,10 @@ struct Hello {
   /// The client holds its own avatar's package (it uploaded the package
   /// itself): none of its own avatar's packages come back down.
   bool own_package = false;
+  /// A face-lab preview (PROTOCOL.md 5.16): the person is seated alone in a
+  /// private room of their own, which nobody else can list or join, and
+  /// the room's name in the hello is not used.
+  bool preview = false;
   /// Version 4: the language the person's chat lines are said in, an
   /// espeak-ng voice name (is_language_code); empty: the server's default.
   /// A version-3 hello has none (it must stay empty to be written).
@@ -207,15 +211,33 @@ struct Chat {
 };
 
 /// Up: a command to one's own avatar.
+/// What a face-lab override sets (PROTOCOL.md 5.16); `reset` clears them all.
+enum class OverridePart : std::uint8_t {
+  emotion = 0, action_unit = 1, head_yaw = 2, head_pitch = 3, head_roll = 4, eye_yaw = 5, eye_pitch = 6,
+  lids = 7, blush = 8, pallor = 9, behaviour = 10, reset = 11,
+};
+inline constexpr std::uint8_t kLastOverridePart = static_cast<std::uint8_t>(OverridePart::reset);
+
+/// One override of a face-lab preview: held until set again or reset.
+struct FaceOverride {
+  OverridePart part = OverridePart::emotion;
+  std::uint8_t index = 0;  ///< emotion 0 .. 5 (joy .. disgust), a FACS AU number, a colour region 0 .. 4
+  std::uint8_t side = 0;   ///< action unit and lids: 0 both, 1 left, 2 right
+  std::int16_t value = 0;  ///< ten-thousandths: of an intensity (0 .. 10000) or of a radian; behaviour 0 off, 1 on
+  bool operator==(const FaceOverride&) const = default;
+};
+
 struct Command {
-  enum class Kind : std::uint8_t { express = 0, look_at = 1, snub = 2, facs = 3 };
+  /// override and check: a face lab's (PROTOCOL.md 5.16).
+  enum class Kind : std::uint8_t { express = 0, look_at = 1, snub = 2, facs = 3, override_face = 4, check = 5 };
   std::uint32_t request_id = 0;  ///< echoed in the result
   Kind kind = Kind::express;
   std::string emotion;           ///< express: joy, sadness, anger, fear, surprise, disgust, neutral
   float intensity = 1;           ///< express: 0 .. 1 (carried in hundredths)
   std::uint32_t target = 0;      ///< look_at, snub: an avatar id
   std::uint32_t duration_ms = 3000;  ///< express, look_at, snub: 0 .. 600000
-  std::string sentence;          ///< facs: a FACS expression sentence
+  std::string sentence;          ///< facs: a FACS expression sentence; check: a script to parse
+  FaceOverride override_face;    ///< override_face
 };
 
 /// Down: the answer to a command.

@@ -1,0 +1,25 @@
+#include "script_check.hpp"
+
+#include "fw/script/grammar_sources.hpp"
+#include "fw/script/parser.hpp"
+
+namespace fw::server {
+
+std::string check_script(std::string_view text) {
+  const script::ScriptResult result = script::parse_script(script::default_language(), text);
+  const script::Diagnostic* first = nullptr;
+  std::size_t errors = 0;
+  for (const script::Diagnostic& d : result.diagnostics) {
+    if (d.severity != script::Severity::error) continue;
+    if (!first) first = &d;
+    ++errors;
+  }
+  if (!first) return result.sentences == 0 ? "line 1, column 1: the script holds no sentence" : "";
+  // The count goes first: the message may be cut to fit a command result.
+  std::string out = "line " + std::to_string(first->position.line) + ", column " +
+                    std::to_string(first->position.column) + ": ";
+  if (errors > 1) out += "(" + std::to_string(errors - 1) + " more errors) ";
+  return out + first->message;
+}
+
+}  // namespace fw::server

@@ -1,0 +1,15 @@
+#pragma once
+// A face script checked for a person editing it (the face lab's "check",
+// PROTOCOL.md 5.16): the same parser and grammar as `facewire-server script`
+// and a room's FACS command, with the first error where it is, in words a
+// command result carries (at most 120 bytes).
+#include <string>
+#include <string_view>
+
+namespace fw::server {
+
+/// "" when `text` parses without errors; else "line L, column C: what was
+/// wrong", with "(N more errors)" when there are others.
+std::string check_script(std::string_view text);
+
+}  // namespace fw::server
