@@ -17,12 +17,22 @@ export function readInvite(search) {
 /// (empty: a face made from the name) with its `key`, with the invitation's
 /// `token`, on the `servers` of the lobby's own address (empty: the page's own),
 /// the person's lines said in `language` (empty: the server's default).
-export function roomPageUrl({ room, name, asset, key, token, servers = '', language = '' }) {
+export function roomPageUrl(fields) {
+  return `room.html?${pageQuery(fields)}`;
+}
+
+/// The face lab's address (lab.html): the same fields, for a private preview
+/// of the same face (the room stays in it for a token, which names the room).
+export function labPageUrl(fields) {
+  return `lab.html?${pageQuery(fields)}`;
+}
+
+function pageQuery({ room, name, asset, key, token, servers = '', language = '' }) {
   const query = new URLSearchParams({ room, name });
   if (language) query.set('language', language);
   if (asset) query.set('asset', asset);
   if (asset && key) query.set('key', key);
   if (token) query.set('token', token);
   if (servers) query.set('servers', servers);
-  return `room.html?${query}`;
+  return query;
 }

@@ -7,7 +7,7 @@ import { showAvatarPreview } from './avatar_preview.js';
 import { cameraAvailable, snapshot, startCamera } from './camera.js';
 import { deleteAvatar } from './delete_avatar.js';
 import { loadIdentity, saveIdentity } from './identity.js';
-import { readInvite, roomPageUrl } from './invite.js';
+import { labPageUrl, readInvite, roomPageUrl } from './invite.js';
 import { DEFAULT_LANGUAGE, chooseLanguage, fetchLanguages, renderLanguages } from './languages.js';
 import { displayNameProblem, roomNameProblem } from './names.js';
 import { fitPhotoForUpload } from './photo_size.js';
@@ -259,4 +259,20 @@ $('join').addEventListener('click', () => {
   location.href = roomPageUrl({
     room, name, asset: state.asset, key: state.key, token: invite.token, servers: invite.servers, language,
   });
+});
+
+// The face lab: the same face on a private preview, with sliders (lab.html).
+$('lab-link').addEventListener('click', (event) => {
+  event.preventDefault();
+  const name = nameField.value.trim();
+  const nameProblem = displayNameProblem(name);
+  showError($('name-error'), nameProblem);
+  if (nameProblem) return nameField.focus();
+  if (state.uploading) return showError($('upload-error'), 'Wait until your photo is prepared, then open the lab.');
+  saveIdentity({ name, asset: state.asset, key: state.key, language: languageField.value });
+  location.href = labPageUrl({
+    room: roomField.value.trim() || 'lobby', name, asset: state.asset, key: state.key, token: invite.token,
+    servers: invite.servers,
+  });
+  return undefined;
 });

@@ -6,7 +6,7 @@
 // error for the same bytes.
 import {
   FIRST_SPEAKING_VERSION, Limits, MessageError as E, MessageType, OLDEST_PROTOCOL_VERSION, PROTOCOL_VERSION, SESSION_BIT,
-  LAST_MESSAGE_TYPE, isLanguageCode,
+  LAST_MESSAGE_TYPE, CommandKind, OverridePart, isLanguageCode,
 } from './session_types.js';
 import { ByteReader } from '../shared/byte_reader.js';
 import { decodeUtf8, isCleanText } from './wire.js';
@@ -117,7 +117,7 @@ const readers = {
     const { error, version } = versioned(f);
     if (error !== undefined) return { error };
     const flags = f.r.u8();
-    if (!f.r.failed && (flags & ~7) !== 0) f.fail(E.badFlags);
+    if (!f.r.failed && (flags & ~15) !== 0) f.fail(E.badFlags);
     const maxBps = f.bounded(4, Limits.bitsPerSecond);
     const room = f.string(Limits.roomNameBytes);
     const name = f.string(Limits.displayNameBytes);
@@ -128,7 +128,7 @@ const readers = {
     const language = version >= FIRST_SPEAKING_VERSION ? f.language(true) : '';
     return f.finish({
       protocolVersion: version, timestamps: (flags & 1) !== 0, noPackages: (flags & 2) !== 0,
-      ownPackage: (flags & 4) !== 0, maxBps, room, name, avatar, token, avatarKey, resume, language,
+      ownPackage: (flags & 4) !== 0, preview: (flags & 8) !== 0, maxBps, room, name, avatar, token, avatarKey, resume, language,
     });
   }],
   [MessageType.welcome]: [Limits.downstreamMessageBytes, (f) => {
@@ -160,8 +160,11 @@ const readers = {
     const requestId = f.r.varint(5);
     const kind = f.r.u8();
     if (f.r.failed) return { error: failureOf(f.r) };
-    if (kind > 3) return { error: E.valueOutOfRange };
-    const m = { requestId, kind, emotion: '', intensity: 1, target: 0, durationMs: 3000, sentence: '' };
+    if (kind > CommandKind.check) return { error: E.valueOutOfRange };
+    const m = {
+      requestId, kind, emotion: '', intensity: 1, target: 0, durationMs: 3000, sentence: '',
+      override: { part: 0, index: 0, side: 0, value: 0 },
+    };
     if (kind === 0) {
       m.emotion = f.string(Limits.emotionBytes);
       const percent = f.r.u8();
@@ -171,6 +174,13 @@ const readers = {
     } else if (kind === 1 || kind === 2) {
       m.target = f.bounded(3, Limits.avatarId);
       m.durationMs = f.bounded(3, Limits.commandMs);
+    } else if (kind === CommandKind.override) {
+      const part = f.r.u8();
+      const index = f.r.u8();
+      const side = f.r.u8();
+      const value = f.r.i16();
+      if (!f.r.failed && (part > OverridePart.reset || side > 2)) f.fail(E.valueOutOfRange);
+      m.override = { part, index, side, value };
     } else {
       m.sentence = f.string(Limits.sentenceBytes, true);
     }

@@ -29,7 +29,12 @@ export const CloseCode = Object.freeze({
   avatarBeingPrepared: 12,
 });
 export const PresenceChange = Object.freeze({ joined: 0, left: 1 });
-export const CommandKind = Object.freeze({ express: 0, lookAt: 1, snub: 2, facs: 3 });
+export const CommandKind = Object.freeze({ express: 0, lookAt: 1, snub: 2, facs: 3, override: 4, check: 5 });
+/** What a face-lab override sets (PROTOCOL.md 5.16): its `part`. */
+export const OverridePart = Object.freeze({
+  emotion: 0, actionUnit: 1, headYaw: 2, headPitch: 3, headRoll: 4, eyeYaw: 5, eyePitch: 6, lids: 7, blush: 8,
+  pallor: 9, behaviour: 10, reset: 11,
+});
 export const PackageQuality = Object.freeze({ preview: 0, full: 1 });
 export const AttentionTarget = Object.freeze({ nobody: 0, room: 1, avatar: 2 });
 

@@ -40,7 +40,7 @@ const writers = {
   [MessageType.hello]: (w, m) => {
     const version = m.protocolVersion ?? PROTOCOL_VERSION;
     w.u16(version);
-    w.u8((m.timestamps ? 1 : 0) | (m.noPackages ? 2 : 0) | (m.ownPackage ? 4 : 0));
+    w.u8((m.timestamps ? 1 : 0) | (m.noPackages ? 2 : 0) | (m.ownPackage ? 4 : 0) | (m.preview ? 8 : 0));
     w.varint(m.maxBps ?? 0);
     w.string(m.room);
     w.string(m.name);
@@ -80,6 +80,12 @@ const writers = {
     } else if (m.kind === 1 || m.kind === 2) {
       w.varint(m.target);
       w.varint(m.durationMs);
+    } else if (m.kind === 4) {
+      const o = m.override;
+      w.u8(o.part);
+      w.u8(o.index);
+      w.u8(o.side);
+      w.i16(o.value);
     } else {
       w.string(m.sentence);
     }

@@ -26,6 +26,7 @@ export class RoomClient {
    * @param options.language     the language the person's lines are said in ('' = the server's default)
    * @param options.maxBps       downstream budget, 0: the server's default
    * @param options.ownPackage   the page holds its own avatar's package (the server sends it none)
+   * @param options.preview      a face-lab preview (PROTOCOL.md 5.16): a private room of one, `room` unused
    * @param options.openSocket   url -> WebSocket-like ({binaryType, send, close, onopen, onmessage, onclose})
    * @param options.onChange     (what, detail) => void, after every change of state ('welcome', 'chat', 'frame', ...);
    *                             'speaking' with { line, framesReceived } (the line starts with the next room
@@ -34,7 +35,7 @@ export class RoomClient {
    */
   constructor(options) {
     this.resume = '';
-    this.options = { maxBps: 0, ownPackage: false, asset: '', avatarKey: '', token: '', language: '', now: () => performance.now(), ...options };
+    this.options = { maxBps: 0, ownPackage: false, preview: false, asset: '', avatarKey: '', token: '', language: '', now: () => performance.now(), ...options };
     this.servers = this.options.servers ?? String(this.options.url).split(',').map((u) => u.trim()).filter(Boolean);
     this.serverIndex = 0;
     /** Where the client moved and why, newest last (for the page and whoever inspects it). */
@@ -86,6 +87,10 @@ export class RoomClient {
   lookAt(target, durationMs = 5000) { return this.command({ kind: CommandKind.lookAt, target, durationMs }); }
   snub(target, durationMs = 10000) { return this.command({ kind: CommandKind.snub, target, durationMs }); }
   facs(sentence) { return this.command({ kind: CommandKind.facs, sentence }); }
+  /** A face-lab preview's override ({ part, index, side, value }, PROTOCOL.md 5.16). */
+  override(fields) { return this.command({ kind: CommandKind.override, override: fields }); }
+  /** Asks the server to parse a face script without playing it. */
+  check(script) { return this.command({ kind: CommandKind.check, sentence: script }); }
   setRate(maxBps) {
     this.options.maxBps = maxBps;
     this.send(writeMessage(MessageType.setRate, { maxBps }));
@@ -124,7 +129,7 @@ export class RoomClient {
       const o = this.options;
       socket.send(writeMessage(MessageType.hello, {
         room: o.room, name: o.name, avatar: o.asset, avatarKey: o.avatarKey, token: o.token, maxBps: o.maxBps,
-        ownPackage: o.ownPackage, timestamps: false, noPackages: false, language: o.language,
+        ownPackage: o.ownPackage, preview: o.preview, timestamps: false, noPackages: false, language: o.language,
         // After a drop: the server may still hold the token for the old
         // connection; the last welcome's key shows this is the same person.
         resume: this.resume,

@@ -1,0 +1,50 @@
+// The face lab's preview drawn as the room draws a face (room_view.js's
+// package building and tile drawing, face_renderer.js), alone on the canvas,
+// seen by a camera the person turns about the head: from the front at 0,
+// from the person's left at +90 degrees.
+import { mat4 } from '../../shared/mat4.js';
+import { RoomView } from '../room_view.js';
+
+/** The self view's aim (room_view.js), from further: the whole head, turned, and the top of the neck. */
+const CAMERA_HEIGHT = -0.25;
+const CAMERA_DISTANCE = 11;
+const FOV_Y = 0.5236;
+
+export class LabView {
+  constructor({ gl, engine, renderer, client }) {
+    this.client = client;
+    this.room = new RoomView({ gl, engine, renderer, client });
+    this.cameraYawRad = 0;
+    this.frames = 0;
+    /** The FaceParams the face was drawn with last (for whoever inspects the page). */
+    this.drawnParams = null;
+  }
+
+  /** The page's own package, drawn before the stream's first frame. */
+  setOwnPackage(bytes) { return this.room.setOwnPackage(bytes); }
+
+  /** Draws the preview on a canvas of `width` x `height` CSS pixels. */
+  draw(width, height, pixelRatio, nowMs) {
+    const room = this.room;
+    room.syncPackages();
+    const you = this.client.you;
+    const face = room.ownFace ?? room.faces.get(you);
+    const gl = room.gl;
+    gl.viewport(0, 0, gl.drawingBufferWidth, gl.drawingBufferHeight);
+    gl.clearColor(0.11, 0.12, 0.14, 1);
+    gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
+    const params = you ? this.client.face(you, nowMs) : null;
+    if (!face || !params) return;
+    const rect = { x: 0, y: 0, w: width, h: height };
+    const aspect = width / Math.max(1, height);
+    const distance = CAMERA_DISTANCE / Math.min(1, aspect);
+    const position = [distance * Math.sin(this.cameraYawRad), CAMERA_HEIGHT, distance * Math.cos(this.cameraYawRad)];
+    const camera = room.camera({ position, target: [0, CAMERA_HEIGHT, 0] }, FOV_Y, aspect);
+    room.drawTile('lab', rect, 0, height, pixelRatio, face, params, mat4.identity(), camera);
+    this.drawnParams = params;
+    this.frames += 1;
+  }
+
+  /** Landmarks (68-point scheme) of the face as last drawn, CSS pixels on the canvas. */
+  landmarksOnScreen(indices) { return this.room.landmarksOnScreen('lab', indices); }
+}
