@@ -41,7 +41,7 @@ json info_json(const AvatarInfo& a) {
 // The fields of each message as the port names them (camelCase).
 json fields(const Hello& m) {
   return {{"protocolVersion", m.protocol_version}, {"timestamps", m.timestamps}, {"noPackages", m.no_packages},
-          {"ownPackage", m.own_package}, {"maxBps", m.max_bps}, {"room", m.room}, {"name", m.name},
+          {"ownPackage", m.own_package}, {"preview", m.preview}, {"maxBps", m.max_bps}, {"room", m.room}, {"name", m.name},
           {"avatar", m.avatar}, {"token", m.token}, {"avatarKey", m.avatar_key}, {"resume", m.resume},
           {"language", m.language}};
 }
@@ -55,7 +55,9 @@ json fields(const Presence& m) { return {{"change", static_cast<int>(m.change)},
 json fields(const Chat& m) { return {{"from", m.from}, {"text", m.text}}; }
 json fields(const Command& m) {
   return {{"requestId", m.request_id}, {"kind", static_cast<int>(m.kind)}, {"emotion", m.emotion},
-          {"intensity", m.intensity}, {"target", m.target}, {"durationMs", m.duration_ms}, {"sentence", m.sentence}};
+          {"intensity", m.intensity}, {"target", m.target}, {"durationMs", m.duration_ms}, {"sentence", m.sentence},
+          {"override", {{"part", static_cast<int>(m.override_face.part)}, {"index", m.override_face.index},
+                        {"side", m.override_face.side}, {"value", m.override_face.value}}}};
 }
 json fields(const CommandResult& m) { return {{"requestId", m.request_id}, {"error", m.error}}; }
 json fields(const PackageChunk& m) {
@@ -181,6 +183,12 @@ json make_vectors() {
                 .duration_ms = 0, .sentence = ""});
   v.add(Command{.request_id = 4, .kind = Command::Kind::facs, .emotion = "", .intensity = 1, .target = 0,
                 .duration_ms = 3000, .sentence = "AU12 0.8\n\tAU6 0.5"});
+  v.add(Command{.request_id = 5, .kind = Command::Kind::override_face, .emotion = "", .intensity = 1, .target = 0,
+                .duration_ms = 3000, .sentence = "", .override_face = {OverridePart::action_unit, 12, 1, 7500}});
+  v.add(Command{.request_id = 6, .kind = Command::Kind::override_face, .emotion = "", .intensity = 1, .target = 0,
+                .duration_ms = 3000, .sentence = "", .override_face = {OverridePart::head_yaw, 0, 0, -12000}});
+  v.add(Command{.request_id = 7, .kind = Command::Kind::check, .emotion = "", .intensity = 1, .target = 0,
+                .duration_ms = 3000, .sentence = "ClearAllFrame\nBeginKeyFrame 12 1.0"});
   v.add(CommandResult{4, "no such action unit"});
   v.add(PackageChunk{7, PackageChunk::Quality::full, 20000, 16000, {1, 2, 3, 250, 0}});
   v.add(SetRate{2400});

@@ -280,6 +280,36 @@ TEST(Messages, CommandsOfEveryKindRoundTrip) {
   EXPECT_EQ(back.sentence, facs.sentence);
 }
 
+TEST(Messages, FaceLabCommandsAndPreviewHelloRoundTrip) {
+  Command set{.request_id = 8, .kind = Command::Kind::override_face, .emotion = "", .intensity = 1, .target = 0,
+              .duration_ms = 3000, .sentence = "", .override_face = {OverridePart::head_roll, 0, 0, -6000}};
+  Command back;
+  ASSERT_EQ(read_message(bytes_of(set), back), MessageError::ok);
+  EXPECT_EQ(back.kind, Command::Kind::override_face);
+  EXPECT_EQ(back.override_face, set.override_face);
+
+  // A part past `reset`, or a side past right, means nothing.
+  std::vector<std::uint8_t> bytes = bytes_of(set);
+  bytes[bytes.size() - 5] = kLastOverridePart + 1;
+  EXPECT_EQ(read_message(bytes, back), MessageError::value_out_of_range);
+  bytes = bytes_of(set);
+  bytes[bytes.size() - 3] = 3;
+  EXPECT_EQ(read_message(bytes, back), MessageError::value_out_of_range);
+
+  Command check{.request_id = 9, .kind = Command::Kind::check, .emotion = "", .intensity = 1, .target = 0,
+                .duration_ms = 3000, .sentence = "ClearAllFrame\n\tBeginKeyFrame"};
+  ASSERT_EQ(read_message(bytes_of(check), back), MessageError::ok);
+  EXPECT_EQ(back.sentence, check.sentence);
+
+  Hello hello;
+  hello.room = "lab";
+  hello.name = "Ada";
+  hello.preview = true;
+  Hello hello_back;
+  ASSERT_EQ(read_message(bytes_of(hello), hello_back), MessageError::ok);
+  EXPECT_TRUE(hello_back.preview);
+}
+
 TEST(Messages, SmallMessagesRoundTrip) {
   Chat chat{3, "hello, room"};
   Chat chat_back;

@@ -71,7 +71,7 @@ Bytes room_frame_bytes() {
 
 struct Messages {
   Bytes hello, hello_v3, hello_minimal, welcome, welcome_v3, presence_joined, presence_left, chat_up, chat_down, command_express,
-      command_look_at, command_snub, command_facs, command_accepted, command_refused, package_chunk, package_chunk_large,
+      command_look_at, command_snub, command_facs, command_override, command_check, hello_preview, command_accepted, command_refused, package_chunk, package_chunk_large,
       set_rate, ping, pong, link_stats, closing, timed_room_frame, seats, attention, speaking, stream_header,
       stream_header_loss_tolerant, resync_request, room_frame;
 };
@@ -106,6 +106,14 @@ Messages make_messages() {
                                     .target = 5, .duration_ms = 0, .sentence = ""});
   m.command_facs = bytes_of(Command{.request_id = 4, .kind = Command::Kind::facs, .emotion = "", .intensity = 1,
                                     .target = 0, .duration_ms = 3000, .sentence = "AU12 0.8\n\tAU6 0.5"});
+  m.command_override = bytes_of(Command{.request_id = 5, .kind = Command::Kind::override_face, .emotion = "",
+                                        .intensity = 1, .target = 0, .duration_ms = 3000, .sentence = "",
+                                        .override_face = {OverridePart::action_unit, 12, 2, -3}});
+  m.command_check = bytes_of(Command{.request_id = 6, .kind = Command::Kind::check, .emotion = "", .intensity = 1,
+                                     .target = 0, .duration_ms = 3000, .sentence = "ClearAllFrame\nBeginKeyFrame"});
+  Hello preview = minimal;
+  preview.preview = true;
+  m.hello_preview = bytes_of(preview);
   m.command_accepted = bytes_of(CommandResult{4, ""});
   m.command_refused = bytes_of(CommandResult{5, "no such action unit"});
   m.package_chunk = bytes_of(PackageChunk{7, PackageChunk::Quality::preview, 20000, 16000, {1, 2, 3, 250, 0}});
@@ -147,6 +155,9 @@ void session_messages(const fs::path& corpus, const Messages& m) {
   f.write("command_look_at", m.command_look_at);
   f.write("command_snub", m.command_snub);
   f.write("command_facs", m.command_facs);
+  f.write("command_override", m.command_override);
+  f.write("command_check", m.command_check);
+  f.write("hello_preview", m.hello_preview);
   f.write("command_accepted", m.command_accepted);
   f.write("command_refused", m.command_refused);
   f.write("package_chunk", m.package_chunk);
