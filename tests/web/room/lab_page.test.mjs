@@ -1,0 +1,122 @@
+// The face lab (lab.html) on a real server in Chromium: its preview is drawn
+// by the room's renderer, the joy slider moves the mouth, the cheeks' blush
+// sliders redden the cheeks, a script with a syntax error is shown at its
+// line and column, and the lobby links the lab. Pixels are read from the
+// canvas where the page's own landmarks put the mouth and the cheeks.
+// FW_LAB_SHOTS=DIR keeps a screenshot at desktop and at phone size.
+import { after, before, test } from 'node:test';
+import assert from 'node:assert/strict';
+
+import { openWeb } from '../support/harness.mjs';
+import { pageUntil } from '../support/page_poll.mjs';
+import { canvasPixels, meanAbsDifference, mouthSamples } from '../support/room_pixels.mjs';
+
+/** Long enough for an override to reach the server, its face to settle through the physics face and come back. */
+const SETTLE_MS = 2000;
+let web;
+
+before(async () => { web = await openWeb([]); });
+after(async () => { await web?.close(); });
+
+async function openLab(viewport = { width: 1280, height: 800 }) {
+  const page = await web.page(viewport);
+  await page.goto(`${web.server.url}lab.html?name=Ada`);
+  await pageUntil(page, (p) => p.evaluate(() => window.facewireLab && {
+    status: window.facewireLab.client.status, frames: window.facewireLab.view.frames,
+  }), (s) => s.status === 'joined' && s.frames > 10, 'the preview drawn', 60000);
+  await page.waitForTimeout(SETTLE_MS);
+  return page;
+}
+
+const landmarks = (page, indices) => page.evaluate((i) => window.facewireLab.view.landmarksOnScreen(i), indices);
+
+async function slide(page, key, value) {
+  const slider = page.locator(`input[data-key="${key}"]`);
+  await slider.evaluate((input, v) => {
+    input.value = String(v);
+    input.dispatchEvent(new Event('input', { bubbles: true }));
+  }, value);
+}
+
+/** Mean R/G of a square around each cheek: between the lower lid, the mouth's corner and the jaw. */
+async function cheekRedness(page) {
+  const [l2, l14, l41, l46, l48, l54, l36, l45] = await landmarks(page, [2, 14, 41, 46, 48, 54, 36, 45]);
+  const side = 0.12 * Math.hypot(l45[0] - l36[0], l45[1] - l36[1]);
+  const centre = (...ps) => [0, 1].map((k) => ps.reduce((s, p) => s + p[k], 0) / ps.length);
+  let ratio = 0;
+  for (const [x, y] of [centre(l2, l41, l48), centre(l14, l46, l54)]) {
+    const { data } = await canvasPixels(page, { x: x - side / 2, y: y - side / 2, w: side, h: side });
+    let r = 0;
+    let g = 0;
+    for (let i = 0; i < data.length; i += 4) [r, g] = [r + data[i], g + data[i + 1]];
+    ratio += r / Math.max(1, g) / 2;
+  }
+  return ratio;
+}
+
+test('the joy slider changes the mouth', async () => {
+  const page = await openLab();
+  const corners = await landmarks(page, [36, 45]);
+  const before = await mouthSamples(page, corners);
+  await page.waitForTimeout(500);
+  const still = await mouthSamples(page, corners);
+  await slide(page, 'emotion-joy', 100);
+  await page.waitForTimeout(SETTLE_MS);
+  const after = await mouthSamples(page, await landmarks(page, [36, 45]));
+  const unchanged = meanAbsDifference(before, still);
+  const changed = meanAbsDifference(before, after);
+  assert.ok(unchanged < 1.5, `the held face moved by itself: ${unchanged.toFixed(2)}`);
+  assert.ok(changed > 3 && changed > 4 * unchanged, `joy at 100 %: the mouth changed by ${changed.toFixed(2)} (still: ${unchanged.toFixed(2)})`);
+  await page.close();
+});
+
+test('the cheeks redden with their blush sliders', async () => {
+  const page = await openLab();
+  const before = await cheekRedness(page);
+  await slide(page, 'blush-1', 100);
+  await slide(page, 'blush-2', 100);
+  await page.waitForTimeout(SETTLE_MS);
+  const after = await cheekRedness(page);
+  assert.ok(after > before * 1.04, `R/G in the cheeks: ${before.toFixed(3)} before, ${after.toFixed(3)} with blush`);
+  await page.close();
+});
+
+test('a script with a syntax error is shown at its line and column', async () => {
+  const page = await openLab();
+  await page.fill('#script', 'ClearAllFrame\nBeginKeyFrame\n  12 oops\nend\n');
+  await page.click('#script-check');
+  const shown = await pageUntil(page, (p) => p.evaluate(() => {
+    const result = document.getElementById('script-result');
+    return result.dataset.line ? { line: result.dataset.line, column: result.dataset.column, text: result.textContent } : null;
+  }), () => true, 'the check answered');
+  assert.equal(shown.line, '3');
+  assert.match(shown.text, new RegExp(`^line 3, column ${shown.column}: `));
+  const caret = await page.evaluate(() => document.getElementById('script').selectionStart);
+  assert.equal(caret, 'ClearAllFrame\nBeginKeyFrame\n'.length + Number(shown.column) - 1, 'the caret is put at the error');
+
+  await page.fill('#script', 'ClearAllFrame\nBeginKeyFrame\nBeginKeyFrame\n 12 1.0\nAnimate 5 "Texture"\nend\n');
+  await page.click('#script-check');
+  await pageUntil(page, (p) => p.textContent('#script-result'), (t) => t.includes('no errors'), 'a good script checked');
+  await page.close();
+});
+
+test('the lab works at desktop and phone size, and the lobby links it', async () => {
+  for (const [width, height, label] of [[1280, 800, 'desktop'], [390, 844, 'phone']]) {
+    const page = await openLab({ width, height });
+    const box = await page.locator('#room-canvas').boundingBox();
+    assert.ok(box.width > 0.6 * width && box.width <= width, `${label}: the preview is ${box.width} px wide`);
+    assert.ok(box.height > 0.4 * height, `${label}: the preview is ${box.height} px high`);
+    const overflow = await page.evaluate(() => document.documentElement.scrollWidth - document.documentElement.clientWidth);
+    assert.ok(overflow <= 0, `${label}: the page is ${overflow} px wider than the screen`);
+    if (process.env.FW_LAB_SHOTS) await page.screenshot({ path: `${process.env.FW_LAB_SHOTS}/lab-${label}.png` });
+    await page.close();
+  }
+  const lobby = await web.page();
+  await lobby.goto(web.server.url);
+  await lobby.fill('#name', 'Ada');
+  await lobby.click('#lab-link');
+  await lobby.waitForURL(/lab\.html\?/);
+  assert.match(lobby.url(), /name=Ada/);
+  await lobby.close();
+  assert.deepEqual(web.pageErrors, []);
+});
