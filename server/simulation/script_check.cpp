@@ -1,5 +1,6 @@
 #include "script_check.hpp"
 
+#include "fw/behavior/room_script.hpp"
 #include "fw/script/grammar_sources.hpp"
 #include "fw/script/parser.hpp"
 
@@ -14,7 +15,13 @@ std::string check_script(std::string_view text) {
     if (!first) first = &d;
     ++errors;
   }
-  if (!first) return result.sentences == 0 ? "line 1, column 1: the script holds no sentence" : "";
+  if (!first) {
+    if (result.sentences == 0) return "line 1, column 1: the script holds no sentence";
+    // Well formed: what a room would still refuse of it (its bounds, what
+    // it does not play), as playing it would answer.
+    behavior::RoomScript playable;
+    return behavior::read_room_script(text, playable);
+  }
   // The count goes first: the message may be cut to fit a command result.
   std::string out = "line " + std::to_string(first->position.line) + ", column " +
                     std::to_string(first->position.column) + ": ";

@@ -8,8 +8,10 @@
 
 namespace fw::server {
 
-/// "" when `text` parses without errors; else "line L, column C: what was
-/// wrong", with "(N more errors)" when there are others.
+/// "" when `text` parses without errors and a room would play it; else
+/// "line L, column C: what was wrong", with "(N more errors)" when there
+/// are others, or what a room refuses of a well-formed script (a bound it
+/// passes: room_script.hpp), as playing it would answer.
 std::string check_script(std::string_view text);
 
 }  // namespace fw::server

@@ -132,6 +132,9 @@ TEST(ScriptCheck, TheFirstErrorWithItsLineAndColumn) {
   const std::string error = check_script("ClearAllFrame\nBeginKeyFrame\n 12 oops\nend\n");
   EXPECT_EQ(error.rfind("line 3, column ", 0), 0u) << error;
   EXPECT_EQ(check_script("").rfind("line 1, column 1: ", 0), 0u) << "an empty script is no expression";
+  // Well formed but past a room's bounds: what playing it would answer.
+  const std::string too_long = check_script("ClearAllFrame BeginKeyFrame 12 1.0 Animate 700 \"Texture\" end");
+  EXPECT_NE(too_long.find("at most 60 s"), std::string::npos) << too_long;
 }
 
 }  // namespace

@@ -52,7 +52,7 @@ test('the sender sends the newest value of each control, at most every interval'
 test('a check\'s error gives its line and column and where it is in the text', () => {
   assert.equal(readScriptResult(''), null);
   assert.deepEqual(readScriptResult('line 3, column 6: a number was expected'), { line: 3, column: 6, message: 'a number was expected' });
-  assert.deepEqual(readScriptResult('FACS sentence, line 2 column 1: x'), { line: 2, column: 1, message: 'x' });
+  assert.deepEqual(readScriptResult('script 2:1: x'), { line: 2, column: 1, message: 'x' });
   assert.deepEqual(readScriptResult('the script is empty'), { line: null, column: null, message: 'the script is empty' });
   assert.equal(offsetOf('ab\ncd\nef', 3, 2), 7);
 });

@@ -1,15 +1,16 @@
 // What the server said of a face script the lab checked or played
 // (server/simulation/script_check.hpp: "line L, column C: what was wrong";
-// a FACS sentence played: "FACS sentence, line L column C: ..."),
+// a script played: "script L:C: ..." (avatar/behavior's room_script.hpp)),
 // as the editor shows it: the place to put the caret, and the words.
-const PLACE = /line (\d+),? column (\d+): /;
+const PLACE = /(?:line (\d+), column (\d+)|script (\d+):(\d+)): /;
 
 /** { line, column, message } of an error; line and column null when it names no place; null when accepted. */
 export function readScriptResult(error) {
   if (!error) return null;
   const place = PLACE.exec(error);
   if (!place) return { line: null, column: null, message: error };
-  return { line: Number(place[1]), column: Number(place[2]), message: error.slice(place.index + place[0].length) };
+  const [line, column] = place[1] ? [place[1], place[2]] : [place[3], place[4]];
+  return { line: Number(line), column: Number(column), message: error.slice(place.index + place[0].length) };
 }
 
 /** The offset in `text` of 1-based `line` and `column` (columns count bytes; fine for ASCII scripts). */
