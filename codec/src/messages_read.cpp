@@ -1,6 +1,7 @@
 // Session message readers (server/PROTOCOL.md, "Messages"). Each checks the
 // first byte and the size limit, reads its fields through a ByteReader whose
 // error flag sticks, then checks once that nothing was cut and nothing follows.
+#include "fw/codec/face_params.hpp"
 #include "message_fields.hpp"
 
 namespace fw::codec {
@@ -327,6 +328,40 @@ MessageError read_message(std::span<const std::uint8_t> bytes, Speaking& m) {
   read_language(r, m.language, error, /*may_be_empty=*/false);
   read_string(r, kMaxChatBytes, m.text, error);
   if (!r.failed() && error == MessageError::ok && m.text.empty()) fail(error, MessageError::value_out_of_range);
+  return finish(r, error);
+}
+
+}  // namespace fw::codec
+
+namespace fw::codec {
+
+// Channels and vertices strictly increase, so a unit or a vertex is never
+// given twice and the message has one reading.
+MessageError read_message(std::span<const std::uint8_t> bytes, UnitMorphs& m) {
+  ByteReader r(bytes);
+  if (auto e = check_first_byte(r, bytes.size(), MessageType::unit_morphs, kMaxDownstreamMessageBytes);
+      e != MessageError::ok)
+    return e;
+  MessageError error = MessageError::ok;
+  m.avatar = read_bounded(r, 3, kMaxAvatarIdValue, error);
+  m.version = r.varint(5);
+  const std::uint8_t count = r.u8();
+  if (!r.failed() && count > kMaxRedefinedChannels) fail(error, MessageError::too_many_entries);
+  m.units.clear();
+  for (std::uint32_t i = 0; i < count && !r.failed() && error == MessageError::ok; ++i) {
+    UnitMorphs::Unit& unit = m.units.emplace_back();
+    unit.channel = r.u8();
+    if (!r.failed() && (unit.channel >= kAuChannelCount || (i > 0 && unit.channel <= m.units[i - 1].channel)))
+      fail(error, MessageError::value_out_of_range);
+    const std::uint32_t moves = r.varint(2);
+    if (!r.failed() && moves > kMaxUnitMorphMoves) fail(error, MessageError::too_many_entries);
+    for (std::uint32_t k = 0; k < moves && !r.failed() && error == MessageError::ok; ++k) {
+      UnitMorphs::Move& move = unit.moves.emplace_back();
+      move.vertex = read_bounded(r, 2, kMaxUnitMorphMoves - 1, error);
+      if (!r.failed() && k > 0 && move.vertex <= unit.moves[k - 1].vertex) fail(error, MessageError::value_out_of_range);
+      for (std::int16_t& d : move.delta) d = r.i16_le();
+    }
+  }
   return finish(r, error);
 }
 

@@ -2,6 +2,7 @@
 #include <cassert>
 #include <cmath>
 
+#include "fw/codec/face_params.hpp"
 #include "message_fields.hpp"
 
 namespace fw::codec {
@@ -228,6 +229,29 @@ void write_message(const Speaking& m, std::vector<std::uint8_t>& out) {
   w.varint(m.duration_ms);
   write_string(w, m.language);
   write_string(w, m.text);
+}
+
+}  // namespace fw::codec
+
+namespace fw::codec {
+
+void write_message(const UnitMorphs& m, std::vector<std::uint8_t>& out) {
+  assert(m.avatar <= kMaxAvatarIdValue && m.units.size() <= kMaxRedefinedChannels);
+  ByteWriter w(out);
+  w.u8(first_byte(MessageType::unit_morphs));
+  w.varint(m.avatar);
+  w.varint(m.version);
+  w.u8(static_cast<std::uint8_t>(m.units.size()));
+  for (const UnitMorphs::Unit& unit : m.units) {
+    assert(unit.channel < kAuChannelCount && unit.moves.size() <= kMaxUnitMorphMoves);
+    w.u8(unit.channel);
+    w.varint(static_cast<std::uint32_t>(unit.moves.size()));
+    for (const UnitMorphs::Move& move : unit.moves) {
+      assert(move.vertex < kMaxUnitMorphMoves);
+      w.varint(move.vertex);
+      for (const std::int16_t d : move.delta) w.i16_le(d);
+    }
+  }
 }
 
 }  // namespace fw::codec

@@ -86,6 +86,15 @@ json fields(const Speaking& m) {
   return {{"avatar", m.avatar}, {"tick", m.tick}, {"durationMs", m.duration_ms}, {"language", m.language},
           {"text", m.text}};
 }
+json fields(const UnitMorphs& m) {
+  json units = json::array();
+  for (const auto& unit : m.units) {
+    json moves = json::array();
+    for (const auto& move : unit.moves) moves.push_back({{"vertex", move.vertex}, {"delta", move.delta}});
+    units.push_back({{"channel", unit.channel}, {"moves", moves}});
+  }
+  return {{"avatar", m.avatar}, {"version", m.version}, {"units", units}};
+}
 json fields(const Attention& m) {
   json entries = json::array();
   for (const auto& e : m.entries)
@@ -156,7 +165,7 @@ json make_vectors() {
   Vectors v;
   v.add(fw::test::sample_hello());
   v.add(fw::test::sample_hello_v3());  // still read: a version-3 client, no language
-  Hello plain;  // version 4 with the server's default language
+  Hello plain;  // this version, with the server's default language
   plain.room = "r";
   plain.name = "A";
   plain.no_packages = true;
@@ -208,6 +217,8 @@ json make_vectors() {
   v.add(Speaking{.avatar = 2097151, .tick = 4294967295u, .duration_ms = kMaxSpeakingMs, .language = "zh-yue-1",
                  .text = "Ja."});
   v.add(Speaking{.avatar = 0, .tick = 0, .duration_ms = 0, .language = "x", .text = "."});
+  v.add(fw::test::sample_unit_morphs());
+  v.add(UnitMorphs{.avatar = 2097151, .version = 4294967295u, .units = {}});
   return {{"protocolVersion", kProtocolVersion}, {"messages", v.messages}, {"damaged", v.damaged_messages}};
 }
 

@@ -36,14 +36,14 @@ TEST(Messages, HelloRoundTrips) {
   EXPECT_TRUE(back.own_package);
   EXPECT_EQ(back.avatar_key, hello.avatar_key);
   EXPECT_EQ(back.resume, hello.resume);
-  EXPECT_EQ(back.protocol_version, 4);
+  EXPECT_EQ(back.protocol_version, 5);
   EXPECT_EQ(back.language, "pt-br");
   EXPECT_EQ(bytes_of(back), bytes);
 }
 
 TEST(Messages, HelloOfAnotherVersionIsRefusedBeforeItsFields) {
   Hello back;
-  for (const std::uint8_t version : {1, 2, 5, 0xFF}) {  // versions whose layout this reader does not know
+  for (const std::uint8_t version : {1, 2, 6, 0xFF}) {  // versions whose layout this reader does not know
     std::vector<std::uint8_t> bytes = {0x81, version, 0x00, 0xFF};
     EXPECT_EQ(read_message(bytes, back), MessageError::unsupported_version) << int{version};
   }
@@ -173,9 +173,47 @@ TEST(Messages, SpeakingRefusesWhatNoServerSends) {
   EXPECT_EQ(read_message(long_language, back), MessageError::string_too_long);
   Chat chat;
   EXPECT_EQ(read_message(bytes_of(fw::test::sample_speaking()), chat), MessageError::wrong_type);
-  EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x91, 0x00}, back), MessageError::unknown_type)
-      << "0x91 is no message of version 4";
-  EXPECT_EQ(classify(std::vector<std::uint8_t>{0x91, 0x00}), MessageKind::invalid);
+  EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x92, 0x00}, back), MessageError::unknown_type)
+      << "0x92 is no message of version 5";
+  EXPECT_EQ(classify(std::vector<std::uint8_t>{0x92, 0x00}), MessageKind::invalid);
+}
+
+TEST(Messages, UnitMorphsRoundTrip) {
+  const UnitMorphs morphs = fw::test::sample_unit_morphs();
+  const auto bytes = bytes_of(morphs);
+  EXPECT_EQ(bytes[0], 0x91);
+  EXPECT_EQ(classify(bytes), MessageKind::session);
+  UnitMorphs back;
+  ASSERT_EQ(read_message(bytes, back), MessageError::ok);
+  EXPECT_EQ(back.avatar, 300u);
+  EXPECT_EQ(back.version, 3u);
+  EXPECT_EQ(back.units, morphs.units);
+  EXPECT_EQ(bytes_of(back), bytes);
+  const UnitMorphs restored{.avatar = 1, .version = 9, .units = {}};
+  ASSERT_EQ(read_message(bytes_of(restored), back), MessageError::ok);
+  EXPECT_TRUE(back.units.empty());
+}
+
+TEST(Messages, UnitMorphsRefuseWhatNoServerSends) {
+  UnitMorphs back;
+  // avatar 1, version 1, then the units.
+  const auto with_units = [](std::vector<std::uint8_t> units) {
+    std::vector<std::uint8_t> bytes = {0x91, 0x01, 0x01};
+    bytes.insert(bytes.end(), units.begin(), units.end());
+    return bytes;
+  };
+  EXPECT_EQ(read_message(with_units({9}), back), MessageError::too_many_entries) << "at most 8 channels";
+  EXPECT_EQ(read_message(with_units({1, 29, 0}), back), MessageError::value_out_of_range) << "29 channels: 0 .. 28";
+  EXPECT_EQ(read_message(with_units({2, 4, 0, 4, 0}), back), MessageError::value_out_of_range)
+      << "a channel given twice";
+  EXPECT_EQ(read_message(with_units({1, 4, 2, 7, 1, 0, 0, 0, 0, 0, 7, 1, 0, 0, 0, 0, 0}), back),
+            MessageError::value_out_of_range)
+      << "a vertex given twice";
+  EXPECT_EQ(read_message(with_units({1, 4, 0x81, 0x08}), back), MessageError::too_many_entries) << "1025 moves";
+  EXPECT_EQ(read_message(with_units({1, 4, 1, 0x80, 0x08, 0, 0, 0, 0, 0, 0}), back), MessageError::value_out_of_range)
+      << "vertex 1024";
+  EXPECT_EQ(read_message(with_units({1, 4, 1, 7, 1, 0}), back), MessageError::truncated);
+  EXPECT_EQ(read_message(with_units({0, 0}), back), MessageError::trailing_bytes);
 }
 
 TEST(Messages, WelcomeOfVersionThreeAnswersAVersionThreeHello) {

@@ -1,7 +1,7 @@
 // Fuzzes the readers of every message a connection carries (codec/messages.hpp:
 // hello, chat, command, set_rate and ping up; welcome, presence, command
 // results, package chunks, pong, link statistics, closing, timed room frames,
-// seats, attention and speaking down; and the codec's stream header and resync request
+// seats, attention, speaking and unit morphs down; and the codec's stream header and resync request
 // that travel with them). The input is one message. classify() picks its
 // reader from the first byte; the readers of every other type must refuse it
 // at their type check. Whatever the bytes: no crash and no read outside the
@@ -66,7 +66,7 @@ void read_as(Bytes bytes, bool mine) {
 }
 
 void read_session_message(Bytes bytes) {
-  static_assert(kLastMessageType == MessageType::speaking, "a new message type: read it here and seed it");
+  static_assert(kLastMessageType == MessageType::unit_morphs, "a new message type: read it here and seed it");
   const MessageType t = session_type(bytes);
   read_as<Hello>(bytes, t == MessageType::hello);
   read_as<Welcome>(bytes, t == MessageType::welcome);
@@ -84,6 +84,7 @@ void read_session_message(Bytes bytes) {
   read_as<Seats>(bytes, t == MessageType::seats);
   read_as<Attention>(bytes, t == MessageType::attention);
   read_as<Speaking>(bytes, t == MessageType::speaking);
+  read_as<UnitMorphs>(bytes, t == MessageType::unit_morphs);
 }
 
 /// A reader of something else must refuse the message before its fields.

@@ -35,4 +35,14 @@ inline codec::Speaking sample_speaking() {
   return {.avatar = 300, .tick = 70000, .duration_ms = 2140, .language = "de", .text = "Grüß Gott, wie geht's?"};
 }
 
+/// A unit morphs message: a bilateral unit's two channels and a unit that
+/// moves nothing, displacements of both signs and the extremes.
+inline codec::UnitMorphs sample_unit_morphs() {
+  return {.avatar = 300,
+          .version = 3,
+          .units = {{.channel = 0, .moves = {{12, {0, 410, -3}}, {140, {-32768, 32767, 1}}}},
+                    {.channel = 1, .moves = {{13, {5, 409, 0}}}},
+                    {.channel = 20, .moves = {}}}};
+}
+
 }  // namespace fw::test

@@ -259,6 +259,29 @@ const readers = {
     if (!f.r.failed && f.error === E.ok && text === '') f.fail(E.valueOutOfRange);
     return f.finish({ avatar, tick, durationMs, language, text });
   }],
+  // Channels and vertices strictly increase (messages_read.cpp).
+  [MessageType.unitMorphs]: [Limits.downstreamMessageBytes, (f) => {
+    const avatar = f.bounded(3, Limits.avatarId);
+    const version = f.r.varint(5);
+    const count = f.r.u8();
+    if (!f.r.failed && count > Limits.redefinedChannels) f.fail(E.tooManyEntries);
+    const units = [];
+    for (let i = 0; i < count && f.going; ++i) {
+      const channel = f.r.u8();
+      if (!f.r.failed && (channel >= Limits.auChannels || (i > 0 && channel <= units[i - 1].channel)))
+        f.fail(E.valueOutOfRange);
+      const moveCount = f.r.varint(2);
+      if (!f.r.failed && moveCount > Limits.unitMorphMoves) f.fail(E.tooManyEntries);
+      const moves = [];
+      for (let k = 0; k < moveCount && f.going; ++k) {
+        const vertex = f.bounded(2, Limits.unitMorphMoves - 1);
+        if (!f.r.failed && k > 0 && vertex <= moves[k - 1].vertex) f.fail(E.valueOutOfRange);
+        moves.push({ vertex, delta: [f.r.i16(), f.r.i16(), f.r.i16()] });
+      }
+      units.push({ channel, moves });
+    }
+    return f.finish({ avatar, version, units });
+  }],
 };
 
 /**

@@ -2,18 +2,21 @@
 // bytes, error codes and limits, as codec/include/fw/codec/messages.hpp
 // defines them. The numbers are part of the protocol and never change.
 
-export const PROTOCOL_VERSION = 4;
+export const PROTOCOL_VERSION = 5;
 /** The oldest hello or welcome that still reads (version 3: no language). */
 export const OLDEST_PROTOCOL_VERSION = 3;
 /** The first version whose hello carries a language and whose sessions are sent speaking. */
 export const FIRST_SPEAKING_VERSION = 4;
+/** The first version whose sessions are sent unit morphs. */
+export const FIRST_UNIT_MORPHS_VERSION = 5;
 export const SESSION_BIT = 0x80;
 
 export const MessageType = Object.freeze({
   hello: 1, welcome: 2, presence: 3, chat: 4, command: 5, commandResult: 6, packageChunk: 7, setRate: 8,
   ping: 9, pong: 10, linkStats: 11, closing: 12, timedRoomFrame: 13, seats: 14, attention: 15, speaking: 16,
+  unitMorphs: 17,
 });
-export const LAST_MESSAGE_TYPE = MessageType.speaking;
+export const LAST_MESSAGE_TYPE = MessageType.unitMorphs;
 
 export const MessageError = Object.freeze({
   ok: 0, empty: 1, notSessionMessage: 2, unknownType: 3, wrongType: 4, truncated: 5, tooLarge: 6,
@@ -59,6 +62,11 @@ export const Limits = Object.freeze({
   commandMs: 600_000,
   avatarId: (1 << 21) - 1,
   facingTenThousandths: 31416,
+  auChannels: 29,
+  redefinedChannels: 8,
+  unitMorphMoves: 1024,
+  /** A unit morph's displacement steps per model unit. */
+  unitMorphStepsPerUnit: 4096,
 });
 
 /** Whether `code` has a language's shape: 1 .. 16 bytes of a-z, 0-9 and `-`

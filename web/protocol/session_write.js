@@ -148,6 +148,19 @@ const writers = {
     w.string(m.language);
     w.string(m.text);
   },
+  [MessageType.unitMorphs]: (w, m) => {
+    w.varint(m.avatar);
+    w.varint(m.version);
+    w.u8(m.units.length);
+    for (const unit of m.units) {
+      w.u8(unit.channel);
+      w.varint(unit.moves.length);
+      for (const move of unit.moves) {
+        w.varint(move.vertex);
+        for (const d of move.delta) w.i16(d);
+      }
+    }
+  },
 };
 
 /** One whole session message of type `type` (a MessageType) as bytes. */

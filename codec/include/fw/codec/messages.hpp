@@ -12,6 +12,7 @@
 //
 // Readers are bounded: every string, count and number has a limit, nothing
 // is allocated past it, and bad bytes give a MessageError, never an exception.
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -25,14 +26,17 @@ namespace fw::codec {
 /// answers a hello of another version with Closing{unsupported_version}.
 /// Version 2 added the seats (in avatar_info, and the seats message) and the
 /// attention message; version 4 the hello's language and the speaking
-/// message. A server still reads a version-3 hello (no language) and answers
-/// it with a version-3 welcome, whose layout is the same.
-inline constexpr std::uint16_t kProtocolVersion = 4;
+/// message; version 5 the unit morphs message. A server still reads a
+/// version-3 or 4 hello and answers it with a welcome of its version, whose
+/// layout is the same.
+inline constexpr std::uint16_t kProtocolVersion = 5;
 /// The oldest version a hello or welcome may carry and still be read.
 inline constexpr std::uint16_t kOldestProtocolVersion = 3;
 /// The first version whose hello carries a language and whose sessions are
 /// sent speaking messages.
 inline constexpr std::uint16_t kFirstSpeakingVersion = 4;
+/// The first version whose sessions are sent unit morphs messages.
+inline constexpr std::uint16_t kFirstUnitMorphsVersion = 5;
 
 /// The low seven bits of a session message's first byte. Values never change.
 enum class MessageType : std::uint8_t {
@@ -52,8 +56,9 @@ enum class MessageType : std::uint8_t {
   seats = 14,            ///< down: where every avatar sits, after the layout changed
   attention = 15,        ///< down: whom faces attend, for those whose target changed
   speaking = 16,         ///< down (version 4): a face begins to say a chat line
+  unit_morphs = 17,      ///< down (version 5): an avatar's action units as its person redefined them
 };
-inline constexpr MessageType kLastMessageType = MessageType::speaking;
+inline constexpr MessageType kLastMessageType = MessageType::unit_morphs;
 inline constexpr std::uint8_t kSessionMessageBit = 0x80;
 
 /// What a message on the connection is, from its first byte.
@@ -118,6 +123,14 @@ inline constexpr std::uint32_t kMaxCommandMs = 600'000;
 inline constexpr std::uint32_t kMaxAvatarIdValue = (1u << 21) - 1;  ///< as codec::kMaxAvatarId
 /// A seat's facing in ten-thousandths of a radian: pi.
 inline constexpr std::int16_t kMaxFacingTenThousandths = 31416;
+/// Unit morphs: channels one avatar may have redefined at once (4 action
+/// units, both sides of each), and skin vertices one morph may move (the
+/// generic face has 228; a client refuses indices past its own face's).
+inline constexpr std::size_t kMaxRedefinedChannels = 8;
+inline constexpr std::size_t kMaxUnitMorphMoves = 1024;
+/// A unit morph's displacements are written in steps of 1/4096 model unit
+/// (15 micrometres on an average face), as signed 16-bit numbers.
+inline constexpr float kUnitMorphStepsPerUnit = 4096.0f;
 
 // ---------------------------------------------------------------------------
 // Messages.
@@ -338,6 +351,27 @@ struct Speaking {
   std::string text;               ///< the part of the line said, 1 .. 500 bytes
 };
 
+/// Down, to sessions whose hello was version 5: the action units an avatar's
+/// person redefined with a face script (AU definitions), as morphs of the
+/// generic face, in its vertex order. Every message holds the avatar's whole
+/// set: a client replaces what it holds for the avatar by it (none: every
+/// unit is the shipped one again). `version` grows by one with every change.
+struct UnitMorphs {
+  struct Move {
+    std::uint32_t vertex = 0;                  ///< generic skin vertex, strictly increasing within a unit
+    std::array<std::int16_t, 3> delta{};       ///< x, y, z at full intensity, 1/kUnitMorphStepsPerUnit model units
+    bool operator==(const Move&) const = default;
+  };
+  struct Unit {
+    std::uint8_t channel = 0;                  ///< FaceParams AU channel, strictly increasing
+    std::vector<Move> moves;                   ///< at most kMaxUnitMorphMoves; none: the unit moves nothing
+    bool operator==(const Unit&) const = default;
+  };
+  std::uint32_t avatar = 0;
+  std::uint32_t version = 0;                   ///< 1 for the first redefinition, +1 each change
+  std::vector<Unit> units;                     ///< at most kMaxRedefinedChannels
+};
+
 /// Down, instead of a bare room frame when the hello asked for timestamps.
 struct TimedRoomFrame {
   std::uint32_t tick = 0;            ///< the room's tick index
@@ -363,6 +397,7 @@ void write_message(const TimedRoomFrame& message, std::vector<std::uint8_t>& out
 void write_message(const Seats& message, std::vector<std::uint8_t>& out);
 void write_message(const Attention& message, std::vector<std::uint8_t>& out);
 void write_message(const Speaking& message, std::vector<std::uint8_t>& out);
+void write_message(const UnitMorphs& message, std::vector<std::uint8_t>& out);
 
 // Readers parse one whole message; on error the output holds no meaning.
 // A hello or welcome of version 3 or 4 reads (with the layout of its version);
@@ -385,6 +420,7 @@ MessageError read_message(std::span<const std::uint8_t> bytes, TimedRoomFrame& m
 MessageError read_message(std::span<const std::uint8_t> bytes, Seats& message);
 MessageError read_message(std::span<const std::uint8_t> bytes, Attention& message);
 MessageError read_message(std::span<const std::uint8_t> bytes, Speaking& message);
+MessageError read_message(std::span<const std::uint8_t> bytes, UnitMorphs& message);
 
 // ---------------------------------------------------------------------------
 // TCP framing: every message is preceded by its length as an unsigned LEB128
