@@ -9,8 +9,9 @@ AvatarModel make_avatar_model(const GenericFace& generic, std::span<const glm::v
                               std::span<const float> head_outline) {
   AvatarModel avatar;
   avatar.face = fit_generic_face(generic, fitted_xy, head_outline);
-  const std::vector<glm::mat2> jacobians = fit_jacobians(generic.skin, fitted_xy);
-  for (std::size_t c = 0; c < avatar.morphs.size(); ++c) avatar.morphs[c] = clone_morph(generic.action_units[c], jacobians);
+  avatar.jacobians = fit_jacobians(generic.skin, fitted_xy);
+  for (std::size_t c = 0; c < avatar.morphs.size(); ++c)
+    avatar.morphs[c] = clone_morph(generic.action_units[c], avatar.jacobians);
   return avatar;
 }
 

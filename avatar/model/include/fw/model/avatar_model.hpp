@@ -4,7 +4,9 @@
 // avatar, identically on the server and on every client.
 #include <array>
 #include <span>
+#include <vector>
 
+#include <glm/mat2x2.hpp>
 #include <glm/vec2.hpp>
 
 #include "fw/codec/face_params.hpp"
@@ -15,6 +17,10 @@ namespace fw::model {
 struct AvatarModel {
   GenericFace face;                                     ///< fitted
   std::array<Morph, codec::kAuChannelCount> morphs;     ///< motion-cloned onto the fit
+  /// The fit's local linear maps (motion_cloning.hpp), #V; empty for the
+  /// generic face itself (identity). Kept so that a unit its person
+  /// redefines (unit_morphs.hpp) is carried onto the fit as the shipped ones were.
+  std::vector<glm::mat2> jacobians;
 };
 
 /// The generic face fitted by `fitted_xy` (#V of the generic skin) and, if
