@@ -449,6 +449,12 @@ std::string BehaviorRoom::facs(FaceId face, std::string_view script) {
   if (!f) return std::string("no avatar ") + std::to_string(face) + " in this room";
   RoomScript read;
   if (std::string error = read_room_script(script, read); !error.empty()) return error;
+  return facs(face, read);
+}
+
+std::string BehaviorRoom::facs(FaceId face, const RoomScript& read) {
+  Impl::Face* f = impl_->find(face);
+  if (!f) return std::string("no avatar ") + std::to_string(face) + " in this room";
   std::string what = "command script";
   if (read.animation) {
     f->facs = animation_track(*read.animation, f->expression_au);
@@ -461,6 +467,8 @@ std::string BehaviorRoom::facs(FaceId face, std::string_view script) {
     f->vascular.start(*read.emotion, kRoomScriptEpisodeS, 1.0f);
     what += " (vascular " + read.emotion->name + ")";
   }
+  for (const UnitDefinition& unit : read.units)
+    what += " (AU " + std::to_string(unit.au) + (unit.restore ? " restored)" : " redefined)");
   impl_->event(face, std::move(what));
   return {};
 }

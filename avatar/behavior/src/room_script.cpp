@@ -33,7 +33,7 @@ std::string undefined_expressions(const script::VascularEmotion& emotion, const 
 
 }  // namespace
 
-std::string read_room_script(std::string_view text, RoomScript& out) {
+std::string read_room_script(std::string_view text, RoomScript& out, const model::GenericFace& face) {
   if (text.size() > kMaxRoomScriptBytes)
     return "the script is " + count_text(text.size()) + " bytes; at most " + count_text(kMaxRoomScriptBytes) +
            " are played: shorten it";
@@ -42,12 +42,12 @@ std::string read_room_script(std::string_view text, RoomScript& out) {
     if (d.severity == script::Severity::error)
       return "script " + std::to_string(d.position.line) + ":" + std::to_string(d.position.column) + ": " + d.message;
   const script::ScriptMeaning& m = result.meaning;
-  if (!m.au_definitions.empty())
-    return "an AU definition is not played in a room (faces are built from the shipped units); send an expression "
-           "sentence or a vascular emotion";
-  if (m.animations.empty() && m.emotions.empty())
-    return "no expression sentence or vascular emotion (write e.g. ClearAllFrame BeginKeyFrame 12 2.0 Animate 5 "
-           "\"Texture\" end)";
+  if (m.au_definitions.size() > kMaxRoomScriptAuDefinitions)
+    return "the script has " + count_text(m.au_definitions.size()) + " AU definitions; at most " +
+           count_text(kMaxRoomScriptAuDefinitions) + " are taken at once: send the rest in another script";
+  if (m.animations.empty() && m.emotions.empty() && m.au_definitions.empty())
+    return "no expression sentence, vascular emotion or AU definition (write e.g. ClearAllFrame BeginKeyFrame 12 2.0 "
+           "Animate 5 \"Texture\" end)";
   if (m.animations.size() > 1 || m.emotions.size() > 1)
     return "the script has " + count_text(m.animations.size()) + " expression sentences and " +
            count_text(m.emotions.size()) + " vascular emotions; a room plays at most one of each: send one at a time";
@@ -72,6 +72,9 @@ std::string read_room_script(std::string_view text, RoomScript& out) {
              ", not defined in the script: define each [expression NAME ...] it names";
     read.emotion = e;
   }
+  for (const script::AuDefinition& d : m.au_definitions)
+    if (std::string error = read_unit_definition(d, face, read.units.emplace_back()); !error.empty())
+      return "script " + std::to_string(d.position.line) + ":" + std::to_string(d.position.column) + ": " + error;
   out = std::move(read);
   return {};
 }

@@ -15,6 +15,7 @@
 #include "fw/behavior/action_selection.hpp"
 #include "fw/behavior/emotion_space.hpp"
 #include "fw/behavior/facs_track.hpp"
+#include "fw/behavior/room_script.hpp"
 #include "fw/behavior/perception.hpp"
 #include "fw/behavior/seat_layout.hpp"
 #include "fw/codec/face_params.hpp"
@@ -66,6 +67,10 @@ class BehaviorRoom {
   /// as an episode of kRoomScriptEpisodeS on this face alone. The error,
   /// if any, gives the script's line and column or the bound it passes.
   std::string facs(FaceId face, std::string_view script);
+  /// A script already read (read_room_script): its sentence and emotion
+  /// played as above. Its AU definitions are the caller's to apply (they
+  /// change the face's model, which the room's physics and clients hold).
+  std::string facs(FaceId face, const RoomScript& script);
   /// The face's mood (the emotion it holds between expressions), and that
   /// mood given back: a room restored on another server keeps its moods.
   EmotionPoint mood(FaceId face) const;
