@@ -96,7 +96,10 @@ void OwnedRoom::command(std::uint32_t avatar, const codec::Command& command) {
   if (it == members_.end()) return;
   OwnedMember& member = it->second;
   if (!member.stream && member.node.empty()) return;
+  const auto before = simulation_.unit_morphs(avatar);
   std::string error = simulation_.command(avatar, to_simulation(command));
+  const auto after = simulation_.unit_morphs(avatar);
+  if (after && (!before || before->version != after->version)) broadcast_unit_morphs(avatar);
   const auto result =
       encode_shared(codec::CommandResult{command.request_id, clip_utf8(std::move(error), codec::kMaxReasonBytes)});
   if (member.stream) member.stream->post_result(result);
@@ -149,6 +152,7 @@ void OwnedRoom::join(JoinRequest request) {
   if (request.connection) {
     member.stream = welcome(members_, member, request, name_, services_.config.tick_hz, services_.metrics);
     counts_.local_persons.fetch_add(1);
+    send_unit_morphs(member);
   }
   keep(member);
   send_down(bridge::down_joined(request.join_ref, record_of(member)));
@@ -310,6 +314,20 @@ void OwnedRoom::tell_line_begun(std::uint32_t avatar, const RoomEvent::LineBegun
   for (auto& [id, member] : members_)
     if (member.stream) member.stream->post_speaking(speaking);
   if (bridged_members() != 0) send_down(bridge::down_message(bridge::DownKind::speaking, 0, *speaking));
+}
+
+void OwnedRoom::broadcast_unit_morphs(std::uint32_t avatar) {
+  const auto morphs = simulation_.unit_morphs(avatar);
+  if (!morphs) return;
+  const auto message = encode_shared(*morphs);
+  for (auto& [id, member] : members_)
+    if (member.stream) member.stream->post_unit_morphs(avatar, message);
+}
+
+void OwnedRoom::send_unit_morphs(OwnedMember& member) {
+  if (!member.stream) return;
+  for (const auto& [id, other] : members_)
+    if (const auto morphs = simulation_.unit_morphs(id)) member.stream->post_unit_morphs(id, encode_shared(*morphs));
 }
 
 void OwnedRoom::tick(std::chrono::steady_clock::time_point due) {

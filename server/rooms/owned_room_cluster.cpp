@@ -136,6 +136,7 @@ bool OwnedRoom::take_seat_back(JoinRequest& request) {
     member.stream = welcome(members_, member, request, name_, services_.config.tick_hz, services_.metrics);
     counts_.local_persons.fetch_add(1);
     send_attention(member, attention_now());
+    send_unit_morphs(member);
   }
   keep(member);
   send_down(bridge::down_joined(request.join_ref, record_of(member), /*returning=*/true));

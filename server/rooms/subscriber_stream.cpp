@@ -136,6 +136,7 @@ void SubscriberStream::post_presence(codec::Presence::Change change, std::uint32
     });
     if (joined != waiting_.end()) {
       waiting_.erase(joined);
+      std::erase_if(waiting_, [avatar](const Waiting& w) { return w.kind == Kind::unit_morphs && w.avatar == avatar; });
       return;
     }
   }
@@ -176,6 +177,14 @@ void SubscriberStream::post_speaking(SharedBytes message) {
   // A link too slow for the room's lines loses the oldest announcements:
   // their lines have begun long since.
   post_bounded(Kind::speaking, kMaxWaitingSpeaking, std::move(message));
+}
+
+void SubscriberStream::post_unit_morphs(std::uint32_t avatar, SharedBytes message) {
+  if (settings_.protocol_version < codec::kFirstUnitMorphsVersion) return;
+  // Each holds the avatar's whole set: the newest says it all.
+  std::erase_if(waiting_, [avatar](const Waiting& w) { return w.kind == Kind::unit_morphs && w.avatar == avatar; });
+  waiting_.push_back({Kind::unit_morphs, avatar, std::move(message)});
+  send_messages();
 }
 
 void SubscriberStream::post_bounded(Kind kind, std::size_t max_waiting, SharedBytes message) {

@@ -48,7 +48,8 @@ struct StreamSettings {
   bool packages = true;
   bool own_package = false;  ///< the subscriber holds its own avatar's package
   /// The hello's version: the welcome answers in it, and only sessions of
-  /// codec::kFirstSpeakingVersion or later are sent speaking messages.
+  /// codec::kFirstSpeakingVersion or later are sent speaking messages, of
+  /// codec::kFirstUnitMorphsVersion or later unit morphs.
   std::uint16_t protocol_version = codec::kProtocolVersion;
 };
 
@@ -87,6 +88,12 @@ class SubscriberStream {
   /// before any later room frame, which carries the line: it waits with
   /// presence and the rest, kMaxWaitingSpeaking at most (the oldest goes).
   void post_speaking(SharedBytes message);
+  /// An avatar's redefined units (codec::UnitMorphs, the whole set), for
+  /// sessions of protocol version 5 or later only. It waits with presence
+  /// and the rest (after the presence that introduces the avatar, before
+  /// any later frame of it); a newer one for the same avatar replaces one
+  /// still waiting, and one for a face the client never heard of goes with it.
+  void post_unit_morphs(std::uint32_t avatar, SharedBytes message);
   /// Room messages still waiting, and chat lines dropped so far.
   std::size_t waiting_messages() const { return waiting_.size() + chat_.size(); }
   std::uint64_t dropped_chat_lines() const { return dropped_chat_total_; }
@@ -107,10 +114,10 @@ class SubscriberStream {
     SharedBytes bytes;
     std::size_t offset = 0;
   };
-  enum class Kind { joined, left, seats, attention, result, speaking };
+  enum class Kind { joined, left, seats, attention, result, speaking, unit_morphs };
   struct Waiting {
     Kind kind;
-    std::uint32_t avatar = 0;  ///< joined, left: whose
+    std::uint32_t avatar = 0;  ///< joined, left, unit_morphs: whose
     SharedBytes bytes;         ///< null for the attention (encoded when it goes)
   };
   /// Queues a message of `kind`, dropping the oldest of its kind past `max_waiting`.

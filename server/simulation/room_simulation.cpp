@@ -19,6 +19,7 @@
 #include "avatar_ids.hpp"
 #include "face_overrides.hpp"
 #include "script_check.hpp"
+#include "redefined_units.hpp"
 
 namespace fw::server {
 namespace {
@@ -72,14 +73,31 @@ std::shared_ptr<const physics::TissueModel> generic_tissue() {
   return tissue;
 }
 
+// Whether every redefined unit's own track has reached its target.
+bool redefined_at_rest(const PhysicsFace& face, const AuTargets& targets, const RedefinedUnits& units) {
+  for (const auto& [channel, morph] : units.morphs())
+    if (std::abs(targets[channel] - face.kinematic[channel]) >= kKinematicRestGap) return false;
+  return true;
+}
+
+// A face with redefined units (redefined_units.hpp): the physics face makes
+// the shipped ones, each redefined unit moves by its morph on its own track,
+// and the face is measured against the avatar's own basis every tick.
 AuTargets step_physics(PhysicsFace& face, const AuTargets& targets, double dt_s, std::uint64_t seed,
-                       const RoomSimulationOptions& options) {
+                       const RoomSimulationOptions& options, const RedefinedUnits& units) {
   if (!face.simulation) {
     physics::SimulationOptions o;
     o.seed = seed;
     face.simulation = std::make_unique<physics::FaceSimulation>(generic_tissue(), o);
   }
   physics::FaceSimulation& sim = *face.simulation;
+  if (units.any()) {
+    sim.set_action_units(units.physics_targets(targets));
+    if (!options.physics_sleeps || !sim.at_rest()) sim.step(dt_s);
+    units.measure(sim, face.kinematic, face.shown);
+    face.resting = sim.at_rest() && redefined_at_rest(face, targets, units);
+    return face.shown;
+  }
   sim.set_action_units(targets);
   if (!options.physics_sleeps || !sim.at_rest()) {
     sim.step(dt_s);
@@ -92,7 +110,7 @@ AuTargets step_physics(PhysicsFace& face, const AuTargets& targets, double dt_s,
 // One tick of a face's action units: physics when it may, else kinematic,
 // blending after a change from kinematic to physics.
 AuTargets step_action_units(PhysicsFace& face, const AuTargets& targets, double dt_s, std::uint64_t seed,
-                            const RoomSimulationOptions& options, bool physics_allowed) {
+                            const RoomSimulationOptions& options, bool physics_allowed, const RedefinedUnits& units) {
   follow_kinematically(face, targets, dt_s);
   if (!physics_allowed) {
     face.blend = 0;
@@ -104,7 +122,7 @@ AuTargets step_action_units(PhysicsFace& face, const AuTargets& targets, double 
       face.resting = face.resting && std::abs(targets[c] - face.kinematic[c]) < kKinematicRestGap;
     return face.kinematic;
   }
-  const AuTargets physical = step_physics(face, targets, dt_s, seed, options);
+  const AuTargets physical = step_physics(face, targets, dt_s, seed, options, units);
   if (face.blend >= 1) return physical;
   face.resting = false;  // still catching up or blending
   float gap = 0;
@@ -149,11 +167,15 @@ struct RoomSimulation::State {
     FaceOverrides overrides = {};
     std::optional<behavior::AuTrack> played = {};
     double played_s = 0;
+    RedefinedUnits units;  ///< its person's AU definitions
   };
 
-  /// A preview's override or FACS sentence (the room's behaviour plays a
-  /// sentence too, for when the page turns behaviour on); "" or why not.
+  /// A preview's override; "" or why not.
   std::string preview_command(AvatarId id, const AvatarCommand& command);
+  /// A preview plays an accepted script's expression sentence itself while
+  /// its behaviour is off (the room's behaviour plays it too, for when the
+  /// page turns behaviour on).
+  void hold_sentence(AvatarId id, std::string_view script);
   RoomSimulationOptions options;
   AvatarIds ids;
   behavior::BehaviorRoom room;
@@ -218,7 +240,7 @@ AvatarId RoomSimulation::add_avatar(const AvatarSetup& setup) {
     s.ids.cancel(id);  // the room is full
     return 0;
   }
-  s.avatars[id] = {setup, {}, {}};
+  s.avatars[id] = {setup, {}, {}, {}};
   s.collect_events();
   return id;
 }
@@ -230,7 +252,7 @@ bool RoomSimulation::restore_avatar(AvatarId id, const AvatarSetup& setup) {
     s.ids.cancel(id);
     return false;
   }
-  s.avatars[id] = {setup, {}, {}};
+  s.avatars[id] = {setup, {}, {}, {}};
   s.collect_events();
   return true;
 }
@@ -271,24 +293,29 @@ std::vector<AvatarId> RoomSimulation::avatars() const { return state_->room.face
 std::string RoomSimulation::State::preview_command(AvatarId id, const AvatarCommand& command) {
   const auto it = avatars.find(id);
   if (it == avatars.end()) return "you are not in this room";
-  Avatar& a = it->second;
-  if (const auto* o = std::get_if<OverrideCommand>(&command)) return set_override(a.overrides, o->change);
-  const auto& facs = std::get<FacsCommand>(command);
+  return set_override(it->second.overrides, std::get<OverrideCommand>(command).change);
+}
+
+void RoomSimulation::State::hold_sentence(AvatarId id, std::string_view script) {
+  const auto it = avatars.find(id);
   behavior::AuTrack track;
-  std::string error;
-  if (!behavior::facs_track(facs.sentence, track, error)) return error;
-  a.played = std::move(track);
-  a.played_s = 0;
-  return room.facs(id, facs.sentence);
+  std::string no_sentence;  // a script of definitions or a vascular emotion alone: nothing to hold
+  if (it == avatars.end() || !behavior::facs_track(script, track, no_sentence)) return;
+  it->second.played = std::move(track);
+  it->second.played_s = 0;
 }
 
 std::string RoomSimulation::command(AvatarId avatar, const AvatarCommand& command) {
   if (const auto* check = std::get_if<CheckCommand>(&command)) return check_script(check->script);
-  if (std::holds_alternative<OverrideCommand>(command) && !state_->options.preview)
-    return "overrides are for a face-lab preview (lab.html); in a room, use express or a FACS sentence";
-  if (state_->options.preview &&
-      (std::holds_alternative<OverrideCommand>(command) || std::holds_alternative<FacsCommand>(command)))
-    return state_->preview_command(avatar, command);
+  if (std::holds_alternative<OverrideCommand>(command))
+    return state_->options.preview
+               ? state_->preview_command(avatar, command)
+               : "overrides are for a face-lab preview (lab.html); in a room, use express or a FACS sentence";
+  if (const auto* facs = std::get_if<FacsCommand>(&command)) {
+    std::string result = script(avatar, facs->sentence);
+    if (result.empty() && state_->options.preview) state_->hold_sentence(avatar, facs->sentence);
+    return result;
+  }
   behavior::BehaviorRoom& room = state_->room;
   std::string result = std::visit(
       [&](const auto& c) -> std::string {
@@ -296,12 +323,34 @@ std::string RoomSimulation::command(AvatarId avatar, const AvatarCommand& comman
         if constexpr (std::is_same_v<T, ExpressCommand>) return room.express(avatar, c.emotion, c.intensity, c.seconds);
         else if constexpr (std::is_same_v<T, LookAtCommand>) return room.look_at(avatar, c.target, c.seconds);
         else if constexpr (std::is_same_v<T, SnubCommand>) return room.snub(avatar, c.target, c.seconds);
-        else if constexpr (std::is_same_v<T, FacsCommand>) return room.facs(avatar, c.sentence);
-        else return "a command this room does not take";  // overrides and checks are answered above
+        else return "a command this room does not take";  // overrides, checks and scripts are answered above
       },
       command);
   state_->collect_events();
   return result;
+}
+
+std::string RoomSimulation::script(AvatarId avatar, std::string_view text) {
+  State& s = *state_;
+  const auto it = s.avatars.find(avatar);
+  if (it == s.avatars.end()) return "no avatar " + std::to_string(avatar) + " in this room";
+  behavior::RoomScript read;
+  if (std::string error = behavior::read_room_script(text, read); !error.empty()) return error;
+  // The definitions are held to the avatar's bound before anything plays:
+  // a script is taken whole or not at all.
+  RedefinedUnits units = it->second.units;
+  if (!read.units.empty())
+    if (std::string error = units.apply(read.units); !error.empty()) return error;
+  std::string result = s.room.facs(avatar, read);
+  if (result.empty() && !read.units.empty()) it->second.units = std::move(units);
+  s.collect_events();
+  return result;
+}
+
+std::optional<codec::UnitMorphs> RoomSimulation::unit_morphs(AvatarId avatar) const {
+  const auto it = state_->avatars.find(avatar);
+  if (it == state_->avatars.end() || it->second.units.version() == 0) return std::nullopt;
+  return it->second.units.message(avatar);
 }
 
 void RoomSimulation::chat(AvatarId avatar, std::string_view text) {
@@ -364,7 +413,7 @@ void RoomSimulation::tick() {
       a.physics.resting = true;  // no physics face to step
     } else {
       const bool allowed = s.physics_share >= 1.0 || physics_rank(seed) < s.physics_share;
-      a.face.au = step_action_units(a.physics, a.face.au, s.room.dt_s(), seed, s.options, allowed);
+      a.face.au = step_action_units(a.physics, a.face.au, s.room.dt_s(), seed, s.options, allowed, a.units);
       ++(allowed ? s.physics_faces : s.kinematic_faces);
     }
     // Speech moves jaw and lips at syllable rate (4-5 a second); the

@@ -77,7 +77,7 @@ struct SnubCommand {
   double seconds = 10;
 };
 struct FacsCommand {
-  std::string sentence;     ///< a face script: an expression sentence, a vascular emotion, or one of each (room_script.hpp)
+  std::string sentence;     ///< a face script: an expression sentence, a vascular emotion, AU definitions (room_script.hpp)
 };
 /// A face-lab preview's override (face_overrides.hpp), held until changed.
 struct OverrideCommand {
@@ -140,6 +140,15 @@ class RoomSimulation {
   /// outside a preview or of nothing the face has: the message says what
   /// was wrong). A check only parses its script.
   std::string command(AvatarId avatar, const AvatarCommand& command);
+  /// A face script (a FacsCommand): its sentence and emotion played on the
+  /// avatar's face, its AU definitions applied to the avatar's units
+  /// (redefined_units.hpp; at most behavior::kMaxRedefinedUnitsPerAvatar at
+  /// once), all or nothing. "" when taken, else what was wrong.
+  std::string script(AvatarId avatar, std::string_view text);
+  /// The avatar's redefined units as the unit morphs message carries them
+  /// (server/PROTOCOL.md 5.16), its version raised by every change; nullopt
+  /// while its person never redefined one. Forgotten when the avatar leaves.
+  std::optional<codec::UnitMorphs> unit_morphs(AvatarId avatar) const;
   /// A chat line from `avatar`: the avatar says it in its language (with
   /// lip sync, after the lines it is still saying, once the line's track is
   /// made; spoken_lines.hpp, track_maker.hpp), the others' gaze follows the

@@ -49,7 +49,7 @@ TEST(RoomSpeaking, AVersion4SessionIsToldBeforeTheLinesFrameAndAVersion3OneIsNot
   auto anna = server.join("r", "Anna", HelloOptions{.timestamps = true, .language = "de"});
   auto bob = server.join("r", "Bob", HelloOptions{.timestamps = true, .version = 3});
   ASSERT_TRUE(anna->welcome && bob->welcome);
-  EXPECT_EQ(anna->welcome->protocol_version, 4);
+  EXPECT_EQ(anna->welcome->protocol_version, codec::kProtocolVersion);
   EXPECT_EQ(bob->welcome->protocol_version, 3) << "a version-3 client is answered in its version";
   anna->send(codec::Chat{0, kLine});
   ASSERT_TRUE(anna->read_until([&] { return !anna->speaking.empty(); }));
