@@ -254,6 +254,7 @@ codec::MessageError RoomSession::dispatch(codec::MessageType type, std::span<con
     case MessageType::seats: return read_then(message, &RoomSession::on_seats);
     case MessageType::attention: return read_then(message, &RoomSession::on_attention);
     case MessageType::speaking: return read_then(message, &RoomSession::on_speaking);
+    case MessageType::unit_morphs: return read_then(message, &RoomSession::on_unit_morphs);
     default: return codec::MessageError::wrong_type;  // an upstream message coming down
   }
 }
@@ -310,6 +311,7 @@ void RoomSession::on_presence(const codec::Presence& presence) {
     return;
   }
   packages_.forget(presence.avatar.id);
+  unit_morphs_.erase(presence.avatar.id);
   event(state_.avatar_left(presence.avatar.id) + " left");
 }
 
@@ -323,6 +325,13 @@ void RoomSession::on_chat(const codec::Chat& chat) {
 void RoomSession::on_speaking(const codec::Speaking& speaking) {
   std::lock_guard lock(state_.mutex);
   if (const auto line = state_.line_begun(speaking, Clock::now())) event(*line);
+}
+
+void RoomSession::on_unit_morphs(const codec::UnitMorphs& morphs) {
+  std::lock_guard lock(state_.mutex);
+  const auto held = unit_morphs_.find(morphs.avatar);
+  if (held != unit_morphs_.end() && held->second.version >= morphs.version) return;  // not newer
+  unit_morphs_[morphs.avatar] = morphs;
 }
 
 void RoomSession::on_seats(const codec::Seats& seats) {

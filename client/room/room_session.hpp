@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cstdint>
 #include <deque>
+#include <map>
 #include <functional>
 #include <memory>
 #include <span>
@@ -136,6 +137,7 @@ class RoomSession {
   codec::MessageError read_then(std::span<const std::uint8_t> bytes, void (RoomSession::*handle)(const Message&));
   void on_welcome(const codec::Welcome& welcome);
   void on_speaking(const codec::Speaking& speaking);
+  void on_unit_morphs(const codec::UnitMorphs& morphs);
   void greet_once();
   void on_presence(const codec::Presence& presence);
   void on_chat(const codec::Chat& chat);
@@ -190,6 +192,10 @@ class RoomSession {
   std::uint32_t command_serial_ = 0;
 
   static constexpr int kConnectTimeoutS = 10;
+  /// Each avatar's redefined units (PROTOCOL.md 5.16), the newest version,
+  /// until it leaves; under state_.mutex. Kept, not yet drawn: the view
+  /// rebuilds faces with the shipped units.
+  std::map<std::uint32_t, codec::UnitMorphs> unit_morphs_;
 };
 
 }  // namespace fw::client

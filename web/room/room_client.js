@@ -49,6 +49,7 @@ export class RoomClient {
     this.avatars = new Map();    // id -> { info, package: {quality, bytes} | null, lastFrameMs }
     this.attention = new Map();  // id -> { target, targetAvatar }
     this.chatLines = [];         // { from, name, text }
+    this.unitMorphs = new Map();  // avatar id -> its redefined units (PROTOCOL.md 5.16), newest version; kept, not yet drawn
     this.speakingLines = [];     // the speaking messages (avatar, tick, durationMs, language, text), newest last
     this.results = new Map();    // request id -> error ('' accepted)
     this.requestId = 0;
@@ -250,6 +251,12 @@ export class RoomClient {
         this.speakingLines.push(m);
         if (this.speakingLines.length > MAX_CHAT_LINES) this.speakingLines.shift();
         return this.notify('speaking', { line: m, framesReceived: this.framesReceived });
+      case MessageType.unitMorphs: {
+        const held = this.unitMorphs.get(m.avatar);
+        if (held && held.version >= m.version) return undefined;  // not newer
+        this.unitMorphs.set(m.avatar, m);
+        return this.notify('unitMorphs', m.avatar);
+      }
       case MessageType.pong: return undefined;
       default: return this.protocolProblem(`a message of type ${type} a client never receives`);
     }
@@ -284,6 +291,7 @@ export class RoomClient {
       this.attention.delete(m.avatar.id);
       this.decoder?.remove(m.avatar.id);
       this.packages.forget(m.avatar.id);
+      this.unitMorphs.delete(m.avatar.id);
       this.meter.forget(m.avatar.id);
       this.notify('left', m.avatar.id);
     }
