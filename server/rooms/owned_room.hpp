@@ -78,7 +78,7 @@ class OwnedRoom : public RoomRole {
   void notice(OwnedMember& member, const std::string& text);
   /// `avatar` begins to say a line: a speaking message to everyone (5.15).
   void tell_line_begun(std::uint32_t avatar, const RoomEvent::LineBegun& line);
-  /// `avatar`'s person redefined its units: the unit morphs message (5.16)
+  /// `avatar`'s person redefined its units: the unit morphs message (5.17)
   /// to everyone here.
   void broadcast_unit_morphs(std::uint32_t avatar);
   /// Every avatar's redefined units to a member just welcomed.

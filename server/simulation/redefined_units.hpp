@@ -44,7 +44,7 @@ class RedefinedUnits {
   std::uint32_t version() const { return version_; }
   /// Redefined channels' generic morphs, as carried on the wire.
   const model::UnitMorphSet& morphs() const { return morphs_; }
-  /// The message that tells clients of the whole set (PROTOCOL.md 5.16).
+  /// The message that tells clients of the whole set (PROTOCOL.md 5.17).
   codec::UnitMorphs message(std::uint32_t avatar) const;
 
   /// The targets the physics face is driven by: the redefined units' at 0.

@@ -146,7 +146,7 @@ class RoomSimulation {
   /// once), all or nothing. "" when taken, else what was wrong.
   std::string script(AvatarId avatar, std::string_view text);
   /// The avatar's redefined units as the unit morphs message carries them
-  /// (server/PROTOCOL.md 5.16), its version raised by every change; nullopt
+  /// (server/PROTOCOL.md 5.17), its version raised by every change; nullopt
   /// while its person never redefined one. Forgotten when the avatar leaves.
   std::optional<codec::UnitMorphs> unit_morphs(AvatarId avatar) const;
   /// A chat line from `avatar`: the avatar says it in its language (with

@@ -26,7 +26,7 @@ export class RoomClient {
    * @param options.language     the language the person's lines are said in ('' = the server's default)
    * @param options.maxBps       downstream budget, 0: the server's default
    * @param options.ownPackage   the page holds its own avatar's package (the server sends it none)
-   * @param options.preview      a face-lab preview (PROTOCOL.md 5.16): a private room of one, `room` unused
+   * @param options.preview      a face-lab preview (PROTOCOL.md 5.17): a private room of one, `room` unused
    * @param options.openSocket   url -> WebSocket-like ({binaryType, send, close, onopen, onmessage, onclose})
    * @param options.onChange     (what, detail) => void, after every change of state ('welcome', 'chat', 'frame', ...);
    *                             'speaking' with { line, framesReceived } (the line starts with the next room
@@ -49,7 +49,7 @@ export class RoomClient {
     this.avatars = new Map();    // id -> { info, package: {quality, bytes} | null, lastFrameMs }
     this.attention = new Map();  // id -> { target, targetAvatar }
     this.chatLines = [];         // { from, name, text }
-    this.unitMorphs = new Map();  // avatar id -> its redefined units (PROTOCOL.md 5.16), newest version; kept, not yet drawn
+    this.unitMorphs = new Map();  // avatar id -> its redefined units (PROTOCOL.md 5.17), newest version; kept, not yet drawn
     this.speakingLines = [];     // the speaking messages (avatar, tick, durationMs, language, text), newest last
     this.results = new Map();    // request id -> error ('' accepted)
     this.requestId = 0;
@@ -88,7 +88,7 @@ export class RoomClient {
   lookAt(target, durationMs = 5000) { return this.command({ kind: CommandKind.lookAt, target, durationMs }); }
   snub(target, durationMs = 10000) { return this.command({ kind: CommandKind.snub, target, durationMs }); }
   facs(sentence) { return this.command({ kind: CommandKind.facs, sentence }); }
-  /** A face-lab preview's override ({ part, index, side, value }, PROTOCOL.md 5.16). */
+  /** A face-lab preview's override ({ part, index, side, value }, PROTOCOL.md 5.17). */
   override(fields) { return this.command({ kind: CommandKind.override, override: fields }); }
   /** Asks the server to parse a face script without playing it. */
   check(script) { return this.command({ kind: CommandKind.check, sentence: script }); }

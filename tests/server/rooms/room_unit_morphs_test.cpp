@@ -1,4 +1,4 @@
-// Unit morphs (PROTOCOL.md 5.16) through the server core: a person's AU
+// Unit morphs (PROTOCOL.md 5.17) through the server core: a person's AU
 // definition reaches everyone of version 5 in the room, and whoever joins
 // later; a version-4 session is never sent one; a restore is a new version.
 #include <fstream>

@@ -6,7 +6,7 @@
 // episode) per script, and takes a few action-unit definitions: each
 // redefines that unit on the sender's avatar, as a morph of the generic face
 // (au_definition_morph.hpp) that the server measures with and every client
-// rebuilds the avatar's face with (server/PROTOCOL.md 5.16). A definition
+// rebuilds the avatar's face with (server/PROTOCOL.md 5.17). A definition
 // with no displacements gives the unit back its shipped morph.
 //
 // The bounds keep one command's cost and effect small: the bytes bound the

@@ -1,7 +1,7 @@
 #pragma once
 // Action units a person redefined (a face script's AU definitions, turned
 // into morphs of the generic face by the server): their form on the wire
-// (codec::UnitMorphs, server/PROTOCOL.md 5.16) and their place in an
+// (codec::UnitMorphs, server/PROTOCOL.md 5.17) and their place in an
 // avatar's model. The server measures with the morphs as the wire carries
 // them, and every client carries those onto the avatar's fit exactly as the
 // shipped units are carried (motion_cloning.hpp), so all see one face.
