@@ -124,7 +124,7 @@ TEST_F(RoomSessionTest, SaysHelloFirstWithWhatItWasAskedFor) {
   EXPECT_EQ(hello.max_bps, 9600u);
   EXPECT_FALSE(hello.timestamps);
   EXPECT_TRUE(hello.own_package) << "an uploaded package is not sent back";
-  EXPECT_EQ(hello.protocol_version, 4);
+  EXPECT_EQ(hello.protocol_version, 5);
   EXPECT_EQ(hello.language, "") << "the server's default language";
   EXPECT_FALSE(joined()) << "not in the room before the welcome";
 }

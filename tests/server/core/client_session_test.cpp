@@ -117,10 +117,10 @@ TEST(ClientSession, AnotherProtocolVersionIsRefusedNamingOurs) {
   hello.name = "Ann";
   std::vector<std::uint8_t> bytes;
   codec::write_message(hello, bytes);
-  bytes[1] = 5;  // protocol_version, u16 little-endian after the type byte: one this server does not speak
+  bytes[1] = 6;  // protocol_version, u16 little-endian after the type byte: one this server does not speak
   peer->send_bytes(bytes);
   EXPECT_EQ(closed_with(*peer), CloseCode::unsupported_version);
-  EXPECT_NE(peer->closing->reason.find("versions 3 to 4"), std::string::npos) << peer->closing->reason;
+  EXPECT_NE(peer->closing->reason.find("versions 3 to 5"), std::string::npos) << peer->closing->reason;
 }
 
 TEST(ClientSession, RoomNamesAreLettersDigitsAndFewMarks) {

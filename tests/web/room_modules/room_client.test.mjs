@@ -179,7 +179,7 @@ test('hello carries the language; a speaking line is kept and handed on with the
   const { c, sockets } = client({ language: 'de', onChange: (what, detail) => { if (what === 'speaking') seen.push(detail); } });
   t.after(() => c.stop());
   const hello = readMessage(sockets[0].sent[0], MessageType.hello);
-  assert.equal(hello.message.protocolVersion, 4);
+  assert.equal(hello.message.protocolVersion, 5);
   assert.equal(hello.message.language, 'de');
   sockets[0].deliver(MessageType.welcome, welcome);
   const line = { avatar: 1, tick: 90, durationMs: 1800, language: 'de', text: 'Guten Tag' };
