@@ -78,12 +78,15 @@ std::string set_override(FaceOverrides& o, const codec::FaceOverride& c) {
   return "unknown override";  // the codec reads no other part
 }
 
-void apply_overrides(const FaceOverrides& o, codec::FaceParams& face, const AuTargetArray* played) {
+void apply_overrides(const FaceOverrides& o, codec::FaceParams& face, const AuTargetArray* played,
+                     bool scripted_colour) {
   if (!o.behaviour) {
     // Neutral, straight ahead, lids open, no colour: what is left is the
-    // sliders' (and a FACS sentence played meanwhile).
+    // sliders' (and a FACS sentence or vascular emotion played meanwhile).
+    const codec::FaceParams made = face;
     face = codec::FaceParams{};
     if (played) face.au = *played;
+    if (scripted_colour) face.blush = made.blush, face.pallor = made.pallor;
   }
   behavior::EmotionPoint point{};
   std::copy(o.emotions.begin(), o.emotions.end(), point.begin());

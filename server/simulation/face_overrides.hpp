@@ -45,7 +45,10 @@ std::string set_override(FaceOverrides& overrides, const codec::FaceOverride& ch
 /// The preview's face for this tick, before the physics face: `face` is
 /// what its behaviour made (kept only while behaviour is on; off, the face
 /// starts neutral, with `played`, the action units of a FACS sentence being
-/// played, if any); the overrides are laid over it.
-void apply_overrides(const FaceOverrides& overrides, codec::FaceParams& face, const AuTargetArray* played);
+/// played, if any, and with `face`'s own colour while `scripted_colour`: a
+/// vascular emotion a script started is under way); the overrides are laid
+/// over it.
+void apply_overrides(const FaceOverrides& overrides, codec::FaceParams& face, const AuTargetArray* played,
+                     bool scripted_colour = false);
 
 }  // namespace fw::server

@@ -11,6 +11,7 @@
 #include "fw/behavior/behavior_room.hpp"
 #include "fw/behavior/articulation.hpp"
 #include "fw/behavior/facs_track.hpp"
+#include "fw/behavior/room_script.hpp"
 #include "fw/behavior/plateau_motion.hpp"
 #include "spoken_lines.hpp"
 #include "fw/model/generic_face.hpp"
@@ -167,6 +168,9 @@ struct RoomSimulation::State {
     FaceOverrides overrides = {};
     std::optional<behavior::AuTrack> played = {};
     double played_s = 0;
+    /// Room time until which a script's vascular emotion colours the
+    /// preview with its behaviour off (the episode's length).
+    double scripted_colour_until_s = 0;
     RedefinedUnits units;  ///< its person's AU definitions
   };
 
@@ -174,7 +178,7 @@ struct RoomSimulation::State {
   std::string preview_command(AvatarId id, const AvatarCommand& command);
   /// A preview plays an accepted script's expression sentence itself while
   /// its behaviour is off (the room's behaviour plays it too, for when the
-  /// page turns behaviour on).
+  /// page turns behaviour on), and shows its vascular emotion's colour.
   void hold_sentence(AvatarId id, std::string_view script);
   RoomSimulationOptions options;
   AvatarIds ids;
@@ -298,9 +302,14 @@ std::string RoomSimulation::State::preview_command(AvatarId id, const AvatarComm
 
 void RoomSimulation::State::hold_sentence(AvatarId id, std::string_view script) {
   const auto it = avatars.find(id);
+  if (it == avatars.end()) return;
+  behavior::RoomScript read;
+  if (!behavior::read_room_script(script, read).empty()) return;
+  if (read.emotion)
+    it->second.scripted_colour_until_s = room.tick_index() * room.dt_s() + behavior::kRoomScriptEpisodeS;
   behavior::AuTrack track;
   std::string no_sentence;  // a script of definitions or a vascular emotion alone: nothing to hold
-  if (it == avatars.end() || !behavior::facs_track(script, track, no_sentence)) return;
+  if (!behavior::facs_track(script, track, no_sentence)) return;
   it->second.played = std::move(track);
   it->second.played_s = 0;
 }
@@ -406,7 +415,7 @@ void RoomSimulation::tick() {
       } else {
         a.played.reset();  // with behaviour on, the behaviour plays it
       }
-      apply_overrides(a.overrides, a.face, played ? &*played : nullptr);
+      apply_overrides(a.overrides, a.face, played ? &*played : nullptr, now_s < a.scripted_colour_until_s);
     }
     const std::uint64_t seed = s.options.seed ^ id;
     if (!s.options.physics) {

@@ -1,5 +1,7 @@
 #include "face_overrides.hpp"
 
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 #include "room_simulation.hpp"
@@ -125,6 +127,25 @@ TEST(FaceOverrides, AFacsSentencePlaysOnAPreviewWithBehaviourOff) {
     most = std::max(most, preview.face(id).au_intensity(12));
   }
   EXPECT_GT(most, 0.3f) << "the sentence did not show with behaviour off";
+}
+
+// A vascular emotion is colour only: with behaviour off the preview's face
+// starts neutral every tick, which cleared the episode's blush.
+TEST(FaceOverrides, AVascularScriptColoursAPreviewWithBehaviourOff) {
+  RoomSimulationOptions options;
+  options.preview = true;
+  RoomSimulation preview(options);
+  const AvatarId id = preview.add_avatar({"Ada"});
+  ASSERT_EQ(preview.command(id, FacsCommand{"[emotion glow [stage1 duration 100 [expression warm intensity 1]]]\n"
+                                            "[expression warm [mpca cheeks intensity 1]]\n"}),
+            "");
+  float most = 0;
+  for (int i = 0; i < 8 * 30; ++i) {  // 8 s
+    preview.tick();
+    const codec::FaceParams face = preview.face(id);
+    most = std::max(most, *std::max_element(face.blush.begin(), face.blush.end()));
+  }
+  EXPECT_GT(most, 0.2f) << "the script's blush did not show with behaviour off";
 }
 
 TEST(ScriptCheck, TheFirstErrorWithItsLineAndColumn) {

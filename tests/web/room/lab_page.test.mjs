@@ -1,13 +1,14 @@
 // The face lab (lab.html) on a real server in Chromium: its preview is drawn
 // by the room's renderer, the joy slider moves the mouth, the cheeks' blush
-// sliders redden the cheeks, a script with a syntax error is shown at its
+// sliders redden the cheeks, and so does the blushing example loaded and
+// played from the editor, a script with a syntax error is shown at its
 // line and column, and the lobby links the lab. Pixels are read from the
 // canvas where the page's own landmarks put the mouth and the cheeks.
 // FW_LAB_SHOTS=DIR keeps a screenshot at desktop and at phone size.
 import { after, before, test } from 'node:test';
 import assert from 'node:assert/strict';
 
-import { openWeb } from '../support/harness.mjs';
+import { openWeb, sourceFile } from '../support/harness.mjs';
 import { pageUntil } from '../support/page_poll.mjs';
 import { canvasPixels, meanAbsDifference, mouthSamples } from '../support/room_pixels.mjs';
 
@@ -78,6 +79,23 @@ test('the cheeks redden with their blush sliders', async () => {
   await page.waitForTimeout(SETTLE_MS);
   const after = await cheekRedness(page);
   assert.ok(after > before * 1.04, `R/G in the cheeks: ${before.toFixed(3)} before, ${after.toFixed(3)} with blush`);
+  await page.close();
+});
+
+test('a vascular script loaded from a file and played reddens the cheeks', async () => {
+  const page = await openLab();
+  const before = await cheekRedness(page);
+  // Loaded as a person would: the example file through the editor's Load.
+  await page.setInputFiles('#script-file', sourceFile('avatar/behavior/script/examples/blushing.fws'));
+  await pageUntil(page, (p) => p.inputValue('#script'), (t) => t.includes('[emotion blushing'), 'the file in the editor');
+  await page.click('#script-play');
+  // Its stages rise over the 20 s episode: the most R/G seen within 8 s.
+  let most = before;
+  for (let i = 0; i < 16 && most <= before * 1.04; ++i) {
+    await page.waitForTimeout(500);
+    most = Math.max(most, await cheekRedness(page));
+  }
+  assert.ok(most > before * 1.04, `R/G in the cheeks: ${before.toFixed(3)} before, at most ${most.toFixed(3)} with the script`);
   await page.close();
 });
 
