@@ -5,21 +5,40 @@
 
 namespace fw::client {
 
-std::vector<AppearanceLoader::Package> AppearanceLoader::take_new(RoomState& state) {
-  std::vector<Package> fresh;
+AppearanceLoader::Changes AppearanceLoader::take_new(RoomState& state) {
+  Changes changes;
   std::lock_guard lock(state.mutex);
   for (const auto& [id, avatar] : state.avatars) {
     if (!avatar.package) continue;
     auto& serial = loaded_[id];
     if (serial == avatar.package_serial) continue;
     serial = avatar.package_serial;
-    fresh.emplace_back(id, avatar.package);
+    changes.packages.emplace_back(id, avatar.package);
   }
-  return fresh;
+  for (const auto& [id, units] : state.unit_morphs) {
+    const auto shown = units_loaded_.find(id);
+    if (shown != units_loaded_.end() && shown->second == units.version) continue;
+    units_loaded_[id] = units.version;
+    changes.units.push_back(units);
+  }
+  // Those who left (the state forgets both their package and their units):
+  // their faces are let go.
+  const auto left = [&state](std::uint32_t id) { return !state.avatars.contains(id) && !state.unit_morphs.contains(id); };
+  for (const auto& [id, serial] : loaded_)
+    if (left(id)) changes.gone.push_back(id);
+  for (const auto& [id, version] : units_loaded_)
+    if (left(id) && !loaded_.contains(id)) changes.gone.push_back(id);
+  for (const std::uint32_t id : changes.gone) {
+    loaded_.erase(id);
+    units_loaded_.erase(id);
+  }
+  return changes;
 }
 
 void AppearanceLoader::load_new(RoomState& state, RoomView& view) {
-  for (const auto& [id, bytes] : take_new(state)) {
+  Changes changes = take_new(state);
+  for (const std::uint32_t id : changes.gone) faces_.forget(id);
+  for (const auto& [id, bytes] : changes.packages) {
     model::AvatarPackage package;
     auto appearance = std::make_shared<render::AvatarAppearance>();
     std::string error;
@@ -28,7 +47,15 @@ void AppearanceLoader::load_new(RoomState& state, RoomView& view) {
       log_ << "avatar " << id << ": its package cannot be shown (" << error << "); drawing the generic face\n";
       continue;
     }
-    view.set_appearance(id, std::move(appearance));
+    auto face = faces_.package_arrived(id, std::move(appearance), error);
+    if (!error.empty()) log_ << "avatar " << id << ": " << error << "; drawing its shipped units\n";
+    view.set_appearance(id, std::move(face));
+  }
+  for (const codec::UnitMorphs& units : changes.units) {
+    std::string error;
+    auto face = faces_.units_arrived(units, error);
+    if (!error.empty()) log_ << "avatar " << units.avatar << ": " << error << "; drawing its shipped units\n";
+    if (face) view.set_appearance(units.avatar, std::move(face));
   }
 }
 

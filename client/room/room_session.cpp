@@ -311,7 +311,6 @@ void RoomSession::on_presence(const codec::Presence& presence) {
     return;
   }
   packages_.forget(presence.avatar.id);
-  unit_morphs_.erase(presence.avatar.id);
   event(state_.avatar_left(presence.avatar.id) + " left");
 }
 
@@ -329,9 +328,7 @@ void RoomSession::on_speaking(const codec::Speaking& speaking) {
 
 void RoomSession::on_unit_morphs(const codec::UnitMorphs& morphs) {
   std::lock_guard lock(state_.mutex);
-  const auto held = unit_morphs_.find(morphs.avatar);
-  if (held != unit_morphs_.end() && held->second.version >= morphs.version) return;  // not newer
-  unit_morphs_[morphs.avatar] = morphs;
+  state_.unit_morphs_arrived(morphs);
 }
 
 void RoomSession::on_seats(const codec::Seats& seats) {

@@ -192,10 +192,6 @@ class RoomSession {
   std::uint32_t command_serial_ = 0;
 
   static constexpr int kConnectTimeoutS = 10;
-  /// Each avatar's redefined units (PROTOCOL.md 5.17), the newest version,
-  /// until it leaves; under state_.mutex. Kept, not yet drawn: the view
-  /// rebuilds faces with the shipped units.
-  std::map<std::uint32_t, codec::UnitMorphs> unit_morphs_;
 };
 
 }  // namespace fw::client

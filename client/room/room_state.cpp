@@ -83,9 +83,17 @@ std::string RoomState::avatar_left(std::uint32_t avatar) {
   std::string name = name_of(avatar);
   avatars.erase(avatar);
   attention.erase(avatar);
+  unit_morphs.erase(avatar);
   decoder.remove(avatar);
   record({"left", name, ""});
   return name;
+}
+
+bool RoomState::unit_morphs_arrived(const codec::UnitMorphs& morphs) {
+  const auto held = unit_morphs.find(morphs.avatar);
+  if (held != unit_morphs.end() && held->second.version >= morphs.version) return false;  // not newer
+  unit_morphs[morphs.avatar] = morphs;
+  return true;
 }
 
 void RoomState::seats_changed(const codec::Seats& seats) {

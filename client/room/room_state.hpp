@@ -68,6 +68,9 @@ class RoomState {
   std::optional<std::string> fatal_error;
   /// Whom the person muted for themselves (--mute): set before the session starts.
   MuteList mutes;
+  /// Each avatar's redefined units (PROTOCOL.md 5.17), the newest version,
+  /// until it leaves: the render loop draws its face with them.
+  std::map<std::uint32_t, codec::UnitMorphs> unit_morphs;
 
   static constexpr std::size_t kMaxEvents = 200;
   using Clock = std::chrono::steady_clock;
@@ -103,6 +106,9 @@ class RoomState {
   void avatar_joined(const codec::AvatarInfo& info);
   /// Presence: an avatar left; its decoder goes with it. Returns its name.
   std::string avatar_left(std::uint32_t avatar);
+  /// An avatar's redefined units; an older version than the one kept is
+  /// ignored (returns false).
+  bool unit_morphs_arrived(const codec::UnitMorphs& morphs);
   /// The room was laid out again: the avatars' new seats.
   void seats_changed(const codec::Seats& seats);
   /// Faces whose attention changed.
