@@ -96,6 +96,31 @@ export class AvatarModel {
   }
 
   /**
+   * Redefines action units (server/PROTOCOL.md 5.17): `units` as a unit
+   * morphs message carries them ([{ channel, moves: [{ vertex, delta: [dx, dy,
+   * dz] }] }], web/protocol's reader), carried onto this face by
+   * fw::model::set_unit_morphs; every other unit is the shipped one again, so
+   * [] restores the shipped face. Frames after it use them.
+   */
+  setUnitMorphs(units) {
+    this.ensureAlive();
+    const ints = [units.length];
+    for (const unit of units) {
+      ints.push(unit.channel, unit.moves.length);
+      for (const move of unit.moves) ints.push(move.vertex, move.delta[0], move.delta[1], move.delta[2]);
+    }
+    const m = this.module;
+    const pointer = m._malloc(ints.length * 4);
+    try {
+      m.HEAP32.set(Int32Array.from(ints), pointer >>> 2);
+      if (!m._fw_avatar_set_unit_morphs(this.handle, pointer, ints.length))
+        throw new Error(`the redefined units could not be set: ${lastError(m)}`);
+    } finally {
+      m._free(pointer);
+    }
+  }
+
+  /**
    * The skin's shape for FaceParams `params`: positions (3V, model units, the
    * generic mesh's vertex order), uvs (2V) and normals (3V). The arrays are
    * this avatar's own and are overwritten by the next call.

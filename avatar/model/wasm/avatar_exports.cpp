@@ -2,22 +2,26 @@
 // the motion-cloned action units) and fw::model::reconstruct_face (the skin
 // for one frame's FaceParams) themselves, so that the browser shows exactly
 // what the native client shows. web/engine/avatar_model.js wraps these.
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <string>
 #include <vector>
 
 #include <emscripten/emscripten.h>
 
 #include "exports_state.hpp"
 #include "face_params_floats.hpp"
+#include "unit_morph_ints.hpp"
 #include "fw/model/avatar_model.hpp"
 #include "fw/model/avatar_package.hpp"
 #include "fw/model/eye_socket.hpp"
 #include "fw/model/face_reconstruction.hpp"
 #include "fw/model/head_back.hpp"
 #include "fw/model/mesh.hpp"
+#include "fw/model/unit_morphs.hpp"
 
 namespace fw::wasm {
 const model::AvatarPackage* find_package(int handle);  // package_exports.cpp
@@ -200,6 +204,32 @@ EMSCRIPTEN_KEEPALIVE const float* fw_avatar_frame(int handle, const float* param
   for (const auto part : {as_floats(shape.positions), as_floats(shape.uvs), as_floats(frame_normals)})
     a->frame.insert(a->frame.end(), part.begin(), part.end());
   return a->frame.data();
+}
+
+/// The avatar's redefined units (server/PROTOCOL.md 5.17; fw/model/unit_morphs.hpp),
+/// from a unit morphs message's units as `count` int32s: the number of
+/// units, then per unit its channel and its number of moves, then per move
+/// the vertex and dx, dy, dz in the wire's steps. No units (`count` 1, a 0)
+/// restores the shipped units. Applies to the frames that follow.
+/// @return 1, or 0 and fw_last_error() (a short or malformed list, a
+///         vertex past the face, an unknown handle)
+EMSCRIPTEN_KEEPALIVE int fw_avatar_set_unit_morphs(int handle, const std::int32_t* data, int count) {
+  Avatar* a = avatars.find(handle);
+  if (!a) return 0;
+  fw::codec::UnitMorphs message;
+  std::string error;
+  if (!fw::wasm::unit_morphs_from_ints({data, static_cast<std::size_t>(std::max(count, 0))}, message, error)) {
+    fw::wasm::set_error(error);
+    return 0;
+  }
+  const fw::model::GenericFace& generic = fw::model::generic_face();
+  const auto set = fw::model::unit_morph_set(message, generic.skin.positions.size(), error);
+  if (!set) {
+    fw::wasm::set_error(error);
+    return 0;
+  }
+  fw::model::set_unit_morphs(a->model, generic, *set);
+  return 1;
 }
 
 EMSCRIPTEN_KEEPALIVE int fw_face_params_floats() { return static_cast<int>(fw::wasm::kFaceParamsFloats); }

@@ -10,6 +10,7 @@
 // generic face, the fitted face, every cloned morph and, for a set of
 // FaceParams, the reconstructed skin (positions, uvs, normals) and the draw
 // values of avatar/render (head and eye matrices).
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -26,6 +27,7 @@
 #include "fw/model/file_io.hpp"
 #include "fw/model/head_back.hpp"
 #include "fw/model/mesh.hpp"
+#include "fw/model/unit_morphs.hpp"
 #include "fw/render/avatar_appearance.hpp"
 #include "fw/render/camera.hpp"
 
@@ -130,6 +132,57 @@ json avatar_json(const model::AvatarModel& avatar) {
           {"frames", shapes}};
 }
 
+// Redefined units as the wire carries them (PROTOCOL.md 5.17): AU 1's left
+// side lifting the upper face, AU 12's left side dragging the lower face
+// down and forward.
+codec::UnitMorphs redefined_units() {
+  const model::GenericFace& generic = model::generic_face();
+  const auto morph = [&](bool upper, glm::vec3 delta) {
+    model::Morph m;
+    m.vertex_delta.assign(generic.skin.positions.size(), glm::vec3(0.0f));
+    m.uv_delta.assign(m.vertex_delta.size(), glm::vec2(0.0f));
+    for (std::size_t v = 0; v < m.vertex_delta.size(); ++v)
+      if ((generic.skin.positions[v].y > 0.2f) == upper && std::abs(generic.skin.positions[v].y) > 0.2f)
+        m.vertex_delta[v] = delta * (0.5f + 0.5f * std::abs(generic.skin.positions[v].x));
+    return m;
+  };
+  codec::UnitMorphs message;
+  message.avatar = 1;
+  message.version = 1;
+  const auto au1 = static_cast<std::size_t>(codec::au_channel(1, codec::AuSide::left));
+  const auto au12 = static_cast<std::size_t>(codec::au_channel(12, codec::AuSide::left));
+  message.units.push_back(model::unit_morph_message(au1, morph(true, {0.0f, 0.15f, 0.02f})));
+  message.units.push_back(model::unit_morph_message(au12, morph(false, {0.03f, -0.2f, 0.05f})));
+  return message;
+}
+
+json units_json(const codec::UnitMorphs& message) {
+  json units = json::array();
+  for (const codec::UnitMorphs::Unit& unit : message.units) {
+    json moves = json::array();
+    for (const codec::UnitMorphs::Move& move : unit.moves)
+      moves.push_back({{"vertex", move.vertex}, {"delta", {move.delta[0], move.delta[1], move.delta[2]}}});
+    units.push_back({{"channel", unit.channel}, {"moves", moves}});
+  }
+  return units;
+}
+
+// An avatar with the redefined units: the units as the engine is handed them
+// and the frames the C++ reconstructs with them.
+json redefined_json(model::AvatarModel avatar) {
+  const codec::UnitMorphs message = redefined_units();
+  std::string error;
+  const auto set = model::unit_morph_set(message, model::generic_face().skin.positions.size(), error);
+  if (!set) throw std::runtime_error(error);
+  model::set_unit_morphs(avatar, model::generic_face(), *set);
+  json frames_json = json::array();
+  for (const auto& [name, params] : frames()) {
+    const model::FaceShape shape = model::reconstruct_face(avatar, params);
+    frames_json.push_back({{"name", name}, {"positions", flat(shape.positions)}, {"uvs", flat(shape.uvs)}});
+  }
+  return {{"units", units_json(message)}, {"frames", frames_json}};
+}
+
 json package_json(const model::AvatarPackage& p) {
   const auto image = [](const model::PackageImage& i) {
     return i.bytes.empty() ? json(nullptr) : json{{"type", i.type}, {"size", i.bytes.size()}};
@@ -163,6 +216,7 @@ int main(int argc, char** argv) {
   std::filesystem::create_directories(out_dir);
   json goldens = {{"generic_face_version", model::kGenericFaceVersion},
                   {"generic", avatar_json(model::generic_avatar_model())},
+                  {"generic_redefined", redefined_json(model::generic_avatar_model())},
                   {"packages", json::array()}};
   try {
     for (const fw::test::GoldenPackage& g : fw::test::golden_packages(seed)) {
@@ -172,8 +226,10 @@ int main(int argc, char** argv) {
         model::AvatarPackage package;
         if (!model::parse_avatar_package(g.bytes, package, error)) throw std::runtime_error(g.name + ": " + error);
         entry["package"] = package_json(package);
-        entry["avatar"] = avatar_json(model::make_avatar_model(model::generic_face(), package.fitted_vertices,
-                                                               package.head_outline));
+        const model::AvatarModel avatar =
+            model::make_avatar_model(model::generic_face(), package.fitted_vertices, package.head_outline);
+        entry["avatar"] = avatar_json(avatar);
+        entry["redefined"] = redefined_json(avatar);
       } else {
         entry["error"] = g.error;
         entry["refusal"] = g.refusal;
