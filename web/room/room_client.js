@@ -49,7 +49,7 @@ export class RoomClient {
     this.avatars = new Map();    // id -> { info, package: {quality, bytes} | null, lastFrameMs }
     this.attention = new Map();  // id -> { target, targetAvatar }
     this.chatLines = [];         // { from, name, text }
-    this.unitMorphs = new Map();  // avatar id -> its redefined units (PROTOCOL.md 5.17), newest version; kept, not yet drawn
+    this.unitMorphs = new Map();  // avatar id -> its redefined units (PROTOCOL.md 5.17), newest version; the view draws the face with them
     this.speakingLines = [];     // the speaking messages (avatar, tick, durationMs, language, text), newest last
     this.results = new Map();    // request id -> error ('' accepted)
     this.requestId = 0;

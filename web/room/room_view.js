@@ -5,7 +5,9 @@
 // tile, at once, from the page's own package. Names and the last chat line
 // are HTML laid over the canvas (room_page.js places them from `tiles`). A
 // face the viewer muted (mute_list.js) is drawn at rest: neutral, still and
-// looking straight ahead, whatever the stream says it does.
+// looking straight ahead, whatever the stream says it does. Each face moves
+// by the units its person redefined (PROTOCOL.md 5.17), as the client keeps
+// them, from the frame its model is built or a new version arrives.
 import { mat4 } from '../shared/mat4.js';
 import { TURN_SHARE, aimAt, reaim, reaimAtViewer } from './gaze_reaim.js';
 import { decodeImage } from './face_renderer.js';
@@ -30,7 +32,7 @@ export class RoomView {
     this.engine = engine;
     this.renderer = renderer;
     this.client = client;
-    this.faces = new Map();   // avatar id -> { bytes, model, gpu } once its package is built
+    this.faces = new Map();   // avatar id -> { bytes, model, gpu, units } once its package is built
     this.building = new Map();  // avatar id -> bytes being built
     this.retarget = new RetargetEasing();
     this.generic = engine.genericAvatar();
@@ -65,7 +67,8 @@ export class RoomView {
       const decoded = await Promise.all(names.map((n) => decodeImage(pkg.images[n])));
       const images = Object.fromEntries(names.map((n, i) => [n, decoded[i]]));
       const gpu = this.renderer.addFace(model, images, pkg.closedLidRect, pkg.textureLight);
-      return { bytes, model, gpu };
+      // units: the unit morphs message its model moves by; none: the shipped units.
+      return { bytes, model, gpu, units: null };
     } finally {
       pkg.release();
     }
@@ -94,6 +97,25 @@ export class RoomView {
         this.faces.delete(id);
         this.release(face);
       }
+    }
+    for (const [id, face] of this.faces) this.redefineUnits(id, face);
+    if (this.ownFace && this.client.you) this.redefineUnits(this.client.you, this.ownFace);
+  }
+
+  /**
+   * Gives a face the units its person redefined, when the client keeps a
+   * set for it that its model does not move by yet (a new version, or a
+   * model just built from a new package); a restore is a set without units.
+   */
+  redefineUnits(id, face) {
+    const wanted = this.client.unitMorphs.get(id) ?? null;
+    if (face.units === wanted) return;
+    face.units = wanted;
+    try {
+      face.model.setUnitMorphs(wanted ? wanted.units : []);
+    } catch (error) {
+      console.warn(`avatar ${id}: ${error.message}; drawing its shipped units`);
+      face.model.setUnitMorphs([]);
     }
   }
 
