@@ -21,6 +21,7 @@
 #include "face_overrides.hpp"
 #include "script_check.hpp"
 #include "redefined_units.hpp"
+#include "redefinition_budget.hpp"
 
 namespace fw::server {
 namespace {
@@ -193,6 +194,7 @@ struct RoomSimulation::State {
   std::shared_ptr<bool> alive = std::make_shared<bool>(true);
   double physics_share = 1;
   std::size_t physics_faces = 0, kinematic_faces = 0;
+  RedefinitionBudget redefinitions;  ///< the bytes of unit morphs its people may send everyone
 
   /// The line of `job` starts, its track made (say_waiting_lines).
   void say_line(const LineJob& job, LineToSay line);
@@ -348,8 +350,17 @@ std::string RoomSimulation::script(AvatarId avatar, std::string_view text) {
   // The definitions are held to the avatar's bound before anything plays:
   // a script is taken whole or not at all.
   RedefinedUnits units = it->second.units;
-  if (!read.units.empty())
+  if (!read.units.empty()) {
     if (std::string error = units.apply(read.units); !error.empty()) return error;
+    // Every client in the room receives the new set: the room's budget for
+    // them (redefinition_budget.hpp) pays for its bytes.
+    std::vector<std::uint8_t> set;
+    codec::write_message(units.message(avatar), set);
+    if (const auto wait = s.redefinitions.take(set.size(), s.room.tick_index() * s.room.dt_s()))
+      return "this room's people redefined units faster than its links carry them (" +
+             std::to_string(static_cast<int>(RedefinitionBudget::kBytesPerSecond)) +
+             " bytes a second for all): try again in " + std::to_string(static_cast<int>(std::ceil(*wait))) + " s";
+  }
   std::string result = s.room.facs(avatar, read);
   if (result.empty() && !read.units.empty()) it->second.units = std::move(units);
   s.collect_events();

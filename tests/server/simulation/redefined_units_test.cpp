@@ -4,9 +4,11 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
+#include "redefinition_budget.hpp"
 #include "room_simulation.hpp"
 #include "test_paths.hpp"
 
@@ -104,6 +106,45 @@ TEST(RedefinedUnits, ARedefinitionIsForgottenWhenItsAvatarLeaves) {
   const AvatarId again = room.add_avatar({"c", true});
   ASSERT_EQ(again, a);  // the id handed out again carries nothing of the last one
   EXPECT_FALSE(room.unit_morphs(again));
+}
+
+}  // namespace
+}  // namespace fw::server
+
+namespace fw::server {
+namespace {
+
+// The room's people together, on however many addresses, may make every
+// client receive only so many bytes of unit morphs a second.
+TEST(RedefinitionBudget, ABurstThenItsRateAndTheWaitNamed) {
+  RedefinitionBudget budget;
+  EXPECT_FALSE(budget.take(16 * 1024, 0.0)) << "one largest set at once";
+  const auto wait = budget.take(1000, 1.0);  // 200 bytes back after a second
+  ASSERT_TRUE(wait);
+  EXPECT_NEAR(*wait, 4.0, 1e-9) << "800 bytes short at 200 a second";
+  EXPECT_FALSE(budget.take(1000, 5.0));
+}
+
+TEST(RedefinedUnits, ARoomsRedefinitionsAreHeldToItsByteRateWhoeverSendsThem) {
+  RoomSimulationOptions options;
+  options.physics = false;  // a minute of ticks, which only the room's clock needs
+  RoomSimulation room(options);
+  std::vector<AvatarId> people;
+  for (const char* name : {"a", "b", "c", "d", "e", "f", "g", "h"}) people.push_back(room.add_avatar({name, true}));
+  // Each person redefines, then restores, their unit (each set a few hundred
+  // bytes), as fast as the script rate lets them: no tick in between.
+  int refused = 0;
+  std::string reason;
+  for (int round = 0; round < 200 && refused == 0; ++round)
+    for (const AvatarId p : people) {
+      const std::string result = room.command(p, FacsCommand{round % 2 ? "AU 1 end" : au1_example()});
+      if (!result.empty()) ++refused, reason = result;
+    }
+  EXPECT_GT(refused, 0) << "past the burst, the room's redefinitions wait";
+  EXPECT_NE(reason.find("try again in"), std::string::npos) << reason;
+  // A minute later the budget has come back.
+  for (int i = 0; i < 60 * 30; ++i) room.tick();
+  EXPECT_EQ(room.command(people[0], FacsCommand{au1_example()}), "");
 }
 
 }  // namespace
