@@ -7,9 +7,8 @@
 // muting a face (for the viewer alone: mute_list.js), the stream budget,
 // the meter, and read aloud (the others' lines heard in step with their
 // lips: read_aloud_player.js; off until the person turns it on).
-import { loadEngineFromServer } from '../engine/engine.js';
 import { AttentionTarget, isLanguageCode } from '../protocol/session_types.js';
-import { FaceRenderer } from './face_renderer.js';
+import { fetchOwnPackage, loadRenderer } from './page_resources.js';
 import { RoomClient } from './room_client.js';
 import { MuteList } from './mute_list.js';
 import { ReadAloudPlayer } from './read_aloud_player.js';
@@ -33,20 +32,6 @@ function fail(message) {
   $('status').classList.add('error');
 }
 
-async function fetchText(url) {
-  const response = await fetch(url);
-  if (!response.ok) throw new Error(`${url}: HTTP ${response.status}`);
-  return response.text();
-}
-
-/** The page's own package, when the person uploaded a photo: shown at once, never sent back down. */
-async function fetchOwnPackage(asset) {
-  if (!asset) return null;
-  const response = await fetch(`/api/packages/${encodeURIComponent(asset)}`);
-  if (!response.ok) return null;
-  return new Uint8Array(await response.arrayBuffer());
-}
-
 async function main() {
   if (!identity.room || !identity.name) {
     location.replace('./');
@@ -67,9 +52,7 @@ async function main() {
   if (!gl) return fail('this browser has no WebGL2, which the room needs');
 
   const ownPackage = fetchOwnPackage(identity.asset);
-  const [engine, vertexSource, fragmentSource] = await Promise.all([
-    loadEngineFromServer(), fetchText('/shaders/face.vert'), fetchText('/shaders/face.frag')]);
-  const renderer = new FaceRenderer(gl, vertexSource, fragmentSource);
+  const { engine, renderer } = await loadRenderer(gl);
   const budget = $('budget');
   budget.value = localStorage.getItem(BUDGET_KEY) ?? budget.value;
   const own = await ownPackage;

@@ -5,10 +5,9 @@
 // that hold until changed (lab_controls.js, override_sender.js); the face is
 // drawn as the room draws it (lab_view.js); a script editor checks and plays
 // FACS sentences (script_result.js).
-import { loadEngineFromServer } from '../../engine/engine.js';
 import { Limits } from '../../protocol/session_types.js';
 import { parseServers } from '../../shared/server_list.js';
-import { FaceRenderer } from '../face_renderer.js';
+import { fetchOwnPackage, loadRenderer } from '../page_resources.js';
 import { RoomClient } from '../room_client.js';
 import { GROUPS, SLIDERS, Side, RESET_OVERRIDE, behaviourOverride, overrideOf } from './lab_controls.js';
 import { LabView } from './lab_view.js';
@@ -27,18 +26,6 @@ function fail(message) {
   $('status').classList.add('error');
 }
 
-async function fetchText(url) {
-  const response = await fetch(url);
-  if (!response.ok) throw new Error(`${url}: HTTP ${response.status}`);
-  return response.text();
-}
-
-async function fetchOwnPackage(asset) {
-  if (!asset) return null;
-  const response = await fetch(`/api/packages/${encodeURIComponent(asset)}`);
-  return response.ok ? new Uint8Array(await response.arrayBuffer()) : null;
-}
-
 async function main() {
   if (!identity.name) {
     location.replace('./');
@@ -50,9 +37,7 @@ async function main() {
   const gl = canvas.getContext('webgl2', { antialias: true, alpha: false, preserveDrawingBuffer: true, stencil: true });
   if (!gl) return fail('this browser has no WebGL2, which the lab needs');
   const ownPackage = fetchOwnPackage(identity.asset);
-  const [engine, vertexSource, fragmentSource] = await Promise.all([
-    loadEngineFromServer(), fetchText('/shaders/face.vert'), fetchText('/shaders/face.frag')]);
-  const renderer = new FaceRenderer(gl, vertexSource, fragmentSource);
+  const { engine, renderer } = await loadRenderer(gl);
   const own = await ownPackage;
   const client = new RoomClient({
     servers, room: identity.room, name: identity.name, asset: identity.asset, avatarKey: identity.key,
