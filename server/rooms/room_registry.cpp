@@ -18,6 +18,20 @@ bool is_valid_room_name(std::string_view name) {
 
 namespace {
 
+/// `services` with another bus (its references cannot be reseated).
+RoomServices with_bus(const RoomServices& services, RoomBus& bus) {
+  return RoomServices{.config = services.config,
+                      .metrics = services.metrics,
+                      .physics_lod = services.physics_lod,
+                      .abuse = services.abuse,
+                      .workers = services.workers,
+                      .store = services.store,
+                      .procedural_faces = services.procedural_faces,
+                      .bus = bus,
+                      .draining = services.draining,
+                      .speech = services.speech};
+}
+
 RoomShareLimits room_shares_of(const ServerConfig& config) {
   RoomShareLimits limits;
   limits.per_address = config.abuse.rooms_per_address;
@@ -43,7 +57,7 @@ std::string share_refusal_text(RoomShareRefusal why, const RoomShareLimits& limi
 }  // namespace
 
 RoomRegistry::RoomRegistry(const RoomServices& services, AddressLimits& addresses)
-    : services_(services), addresses_(addresses), shares_(room_shares_of(services.config)),
+    : services_(services), preview_services_(with_bus(services, preview_bus_)), addresses_(addresses), shares_(room_shares_of(services.config)),
       preview_counts_(services.config.previews) {}
 RoomRegistry::~RoomRegistry() = default;
 
@@ -90,8 +104,8 @@ RoomOpening RoomRegistry::open_preview(const std::string& address) {
     return RoomOpening::refused(refusal->code, std::move(refusal->why), Abuse::preview_limit);
   // '~' is not in a hello's room names: nobody can ask for this room.
   const std::string name = "~lab-" + std::to_string(next_preview_++);
-  // Always owned here, never placed on the bus: nobody else joins it.
-  auto room = std::make_shared<Room>(services_, *this, name, false, next_seed_++, RoomRoleKind::owner, true);
+  // Always owned here, on a bus of this node alone: nobody else joins it.
+  auto room = std::make_shared<Room>(preview_services_, *this, name, false, next_seed_++, RoomRoleKind::owner, true);
   previews_.emplace(name, room);
   preview_counts_.opened(name, address);
   room->start();

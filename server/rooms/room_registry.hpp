@@ -14,6 +14,7 @@
 #include "fw/codec/messages.hpp"
 #include "abuse_log.hpp"
 #include "address_limits.hpp"
+#include "local_room_bus.hpp"
 #include "preview_limits.hpp"
 #include "room_services.hpp"
 #include "room_shares.hpp"
@@ -88,6 +89,10 @@ class RoomRegistry {
   std::shared_ptr<Room> start_room(const std::string& name, bool persistent);
 
   RoomServices services_;
+  /// Previews are this node's alone: their rooms speak to no other node and
+  /// keep nothing in Redis, where every node's "~lab-1" would meet.
+  LocalRoomBus preview_bus_;
+  RoomServices preview_services_;
   AddressLimits& addresses_;
   mutable std::mutex mutex_;
   std::map<std::string, std::shared_ptr<Room>> rooms_;

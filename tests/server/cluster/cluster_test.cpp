@@ -654,5 +654,40 @@ TEST(Cluster, MessagesForgedIntoRedisChangeNothingAClientSees) {
   EXPECT_TRUE(eventually([&] { pump_all(both, 100ms); return everyone_sees(both, {first_id, bridged_id}); }, 10s));
 }
 
+
+TEST(Cluster, FaceLabPreviewsOnTwoNodesKeepNothingInRedis) {
+  // Each node numbers its previews from 1, so two nodes both hold a
+  // "~lab-1": a preview must stay on its node, or their members and states
+  // would meet under one name in Redis, and a node taking over rooms after
+  // another died would restore somebody's private preview as a room.
+  Cluster cluster;
+  auto& a = cluster.add_node("a");
+  auto& b = cluster.add_node("b");
+  ASSERT_TRUE(eventually([&] { return ready(a.http_port()) && ready(b.http_port()); }, 15s));
+  std::vector<std::unique_ptr<RoomTestClient>> labs;
+  for (RunningServer* node : {&a, &b}) {
+    auto lab = std::make_unique<RoomTestClient>(Transport::websocket, node->http_port());
+    codec::Hello hello;
+    hello.room = "lab";
+    hello.name = "Lab";
+    hello.preview = true;
+    lab->send_message(hello);
+    ASSERT_TRUE(lab->pump_until([&] { return lab->welcome.has_value() || lab->closed(); }, 15s));
+    ASSERT_TRUE(lab->welcome.has_value()) << (lab->closing ? lab->closing->reason : "no closing");
+    labs.push_back(std::move(lab));
+  }
+  EXPECT_EQ(labs[0]->welcome->room, labs[1]->welcome->room) << "the test means two previews of one name";
+  // Rooms keep their state once a second: wait for a few.
+  std::vector<RoomTestClient*> both{labs[0].get(), labs[1].get()};
+  pump_all(both, 2500ms);
+  server::RedisBlocking redis(cluster.redis_address(), 2000ms);
+  const auto keys = redis.command({"KEYS", "*~lab*"});
+  ASSERT_TRUE(keys && !keys->is_error());
+  std::string found;
+  for (const auto& key : keys->elements) found += key.text + " ";
+  EXPECT_TRUE(keys->elements.empty()) << "previews wrote to Redis: " << found;
+  for (auto* lab : both) EXPECT_FALSE(lab->closed()) << "a preview ended: " << lab->closing->reason;
+}
+
 }  // namespace
 }  // namespace fw::test
