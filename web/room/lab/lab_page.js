@@ -4,7 +4,8 @@
 // would, with its own behaviour off until turned on. Sliders set overrides
 // that hold until changed (lab_controls.js, override_sender.js); the face is
 // drawn as the room draws it (lab_view.js); a script editor checks and plays
-// FACS sentences (script_result.js).
+// FACS sentences (script_result.js); the contact sheet shows the face as it
+// is now from several views (sheet_dialog.js, contact_sheet.js).
 import { Limits } from '../../protocol/session_types.js';
 import { parseServers } from '../../shared/server_list.js';
 import { fetchOwnPackage, loadRenderer } from '../page_resources.js';
@@ -12,6 +13,7 @@ import { RoomClient } from '../room_client.js';
 import { GROUPS, SLIDERS, Side, RESET_OVERRIDE, behaviourOverride, overrideOf } from './lab_controls.js';
 import { LabView } from './lab_view.js';
 import { OverrideSender } from './override_sender.js';
+import { wireContactSheet } from './sheet_dialog.js';
 import { offsetOf, readScriptResult } from './script_result.js';
 
 const $ = (id) => document.getElementById(id);
@@ -52,6 +54,7 @@ async function main() {
   const controls = buildSliders(sender);
   wireBehaviourAndReset(sender, controls);
   wireCamera(view, canvas);
+  window.facewireLab.sheet = wireContactSheet({ button: $('contact-sheet'), view, name: identity.name });
   wireScript(client);
   client.start();
 

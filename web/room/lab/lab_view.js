@@ -16,8 +16,10 @@ export class LabView {
     this.room = new RoomView({ gl, engine, renderer, client });
     this.cameraYawRad = 0;
     this.frames = 0;
-    /** The FaceParams the face was drawn with last (for whoever inspects the page). */
+    /** The FaceParams the face was drawn with last (for whoever inspects the page, and the contact sheet). */
     this.drawnParams = null;
+    /** The face (RoomView's { model, gpu }) drawn last: the contact sheet draws it again. */
+    this.drawnFace = null;
   }
 
   /** The page's own package, drawn before the stream's first frame. */
@@ -36,15 +38,37 @@ export class LabView {
     const params = you ? this.client.face(you, nowMs) : null;
     if (!face || !params) return;
     const rect = { x: 0, y: 0, w: width, h: height };
-    const aspect = width / Math.max(1, height);
-    const distance = CAMERA_DISTANCE / Math.min(1, aspect);
-    const position = [distance * Math.sin(this.cameraYawRad), CAMERA_HEIGHT, distance * Math.cos(this.cameraYawRad)];
-    const camera = room.camera({ position, target: [0, CAMERA_HEIGHT, 0] }, FOV_Y, aspect);
-    room.drawTile('lab', rect, 0, height, pixelRatio, face, params, mat4.identity(), camera);
+    room.drawTile('lab', rect, 0, height, pixelRatio, face, params, mat4.identity(), this.camera(this.cameraYawRad, 0, width / Math.max(1, height)));
     this.drawnParams = params;
+    this.drawnFace = face;
     this.frames += 1;
   }
 
-  /** Landmarks (68-point scheme) of the face as last drawn, CSS pixels on the canvas. */
-  landmarksOnScreen(indices) { return this.room.landmarksOnScreen('lab', indices); }
+  /**
+   * The camera about the head, turned by `yawRad` (toward the person's left
+   * when positive) and raised by `pitchRad` (from above when positive), for
+   * a picture of `aspect` (width / height): a narrow one is seen from further,
+   * so that the head's width still fits.
+   */
+  camera(yawRad, pitchRad, aspect) {
+    const distance = CAMERA_DISTANCE / Math.min(1, aspect);
+    const across = distance * Math.cos(pitchRad);
+    const position = [across * Math.sin(yawRad), CAMERA_HEIGHT + distance * Math.sin(pitchRad), across * Math.cos(yawRad)];
+    return this.room.camera({ position, target: [0, CAMERA_HEIGHT, 0] }, FOV_Y, aspect);
+  }
+
+  /**
+   * Draws the face last drawn, with `params`, into the bound framebuffer's
+   * `size` x `size` corner, seen by `camera` (this.camera's), under the
+   * tile key `key` (landmarksOnScreen(key) then finds its points there).
+   * Returns false when no face has been drawn yet.
+   */
+  drawStill(key, size, params, camera) {
+    if (!this.drawnFace) return false;
+    this.room.drawTile(key, { x: 0, y: 0, w: size, h: size }, 0, size, 1, this.drawnFace, params, mat4.identity(), camera);
+    return true;
+  }
+
+  /** Landmarks (68-point scheme) of the face as last drawn (or of a still's `key`), CSS pixels on its picture. */
+  landmarksOnScreen(indices, key = 'lab') { return this.room.landmarksOnScreen(key, indices); }
 }
