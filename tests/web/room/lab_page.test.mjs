@@ -3,14 +3,21 @@
 // sliders redden the cheeks, and so does the blushing example loaded and
 // played from the editor, a script with a syntax error is shown at its
 // line and column, and the lobby links the lab. Pixels are read from the
-// canvas where the page's own landmarks put the mouth and the cheeks.
-// FW_LAB_SHOTS=DIR keeps a screenshot at desktop and at phone size.
+// canvas where the page's own landmarks put the mouth and the cheeks. The
+// contact sheet, downloaded as a person would, shows the face in each of its
+// panels, turned where it says, smiling when the preview smiles, and fits a
+// phone's screen as the page does. FW_LAB_SHOTS=DIR keeps screenshots of the
+// page and of the sheet at desktop and at phone size.
+import { readFileSync } from 'node:fs';
 import { after, before, test } from 'node:test';
 import assert from 'node:assert/strict';
 
 import { openWeb, sourceFile } from '../support/harness.mjs';
 import { pageUntil } from '../support/page_poll.mjs';
-import { canvasPixels, meanAbsDifference, mouthSamples } from '../support/room_pixels.mjs';
+import { readPng } from '../support/png_pixels.mjs';
+import {
+  canvasPixels, faceShare, imageMouthSamples, imageRegion, lumas, meanAbsDifference, mouthSamples,
+} from '../support/room_pixels.mjs';
 
 /** Long enough for an override to reach the server, its face to settle through the physics face and come back. */
 const SETTLE_MS = 2000;
@@ -118,15 +125,152 @@ test('a script with a syntax error is shown at its line and column', async () =>
   await page.close();
 });
 
-test('the lab works at desktop and phone size, and the lobby links it', async () => {
+/**
+ * Presses "Contact sheet" and downloads it by its link: { image (the PNG
+ * read), layout, arrangement, fileName, suggested (the download's name),
+ * front (landmarks 36 and 45 in the sheet's pixels) }.
+ */
+async function takeSheet(page) {
+  const last = () => page.evaluate(() => window.facewireLab.sheet.last?.url ?? null);
+  const before = await last();
+  await page.click('#contact-sheet');
+  await pageUntil(page, last, (url) => url !== before, 'the contact sheet drawn');
+  const sheet = await page.evaluate(() => {
+    const { layout, arrangement, fileName } = window.facewireLab.sheet.last;
+    return { layout, arrangement, fileName, front: window.facewireLab.view.landmarksOnScreen([36, 45], 'sheet:front') };
+  });
+  const cell = sheet.layout.cells.find((c) => c.view.key === 'front');
+  sheet.front = sheet.front.map(([x, y]) => [cell.x + x, cell.y + y]);
+  const [download] = await Promise.all([page.waitForEvent('download'), page.click('#sheet-download')]);
+  return { ...sheet, suggested: download.suggestedFilename(), image: readPng(readFileSync(await download.path())) };
+}
+
+const panelOf = (sheet, key) => {
+  const { x, y, size } = sheet.layout.cells.find((c) => c.view.key === key);
+  return imageRegion(sheet.image, { x, y, w: size, h: size });
+};
+
+/** The share of the sheet outside its panels and their labels that is face: none, where no panel is. */
+function faceOutsidePanels({ image, layout }) {
+  const inside = (x, y) => layout.cells.some((c) => x >= c.x && x < c.x + c.size && y >= c.y && y < c.y + c.size + layout.labelHeight);
+  const outside = [];
+  for (let y = 0; y < image.height; ++y) {
+    for (let x = 0; x < image.width; ++x) {
+      const at = (y * image.width + x) * image.channels;
+      if (!inside(x, y)) outside.push(image.data[at], image.data[at + 1], image.data[at + 2], 255);
+    }
+  }
+  return faceShare({ data: outside });
+}
+
+const dialogOpen = (page) => page.evaluate(() => document.getElementById('sheet-dialog').open);
+
+test('the contact sheet shows the face as the preview does now, from seven views', async () => {
+  const page = await openLab();
+  const liveBefore = await page.evaluate(() => {
+    const { view } = window.facewireLab;
+    const canvas = document.getElementById('room-canvas');
+    return { width: canvas.width, height: canvas.height, yaw: view.cameraYawRad, frames: view.frames };
+  });
+  const liveCorners = await landmarks(page, [36, 45]);
+  const liveStill = await mouthSamples(page, liveCorners);
+  const still = await takeSheet(page);
+  await page.keyboard.press('Escape');
+  await pageUntil(page, async (p) => ({ open: await dialogOpen(p) }), (s) => !s.open, 'Escape closing the sheet', 5000);
+
+  // The preview is as it was: same canvas, same camera, still drawing, the same face.
+  await page.waitForTimeout(500);
+  const liveAfter = await page.evaluate(() => {
+    const { view } = window.facewireLab;
+    const canvas = document.getElementById('room-canvas');
+    return { width: canvas.width, height: canvas.height, yaw: view.cameraYawRad, frames: view.frames };
+  });
+  assert.deepEqual([liveAfter.width, liveAfter.height, liveAfter.yaw], [liveBefore.width, liveBefore.height, liveBefore.yaw]);
+  assert.ok(liveAfter.frames > liveBefore.frames + 3, `the preview kept drawing (${liveBefore.frames} -> ${liveAfter.frames} frames)`);
+  const liveUndisturbed = meanAbsDifference(liveStill, await mouthSamples(page, await landmarks(page, [36, 45])));
+  assert.ok(liveUndisturbed < 1.5, `the preview's mouth moved by ${liveUndisturbed.toFixed(2)} after the sheet`);
+
+  // Seven panels, each a face, nothing drawn elsewhere, the PNG as big as the sheet.
+  const keys = still.layout.cells.map((c) => c.view.key).sort();
+  assert.deepEqual(keys, ['above-20', 'below-20', 'front', 'left-30', 'left-60', 'right-30', 'right-60']);
+  assert.equal(still.arrangement, 'wide', 'a desktop gets the wide sheet');
+  assert.deepEqual([still.image.width, still.image.height], [still.layout.width, still.layout.height], 'the PNG is the sheet');
+  assert.match(still.suggested, /^facewire-sheet-Ada-\d{8}-\d{6}\.png$/);
+  assert.equal(still.suggested, still.fileName);
+  for (const key of keys) {
+    const share = faceShare(panelOf(still, key));
+    assert.ok(share > 0.2, `the ${key} panel shows a face (${share.toFixed(3)} of it is face)`);
+  }
+  const stray = faceOutsidePanels(still);
+  assert.ok(stray < 0.01, `${stray.toFixed(3)} of the sheet outside the panels is face`);
+
+  // A second sheet of the same state is the same; every other view differs from the front.
+  const again = await takeSheet(page);
+  await page.click('#sheet-close');
+  assert.equal(await dialogOpen(page), false, 'Close closes the sheet');
+  const front = lumas(panelOf(still, 'front'));
+  const repeat = meanAbsDifference(front, lumas(panelOf(again, 'front')));
+  const turns = {};
+  for (const key of keys.filter((k) => k !== 'front')) {
+    const turned = meanAbsDifference(front, lumas(panelOf(still, key)));
+    turns[key] = turned.toFixed(1);
+    assert.ok(turned > 4 && turned > 4 * repeat, `the ${key} panel differs from the front by ${turned.toFixed(2)} (a second sheet: ${repeat.toFixed(2)})`);
+  }
+
+  // With joy at 100 % the sheet's front smiles as the preview does.
+  await slide(page, 'emotion-joy', 100);
+  await page.waitForTimeout(SETTLE_MS);
+  const liveJoy = await mouthSamples(page, await landmarks(page, [36, 45]));
+  const joy = await takeSheet(page);
+  if (process.env.FW_LAB_SHOTS) await page.screenshot({ path: `${process.env.FW_LAB_SHOTS}/lab-sheet-joy.png` });
+  await page.keyboard.press('Escape');
+  const stillMouth = imageMouthSamples(still.image, still.front);
+  const noise = meanAbsDifference(stillMouth, imageMouthSamples(again.image, again.front));
+  const smiled = meanAbsDifference(stillMouth, imageMouthSamples(joy.image, joy.front));
+  assert.ok(smiled > 3 && smiled > 4 * noise, `joy at 100 %: the front panel's mouth changed by ${smiled.toFixed(2)} (a second sheet: ${noise.toFixed(2)})`);
+  // ...and is nearer the preview's mouth at joy than the sheet at rest is.
+  const nearJoy = meanAbsDifference(liveJoy, imageMouthSamples(joy.image, joy.front));
+  const nearRest = meanAbsDifference(liveJoy, stillMouth);
+  assert.ok(nearJoy < 0.3 * nearRest, `the sheet's mouth to the preview's at joy: ${nearJoy.toFixed(2)}; the sheet at rest: ${nearRest.toFixed(2)}`);
+  console.log(`sheet measures: panels vs front ${JSON.stringify(turns)}, repeat ${repeat.toFixed(2)}; mouth smiled ${smiled.toFixed(2)}, noise ${noise.toFixed(2)}; `
+    + `to the preview at joy ${nearJoy.toFixed(2)} vs at rest ${nearRest.toFixed(2)}`);
+  await page.close();
+});
+
+test('the lab and its contact sheet work at desktop and phone size, and the lobby links it', async () => {
   for (const [width, height, label] of [[1280, 800, 'desktop'], [390, 844, 'phone']]) {
     const page = await openLab({ width, height });
     const box = await page.locator('#room-canvas').boundingBox();
     assert.ok(box.width > 0.6 * width && box.width <= width, `${label}: the preview is ${box.width} px wide`);
     assert.ok(box.height > 0.4 * height, `${label}: the preview is ${box.height} px high`);
-    const overflow = await page.evaluate(() => document.documentElement.scrollWidth - document.documentElement.clientWidth);
+    assert.ok(box.y < 0.15 * height, `${label}: the preview starts ${box.y} px down`);
+    const overflow = await page.evaluate(() => document.scrollingElement.scrollWidth - window.innerWidth);
     assert.ok(overflow <= 0, `${label}: the page is ${overflow} px wider than the screen`);
     if (process.env.FW_LAB_SHOTS) await page.screenshot({ path: `${process.env.FW_LAB_SHOTS}/lab-${label}.png` });
+    // The sliders are there to be moved: brought into view, nothing covers them.
+    for (const key of ['emotion-joy', 'pallor']) {
+      const slider = page.locator(`input[data-key="${key}"]`);
+      await slider.scrollIntoViewIfNeeded();
+      const reachable = await slider.evaluate((input) => {
+        const r = input.getBoundingClientRect();
+        return r.top >= 0 && r.bottom <= window.innerHeight && document.elementFromPoint(r.x + r.width / 2, r.y + r.height / 2) === input;
+      });
+      assert.ok(reachable, `${label}: the ${key} slider cannot be reached`);
+    }
+    // The sheet and its buttons fit the screen, its panels shown large enough to see.
+    const sheet = await takeSheet(page);
+    assert.equal(sheet.arrangement, width > height ? 'wide' : 'tall', `${label}: the sheet's arrangement`);
+    for (const selector of ['#sheet-dialog', '#sheet-dialog img', '#sheet-download', '#sheet-close']) {
+      const b = await page.locator(selector).boundingBox();
+      assert.ok(b && b.x >= 0 && b.y >= 0 && b.x + b.width <= width && b.y + b.height <= height,
+        `${label}: ${selector} at ${JSON.stringify(b)} is not within the ${width}x${height} screen`);
+    }
+    const shown = await page.locator('#sheet-dialog img').boundingBox();
+    const panel = (shown.width / sheet.layout.width) * sheet.layout.cells[0].size;
+    assert.ok(panel >= 120, `${label}: each panel is shown ${panel.toFixed(0)} px wide`);
+    const sheetOverflow = await page.evaluate(() => document.scrollingElement.scrollWidth - window.innerWidth);
+    assert.ok(sheetOverflow <= 0, `${label}: with the sheet open the page is ${sheetOverflow} px wider than the screen`);
+    if (process.env.FW_LAB_SHOTS) await page.screenshot({ path: `${process.env.FW_LAB_SHOTS}/lab-sheet-${label}.png` });
     await page.close();
   }
   const lobby = await web.page();

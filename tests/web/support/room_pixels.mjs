@@ -2,7 +2,8 @@
 // and measures of them (how much is face rather than background, how a
 // mouth changed, where an iris sits in its eye opening). Regions come from
 // the page's own layout (window.facewireRoom.view), the judgements from the
-// pixels alone.
+// pixels alone. The same measures read images a page made (the face lab's
+// contact sheet, a PNG read by png_pixels.mjs).
 
 /** RGBA pixels of the room canvas inside `rect` (CSS pixels), as { w, h, data }. */
 export async function canvasPixels(page, rect) {
@@ -43,23 +44,30 @@ export function spread({ data }) {
 }
 
 /**
- * Samples luma on a grid in a frame tied to the eyes' outer corners
- * (landmarks 36 and 45): the mouth's region whatever the head does.
- * @param corners [[x, y], [x, y]] of landmarks 36 and 45 on the canvas (CSS px)
+ * The points of a grid in a frame tied to the eyes' outer corners
+ * (landmarks 36 and 45, [[x, y], [x, y]]): the mouth's region whatever the
+ * head does, between the pupils' columns, from under the nose to the chin's top.
  */
-export async function mouthSamples(page, corners) {
+export function mouthPoints(corners) {
   const [a, b] = corners;
   const across = [b[0] - a[0], b[1] - a[1]];
   const down = [-across[1], across[0]];  // image y runs down; the face's down is +90 degrees from the eye line
   const points = [];
   for (let j = 0; j < 10; ++j) {
     for (let i = 0; i < 16; ++i) {
-      // Between the pupils' columns, from under the nose to the chin's top.
       const u = 0.25 + (0.5 * i) / 15;
       const v = 0.55 + (0.4 * j) / 9;
       points.push([a[0] + u * across[0] + v * down[0], a[1] + u * across[1] + v * down[1]]);
     }
   }
+  return points;
+}
+
+/**
+ * Samples luma at mouthPoints(corners) on the room canvas.
+ * @param corners [[x, y], [x, y]] of landmarks 36 and 45 on the canvas (CSS px)
+ */
+export async function mouthSamples(page, corners) {
   return page.evaluate((pts) => {
     const canvas = document.getElementById('room-canvas');
     const ratio = canvas.width / canvas.clientWidth;
@@ -81,7 +89,33 @@ export async function mouthSamples(page, corners) {
       }
       return sum / 9;
     });
-  }, points);
+  }, mouthPoints(corners));
+}
+
+/**
+ * A rectangle of an image png_pixels.mjs read ({ width, channels, data }),
+ * whole pixels, as RGBA { w, h, data } (what faceShare and spread take).
+ */
+export function imageRegion(image, { x, y, w, h }) {
+  const data = new Uint8Array(4 * w * h);
+  for (let row = 0; row < h; ++row) {
+    for (let column = 0; column < w; ++column) {
+      const from = ((y + row) * image.width + x + column) * image.channels;
+      const to = 4 * (row * w + column);
+      for (let c = 0; c < 3; ++c) data[to + c] = image.data[from + c];
+      data[to + 3] = image.channels === 4 ? image.data[from + 3] : 255;
+    }
+  }
+  return { w, h, data };
+}
+
+/** Luma of every pixel of an RGBA region (imageRegion's, canvasPixels'). */
+export const lumas = ({ data }) => Array.from({ length: data.length / 4 }, (_, i) => luma(data, 4 * i));
+
+/** mouthSamples on an image png_pixels.mjs read, the corners in its pixels; the same 3x3 means. */
+export function imageMouthSamples(image, corners) {
+  return mouthPoints(corners).map(([x, y]) => lumas(imageRegion(image, { x: Math.round(x) - 1, y: Math.round(y) - 1, w: 3, h: 3 }))
+    .reduce((sum, v) => sum + v, 0) / 9);
 }
 
 export const meanAbsDifference = (a, b) => a.reduce((sum, v, i) => sum + Math.abs(v - b[i]), 0) / a.length;

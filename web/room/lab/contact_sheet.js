@@ -88,7 +88,8 @@ export function arrangementFor(width, height) {
  * '_' only, at most 40 of them) and the UTC time the sheet was taken.
  */
 export function sheetFileName(name, date) {
-  const safe = String(name ?? '').normalize('NFKC').replace(/[^\p{L}\p{N}_-]+/gu, '-').replace(/^-+|-+$/g, '').slice(0, 40) || 'face';
+  const dashed = String(name ?? '').normalize('NFKC').replace(/[^\p{L}\p{N}_-]+/gu, '-').replace(/^-+/, '');
+  const safe = Array.from(dashed).slice(0, 40).join('').replace(/-+$/, '') || 'face';  // whole characters, not halves
   const stamp = date.toISOString().replace(/\.\d+Z$/, '').replace(/[-:]/g, '').replace('T', '-');
   return `facewire-sheet-${safe}-${stamp}.png`;
 }
