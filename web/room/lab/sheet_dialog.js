@@ -28,7 +28,7 @@ export function wireContactSheet({ button, view, name }) {
   parts.close.addEventListener('click', () => parts.dialog.close());
 
   button.addEventListener('click', () => {
-    const params = view.drawnParams;  // frozen: later frames do not change this sheet
+    const params = view.drawnParams && structuredClone(view.drawnParams);  // frozen: later frames do not change this sheet
     const taken = new Date();
     button.disabled = true;
     const label = button.textContent;
