@@ -74,6 +74,17 @@ bool plausible_seat(const codec::SeatInfo& seat) {
   return std::isfinite(seat.facing_yaw_rad) && std::abs(seat.facing_yaw_rad) <= std::numbers::pi_v<float> + 1e-3f;
 }
 
+/// A set of unit morphs as the owner sends it (PROTOCOL.md 5.17): one
+/// whole message within its bounds (at most 8 channels, 1024 moves each,
+/// channels and vertices increasing), of `avatar`, after a redefinition.
+Refusal unit_morphs_refusal(const bridge::Bytes& bytes, std::uint32_t avatar) {
+  codec::UnitMorphs set;
+  if (!reads_as(bytes, set)) return "no UnitMorphs message within its bounds";
+  if (set.avatar != avatar) return "a set of another avatar";
+  if (set.version == 0) return "a set of version 0, which no redefinition makes";
+  return std::nullopt;
+}
+
 Refusal member_refusal(const bridge::MemberRecord& m) {
   if (!plausible_avatar(m.info.id)) return "a member's avatar id is out of range";
   if (!plausible_display_name(m.info.name)) return "a member's name is no display name";
@@ -85,6 +96,8 @@ Refusal member_refusal(const bridge::MemberRecord& m) {
   if (!m.address.empty() && !plausible_address(m.address)) return "a member's address is malformed";
   if (!plausible_hash(m.resume_hash)) return "a member's resume hash is malformed";
   if (!m.language.empty() && !codec::is_language_code(m.language)) return "a member's language is malformed";
+  if (!m.unit_morphs.empty())
+    if (auto why = unit_morphs_refusal(m.unit_morphs, m.info.id)) return "a member's unit morphs: " + *why;
   return std::nullopt;
 }
 
@@ -200,6 +213,10 @@ Refusal refusal_of(bridge::Down& m) {
       if (!reads_as(m.message, result)) return "result: no CommandResult message";
       return std::nullopt;
     }
+    case bridge::DownKind::unit_morphs:
+      if (!plausible_avatar(m.avatar)) return "unit morphs: the avatar id is out of range";
+      if (auto why = unit_morphs_refusal(m.message, m.avatar)) return "unit morphs: " + *why;
+      return std::nullopt;
     case bridge::DownKind::tick:
       if (auto why = faces_refusal(m.faces)) return "tick: " + *why;
       return std::nullopt;

@@ -63,6 +63,7 @@ void put_member(ByteWriter& w, const MemberRecord& m) {
   w.u32_le(static_cast<std::uint32_t>(m.order >> 32));
   w.u32_le(static_cast<std::uint32_t>(m.order));
   put_text(w, m.language);
+  put_bytes(w, m.unit_morphs);
 }
 MemberRecord get_member(ByteReader& r) {
   MemberRecord m;
@@ -73,6 +74,7 @@ MemberRecord get_member(ByteReader& r) {
   const std::uint64_t high = r.u32_le();
   m.order = high << 32 | r.u32_le();
   m.language = get_text(r);
+  m.unit_morphs = get_bytes(r);
   return m;
 }
 
@@ -241,6 +243,7 @@ Bytes encode(const Down& m) {
     case DownKind::chat:
     case DownKind::result:
     case DownKind::speaking:
+    case DownKind::unit_morphs:
       w.u32_le(m.avatar);
       put_bytes(w, m.message);
       break;
@@ -258,7 +261,7 @@ Bytes encode(const Down& m) {
 }
 
 std::optional<Down> decode_down(const std::uint8_t* data, std::size_t size) {
-  if (size < 2 || data[0] != kVersion || data[1] < 1 || data[1] > static_cast<std::uint8_t>(DownKind::speaking))
+  if (size < 2 || data[0] != kVersion || data[1] < 1 || data[1] > static_cast<std::uint8_t>(DownKind::unit_morphs))
     return std::nullopt;
   Down m;
   m.kind = static_cast<DownKind>(data[1]);
@@ -288,6 +291,7 @@ std::optional<Down> decode_down(const std::uint8_t* data, std::size_t size) {
     case DownKind::chat:
     case DownKind::result:
     case DownKind::speaking:
+    case DownKind::unit_morphs:
       m.avatar = r.u32_le();
       m.message = get_bytes(r);
       break;

@@ -5,7 +5,8 @@
 // their clients' requests *up* to the owner. Faces go down once per tick as
 // exact parameters, so that every node runs the per-subscriber encoders of
 // its own clients. Messages the clients read anyway (presence, seats,
-// attention, chat, command results) travel as their encoded bytes.
+// attention, chat, command results, speaking, unit morphs) travel as their
+// encoded bytes.
 //
 // All nodes of a cluster run the same build: a message starts with a
 // version byte, and one of another version is refused as unreadable.
@@ -22,7 +23,8 @@ namespace fw::server::bridge {
 using Bytes = std::vector<std::uint8_t>;
 
 /// 2: the language of a join and of a member, the speaking news.
-inline constexpr std::uint8_t kVersion = 2;
+/// 3: unit morphs: their news, and a member's set in its record.
+inline constexpr std::uint8_t kVersion = 3;
 
 /// A member as its owner keeps it in Redis, so that another node can
 /// restore the room (and as the roster tells it to bridging nodes).
@@ -33,6 +35,10 @@ struct MemberRecord {
   std::string resume_hash;  ///< of the resume key the person holds: who shows it takes the seat back
   std::uint64_t order = 0;  ///< join order (the earliest present leads)
   std::string language;     ///< the language the person's lines are said in ("": the room's)
+  /// The avatar's redefined units as an encoded unit morphs message
+  /// (PROTOCOL.md 5.17), empty while its person never redefined one: in the
+  /// roster, for a bridge's newcomers, and in Redis, for a successor.
+  Bytes unit_morphs;
 };
 
 /// What the owner keeps of its room's behavior, once a second: each face's
@@ -46,7 +52,9 @@ struct RoomState {
 };
 
 // ---- down: owner -> bridging nodes ----------------------------------------
-enum class DownKind : std::uint8_t { roster = 1, joined, refused, left, seats, attention, chat, result, tick, speaking };
+enum class DownKind : std::uint8_t {
+  roster = 1, joined, refused, left, seats, attention, chat, result, tick, speaking, unit_morphs
+};
 
 struct FaceEntry {
   std::uint32_t id = 0;
@@ -63,8 +71,8 @@ struct Down {
   bool returning = false;                ///< joined: a seat taken back (the others already know it)
   codec::CloseCode code = codec::CloseCode::normal;  ///< refused
   std::string reason;                    ///< refused
-  std::uint32_t avatar = 0;              ///< left; result, chat notice: to whom (0: everyone)
-  Bytes message;                         ///< seats, chat, result, speaking: the encoded client message
+  std::uint32_t avatar = 0;              ///< left, unit_morphs: whose; result, chat notice: to whom (0: everyone)
+  Bytes message;                         ///< seats, chat, result, speaking, unit_morphs: the encoded client message
   std::uint32_t tick = 0;                ///< tick
   std::vector<FaceEntry> faces;          ///< tick
 };
@@ -92,7 +100,8 @@ Down down_roster();
 Down down_joined(std::string join_ref, MemberRecord member, bool returning = false);
 Down down_refused(std::string join_ref, codec::CloseCode code, std::string reason);
 Down down_left(std::uint32_t avatar);
-/// seats, chat, result, speaking: a client message, for `avatar` (0: everyone).
+/// seats, chat, result, speaking: a client message, for `avatar` (0: everyone);
+/// unit_morphs: the set of `avatar`.
 Down down_message(DownKind kind, std::uint32_t avatar, Bytes message);
 Down down_attention(Bytes attention);
 Down down_tick(std::uint32_t tick);

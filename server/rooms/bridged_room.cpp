@@ -133,6 +133,7 @@ void BridgedRoom::on_down(bridge::Down& message) {
       if (it != members_.end() && it->second.stream) it->second.stream->post_result(share(std::move(message.message)));
       return;
     }
+    case bridge::DownKind::unit_morphs: return on_unit_morphs(message.avatar, std::move(message.message));
     case bridge::DownKind::tick: return on_tick(message);
   }
 }
@@ -196,6 +197,10 @@ void BridgedRoom::on_roster(bridge::Down& message) {
   // person whatever the roster's order (introduced while the roster was
   // read, those listed before them were skipped: they had moved already).
   for (const std::uint32_t id : newcomers) introduce_to_others(members_, members_.at(id));
+  // Each set after the presence that introduces its avatar (PROTOCOL.md 5.17).
+  std::erase_if(unit_morphs_, [&](const auto& kept) { return !members_.count(kept.first); });
+  for (bridge::MemberRecord& record : message.members)
+    if (!record.unit_morphs.empty()) on_unit_morphs(record.info.id, std::move(record.unit_morphs));
   std::size_t persons = 0;
   for (const auto& [id, member] : members_) persons += member.info.person;
   counts_.persons.store(persons);
@@ -224,6 +229,7 @@ void BridgedRoom::on_joined(bridge::Down& message) {
     services_.metrics.avatars.fetch_add(1);
     if (existing->second.info.person) counts_.persons.fetch_add(1);
   }
+  if (!message.member.unit_morphs.empty()) on_unit_morphs(id, std::move(message.member.unit_morphs));
   if (sent == sent_joins_.end()) return;
   JoinRequest request = std::move(sent->second.request);
   sent_joins_.erase(sent);
@@ -235,6 +241,8 @@ void BridgedRoom::on_joined(bridge::Down& message) {
     if (members_.count(avatar) && everyone.entries.size() < codec::kMaxWelcomeAvatars)
       everyone.entries.push_back(entry);
   send_attention(seated, everyone);
+  // Every avatar's redefined units after the welcome, as the owner tells its own newcomers.
+  for (const auto& [avatar, set] : unit_morphs_) seated.stream->post_unit_morphs(avatar, set);
   services_.abuse.event(request.address.empty() ? std::string_view("-") : std::string_view(request.address),
                         "room '" + name_ + "': " + request.name + " joined as avatar " + std::to_string(id) +
                             " (bridged to " + message.owner + ")");
@@ -250,8 +258,18 @@ void BridgedRoom::on_left(std::uint32_t avatar) {
   }
   const bool person = it->second.info.person;
   members_.erase(it);
+  unit_morphs_.erase(avatar);
   count_departure(members_, attention_sent_, counts_, services_.metrics, avatar, person);
   room_.close_if_unpeopled();
+}
+
+void BridgedRoom::on_unit_morphs(std::uint32_t avatar, bridge::Bytes set) {
+  if (!members_.count(avatar)) return;  // a set of an avatar never introduced here: the next roster has it
+  SharedBytes& kept = unit_morphs_[avatar];
+  if (kept && *kept == set) return;
+  kept = share(std::move(set));
+  for (auto& [id, member] : members_)
+    if (member.stream) member.stream->post_unit_morphs(avatar, kept);
 }
 
 void BridgedRoom::on_tick(bridge::Down& message) {

@@ -2,7 +2,8 @@
 // A room another node of the cluster owns, relayed to the people connected
 // here (RoomRole): their joins, chat, commands and leaving go up to the
 // owner (bridge_message.hpp); the owner's roster, presence, seats,
-// attention, chat and faces come down, and each tick's faces are encoded
+// attention, chat, speaking, unit morphs and faces come down, and each
+// tick's faces are encoded
 // here for each person at their own rate, as the owner does for its own.
 // Nothing is simulated here, and the owner decides every seat.
 #include <chrono>
@@ -41,6 +42,10 @@ class BridgedRoom : public RoomRole {
   void on_joined(bridge::Down& message);
   void on_left(std::uint32_t avatar);
   void on_tick(bridge::Down& message);
+  /// `avatar`'s newest set of unit morphs (PROTOCOL.md 5.17) from the owner:
+  /// kept for newcomers, and posted to the people here unless it is the set
+  /// they were told already (a roster repeats every set).
+  void on_unit_morphs(std::uint32_t avatar, bridge::Bytes set);
   /// Asks for the roster until it comes; gives up joins the owner did not answer.
   void housekeeping();
   void send_up(const bridge::Up& message);
@@ -55,6 +60,8 @@ class BridgedRoom : public RoomRole {
   std::vector<codec::FaceParams> bridged_faces_;
   /// Whom each face attended, as the owner last said (PROTOCOL.md 5.14).
   std::map<std::uint32_t, codec::Attention::Entry> attention_sent_;
+  /// Each avatar's newest set of unit morphs, encoded, as the owner last said.
+  std::map<std::uint32_t, SharedBytes> unit_morphs_;
   bool roster_ = false;                  ///< the owner's roster arrived
   std::vector<JoinRequest> held_joins_;  ///< waiting for the roster
   struct SentJoin {

@@ -322,6 +322,10 @@ void OwnedRoom::broadcast_unit_morphs(std::uint32_t avatar) {
   const auto message = encode_shared(*morphs);
   for (auto& [id, member] : members_)
     if (member.stream) member.stream->post_unit_morphs(avatar, message);
+  // Every bridge keeps each avatar's newest set, people or not: it tells
+  // its next joiner of it. The record keeps it for whoever takes over.
+  send_down(bridge::down_message(bridge::DownKind::unit_morphs, avatar, *message));
+  if (const auto it = members_.find(avatar); it != members_.end()) keep(it->second);
 }
 
 void OwnedRoom::send_unit_morphs(OwnedMember& member) {

@@ -101,6 +101,8 @@ class OwnedRoom : public RoomRole {
   std::size_t bridged_members() const;
   void answer_sync();
   void keep_state();
+  /// The redefined units `record` kept, given back to its avatar (restore).
+  void restore_unit_morphs(const bridge::MemberRecord& record);
   void let_away_go();
   /// A person coming back with the resume key of a seat kept away: true if
   /// `request` took it.

@@ -18,6 +18,7 @@ bridge::MemberRecord OwnedRoom::record_of(const OwnedMember& member) const {
   record.resume_hash = member.resume_hash;
   record.order = member.order;
   record.language = member.language;
+  if (const auto morphs = simulation_.unit_morphs(member.info.id)) codec::write_message(*morphs, record.unit_morphs);
   return record;
 }
 
@@ -173,6 +174,7 @@ void OwnedRoom::restore(std::vector<bridge::MemberRecord> records, std::optional
       member.node = record.node;
       member.away_until = away_until;  // their node is gone: they may come back with their resume key
     }
+    restore_unit_morphs(record);
     persons += member.info.person;
     members_.emplace(id, std::move(member));
   }
@@ -194,6 +196,18 @@ void OwnedRoom::restore(std::vector<bridge::MemberRecord> records, std::optional
   attention_sent_.clear();
   answer_sync();  // every bridging node learns the new owner and the roster
   spdlog::info("room {}: taken over with {} avatars ({} people)", name_, members_.size(), persons);
+}
+
+void OwnedRoom::restore_unit_morphs(const bridge::MemberRecord& record) {
+  if (record.unit_morphs.empty()) return;
+  codec::UnitMorphs set;
+  // Read and checked with the record (cluster_message_check.cpp); what the
+  // simulation refuses still leaves the avatar its shipped units.
+  std::string error = codec::read_message(record.unit_morphs, set) == codec::MessageError::ok
+                          ? simulation_.restore_unit_morphs(record.info.id, set)
+                          : "unreadable";
+  if (!error.empty())
+    spdlog::warn("room {}: avatar {}'s redefined units not restored: {}", name_, record.info.id, error);
 }
 
 void OwnedRoom::step_down() {

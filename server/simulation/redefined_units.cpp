@@ -5,6 +5,16 @@
 #include "fw/model/generic_face.hpp"
 
 namespace fw::server {
+namespace {
+
+/// The action units `morphs` redefines (a bilateral unit counts once).
+std::size_t redefined_units(const model::UnitMorphSet& morphs) {
+  std::set<int> aus;
+  for (const auto& [channel, morph] : morphs) aus.insert(codec::kAuChannels[channel].au);
+  return aus.size();
+}
+
+}  // namespace
 
 std::string RedefinedUnits::apply(const std::vector<behavior::UnitDefinition>& units) {
   model::UnitMorphSet next = morphs_;
@@ -13,16 +23,31 @@ std::string RedefinedUnits::apply(const std::vector<behavior::UnitDefinition>& u
       if (codec::kAuChannels[c].au == unit.au) next.erase(c);
     for (const auto& [channel, morph] : unit.morphs) next[channel] = model::as_carried(channel, morph);
   }
-  std::set<int> aus;
-  for (const auto& [channel, morph] : next) aus.insert(codec::kAuChannels[channel].au);
-  if (aus.size() > behavior::kMaxRedefinedUnitsPerAvatar)
-    return "your avatar would have " + std::to_string(aus.size()) + " redefined action units; at most " +
+  if (const std::size_t units = redefined_units(next); units > behavior::kMaxRedefinedUnitsPerAvatar)
+    return "your avatar would have " + std::to_string(units) + " redefined action units; at most " +
            std::to_string(behavior::kMaxRedefinedUnitsPerAvatar) +
            " at once: restore one first (AU n with no displacements, then end)";
-  morphs_ = std::move(next);
+  take(std::move(next));
   ++version_;
+  return {};
+}
+
+std::string RedefinedUnits::restore(const codec::UnitMorphs& message) {
+  std::string error;
+  auto morphs = model::unit_morph_set(message, model::generic_face().skin.positions.size(), error);
+  if (!morphs) return error;
+  if (const std::size_t units = redefined_units(*morphs); units > behavior::kMaxRedefinedUnitsPerAvatar)
+    return std::to_string(units) + " redefined action units; an avatar holds at most " +
+           std::to_string(behavior::kMaxRedefinedUnitsPerAvatar);
+  take(std::move(*morphs));
+  version_ = message.version;
+  return {};
+}
+
+void RedefinedUnits::take(model::UnitMorphSet morphs) {
+  morphs_ = std::move(morphs);
   basis_.reset();
-  if (morphs_.empty()) return {};
+  if (morphs_.empty()) return;
   const model::GenericFace& face = model::generic_face();
   const std::size_t length = 3 * face.skin.positions.size();
   std::vector<float> rows(codec::kAuChannelCount * length);
@@ -33,7 +58,6 @@ std::string RedefinedUnits::apply(const std::vector<behavior::UnitDefinition>& u
       for (int k = 0; k < 3; ++k) rows[c * length + 3 * v + static_cast<std::size_t>(k)] = morph.vertex_delta[v][k];
   }
   basis_ = physics::AuBasis::from_rows(rows, length);
-  return {};
 }
 
 codec::UnitMorphs RedefinedUnits::message(std::uint32_t avatar) const {

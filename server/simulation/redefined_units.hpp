@@ -37,6 +37,12 @@ class RedefinedUnits {
   /// not (more than behavior::kMaxRedefinedUnitsPerAvatar units at once).
   /// A taken change raises the version, even one that changes nothing seen.
   std::string apply(const std::vector<behavior::UnitDefinition>& units);
+  /// Takes the set another server kept (a room taken over, server/CLUSTER.md)
+  /// as it was: its morphs as the wire carries them, and its version, so that
+  /// the next change is newer than what the clients hold. "" when taken, else
+  /// why not (a set no redefinition makes: more units than an avatar holds,
+  /// a vertex past the generic face).
+  std::string restore(const codec::UnitMorphs& message);
 
   bool any() const { return !morphs_.empty(); }
   bool redefined(std::size_t channel) const { return morphs_.contains(channel); }
@@ -55,6 +61,9 @@ class RedefinedUnits {
   void measure(const physics::FaceSimulation& simulation, const Weights& own, Weights& weights) const;
 
  private:
+  /// Makes `morphs` the set, and the basis the face is measured on.
+  void take(model::UnitMorphSet morphs);
+
   std::uint32_t version_ = 0;
   model::UnitMorphSet morphs_;
   std::optional<physics::AuBasis> basis_;  ///< shipped rows with the redefined ones; set while any()

@@ -373,6 +373,12 @@ std::optional<codec::UnitMorphs> RoomSimulation::unit_morphs(AvatarId avatar) co
   return it->second.units.message(avatar);
 }
 
+std::string RoomSimulation::restore_unit_morphs(AvatarId avatar, const codec::UnitMorphs& set) {
+  const auto it = state_->avatars.find(avatar);
+  if (it == state_->avatars.end()) return "no avatar " + std::to_string(avatar) + " in this room";
+  return it->second.units.restore(set);
+}
+
 void RoomSimulation::chat(AvatarId avatar, std::string_view text) {
   State& s = *state_;
   if (!s.room.contains(avatar)) return;

@@ -149,6 +149,10 @@ class RoomSimulation {
   /// (server/PROTOCOL.md 5.17), its version raised by every change; nullopt
   /// while its person never redefined one. Forgotten when the avatar leaves.
   std::optional<codec::UnitMorphs> unit_morphs(AvatarId avatar) const;
+  /// Gives `avatar` back the set a room's former owner kept for it
+  /// (server/CLUSTER.md, a takeover), at its version: no budget is paid,
+  /// nothing is played. "" when taken, else why not (RedefinedUnits::restore).
+  std::string restore_unit_morphs(AvatarId avatar, const codec::UnitMorphs& set);
   /// A chat line from `avatar`: the avatar says it in its language (with
   /// lip sync, after the lines it is still saying, once the line's track is
   /// made; spoken_lines.hpp, track_maker.hpp), the others' gaze follows the
