@@ -7,13 +7,23 @@
 #include <limits>
 
 #include "address_limits.hpp"
+#include "fw/codec/byte_writer.hpp"
 #include "bridge_message.hpp"
 #include "cluster_keys.hpp"
 #include "cluster_limits.hpp"
 #include "cluster_message_check.hpp"
+#include "sample_messages.hpp"
 
 namespace fw::server {
 namespace {
+
+/// An avatar's redefined units as the owner encodes them (PROTOCOL.md 5.17).
+bridge::Bytes unit_morphs_of(std::uint32_t avatar, codec::UnitMorphs set = test::sample_unit_morphs()) {
+  set.avatar = avatar;
+  bridge::Bytes bytes;
+  codec::write_message(set, bytes);
+  return bytes;
+}
 
 bridge::MemberRecord sample_member() {
   bridge::MemberRecord m;
@@ -28,6 +38,7 @@ bridge::MemberRecord sample_member() {
   m.resume_hash = "hash";
   m.language = "de";
   m.order = (std::uint64_t{1} << 40) + 3;
+  m.unit_morphs = unit_morphs_of(7);
   return m;
 }
 
@@ -40,6 +51,11 @@ TEST(BridgeMessage, AMemberRecordReadsBackAsWritten) {
   EXPECT_EQ(back->order, sample_member().order);
   EXPECT_EQ(back->resume_hash, "hash");
   EXPECT_EQ(back->language, "de") << "a successor says the person's lines in their language";
+  EXPECT_EQ(back->unit_morphs, unit_morphs_of(7)) << "a successor gives the avatar its redefined units back";
+  bridge::MemberRecord none = sample_member();
+  none.unit_morphs.clear();
+  const auto plain = bridge::encode(none);
+  EXPECT_TRUE(bridge::decode_member(plain.data(), plain.size())->unit_morphs.empty());
 }
 
 TEST(BridgeMessage, FacesGoDownExactly) {
@@ -69,6 +85,7 @@ TEST(BridgeMessage, EveryKindRoundTripsAndCutsAreRefused) {
       {.kind = bridge::DownKind::left, .owner = "a", .avatar = 3},
       {.kind = bridge::DownKind::chat, .owner = "a", .avatar = 0, .message = {9, 8, 7}},
       {.kind = bridge::DownKind::speaking, .owner = "a", .avatar = 0, .message = {6, 5}},
+      {.kind = bridge::DownKind::unit_morphs, .owner = "a", .avatar = 7, .message = unit_morphs_of(7)},
   };
   for (const auto& down : downs) {
     const auto bytes = bridge::encode(down);
@@ -78,6 +95,9 @@ TEST(BridgeMessage, EveryKindRoundTripsAndCutsAreRefused) {
     EXPECT_EQ(back->join_ref, down.join_ref);
     EXPECT_EQ(back->returning, down.returning);
     EXPECT_EQ(back->members.size(), down.members.size());
+    EXPECT_EQ(back->avatar, down.avatar);
+    EXPECT_EQ(back->message, down.message);
+    if (!down.members.empty()) EXPECT_EQ(back->members[0].unit_morphs, down.members[0].unit_morphs);
     for (std::size_t cut = 0; cut < bytes.size(); ++cut)
       EXPECT_FALSE(bridge::decode_down(bytes.data(), cut)) << "a message cut at " << cut << " was read";
   }
@@ -158,6 +178,7 @@ std::vector<bridge::Down> owners_news() {
       {.kind = bridge::DownKind::result, .owner = "a", .avatar = 7, .message = client_message(codec::CommandResult{4, ""})},
       {.kind = bridge::DownKind::speaking, .owner = "a", .avatar = 0,
        .message = client_message(codec::Speaking{7, 90, 1800, "de", "guten Tag"})},
+      {.kind = bridge::DownKind::unit_morphs, .owner = "a", .avatar = 7, .message = unit_morphs_of(7)},
       {.kind = bridge::DownKind::tick, .owner = "a", .tick = 9, .faces = {{7, face}, {8, codec::FaceParams{}}}},
   };
 }
@@ -244,6 +265,59 @@ TEST(ClusterCheck, ForgedNewsOfEveryKindIsRefused) {
   expect_refused(K::speaking, [](auto& m) { m.message = client_message(codec::Speaking{0, 1, 1, "de", "a"}); },
                  "speaking of avatar 0");
   expect_refused(K::speaking, [](auto& m) { m.avatar = 7; }, "speaking for one person only");
+  expect_refused(K::roster, [](auto& m) { m.members[0].unit_morphs = {1, 2, 3}; }, "a member's set that is junk");
+  expect_refused(K::roster, [](auto& m) { m.members[0].unit_morphs = unit_morphs_of(8); }, "a member's set of another");
+  expect_refused(K::joined, [](auto& m) { m.member.unit_morphs = client_message(codec::Chat{7, "hi"}); },
+                 "a member's set that is chat");
+  expect_refused(K::unit_morphs, [](auto& m) { m.avatar = 0; }, "a set of avatar 0");
+  expect_refused(K::unit_morphs, [](auto& m) { m.avatar = 8; }, "a set that names another avatar than its news");
+  expect_refused(K::unit_morphs, [](auto& m) { m.message = client_message(codec::Chat{7, "hi"}); }, "a set that is chat");
+  expect_refused(K::unit_morphs, [](auto& m) { m.message.push_back(0); }, "a set with a byte more");
+  auto forged_set = [](auto change) {
+    codec::UnitMorphs set = test::sample_unit_morphs();
+    set.avatar = 7;
+    change(set);
+    // Laid out as 5.17 says, by hand: the codec's writer asserts what a forger ignores.
+    bridge::Bytes bytes;
+    codec::ByteWriter w(bytes);
+    w.u8(0x80 | static_cast<std::uint8_t>(codec::MessageType::unit_morphs));
+    w.varint(set.avatar);
+    w.varint(set.version);
+    w.u8(static_cast<std::uint8_t>(set.units.size()));
+    for (const auto& unit : set.units) {
+      w.u8(unit.channel);
+      w.varint(static_cast<std::uint32_t>(unit.moves.size()));
+      for (const auto& move : unit.moves) {
+        w.varint(move.vertex);
+        for (const std::int16_t d : move.delta) w.i16_le(d);
+      }
+    }
+    return bytes;
+  };
+  {
+    bridge::Down laid{.kind = K::unit_morphs, .owner = "a", .avatar = 7, .message = forged_set([](auto&) {})};
+    EXPECT_EQ(laid.message, unit_morphs_of(7)) << "the forger's layout is the codec's";
+    EXPECT_FALSE(cluster_check::refusal_of(laid));
+  }
+  expect_refused(K::unit_morphs, [&](auto& m) { m.message = forged_set([](auto& s) { s.version = 0; }); },
+                 "a set of version 0");
+  expect_refused(K::unit_morphs, [&](auto& m) {
+    m.message = forged_set([](auto& s) { s.units.resize(codec::kMaxRedefinedChannels + 1); });
+  }, "a set of 9 channels");
+  expect_refused(K::unit_morphs, [&](auto& m) {
+    m.message = forged_set([](auto& s) {
+      s.units.resize(1);
+      s.units[0].moves.clear();
+      for (std::uint32_t v = 0; v <= codec::kMaxUnitMorphMoves; ++v) s.units[0].moves.push_back({v, {1, 1, 1}});
+    });
+  }, "a unit of 1025 moves");
+  expect_refused(K::unit_morphs, [&](auto& m) { m.message = forged_set([](auto& s) { s.units[2].channel = 29; }); },
+                 "channel 29");
+  expect_refused(K::unit_morphs, [&](auto& m) { m.message = forged_set([](auto& s) { s.units[1].channel = 0; }); },
+                 "a channel twice");
+  expect_refused(K::unit_morphs, [&](auto& m) {
+    m.message = forged_set([](auto& s) { std::swap(s.units[0].moves[0], s.units[0].moves[1]); });
+  }, "vertices not increasing");
   expect_refused(K::tick, [&](auto& m) { m.faces[0].face.au[3] = nan; }, "a face with NaN");
   expect_refused(K::tick, [&](auto& m) { m.faces[0].face.head_pitch_rad = inf; }, "a face with infinity");
   expect_refused(K::tick, [](auto& m) { m.faces[0].face.head_yaw_rad = 100.f; }, "a head turned 100 rad");
