@@ -2,6 +2,7 @@
 // taken whole or refused with a reason, versioned, measured with the
 // redefined morph on the redefining face alone, forgotten when it leaves.
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -90,6 +91,43 @@ TEST(RedefinedUnits, TheRedefiningFaceIsMeasuredWithItsMorphOthersWithTheShipped
   // The other face raises its brows with the physics face's shipped AU 1.
   EXPECT_GT(room.face(b).au[kAu1Left], 0.5f);
   EXPECT_EQ(room.physics_faces(), 2u);
+}
+
+TEST(RedefinedUnits, ASetKeptByAFormerOwnerIsRestoredAtItsVersionAndMeasuredWith) {
+  RoomSimulation owner(RoomSimulationOptions{});
+  const AvatarId a = owner.add_avatar({"a", true});
+  ASSERT_EQ(owner.command(a, FacsCommand{au1_example()}), "");
+  ASSERT_EQ(owner.command(a, FacsCommand{"AU 9 nose 0 0 3 0 end"}), "");
+  const codec::UnitMorphs kept = *owner.unit_morphs(a);
+  ASSERT_EQ(kept.version, 2u);
+
+  // Another server takes the room over: the avatar under its id, its set given back.
+  RoomSimulation successor(RoomSimulationOptions{});
+  ASSERT_TRUE(successor.restore_avatar(a, {"a", true}));
+  EXPECT_EQ(successor.restore_unit_morphs(a, kept), "");
+  ASSERT_TRUE(successor.unit_morphs(a));
+  EXPECT_EQ(successor.unit_morphs(a)->version, 2u) << "the clients hold version 2 already";
+  EXPECT_EQ(successor.unit_morphs(a)->units, kept.units) << "the set as the former owner measured with";
+  // The face is measured with the restored morph, as on the former owner.
+  ASSERT_EQ(successor.command(a, FacsCommand{kRaiseAu1}), "");
+  for (int i = 0; i < 70; ++i) successor.tick();
+  EXPECT_GT(successor.face(a).au[kAu1Right], 0.8f);
+  // The next change is newer than what every client holds.
+  ASSERT_EQ(successor.command(a, FacsCommand{"AU 9 end"}), "");
+  EXPECT_EQ(successor.unit_morphs(a)->version, 3u);
+
+  // What no redefinition makes is refused, and the avatar keeps what it had.
+  codec::UnitMorphs five = kept;
+  five.units.clear();
+  std::set<int> aus;  // one channel each of the first five action units
+  for (std::size_t c = 0; c < codec::kAuChannelCount && aus.size() < 5; ++c)
+    if (aus.insert(codec::kAuChannels[c].au).second) five.units.push_back({static_cast<std::uint8_t>(c), {}});
+  EXPECT_NE(successor.restore_unit_morphs(a, five), "");
+  codec::UnitMorphs past_face = kept;
+  past_face.units = {{static_cast<std::uint8_t>(kAu1Right), {{1000, {1, 1, 1}}}}};
+  EXPECT_NE(successor.restore_unit_morphs(a, past_face).find("vertex 1000"), std::string::npos);
+  EXPECT_EQ(successor.unit_morphs(a)->version, 3u);
+  EXPECT_NE(successor.restore_unit_morphs(a + 1, kept), "") << "no such avatar";
 }
 
 TEST(RedefinedUnits, ARedefinitionIsForgottenWhenItsAvatarLeaves) {
