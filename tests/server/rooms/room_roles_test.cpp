@@ -43,6 +43,7 @@ class RecordingBus : public RoomBus {
   }
   void keep_member(const std::string&, const bridge::MemberRecord& member) override {
     note(kept_, std::to_string(member.info.id));
+    if (!member.unit_morphs.empty()) note(kept_sets_, std::to_string(member.info.id));
   }
   void forget_member(const std::string&, std::uint32_t avatar) override { note(forgotten_, std::to_string(avatar)); }
   void keep_state(const std::string&, bridge::Bytes) override {}
@@ -53,6 +54,8 @@ class RecordingBus : public RoomBus {
   std::vector<bridge::Down> downs() const { return copy(downs_); }
   std::vector<std::string> opened() const { return copy(opened_); }
   std::vector<std::string> kept() const { return copy(kept_); }
+  /// The avatars whose record was kept with a set of unit morphs, each time.
+  std::vector<std::string> kept_sets() const { return copy(kept_sets_); }
   std::vector<std::string> forgotten() const { return copy(forgotten_); }
   std::size_t chats_kept() const { return copy(chats_kept_).size(); }
   std::vector<std::string> closed() const { return copy(closed_); }
@@ -85,13 +88,27 @@ class RecordingBus : public RoomBus {
   mutable std::mutex mutex_;
   std::vector<bridge::Up> ups_;
   std::vector<bridge::Down> downs_;
-  std::vector<std::string> opened_, kept_, forgotten_, chats_kept_, closed_;
+  std::vector<std::string> opened_, kept_, kept_sets_, forgotten_, chats_kept_, closed_;
 };
 
 /// A person's connection as a room sees it, writing down its welcome and its close.
 class RecordingConnection : public RoomConnection {
  public:
-  void deliver(SharedBytes message) override { written_ += message->size(); }
+  void deliver(SharedBytes message) override {
+    written_ += message->size();
+    codec::UnitMorphs set;
+    if (codec::classify(*message) == codec::MessageKind::session &&
+        codec::session_type(*message) == codec::MessageType::unit_morphs &&
+        codec::read_message(*message, set) == codec::MessageError::ok) {
+      std::lock_guard lock(mutex_);
+      unit_morphs_.push_back(set);
+    }
+  }
+  /// The unit morphs messages delivered, in order.
+  std::vector<codec::UnitMorphs> unit_morphs() const {
+    std::lock_guard lock(mutex_);
+    return unit_morphs_;
+  }
   std::size_t queued_bytes() const override { return 0; }
   std::uint64_t bytes_written() const override { return written_.load(); }
   std::size_t framing_bytes(std::size_t) const override { return 0; }
@@ -107,6 +124,8 @@ class RecordingConnection : public RoomConnection {
   std::atomic<std::uint64_t> written_{0};
   std::atomic<std::uint32_t> avatar_{0};
   std::atomic<int> closed_with_{-1};
+  mutable std::mutex mutex_;
+  std::vector<codec::UnitMorphs> unit_morphs_;
 };
 
 /// Rooms made by a registry of their own, over `bus`, with the services of an in-memory server.
@@ -218,6 +237,112 @@ TEST(RoomRoles, ABridgeRelaysItsPersonToTheOwnerAndTakesTheRoomOverWhenTheOwnerD
   EXPECT_TRUE(eventually([&] { return bus.chats_kept() == 1; })) << "Ann's seat is the owner's now";
   EXPECT_FALSE(ann->closed()) << "Ann keeps her connection through the takeover";
   EXPECT_EQ(room->person_count(), 1u);
+}
+
+/// An encoded set of unit morphs for `avatar` at `version`, one unit moving one vertex.
+bridge::Bytes set_of(std::uint32_t avatar, std::uint32_t version) {
+  bridge::Bytes bytes;
+  codec::write_message(codec::UnitMorphs{avatar, version, {{.channel = 3, .moves = {{10, {0, 40, 0}}}}}}, bytes);
+  return bytes;
+}
+
+TEST(RoomRoles, AnOwnersRedefinitionGoesDownAndIntoTheMembersRecord) {
+  RecordingBus bus(RoomRoleKind::owner);
+  RoomsOver rooms(bus);
+  auto room = rooms.open("r");
+  auto ann = std::make_shared<RecordingConnection>();
+  room->join(rooms.person("Ann", ann));
+  ASSERT_TRUE(eventually([&] { return ann->avatar() != 0; }));
+  EXPECT_TRUE(bus.kept_sets().empty());
+  codec::Command script;
+  script.kind = codec::Command::Kind::facs;
+  script.sentence = "AU 9 nose 0 0 3 0 end";
+  room->command(ann->avatar(), script);
+  ASSERT_TRUE(eventually([&] { return bus.sent_down(bridge::DownKind::unit_morphs); }));
+  for (const auto& down : bus.downs())
+    if (down.kind == bridge::DownKind::unit_morphs) {
+      EXPECT_EQ(down.avatar, ann->avatar());
+      codec::UnitMorphs set;
+      ASSERT_EQ(codec::read_message(down.message, set), codec::MessageError::ok);
+      EXPECT_EQ(set.version, 1u);
+    }
+  EXPECT_TRUE(eventually([&] { return bus.kept_sets() == std::vector<std::string>{std::to_string(ann->avatar())}; }))
+      << "a successor finds the set in the member's record";
+  EXPECT_TRUE(eventually([&] { return ann->unit_morphs().size() == 1; })) << "and Ann is told, here";
+}
+
+TEST(RoomRoles, ABridgeKeepsEachAvatarsNewestSetForItsPeopleAndDropsItWhenTheAvatarLeaves) {
+  RecordingBus bus(RoomRoleKind::bridge);
+  RoomsOver rooms(bus);
+  auto room = rooms.open("r");
+  auto ann = std::make_shared<RecordingConnection>();
+  room->join(rooms.person("Ann", ann));
+  // The roster: Zed, on the owner, redefined a unit already.
+  bridge::MemberRecord zed;
+  zed.info.id = 3;
+  zed.info.name = "Zed";
+  zed.info.asset = rooms.face().asset;
+  zed.info.person = true;
+  zed.node = "there";
+  zed.unit_morphs = set_of(3, 1);
+  bridge::Down roster = bridge::down_roster();
+  roster.owner = "there";
+  roster.members = {zed};
+  room->on_down(roster);
+  ASSERT_TRUE(eventually([&] { return bus.last_up(bridge::UpKind::join).has_value(); }));
+  bridge::MemberRecord record;
+  record.info.id = 7;
+  record.info.name = "Ann";
+  record.info.asset = rooms.face().asset;
+  record.info.person = true;
+  record.node = "here";
+  bridge::Down joined = bridge::down_joined(bus.last_up(bridge::UpKind::join)->join_ref, record);
+  joined.owner = "there";
+  room->on_down(joined);
+  ASSERT_TRUE(eventually([&] { return ann->avatar() == 7; }));
+  // After her welcome, Ann hears of Zed's set as the roster gave it.
+  ASSERT_TRUE(eventually([&] { return ann->unit_morphs().size() == 1; }));
+  EXPECT_EQ(ann->unit_morphs()[0].avatar, 3u);
+  EXPECT_EQ(ann->unit_morphs()[0].version, 1u);
+  // A newer set comes down: Ann hears it.
+  bridge::Down newer = bridge::down_message(bridge::DownKind::unit_morphs, 3, set_of(3, 2));
+  newer.owner = "there";
+  room->on_down(newer);
+  ASSERT_TRUE(eventually([&] { return ann->unit_morphs().size() == 2; }));
+  EXPECT_EQ(ann->unit_morphs()[1].version, 2u);
+  // A roster repeats every set (another bridge asked for it): nothing new for Ann.
+  zed.unit_morphs = set_of(3, 2);
+  roster.members = {zed, record};
+  room->on_down(roster);
+  room->on_down(newer);
+  // Zed leaves; a set of his that comes late is nobody's here.
+  bridge::Down left = bridge::down_left(3);
+  left.owner = "there";
+  room->on_down(left);
+  bridge::Down late = bridge::down_message(bridge::DownKind::unit_morphs, 3, set_of(3, 3));
+  late.owner = "there";
+  room->on_down(late);
+  // A newcomer here is told of no set: Zed's went with him.
+  auto bea = std::make_shared<RecordingConnection>();
+  room->join(rooms.person("Bea", bea));
+  ASSERT_TRUE(eventually([&] { return bus.ups().size() >= 3 && bus.last_up(bridge::UpKind::join)->name == "Bea"; }));
+  record.info.id = 8;
+  record.info.name = "Bea";
+  bridge::Down bea_joined = bridge::down_joined(bus.last_up(bridge::UpKind::join)->join_ref, record);
+  bea_joined.owner = "there";
+  room->on_down(bea_joined);
+  ASSERT_TRUE(eventually([&] { return bea->avatar() == 8; }));
+  // Ann redefines a unit: once both hear of it, whatever came before it
+  // has been delivered (a stream keeps its order).
+  bridge::Down fence = bridge::down_message(bridge::DownKind::unit_morphs, 7, set_of(7, 1));
+  fence.owner = "there";
+  room->on_down(fence);
+  ASSERT_TRUE(eventually([&] { return !bea->unit_morphs().empty() && ann->unit_morphs().size() >= 3; }));
+  const auto anns = ann->unit_morphs();
+  ASSERT_EQ(anns.size(), 3u) << "a repeated or late set reached Ann again";
+  EXPECT_EQ(anns[2].avatar, 7u);
+  ASSERT_EQ(bea->unit_morphs().size(), 1u) << "a set of an avatar that left was kept";
+  EXPECT_EQ(bea->unit_morphs()[0].avatar, 7u);
 }
 
 TEST(RoomRoles, AnOwnerThatStepsDownAsksItsPeopleBackAndBridges) {
