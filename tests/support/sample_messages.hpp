@@ -2,6 +2,9 @@
 // Messages with every field set, for tests that need a typical one rather
 // than a particular one: the codec's round trips, its golden vectors (which
 // the browser's reader decodes too), and the fuzz targets' seeds.
+#include <string>
+#include <utility>
+
 #include "fw/codec/messages.hpp"
 
 namespace fw::test {
@@ -33,6 +36,15 @@ inline codec::Hello sample_hello_v3() {
 /// A speaking message with every field set, its text outside ASCII.
 inline codec::Speaking sample_speaking() {
   return {.avatar = 300, .tick = 70000, .duration_ms = 2140, .language = "de", .text = "Grüß Gott, wie geht's?"};
+}
+
+/// A face script as a person sends it (PROTOCOL.md 5.5, a FACS command).
+inline codec::Command facs_command(std::uint32_t request_id, std::string sentence) {
+  codec::Command command;
+  command.request_id = request_id;
+  command.kind = codec::Command::Kind::facs;
+  command.sentence = std::move(sentence);
+  return command;
 }
 
 /// A unit morphs message: a bilateral unit's two channels and a unit that

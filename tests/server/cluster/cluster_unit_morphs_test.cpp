@@ -18,6 +18,7 @@
 #include "fw/model/avatar_model.hpp"
 #include "fw/model/face_reconstruction.hpp"
 #include "fw/model/unit_morphs.hpp"
+#include "sample_messages.hpp"
 
 namespace fw::test {
 namespace {
@@ -32,14 +33,6 @@ constexpr const char* kBrowsForAu12 =
 // AU 12 at its full strength over 2 s, held 1.5 s.
 constexpr const char* kSmile = "ClearAllFrame BeginKeyFrame 12 2.0 Animate 20 \"Texture\" end";
 constexpr const char* kNoseForAu9 = "AU 9 nose 0 0 3 0 end";
-
-codec::Command script(std::uint32_t request, const std::string& text) {
-  codec::Command command;
-  command.request_id = request;
-  command.kind = codec::Command::Kind::facs;
-  command.sentence = text;
-  return command;
-}
 
 /// The newest set `client` holds for `avatar`, or null.
 const codec::UnitMorphs* set_of(const RoomTestClient& client, std::uint32_t avatar) {
@@ -100,8 +93,8 @@ TEST(ClusterUnitMorphs, ARedefinitionOnTheOwnersNodeReachesAnotherNodeAndItsNewc
   pump_all(all, 500ms);
   EXPECT_TRUE(bob->unit_morphs.empty()) << "nobody redefined anything yet";
 
-  ann->send_message(script(1, kBrowsForAu12));
-  ann->send_message(script(2, kSmile));
+  ann->send_message(facs_command(1, kBrowsForAu12));
+  ann->send_message(facs_command(2, kSmile));
   ASSERT_TRUE(eventually(
       [&] {
         pump_all(all, 50ms);
@@ -139,7 +132,7 @@ TEST(ClusterUnitMorphs, ARedefinitionOnTheOwnersNodeReachesAnotherNodeAndItsNewc
   EXPECT_TRUE(carl->errors.empty()) << carl->errors.front();
 
   // A restore reaches the other node as a new version with no units.
-  ann->send_message(script(3, "AU 12 end"));
+  ann->send_message(facs_command(3, "AU 12 end"));
   all.push_back(carl.get());
   ASSERT_TRUE(eventually(
       [&] {
@@ -159,7 +152,7 @@ TEST(ClusterUnitMorphs, APersonBridgedFromAnotherNodeRedefinesTheirOwnUnit) {
   ASSERT_TRUE(ann->welcome && bob->welcome && dora->welcome);
   const std::uint32_t id = bob->welcome->you;
   std::vector<RoomTestClient*> all{ann.get(), bob.get(), dora.get(), nodes.opener.get()};
-  bob->send_message(script(7, kNoseForAu9));
+  bob->send_message(facs_command(7, kNoseForAu9));
   // The script goes up to the owner; its set comes down to both nodes.
   ASSERT_TRUE(eventually(
       [&] {
@@ -183,8 +176,8 @@ TEST(ClusterUnitMorphs, TheNodeThatTakesTheRoomOverKeepsTheSetsAndTheirVersions)
   ASSERT_TRUE(ann->welcome && bob->welcome);
   const std::uint32_t ann_id = ann->welcome->you, bob_id = bob->welcome->you;
   std::vector<RoomTestClient*> all{ann.get(), bob.get()};
-  ann->send_message(script(1, kBrowsForAu12));
-  bob->send_message(script(2, kNoseForAu9));
+  ann->send_message(facs_command(1, kBrowsForAu12));
+  bob->send_message(facs_command(2, kNoseForAu9));
   ASSERT_TRUE(eventually(
       [&] {
         pump_all(all, 50ms);
@@ -208,7 +201,7 @@ TEST(ClusterUnitMorphs, TheNodeThatTakesTheRoomOverKeepsTheSetsAndTheirVersions)
   EXPECT_EQ(set_of(*carl, bob_id)->version, bobs.version);
   EXPECT_EQ(set_of(*carl, bob_id)->units, bobs.units);
   // The next change is newer than what the clients hold, so they take it.
-  bob->send_message(script(3, "AU 9 end"));
+  bob->send_message(facs_command(3, "AU 9 end"));
   std::vector<RoomTestClient*> survivors{bob.get(), carl.get()};
   ASSERT_TRUE(eventually(
       [&] {

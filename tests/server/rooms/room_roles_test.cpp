@@ -14,6 +14,7 @@
 #include "room.hpp"
 #include "room_bus_relay.hpp"
 #include "room_registry.hpp"
+#include "sample_messages.hpp"
 
 namespace fw::server {
 namespace {
@@ -156,6 +157,23 @@ class RoomsOver {
     request.address = "192.0.2.1";
     return request;
   }
+  /// `name` seated in `room`, owned here: the connection once welcomed.
+  std::shared_ptr<RecordingConnection> seated(Room& room, const std::string& name) {
+    auto connection = std::make_shared<RecordingConnection>();
+    room.join(person(name, connection));
+    EXPECT_TRUE(eventually([&] { return connection->avatar() != 0; })) << name << " was not seated";
+    return connection;
+  }
+  /// A person's record as the owner tells it: `name`, seated as `id`, a client of `node`.
+  bridge::MemberRecord member(std::uint32_t id, const std::string& name, const std::string& node) {
+    bridge::MemberRecord record;
+    record.info.id = id;
+    record.info.name = name;
+    record.info.asset = face().asset;
+    record.info.person = true;
+    record.node = node;
+    return record;
+  }
   RoomRegistry& registry() { return registry_; }
   const StoredAvatar& face() { return core().demo_avatars()[0]; }
 
@@ -211,12 +229,7 @@ TEST(RoomRoles, ABridgeRelaysItsPersonToTheOwnerAndTakesTheRoomOverWhenTheOwnerD
   EXPECT_EQ(join.node, "here");
   EXPECT_EQ(ann->avatar(), 0u) << "seated by the owner's answer only";
 
-  bridge::MemberRecord record;
-  record.info.id = 7;
-  record.info.name = "Ann";
-  record.info.asset = rooms.face().asset;
-  record.info.person = true;
-  record.node = "here";
+  bridge::MemberRecord record = rooms.member(7, "Ann", "here");
   record.address = "192.0.2.1";
   record.order = 1;
   bridge::Down joined = bridge::down_joined(join.join_ref, record);
@@ -250,14 +263,9 @@ TEST(RoomRoles, AnOwnersRedefinitionGoesDownAndIntoTheMembersRecord) {
   RecordingBus bus(RoomRoleKind::owner);
   RoomsOver rooms(bus);
   auto room = rooms.open("r");
-  auto ann = std::make_shared<RecordingConnection>();
-  room->join(rooms.person("Ann", ann));
-  ASSERT_TRUE(eventually([&] { return ann->avatar() != 0; }));
+  auto ann = rooms.seated(*room, "Ann");
   EXPECT_TRUE(bus.kept_sets().empty());
-  codec::Command script;
-  script.kind = codec::Command::Kind::facs;
-  script.sentence = "AU 9 nose 0 0 3 0 end";
-  room->command(ann->avatar(), script);
+  room->command(ann->avatar(), test::facs_command(1, "AU 9 nose 0 0 3 0 end"));
   ASSERT_TRUE(eventually([&] { return bus.sent_down(bridge::DownKind::unit_morphs); }));
   for (const auto& down : bus.downs())
     if (down.kind == bridge::DownKind::unit_morphs) {
@@ -271,6 +279,12 @@ TEST(RoomRoles, AnOwnersRedefinitionGoesDownAndIntoTheMembersRecord) {
   EXPECT_TRUE(eventually([&] { return ann->unit_morphs().size() == 1; })) << "and Ann is told, here";
 }
 
+/// News from the owner, on the node "there".
+bridge::Down from_there(bridge::Down news) {
+  news.owner = "there";
+  return news;
+}
+
 TEST(RoomRoles, ABridgeKeepsEachAvatarsNewestSetForItsPeopleAndDropsItWhenTheAvatarLeaves) {
   RecordingBus bus(RoomRoleKind::bridge);
   RoomsOver rooms(bus);
@@ -278,65 +292,41 @@ TEST(RoomRoles, ABridgeKeepsEachAvatarsNewestSetForItsPeopleAndDropsItWhenTheAva
   auto ann = std::make_shared<RecordingConnection>();
   room->join(rooms.person("Ann", ann));
   // The roster: Zed, on the owner, redefined a unit already.
-  bridge::MemberRecord zed;
-  zed.info.id = 3;
-  zed.info.name = "Zed";
-  zed.info.asset = rooms.face().asset;
-  zed.info.person = true;
-  zed.node = "there";
+  bridge::MemberRecord zed = rooms.member(3, "Zed", "there");
   zed.unit_morphs = set_of(3, 1);
-  bridge::Down roster = bridge::down_roster();
-  roster.owner = "there";
+  bridge::Down roster = from_there(bridge::down_roster());
   roster.members = {zed};
   room->on_down(roster);
   ASSERT_TRUE(eventually([&] { return bus.last_up(bridge::UpKind::join).has_value(); }));
-  bridge::MemberRecord record;
-  record.info.id = 7;
-  record.info.name = "Ann";
-  record.info.asset = rooms.face().asset;
-  record.info.person = true;
-  record.node = "here";
-  bridge::Down joined = bridge::down_joined(bus.last_up(bridge::UpKind::join)->join_ref, record);
-  joined.owner = "there";
-  room->on_down(joined);
+  const bridge::MemberRecord record = rooms.member(7, "Ann", "here");
+  room->on_down(from_there(bridge::down_joined(bus.last_up(bridge::UpKind::join)->join_ref, record)));
   ASSERT_TRUE(eventually([&] { return ann->avatar() == 7; }));
   // After her welcome, Ann hears of Zed's set as the roster gave it.
   ASSERT_TRUE(eventually([&] { return ann->unit_morphs().size() == 1; }));
   EXPECT_EQ(ann->unit_morphs()[0].avatar, 3u);
   EXPECT_EQ(ann->unit_morphs()[0].version, 1u);
   // A newer set comes down: Ann hears it.
-  bridge::Down newer = bridge::down_message(bridge::DownKind::unit_morphs, 3, set_of(3, 2));
-  newer.owner = "there";
-  room->on_down(newer);
+  const bridge::Down newer = from_there(bridge::down_message(bridge::DownKind::unit_morphs, 3, set_of(3, 2)));
+  room->on_down(bridge::Down(newer));
   ASSERT_TRUE(eventually([&] { return ann->unit_morphs().size() == 2; }));
   EXPECT_EQ(ann->unit_morphs()[1].version, 2u);
   // A roster repeats every set (another bridge asked for it): nothing new for Ann.
   zed.unit_morphs = set_of(3, 2);
   roster.members = {zed, record};
   room->on_down(roster);
-  room->on_down(newer);
+  room->on_down(bridge::Down(newer));
   // Zed leaves; a set of his that comes late is nobody's here.
-  bridge::Down left = bridge::down_left(3);
-  left.owner = "there";
-  room->on_down(left);
-  bridge::Down late = bridge::down_message(bridge::DownKind::unit_morphs, 3, set_of(3, 3));
-  late.owner = "there";
-  room->on_down(late);
+  room->on_down(from_there(bridge::down_left(3)));
+  room->on_down(from_there(bridge::down_message(bridge::DownKind::unit_morphs, 3, set_of(3, 3))));
   // A newcomer here is told of no set: Zed's went with him.
   auto bea = std::make_shared<RecordingConnection>();
   room->join(rooms.person("Bea", bea));
-  ASSERT_TRUE(eventually([&] { return bus.ups().size() >= 3 && bus.last_up(bridge::UpKind::join)->name == "Bea"; }));
-  record.info.id = 8;
-  record.info.name = "Bea";
-  bridge::Down bea_joined = bridge::down_joined(bus.last_up(bridge::UpKind::join)->join_ref, record);
-  bea_joined.owner = "there";
-  room->on_down(bea_joined);
+  ASSERT_TRUE(eventually([&] { return bus.last_up(bridge::UpKind::join)->name == "Bea"; }));
+  room->on_down(from_there(bridge::down_joined(bus.last_up(bridge::UpKind::join)->join_ref, rooms.member(8, "Bea", "here"))));
   ASSERT_TRUE(eventually([&] { return bea->avatar() == 8; }));
   // Ann redefines a unit: once both hear of it, whatever came before it
   // has been delivered (a stream keeps its order).
-  bridge::Down fence = bridge::down_message(bridge::DownKind::unit_morphs, 7, set_of(7, 1));
-  fence.owner = "there";
-  room->on_down(fence);
+  room->on_down(from_there(bridge::down_message(bridge::DownKind::unit_morphs, 7, set_of(7, 1))));
   ASSERT_TRUE(eventually([&] { return !bea->unit_morphs().empty() && ann->unit_morphs().size() >= 3; }));
   const auto anns = ann->unit_morphs();
   ASSERT_EQ(anns.size(), 3u) << "a repeated or late set reached Ann again";
@@ -349,9 +339,7 @@ TEST(RoomRoles, AnOwnerThatStepsDownAsksItsPeopleBackAndBridges) {
   RecordingBus bus(RoomRoleKind::owner);
   RoomsOver rooms(bus);
   auto room = rooms.open("r");
-  auto ann = std::make_shared<RecordingConnection>();
-  room->join(rooms.person("Ann", ann));
-  ASSERT_TRUE(eventually([&] { return ann->avatar() != 0; }));
+  auto ann = rooms.seated(*room, "Ann");
   room->step_down();
   EXPECT_TRUE(eventually([&] { return ann->closed(); }));
   EXPECT_TRUE(eventually([&] { return room->role() == RoomRoleKind::bridge; }));
