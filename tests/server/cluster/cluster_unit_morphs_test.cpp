@@ -5,7 +5,8 @@
 // the shipped unit; a person bridged from another node redefines their own
 // (the script goes up, the set comes down to both nodes); the owner is
 // killed, and the node that takes the room over still gives every newcomer
-// the sets, at their versions, the next change one newer.
+// (and the person whose node died, coming back to their seat) the sets, at
+// their versions, the next change one newer.
 #include <csignal>
 #include <memory>
 #include <string>
@@ -200,6 +201,12 @@ TEST(ClusterUnitMorphs, TheNodeThatTakesTheRoomOverKeepsTheSetsAndTheirVersions)
   EXPECT_EQ(set_of(*carl, ann_id)->units, anns.units);
   EXPECT_EQ(set_of(*carl, bob_id)->version, bobs.version);
   EXPECT_EQ(set_of(*carl, bob_id)->units, bobs.units);
+  // Ann comes back (her seat was kept) and hears of both sets after her welcome, her own too.
+  auto back = join_node(*nodes.other, "heir", "Ann", ann->welcome->resume);
+  ASSERT_TRUE(back->welcome);
+  EXPECT_EQ(back->welcome->you, ann_id);
+  ASSERT_TRUE(back->pump_until([&] { return set_of(*back, ann_id) && set_of(*back, bob_id); }, 10s));
+  EXPECT_EQ(set_of(*back, ann_id)->units, anns.units);
   // The next change is newer than what the clients hold, so they take it.
   bob->send_message(facs_command(3, "AU 9 end"));
   std::vector<RoomTestClient*> survivors{bob.get(), carl.get()};
