@@ -57,8 +57,8 @@ std::string share_refusal_text(RoomShareRefusal why, const RoomShareLimits& limi
 }  // namespace
 
 RoomRegistry::RoomRegistry(const RoomServices& services, AddressLimits& addresses)
-    : services_(services), preview_services_(with_bus(services, preview_bus_)), addresses_(addresses), shares_(room_shares_of(services.config)),
-      preview_counts_(services.config.previews) {}
+    : services_(services), preview_services_(with_bus(services, preview_bus_)), addresses_(addresses),
+      preview_counts_(services.config.previews), shares_(room_shares_of(services.config)) {}
 RoomRegistry::~RoomRegistry() = default;
 
 std::shared_ptr<Room> RoomRegistry::find_or_create(const std::string& name, bool persistent, bool place) {
