@@ -149,6 +149,10 @@ class RoomSimulation {
   /// (server/PROTOCOL.md 5.17), its version raised by every change; nullopt
   /// while its person never redefined one. Forgotten when the avatar leaves.
   std::optional<codec::UnitMorphs> unit_morphs(AvatarId avatar) const;
+  /// A preview's (options.preview) simulated skin beyond what its frames'
+  /// action units rebuild (preview_surface.hpp, PROTOCOL.md 5.18); nullopt
+  /// in a room, or before the avatar's first tick.
+  std::optional<codec::PreviewSurface> preview_surface(AvatarId avatar) const;
   /// A chat line from `avatar`: the avatar says it in its language (with
   /// lip sync, after the lines it is still saying, once the line's track is
   /// made; spoken_lines.hpp, track_maker.hpp), the others' gaze follows the

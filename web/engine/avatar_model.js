@@ -121,6 +121,29 @@ export class AvatarModel {
   }
 
   /**
+   * A face-lab preview's simulated skin beyond its action units
+   * (server/PROTOCOL.md 5.18): `moves` as a preview surface message carries
+   * them ([{ vertex, delta: [dx, dy, dz] }], generic vertices in the wire's
+   * steps), carried onto this face as the units are
+   * (fw::model::carried_surface) and added to every frame after it; []
+   * clears it.
+   */
+  setSurface(moves) {
+    this.ensureAlive();
+    const ints = [moves.length];
+    for (const move of moves) ints.push(move.vertex, move.delta[0], move.delta[1], move.delta[2]);
+    const m = this.module;
+    const pointer = m._malloc(ints.length * 4);
+    try {
+      m.HEAP32.set(Int32Array.from(ints), pointer >>> 2);
+      if (!m._fw_avatar_set_surface(this.handle, pointer, ints.length))
+        throw new Error(`the preview surface could not be set: ${lastError(m)}`);
+    } finally {
+      m._free(pointer);
+    }
+  }
+
+  /**
    * The skin's shape for FaceParams `params`: positions (3V, model units, the
    * generic mesh's vertex order), uvs (2V) and normals (3V). The arrays are
    * this avatar's own and are overwritten by the next call.
