@@ -118,7 +118,7 @@ AuTargets step_physics(PhysicsFace& face, const AuTargets& targets, double dt_s,
     sim.set_action_units(units.physics_targets(targets));
     if (!sleeps || !sim.at_rest()) sim.step(dt_s);
     units.measure(sim, face.kinematic, face.shown);
-    face.resting = sim.at_rest() && redefined_at_rest(face, targets, units);
+    face.resting = sleeps && sim.at_rest() && redefined_at_rest(face, targets, units);
     return face.shown;
   }
   sim.set_action_units(targets);
@@ -126,7 +126,7 @@ AuTargets step_physics(PhysicsFace& face, const AuTargets& targets, double dt_s,
     sim.step(dt_s);
     face.shown = sim.measure().action_units;
   }
-  face.resting = sim.at_rest();
+  face.resting = sleeps && sim.at_rest();  // a face kept awake is stepped: it does not sleep
   return face.shown;
 }
 
