@@ -106,7 +106,7 @@ async function squareAround(page, centre, side) {
   return Array.from(data);
 }
 
-test('a muscle slider moves the region that muscle pulls, and the skin sliders are taken', async () => {
+test('a muscle slider moves the region that muscle pulls, and the skin sliders are taken', async (t) => {
   const page = await openLab();
   // The left zygomatic major (muscle 22, PROTOCOL.md 5.16) pulls the left
   // mouth corner (landmark 54) up and out; the right brow (19) is far from it.
@@ -120,9 +120,34 @@ test('a muscle slider moves the region that muscle pulls, and the skin sliders a
   const after = { corner: await squareAround(page, corner, side), brow: await squareAround(page, brow, side) };
   const near = meanAbsDifference(before.corner, after.corner);
   const far = meanAbsDifference(before.brow, after.brow);
+  t.diagnostic(`mouth corner changed by ${near.toFixed(2)}, far brow by ${far.toFixed(2)}`);
   assert.ok(near > 3 && near > 4 * far, `the mouth corner changed by ${near.toFixed(2)}, the far brow by ${far.toFixed(2)}`);
   const surface = await page.evaluate(() => window.facewireLab.client.previewSurface);
   assert.ok(surface && surface.moves.length > 0, 'the page was sent the simulated surface (5.18)');
+  t.diagnostic(`preview surface: ${surface.moves.length} vertices`);
+
+  // The page draws the simulated skin, not only its action units: the left
+  // zygomatic minor (20) is no unit's muscle alone, and the face drawn
+  // without the surface it was sent differs where that muscle pulls.
+  await slide(page, 'muscle-22', 0);
+  await slide(page, 'muscle-20', 100);
+  await page.waitForTimeout(SETTLE_MS);
+  const [lip, l36b, l45b] = await landmarks(page, [52, 36, 45]);
+  const lipSide = 0.35 * Math.hypot(l45b[0] - l36b[0], l45b[1] - l36b[1]);
+  const drawn = await squareAround(page, lip, lipSide);
+  await page.waitForTimeout(200);
+  const still = meanAbsDifference(drawn, await squareAround(page, lip, lipSide));
+  const stripped = await page.evaluate(() => {
+    const { view, client } = window.facewireLab;
+    const face = view.room.ownFace ?? view.room.faces.get(client.you);
+    face.model.setSurface([]);  // until the next message or the next showSurface: held while the face rests
+    return client.previewSurface.moves.length;
+  });
+  await page.waitForTimeout(200);
+  const without = await squareAround(page, lip, lipSide);
+  const residual = meanAbsDifference(drawn, without);
+  t.diagnostic(`zygomatic minor: surface of ${stripped} vertices; the upper lip drawn without it differs by ${residual.toFixed(2)} (held: ${still.toFixed(2)})`);
+  assert.ok(residual > 0.5 && residual > 3 * still, `the surface changed the drawn lip by ${residual.toFixed(2)} only (held: ${still.toFixed(2)})`);
 
   await slide(page, 'skin-age', 100);
   await slide(page, 'skin-looseness', 50);
