@@ -79,13 +79,19 @@ std::shared_ptr<const physics::TissueModel> generic_tissue() {
 // A preview's physics level (face_overrides.hpp): its muscles' floor, and
 // its own tissue model when its skin is not normal() (the generic model is
 // shared by every face: it is never changed, another is built).
+// Building a tissue model takes about 7 ms (the generic face's, on one
+// core): a skin slider dragged would ask for one every tick, so a preview
+// rebuilds at most every kSkinRebuildS and takes the newest values then.
+constexpr double kSkinRebuildS = 0.2;
+
 void apply_physics_level(physics::FaceSimulation& sim, const FaceOverrides& overrides,
-                         std::pair<float, float>& applied_skin) {
+                         std::pair<float, float>& applied_skin, double now_s, double& rebuilt_s) {
   static_assert(kOverrideMuscles == physics::kMuscleCount);
   if (overrides.muscles != sim.muscle_floor()) sim.set_muscle_floor(overrides.muscles);
   const std::pair<float, float> skin{overrides.skin_age, overrides.skin_looseness};
-  if (skin == applied_skin) return;
+  if (skin == applied_skin || now_s - rebuilt_s < kSkinRebuildS) return;
   applied_skin = skin;
+  rebuilt_s = now_s;
   if (skin == std::pair<float, float>{0.0f, 0.0f}) return sim.replace_model(generic_tissue());
   physics::TissueOptions options;
   options.material = physics::TissueMaterial::aged(skin.first, skin.second);
@@ -199,6 +205,7 @@ struct RoomSimulation::State {
     /// model was built with.
     AuTargets measured{};
     std::pair<float, float> skin{0.0f, 0.0f};
+    double skin_built_s = -1e9;  ///< room time its tissue model was last built
   };
 
   /// A preview's override; "" or why not.
@@ -471,7 +478,7 @@ void RoomSimulation::tick() {
       const bool allowed = s.options.preview || s.physics_share >= 1.0 || physics_rank(seed) < s.physics_share;
       bool sleeps = s.options.physics_sleeps;
       if (s.options.preview) {
-        apply_physics_level(simulation_of(a.physics, seed), a.overrides, a.skin);
+        apply_physics_level(simulation_of(a.physics, seed), a.overrides, a.skin, now_s, a.skin_built_s);
         sleeps = sleeps && !a.overrides.any_muscle();
       }
       a.face.au = step_action_units(a.physics, a.face.au, s.room.dt_s(), seed, sleeps, allowed, a.units);
