@@ -188,6 +188,8 @@ void SubscriberStream::post_unit_morphs(std::uint32_t avatar, SharedBytes messag
 }
 
 void SubscriberStream::post_preview_surface(SharedBytes message) {
+  // Version 5 brought it; an older client would refuse a type it does not know.
+  if (settings_.protocol_version < codec::kFirstUnitMorphsVersion) return;
   std::erase_if(waiting_, [](const Waiting& w) { return w.kind == Kind::preview_surface; });
   waiting_.push_back({Kind::preview_surface, 0, std::move(message)});
   send_messages();

@@ -95,7 +95,8 @@ class SubscriberStream {
   /// still waiting, and one for a face the client never heard of goes with it.
   void post_unit_morphs(std::uint32_t avatar, SharedBytes message);
   /// A face-lab preview's surface residual (codec::PreviewSurface, PROTOCOL.md
-  /// 5.18), for the connection that owns the preview only. It waits with
+  /// 5.18), for the connection that owns the preview only (of protocol
+  /// version 5 or later). It waits with
   /// the room's messages; a newer one replaces one still waiting (each
   /// holds the whole residual).
   void post_preview_surface(SharedBytes message);
