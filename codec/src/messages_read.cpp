@@ -335,6 +335,24 @@ MessageError read_message(std::span<const std::uint8_t> bytes, Speaking& m) {
 
 namespace fw::codec {
 
+namespace {
+
+// A count, then moves of skin vertices strictly increasing (a unit morph's,
+// a preview surface's), so a vertex is never given twice.
+void read_moves(ByteReader& r, std::vector<UnitMorphs::Move>& out, MessageError& error) {
+  out.clear();
+  const std::uint32_t moves = r.varint(2);
+  if (!r.failed() && moves > kMaxUnitMorphMoves) fail(error, MessageError::too_many_entries);
+  for (std::uint32_t k = 0; k < moves && !r.failed() && error == MessageError::ok; ++k) {
+    UnitMorphs::Move& move = out.emplace_back();
+    move.vertex = read_bounded(r, 2, kMaxUnitMorphMoves - 1, error);
+    if (!r.failed() && k > 0 && move.vertex <= out[k - 1].vertex) fail(error, MessageError::value_out_of_range);
+    for (std::int16_t& d : move.delta) d = r.i16_le();
+  }
+}
+
+}  // namespace
+
 // Channels and vertices strictly increase, so a unit or a vertex is never
 // given twice and the message has one reading.
 MessageError read_message(std::span<const std::uint8_t> bytes, UnitMorphs& m) {
@@ -353,15 +371,19 @@ MessageError read_message(std::span<const std::uint8_t> bytes, UnitMorphs& m) {
     unit.channel = r.u8();
     if (!r.failed() && (unit.channel >= kAuChannelCount || (i > 0 && unit.channel <= m.units[i - 1].channel)))
       fail(error, MessageError::value_out_of_range);
-    const std::uint32_t moves = r.varint(2);
-    if (!r.failed() && moves > kMaxUnitMorphMoves) fail(error, MessageError::too_many_entries);
-    for (std::uint32_t k = 0; k < moves && !r.failed() && error == MessageError::ok; ++k) {
-      UnitMorphs::Move& move = unit.moves.emplace_back();
-      move.vertex = read_bounded(r, 2, kMaxUnitMorphMoves - 1, error);
-      if (!r.failed() && k > 0 && move.vertex <= unit.moves[k - 1].vertex) fail(error, MessageError::value_out_of_range);
-      for (std::int16_t& d : move.delta) d = r.i16_le();
-    }
+    read_moves(r, unit.moves, error);
   }
+  return finish(r, error);
+}
+
+MessageError read_message(std::span<const std::uint8_t> bytes, PreviewSurface& m) {
+  ByteReader r(bytes);
+  if (auto e = check_first_byte(r, bytes.size(), MessageType::preview_surface, kMaxDownstreamMessageBytes);
+      e != MessageError::ok)
+    return e;
+  MessageError error = MessageError::ok;
+  m.avatar = read_bounded(r, 3, kMaxAvatarIdValue, error);
+  read_moves(r, m.moves, error);
   return finish(r, error);
 }
 

@@ -235,6 +235,20 @@ void write_message(const Speaking& m, std::vector<std::uint8_t>& out) {
 
 namespace fw::codec {
 
+namespace {
+
+void write_moves(ByteWriter& w, const std::vector<UnitMorphs::Move>& moves) {
+  assert(moves.size() <= kMaxUnitMorphMoves);
+  w.varint(static_cast<std::uint32_t>(moves.size()));
+  for (const UnitMorphs::Move& move : moves) {
+    assert(move.vertex < kMaxUnitMorphMoves);
+    w.varint(move.vertex);
+    for (const std::int16_t d : move.delta) w.i16_le(d);
+  }
+}
+
+}  // namespace
+
 void write_message(const UnitMorphs& m, std::vector<std::uint8_t>& out) {
   assert(m.avatar <= kMaxAvatarIdValue && m.units.size() <= kMaxRedefinedChannels);
   ByteWriter w(out);
@@ -245,13 +259,16 @@ void write_message(const UnitMorphs& m, std::vector<std::uint8_t>& out) {
   for (const UnitMorphs::Unit& unit : m.units) {
     assert(unit.channel < kAuChannelCount && unit.moves.size() <= kMaxUnitMorphMoves);
     w.u8(unit.channel);
-    w.varint(static_cast<std::uint32_t>(unit.moves.size()));
-    for (const UnitMorphs::Move& move : unit.moves) {
-      assert(move.vertex < kMaxUnitMorphMoves);
-      w.varint(move.vertex);
-      for (const std::int16_t d : move.delta) w.i16_le(d);
-    }
+    write_moves(w, unit.moves);
   }
+}
+
+void write_message(const PreviewSurface& m, std::vector<std::uint8_t>& out) {
+  assert(m.avatar <= kMaxAvatarIdValue);
+  ByteWriter w(out);
+  w.u8(first_byte(MessageType::preview_surface));
+  w.varint(m.avatar);
+  write_moves(w, m.moves);
 }
 
 }  // namespace fw::codec

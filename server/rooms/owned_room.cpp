@@ -1,5 +1,6 @@
 #include "owned_room.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <spdlog/spdlog.h>
@@ -334,6 +335,21 @@ void OwnedRoom::send_unit_morphs(OwnedMember& member) {
     if (const auto morphs = simulation_.unit_morphs(id)) member.stream->post_unit_morphs(id, encode_shared(*morphs));
 }
 
+void OwnedRoom::send_preview_surface() {
+  const std::uint32_t every =
+      std::max<std::uint32_t>(1, static_cast<std::uint32_t>(services_.config.tick_hz) / kPreviewSurfaceHz);
+  if (simulation_.tick_index() % every != 0) return;
+  for (auto& [id, member] : members_) {
+    // A preview seats its owner alone: each member's page is its own face's.
+    const auto surface = member.stream ? simulation_.preview_surface(id) : std::nullopt;
+    if (!surface) continue;
+    auto& sent = preview_surface_sent_[id];
+    if (surface->moves == sent) continue;
+    sent = surface->moves;
+    member.stream->post_preview_surface(encode_shared(*surface));
+  }
+}
+
 void OwnedRoom::tick(std::chrono::steady_clock::time_point due) {
   const auto start = std::chrono::steady_clock::now();
   const auto period = std::chrono::microseconds(1'000'000 / services_.config.tick_hz);
@@ -366,6 +382,7 @@ void OwnedRoom::tick(std::chrono::steady_clock::time_point due) {
     send_down(down);
   }
   send_attention_changes();
+  if (room_.preview()) send_preview_surface();
   if (++ticks_since_check_ >= static_cast<std::uint32_t>(services_.config.tick_hz)) {
     ticks_since_check_ = 0;
     keep_state();

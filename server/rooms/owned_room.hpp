@@ -83,6 +83,9 @@ class OwnedRoom : public RoomRole {
   void broadcast_unit_morphs(std::uint32_t avatar);
   /// Every avatar's redefined units to a member just welcomed.
   void send_unit_morphs(OwnedMember& member);
+  /// A preview's: its simulated skin beyond its frames' action units to
+  /// its page (PROTOCOL.md 5.18), at most kPreviewSurfaceHz, when changed.
+  void send_preview_surface();
   /// Takes every member's seat from the simulation; a Seats message for
   /// everyone when a seat already announced moved, else null.
   SharedBytes reseat();
@@ -121,6 +124,12 @@ class OwnedRoom : public RoomRole {
   TokenBucket chat_rate_;  ///< chat lines into this room, from everyone (AbuseLimits::room_chat)
   TokenBucket join_rate_;  ///< joins into this room, from everyone (AbuseLimits::room_joins)
   std::uint32_t ticks_since_check_ = 0;  ///< for close_if_unpeopled once a second
+  /// A preview's surface residual last sent to its page, per avatar (none: empty).
+  std::map<std::uint32_t, std::vector<codec::UnitMorphs::Move>> preview_surface_sent_;
+  /// The residual changes with every tick while the face moves: ten a
+  /// second keep a muscle's pull visible as it builds up (its activation
+  /// rises over 80 ms) at a few KB a second on the page's own link.
+  static constexpr std::uint32_t kPreviewSurfaceHz = 10;
 };
 
 }  // namespace fw::server

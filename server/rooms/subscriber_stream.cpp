@@ -187,6 +187,14 @@ void SubscriberStream::post_unit_morphs(std::uint32_t avatar, SharedBytes messag
   send_messages();
 }
 
+void SubscriberStream::post_preview_surface(SharedBytes message) {
+  // Version 5 brought it; an older client would refuse a type it does not know.
+  if (settings_.protocol_version < codec::kFirstUnitMorphsVersion) return;
+  std::erase_if(waiting_, [](const Waiting& w) { return w.kind == Kind::preview_surface; });
+  waiting_.push_back({Kind::preview_surface, 0, std::move(message)});
+  send_messages();
+}
+
 void SubscriberStream::post_bounded(Kind kind, std::size_t max_waiting, SharedBytes message) {
   const auto same = [kind](const Waiting& w) { return w.kind == kind; };
   if (static_cast<std::size_t>(std::count_if(waiting_.begin(), waiting_.end(), same)) >= max_waiting)

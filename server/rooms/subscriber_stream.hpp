@@ -94,6 +94,12 @@ class SubscriberStream {
   /// any later frame of it); a newer one for the same avatar replaces one
   /// still waiting, and one for a face the client never heard of goes with it.
   void post_unit_morphs(std::uint32_t avatar, SharedBytes message);
+  /// A face-lab preview's surface residual (codec::PreviewSurface, PROTOCOL.md
+  /// 5.18), for the connection that owns the preview only (of protocol
+  /// version 5 or later). It waits with
+  /// the room's messages; a newer one replaces one still waiting (each
+  /// holds the whole residual).
+  void post_preview_surface(SharedBytes message);
   /// Room messages still waiting, and chat lines dropped so far.
   std::size_t waiting_messages() const { return waiting_.size() + chat_.size(); }
   std::uint64_t dropped_chat_lines() const { return dropped_chat_total_; }
@@ -114,7 +120,7 @@ class SubscriberStream {
     SharedBytes bytes;
     std::size_t offset = 0;
   };
-  enum class Kind { joined, left, seats, attention, result, speaking, unit_morphs };
+  enum class Kind { joined, left, seats, attention, result, speaking, unit_morphs, preview_surface };
   struct Waiting {
     Kind kind;
     std::uint32_t avatar = 0;  ///< joined, left, unit_morphs: whose

@@ -74,8 +74,21 @@ std::string set_override(FaceOverrides& o, const codec::FaceOverride& c) {
     case OverridePart::pallor: o.pallor = clamped(c.value, 0, 1); return {};
     case OverridePart::behaviour: o.behaviour = c.value != 0; return {};
     case OverridePart::reset: o = FaceOverrides{}; return {};
+    case OverridePart::muscle:
+      if (c.index >= kOverrideMuscles)
+        return "muscle " + std::to_string(c.index) + " does not exist; use 0 .. 41 (PROTOCOL.md 5.16 lists them: " +
+               "even the person's left, odd the right)";
+      if (c.side != 0) return "a muscle index names its side already: send side 0";
+      o.muscles[c.index] = clamped(c.value, 0, 1);
+      return {};
+    case OverridePart::skin_age: o.skin_age = clamped(c.value, 0, 1); return {};
+    case OverridePart::skin_looseness: o.skin_looseness = clamped(c.value, 0, 1); return {};
   }
   return "unknown override";  // the codec reads no other part
+}
+
+bool FaceOverrides::any_muscle() const {
+  return std::any_of(muscles.begin(), muscles.end(), [](float a) { return a > 0.0f; });
 }
 
 void apply_overrides(const FaceOverrides& o, codec::FaceParams& face, const AuTargetArray* played,

@@ -24,6 +24,9 @@ inline constexpr float kMaxHeadYawRad = 1.2f, kMaxHeadPitchRad = 0.8f, kMaxHeadR
 inline constexpr float kMaxEyeYawRad = 0.6f, kMaxEyePitchRad = 0.5f;
 /// The six primaries of avatar/behavior's emotion space, in wire order.
 inline constexpr std::size_t kOverrideEmotions = 6;
+/// The physics face's muscles (avatar/physics facial_muscles.hpp, its index
+/// order: muscle i of the person's left side 2i, its right twin 2i + 1).
+inline constexpr std::size_t kOverrideMuscles = 42;
 
 struct FaceOverrides {
   /// The avatar's own behaviour (gaze, blinks, moods, expressions) runs
@@ -34,6 +37,13 @@ struct FaceOverrides {
   std::array<std::optional<float>, codec::kAuChannelCount> au{};
   std::optional<float> head_yaw, head_pitch, head_roll, eye_yaw, eye_pitch, lid_left, lid_right, pallor;
   std::array<std::optional<float>, codec::kColourRegionCount> blush{};
+  /// The physics level: each muscle's least activation, 0 .. 1, on top of
+  /// (the larger of it and) what the action units give the muscle.
+  std::array<float, kOverrideMuscles> muscles{};
+  /// The skin's age and looseness, 0 .. 1 (physics::TissueMaterial::aged).
+  float skin_age = 0, skin_looseness = 0;
+  /// Whether a muscle is driven: the preview's physics face then never sleeps.
+  bool any_muscle() const;
 };
 
 using AuTargetArray = std::array<float, codec::kAuChannelCount>;

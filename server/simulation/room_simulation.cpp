@@ -19,6 +19,7 @@
 #include "fw/physics/tissue_model.hpp"
 #include "avatar_ids.hpp"
 #include "face_overrides.hpp"
+#include "preview_surface.hpp"
 #include "script_check.hpp"
 #include "redefined_units.hpp"
 #include "redefinition_budget.hpp"
@@ -75,6 +76,28 @@ std::shared_ptr<const physics::TissueModel> generic_tissue() {
   return tissue;
 }
 
+// A preview's physics level (face_overrides.hpp): its muscles' floor, and
+// its own tissue model when its skin is not normal() (the generic model is
+// shared by every face: it is never changed, another is built).
+// Building a tissue model takes about 7 ms (the generic face's, on one
+// core): a skin slider dragged would ask for one every tick, so a preview
+// rebuilds at most every kSkinRebuildS and takes the newest values then.
+constexpr double kSkinRebuildS = 0.2;
+
+void apply_physics_level(physics::FaceSimulation& sim, const FaceOverrides& overrides,
+                         std::pair<float, float>& applied_skin, double now_s, double& rebuilt_s) {
+  static_assert(kOverrideMuscles == physics::kMuscleCount);
+  if (overrides.muscles != sim.muscle_floor()) sim.set_muscle_floor(overrides.muscles);
+  const std::pair<float, float> skin{overrides.skin_age, overrides.skin_looseness};
+  if (skin == applied_skin || now_s - rebuilt_s < kSkinRebuildS) return;
+  applied_skin = skin;
+  rebuilt_s = now_s;
+  if (skin == std::pair<float, float>{0.0f, 0.0f}) return sim.replace_model(generic_tissue());
+  physics::TissueOptions options;
+  options.material = physics::TissueMaterial::aged(skin.first, skin.second);
+  sim.replace_model(physics::build_tissue_model(model::generic_face(), model::generic_face().action_units, options));
+}
+
 // Whether every redefined unit's own track has reached its target.
 bool redefined_at_rest(const PhysicsFace& face, const AuTargets& targets, const RedefinedUnits& units) {
   for (const auto& [channel, morph] : units.morphs())
@@ -85,34 +108,38 @@ bool redefined_at_rest(const PhysicsFace& face, const AuTargets& targets, const 
 // A face with redefined units (redefined_units.hpp): the physics face makes
 // the shipped ones, each redefined unit moves by its morph on its own track,
 // and the face is measured against the avatar's own basis every tick.
-AuTargets step_physics(PhysicsFace& face, const AuTargets& targets, double dt_s, std::uint64_t seed,
-                       const RoomSimulationOptions& options, const RedefinedUnits& units) {
+physics::FaceSimulation& simulation_of(PhysicsFace& face, std::uint64_t seed) {
   if (!face.simulation) {
     physics::SimulationOptions o;
     o.seed = seed;
     face.simulation = std::make_unique<physics::FaceSimulation>(generic_tissue(), o);
   }
-  physics::FaceSimulation& sim = *face.simulation;
+  return *face.simulation;
+}
+
+AuTargets step_physics(PhysicsFace& face, const AuTargets& targets, double dt_s, std::uint64_t seed, bool sleeps,
+                       const RedefinedUnits& units) {
+  physics::FaceSimulation& sim = simulation_of(face, seed);
   if (units.any()) {
     sim.set_action_units(units.physics_targets(targets));
-    if (!options.physics_sleeps || !sim.at_rest()) sim.step(dt_s);
+    if (!sleeps || !sim.at_rest()) sim.step(dt_s);
     units.measure(sim, face.kinematic, face.shown);
-    face.resting = sim.at_rest() && redefined_at_rest(face, targets, units);
+    face.resting = sleeps && sim.at_rest() && redefined_at_rest(face, targets, units);
     return face.shown;
   }
   sim.set_action_units(targets);
-  if (!options.physics_sleeps || !sim.at_rest()) {
+  if (!sleeps || !sim.at_rest()) {
     sim.step(dt_s);
     face.shown = sim.measure().action_units;
   }
-  face.resting = sim.at_rest();
+  face.resting = sleeps && sim.at_rest();  // a face kept awake is stepped: it does not sleep
   return face.shown;
 }
 
 // One tick of a face's action units: physics when it may, else kinematic,
 // blending after a change from kinematic to physics.
-AuTargets step_action_units(PhysicsFace& face, const AuTargets& targets, double dt_s, std::uint64_t seed,
-                            const RoomSimulationOptions& options, bool physics_allowed, const RedefinedUnits& units) {
+AuTargets step_action_units(PhysicsFace& face, const AuTargets& targets, double dt_s, std::uint64_t seed, bool sleeps,
+                            bool physics_allowed, const RedefinedUnits& units) {
   follow_kinematically(face, targets, dt_s);
   if (!physics_allowed) {
     face.blend = 0;
@@ -124,7 +151,7 @@ AuTargets step_action_units(PhysicsFace& face, const AuTargets& targets, double 
       face.resting = face.resting && std::abs(targets[c] - face.kinematic[c]) < kKinematicRestGap;
     return face.kinematic;
   }
-  const AuTargets physical = step_physics(face, targets, dt_s, seed, options, units);
+  const AuTargets physical = step_physics(face, targets, dt_s, seed, sleeps, units);
   if (face.blend >= 1) return physical;
   face.resting = false;  // still catching up or blending
   float gap = 0;
@@ -173,6 +200,12 @@ struct RoomSimulation::State {
     /// preview with its behaviour off (the episode's length).
     double scripted_colour_until_s = 0;
     RedefinedUnits units;  ///< its person's AU definitions
+    /// A preview's: the weights its physics face gave the frame (before
+    /// speech and plateau motion), and the skin (age, looseness) its tissue
+    /// model was built with.
+    AuTargets measured{};
+    std::pair<float, float> skin{0.0f, 0.0f};
+    double skin_built_s = -1e9;  ///< room time its tissue model was last built
   };
 
   /// A preview's override; "" or why not.
@@ -367,6 +400,13 @@ std::string RoomSimulation::script(AvatarId avatar, std::string_view text) {
   return result;
 }
 
+std::optional<codec::PreviewSurface> RoomSimulation::preview_surface(AvatarId avatar) const {
+  const auto it = state_->avatars.find(avatar);
+  if (!state_->options.preview || it == state_->avatars.end() || !it->second.physics.simulation) return std::nullopt;
+  const State::Avatar& a = it->second;
+  return server::preview_surface(avatar, *a.physics.simulation, a.measured, a.units, a.physics.kinematic);
+}
+
 std::optional<codec::UnitMorphs> RoomSimulation::unit_morphs(AvatarId avatar) const {
   const auto it = state_->avatars.find(avatar);
   if (it == state_->avatars.end() || it->second.units.version() == 0) return std::nullopt;
@@ -438,8 +478,17 @@ void RoomSimulation::tick() {
     if (!s.options.physics) {
       a.physics.resting = true;  // no physics face to step
     } else {
-      const bool allowed = s.physics_share >= 1.0 || physics_rank(seed) < s.physics_share;
-      a.face.au = step_action_units(a.physics, a.face.au, s.room.dt_s(), seed, s.options, allowed, a.units);
+      // A preview's page shows the physics face itself (its muscles, its
+      // skin): it keeps physics under load, and never sleeps while a
+      // muscle is driven from its page.
+      const bool allowed = s.options.preview || s.physics_share >= 1.0 || physics_rank(seed) < s.physics_share;
+      bool sleeps = s.options.physics_sleeps;
+      if (s.options.preview) {
+        apply_physics_level(simulation_of(a.physics, seed), a.overrides, a.skin, now_s, a.skin_built_s);
+        sleeps = sleeps && !a.overrides.any_muscle();
+      }
+      a.face.au = step_action_units(a.physics, a.face.au, s.room.dt_s(), seed, sleeps, allowed, a.units);
+      a.measured = a.face.au;
       ++(allowed ? s.physics_faces : s.kinematic_faces);
     }
     // Speech moves jaw and lips at syllable rate (4-5 a second); the

@@ -153,6 +153,10 @@ class RoomSimulation {
   /// (server/CLUSTER.md, a takeover), at its version: no budget is paid,
   /// nothing is played. "" when taken, else why not (RedefinedUnits::restore).
   std::string restore_unit_morphs(AvatarId avatar, const codec::UnitMorphs& set);
+  /// A preview's (options.preview) simulated skin beyond what its frames'
+  /// action units rebuild (preview_surface.hpp, PROTOCOL.md 5.18); nullopt
+  /// in a room, or before the avatar's first tick.
+  std::optional<codec::PreviewSurface> preview_surface(AvatarId avatar) const;
   /// A chat line from `avatar`: the avatar says it in its language (with
   /// lip sync, after the lines it is still saying, once the line's track is
   /// made; spoken_lines.hpp, track_maker.hpp), the others' gaze follows the

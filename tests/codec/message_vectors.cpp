@@ -95,6 +95,11 @@ json fields(const UnitMorphs& m) {
   }
   return {{"avatar", m.avatar}, {"version", m.version}, {"units", units}};
 }
+json fields(const PreviewSurface& m) {
+  json moves = json::array();
+  for (const auto& move : m.moves) moves.push_back({{"vertex", move.vertex}, {"delta", move.delta}});
+  return {{"avatar", m.avatar}, {"moves", moves}};
+}
 json fields(const Attention& m) {
   json entries = json::array();
   for (const auto& e : m.entries)
@@ -196,6 +201,10 @@ json make_vectors() {
                 .duration_ms = 3000, .sentence = "", .override_face = {OverridePart::action_unit, 12, 1, 7500}});
   v.add(Command{.request_id = 6, .kind = Command::Kind::override_face, .emotion = "", .intensity = 1, .target = 0,
                 .duration_ms = 3000, .sentence = "", .override_face = {OverridePart::head_yaw, 0, 0, -12000}});
+  v.add(Command{.request_id = 7, .kind = Command::Kind::override_face, .emotion = "", .intensity = 1, .target = 0,
+                .duration_ms = 3000, .sentence = "", .override_face = {OverridePart::muscle, 22, 0, 10000}});
+  v.add(Command{.request_id = 8, .kind = Command::Kind::override_face, .emotion = "", .intensity = 1, .target = 0,
+                .duration_ms = 3000, .sentence = "", .override_face = {OverridePart::skin_age, 0, 0, 5000}});
   v.add(Command{.request_id = 7, .kind = Command::Kind::check, .emotion = "", .intensity = 1, .target = 0,
                 .duration_ms = 3000, .sentence = "ClearAllFrame\nBeginKeyFrame 12 1.0"});
   v.add(CommandResult{4, "no such action unit"});
@@ -219,6 +228,8 @@ json make_vectors() {
   v.add(Speaking{.avatar = 0, .tick = 0, .duration_ms = 0, .language = "x", .text = "."});
   v.add(fw::test::sample_unit_morphs());
   v.add(UnitMorphs{.avatar = 2097151, .version = 4294967295u, .units = {}});
+  v.add(fw::test::sample_preview_surface());
+  v.add(PreviewSurface{.avatar = 2097151, .moves = {}});
   return {{"protocolVersion", kProtocolVersion}, {"messages", v.messages}, {"damaged", v.damaged_messages}};
 }
 

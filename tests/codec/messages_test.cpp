@@ -173,9 +173,9 @@ TEST(Messages, SpeakingRefusesWhatNoServerSends) {
   EXPECT_EQ(read_message(long_language, back), MessageError::string_too_long);
   Chat chat;
   EXPECT_EQ(read_message(bytes_of(fw::test::sample_speaking()), chat), MessageError::wrong_type);
-  EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x92, 0x00}, back), MessageError::unknown_type)
-      << "0x92 is no message of version 5";
-  EXPECT_EQ(classify(std::vector<std::uint8_t>{0x92, 0x00}), MessageKind::invalid);
+  EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x93, 0x00}, back), MessageError::unknown_type)
+      << "0x93 is no message of version 5";
+  EXPECT_EQ(classify(std::vector<std::uint8_t>{0x93, 0x00}), MessageKind::invalid);
 }
 
 TEST(Messages, UnitMorphsRoundTrip) {
@@ -192,6 +192,45 @@ TEST(Messages, UnitMorphsRoundTrip) {
   const UnitMorphs restored{.avatar = 1, .version = 9, .units = {}};
   ASSERT_EQ(read_message(bytes_of(restored), back), MessageError::ok);
   EXPECT_TRUE(back.units.empty());
+}
+
+TEST(Messages, PreviewSurfaceRoundTrip) {
+  const PreviewSurface surface = fw::test::sample_preview_surface();
+  const auto bytes = bytes_of(surface);
+  EXPECT_EQ(bytes[0], 0x92);
+  EXPECT_EQ(classify(bytes), MessageKind::session);
+  PreviewSurface back;
+  ASSERT_EQ(read_message(bytes, back), MessageError::ok);
+  EXPECT_EQ(back, surface);
+  EXPECT_EQ(bytes_of(back), bytes);
+  const PreviewSurface none{.avatar = 2097151, .moves = {}};
+  ASSERT_EQ(read_message(bytes_of(none), back), MessageError::ok);
+  EXPECT_EQ(back, none) << "no residual: the face is what its action units rebuild";
+  UnitMorphs other;
+  EXPECT_EQ(read_message(bytes, other), MessageError::wrong_type);
+}
+
+TEST(Messages, PreviewSurfaceRefusesWhatNoServerSends) {
+  PreviewSurface back;
+  // avatar 1, then the moves.
+  const auto with_moves = [](std::vector<std::uint8_t> moves) {
+    std::vector<std::uint8_t> bytes = {0x92, 0x01};
+    bytes.insert(bytes.end(), moves.begin(), moves.end());
+    return bytes;
+  };
+  EXPECT_EQ(read_message(with_moves({2, 7, 1, 0, 0, 0, 0, 0, 7, 1, 0, 0, 0, 0, 0}), back),
+            MessageError::value_out_of_range)
+      << "a vertex given twice";
+  EXPECT_EQ(read_message(with_moves({2, 8, 1, 0, 0, 0, 0, 0, 7, 1, 0, 0, 0, 0, 0}), back),
+            MessageError::value_out_of_range)
+      << "vertices not increasing";
+  EXPECT_EQ(read_message(with_moves({0x81, 0x08}), back), MessageError::too_many_entries) << "1025 moves";
+  EXPECT_EQ(read_message(with_moves({1, 0x80, 0x08, 0, 0, 0, 0, 0, 0}), back), MessageError::value_out_of_range)
+      << "vertex 1024";
+  EXPECT_EQ(read_message(with_moves({1, 7, 1, 0}), back), MessageError::truncated);
+  EXPECT_EQ(read_message(with_moves({0, 0}), back), MessageError::trailing_bytes);
+  EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x92, 0x80, 0x80, 0x80, 0x01, 0}, back), MessageError::bad_number)
+      << "an avatar id in 4 bytes";
 }
 
 TEST(Messages, UnitMorphsRefuseWhatNoServerSends) {
@@ -325,8 +364,14 @@ TEST(Messages, FaceLabCommandsAndPreviewHelloRoundTrip) {
   ASSERT_EQ(read_message(bytes_of(set), back), MessageError::ok);
   EXPECT_EQ(back.kind, Command::Kind::override_face);
   EXPECT_EQ(back.override_face, set.override_face);
+  for (const OverridePart part : {OverridePart::muscle, OverridePart::skin_age, OverridePart::skin_looseness}) {
+    Command physics = set;
+    physics.override_face = {part, part == OverridePart::muscle ? std::uint8_t{41} : std::uint8_t{0}, 0, 10000};
+    ASSERT_EQ(read_message(bytes_of(physics), back), MessageError::ok);
+    EXPECT_EQ(back.override_face, physics.override_face);
+  }
 
-  // A part past `reset`, or a side past right, means nothing.
+  // A part past the skin's looseness, or a side past right, means nothing.
   std::vector<std::uint8_t> bytes = bytes_of(set);
   bytes[bytes.size() - 5] = kLastOverridePart + 1;
   EXPECT_EQ(read_message(bytes, back), MessageError::value_out_of_range);

@@ -72,7 +72,7 @@ Bytes room_frame_bytes() {
 struct Messages {
   Bytes hello, hello_v3, hello_minimal, welcome, welcome_v3, presence_joined, presence_left, chat_up, chat_down, command_express,
       command_look_at, command_snub, command_facs, command_override, command_check, hello_preview, command_accepted, command_refused, package_chunk, package_chunk_large,
-      set_rate, ping, pong, link_stats, closing, timed_room_frame, seats, attention, speaking, unit_morphs, unit_morphs_restored, stream_header,
+      set_rate, ping, pong, link_stats, closing, timed_room_frame, seats, attention, speaking, unit_morphs, unit_morphs_restored, preview_surface, stream_header,
       stream_header_loss_tolerant, resync_request, room_frame;
 };
 
@@ -135,6 +135,7 @@ Messages make_messages() {
   m.speaking = bytes_of(fw::test::sample_speaking());
   m.unit_morphs = bytes_of(fw::test::sample_unit_morphs());
   m.unit_morphs_restored = bytes_of(UnitMorphs{.avatar = 2097151, .version = 4294967295u, .units = {}});
+  m.preview_surface = bytes_of(fw::test::sample_preview_surface());
   m.stream_header = write_stream_header(StreamOptions{});
   m.stream_header_loss_tolerant = write_stream_header(StreamOptions{true, 20, 0});
   const std::uint32_t ids[] = {1, 2, 300};
@@ -174,6 +175,7 @@ void session_messages(const fs::path& corpus, const Messages& m) {
   f.write("speaking", m.speaking);
   f.write("unit_morphs", m.unit_morphs);
   f.write("unit_morphs_restored", m.unit_morphs_restored);
+  f.write("preview_surface", m.preview_surface);
   f.write("stream_header", m.stream_header);
   f.write("stream_header_loss_tolerant", m.stream_header_loss_tolerant);
   f.write("resync_request", m.resync_request);
@@ -195,7 +197,7 @@ void tcp_framing(const fs::path& corpus, const Messages& m) {
   f.write("client_to_server", TcpFramingInput::make(false, {all, all, all, all}, up));
   f.write("client_to_server_in_pieces", TcpFramingInput::make(false, {0, 2, 6, 30}, up));
   const Bytes down = framed({&m.welcome, &m.stream_header, &m.attention, &m.timed_room_frame, &m.presence_joined,
-                             &m.seats, &m.speaking, &m.unit_morphs, &m.chat_down, &m.package_chunk_large, &m.room_frame, &m.link_stats, &m.pong,
+                             &m.seats, &m.speaking, &m.unit_morphs, &m.preview_surface, &m.chat_down, &m.package_chunk_large, &m.room_frame, &m.link_stats, &m.pong,
                              &m.closing});
   f.write("server_to_client", TcpFramingInput::make(true, {all, all, all, all}, down));
   f.write("server_to_client_in_pieces", TcpFramingInput::make(true, {254, 0, 127, 9}, down));

@@ -66,7 +66,7 @@ void read_as(Bytes bytes, bool mine) {
 }
 
 void read_session_message(Bytes bytes) {
-  static_assert(kLastMessageType == MessageType::unit_morphs, "a new message type: read it here and seed it");
+  static_assert(kLastMessageType == MessageType::preview_surface, "a new message type: read it here and seed it");
   const MessageType t = session_type(bytes);
   read_as<Hello>(bytes, t == MessageType::hello);
   read_as<Welcome>(bytes, t == MessageType::welcome);
@@ -85,6 +85,7 @@ void read_session_message(Bytes bytes) {
   read_as<Attention>(bytes, t == MessageType::attention);
   read_as<Speaking>(bytes, t == MessageType::speaking);
   read_as<UnitMorphs>(bytes, t == MessageType::unit_morphs);
+  read_as<PreviewSurface>(bytes, t == MessageType::preview_surface);
 }
 
 /// A reader of something else must refuse the message before its fields.

@@ -57,4 +57,10 @@ inline codec::UnitMorphs sample_unit_morphs() {
                     {.channel = 20, .moves = {}}}};
 }
 
+/// A preview surface: moves of both signs and the extremes, the last vertex
+/// the highest a message may name.
+inline codec::PreviewSurface sample_preview_surface() {
+  return {.avatar = 1, .moves = {{0, {3, -2, 0}}, {54, {-32768, 32767, 120}}, {1023, {0, 0, 1}}}};
+}
+
 }  // namespace fw::test

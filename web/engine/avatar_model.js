@@ -69,6 +69,17 @@ function readFace(module, handle) {
   };
 }
 
+/** Calls `use(pointer)` with `ints` copied into the module's memory as int32s, freed after. */
+function withInts(module, ints, use) {
+  const pointer = module._malloc(ints.length * 4);
+  try {
+    module.HEAP32.set(Int32Array.from(ints), pointer >>> 2);
+    use(pointer);
+  } finally {
+    module._free(pointer);
+  }
+}
+
 export class AvatarModel {
   /** @internal use Engine.avatarFromPackage or Engine.genericAvatar */
   constructor(module, handle) {
@@ -109,15 +120,28 @@ export class AvatarModel {
       ints.push(unit.channel, unit.moves.length);
       for (const move of unit.moves) ints.push(move.vertex, move.delta[0], move.delta[1], move.delta[2]);
     }
-    const m = this.module;
-    const pointer = m._malloc(ints.length * 4);
-    try {
-      m.HEAP32.set(Int32Array.from(ints), pointer >>> 2);
-      if (!m._fw_avatar_set_unit_morphs(this.handle, pointer, ints.length))
-        throw new Error(`the redefined units could not be set: ${lastError(m)}`);
-    } finally {
-      m._free(pointer);
-    }
+    withInts(this.module, ints, (pointer) => {
+      if (!this.module._fw_avatar_set_unit_morphs(this.handle, pointer, ints.length))
+        throw new Error(`the redefined units could not be set: ${lastError(this.module)}`);
+    });
+  }
+
+  /**
+   * A face-lab preview's simulated skin beyond its action units
+   * (server/PROTOCOL.md 5.18): `moves` as a preview surface message carries
+   * them ([{ vertex, delta: [dx, dy, dz] }], generic vertices in the wire's
+   * steps), carried onto this face as the units are
+   * (fw::model::carried_surface) and added to every frame after it; []
+   * clears it.
+   */
+  setSurface(moves) {
+    this.ensureAlive();
+    const ints = [moves.length];
+    for (const move of moves) ints.push(move.vertex, move.delta[0], move.delta[1], move.delta[2]);
+    withInts(this.module, ints, (pointer) => {
+      if (!this.module._fw_avatar_set_surface(this.handle, pointer, ints.length))
+        throw new Error(`the preview surface could not be set: ${lastError(this.module)}`);
+    });
   }
 
   /**

@@ -6,7 +6,7 @@
 // error for the same bytes.
 import {
   FIRST_SPEAKING_VERSION, Limits, MessageError as E, MessageType, OLDEST_PROTOCOL_VERSION, PROTOCOL_VERSION, SESSION_BIT,
-  LAST_MESSAGE_TYPE, CommandKind, OverridePart, isLanguageCode,
+  LAST_MESSAGE_TYPE, CommandKind, LAST_OVERRIDE_PART, isLanguageCode,
 } from './session_types.js';
 import { ByteReader } from '../shared/byte_reader.js';
 import { decodeUtf8, isCleanText } from './wire.js';
@@ -179,7 +179,7 @@ const readers = {
       const index = f.r.u8();
       const side = f.r.u8();
       const value = f.r.i16();
-      if (!f.r.failed && (part > OverridePart.reset || side > 2)) f.fail(E.valueOutOfRange);
+      if (!f.r.failed && (part > LAST_OVERRIDE_PART || side > 2)) f.fail(E.valueOutOfRange);
       m.override = { part, index, side, value };
     } else {
       m.sentence = f.string(Limits.sentenceBytes, true);
@@ -270,19 +270,29 @@ const readers = {
       const channel = f.r.u8();
       if (!f.r.failed && (channel >= Limits.auChannels || (i > 0 && channel <= units[i - 1].channel)))
         f.fail(E.valueOutOfRange);
-      const moveCount = f.r.varint(2);
-      if (!f.r.failed && moveCount > Limits.unitMorphMoves) f.fail(E.tooManyEntries);
-      const moves = [];
-      for (let k = 0; k < moveCount && f.going; ++k) {
-        const vertex = f.bounded(2, Limits.unitMorphMoves - 1);
-        if (!f.r.failed && k > 0 && vertex <= moves[k - 1].vertex) f.fail(E.valueOutOfRange);
-        moves.push({ vertex, delta: [f.r.i16(), f.r.i16(), f.r.i16()] });
-      }
-      units.push({ channel, moves });
+      units.push({ channel, moves: readMoves(f) });
     }
     return f.finish({ avatar, version, units });
   }],
+  // Face-lab previews only (5.18): the skin beyond the frames' action units.
+  [MessageType.previewSurface]: [Limits.downstreamMessageBytes, (f) => {
+    const avatar = f.bounded(3, Limits.avatarId);
+    return f.finish({ avatar, moves: readMoves(f) });
+  }],
 };
+
+/** A count, then moves of skin vertices strictly increasing (a unit morph's, a preview surface's). */
+function readMoves(f) {
+  const moveCount = f.r.varint(2);
+  if (!f.r.failed && moveCount > Limits.unitMorphMoves) f.fail(E.tooManyEntries);
+  const moves = [];
+  for (let k = 0; k < moveCount && f.going; ++k) {
+    const vertex = f.bounded(2, Limits.unitMorphMoves - 1);
+    if (!f.r.failed && k > 0 && vertex <= moves[k - 1].vertex) f.fail(E.valueOutOfRange);
+    moves.push({ vertex, delta: [f.r.i16(), f.r.i16(), f.r.i16()] });
+  }
+  return moves;
+}
 
 /**
  * Reads one whole session message of type `type` (a MessageType).

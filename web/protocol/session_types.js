@@ -14,9 +14,9 @@ export const SESSION_BIT = 0x80;
 export const MessageType = Object.freeze({
   hello: 1, welcome: 2, presence: 3, chat: 4, command: 5, commandResult: 6, packageChunk: 7, setRate: 8,
   ping: 9, pong: 10, linkStats: 11, closing: 12, timedRoomFrame: 13, seats: 14, attention: 15, speaking: 16,
-  unitMorphs: 17,
+  unitMorphs: 17, previewSurface: 18,
 });
-export const LAST_MESSAGE_TYPE = MessageType.unitMorphs;
+export const LAST_MESSAGE_TYPE = MessageType.previewSurface;
 
 export const MessageError = Object.freeze({
   ok: 0, empty: 1, notSessionMessage: 2, unknownType: 3, wrongType: 4, truncated: 5, tooLarge: 6,
@@ -36,8 +36,10 @@ export const CommandKind = Object.freeze({ express: 0, lookAt: 1, snub: 2, facs:
 /** What a face-lab override sets (PROTOCOL.md 5.16): its `part`. */
 export const OverridePart = Object.freeze({
   emotion: 0, actionUnit: 1, headYaw: 2, headPitch: 3, headRoll: 4, eyeYaw: 5, eyePitch: 6, lids: 7, blush: 8,
-  pallor: 9, behaviour: 10, reset: 11,
+  pallor: 9, behaviour: 10, reset: 11, muscle: 12, skinAge: 13, skinLooseness: 14,
 });
+/** The last part a reader takes (messages.hpp kLastOverridePart). */
+export const LAST_OVERRIDE_PART = OverridePart.skinLooseness;
 export const PackageQuality = Object.freeze({ preview: 0, full: 1 });
 export const AttentionTarget = Object.freeze({ nobody: 0, room: 1, avatar: 2 });
 

@@ -154,14 +154,22 @@ const writers = {
     w.u8(m.units.length);
     for (const unit of m.units) {
       w.u8(unit.channel);
-      w.varint(unit.moves.length);
-      for (const move of unit.moves) {
-        w.varint(move.vertex);
-        for (const d of move.delta) w.i16(d);
-      }
+      writeMoves(w, unit.moves);
     }
   },
+  [MessageType.previewSurface]: (w, m) => {
+    w.varint(m.avatar);
+    writeMoves(w, m.moves);
+  },
 };
+
+function writeMoves(w, moves) {
+  w.varint(moves.length);
+  for (const move of moves) {
+    w.varint(move.vertex);
+    for (const d of move.delta) w.i16(d);
+  }
+}
 
 /** One whole session message of type `type` (a MessageType) as bytes. */
 export function writeMessage(type, message) {

@@ -49,6 +49,7 @@ export class RoomClient {
     this.avatars = new Map();    // id -> { info, package: {quality, bytes} | null, lastFrameMs }
     this.attention = new Map();  // id -> { target, targetAvatar }
     this.chatLines = [];         // { from, name, text }
+    this.previewSurface = null;  // a face-lab preview's skin beyond its action units (PROTOCOL.md 5.18), newest
     this.unitMorphs = new Map();  // avatar id -> its redefined units (PROTOCOL.md 5.17), newest version; the view draws the face with them
     this.speakingLines = [];     // the speaking messages (avatar, tick, durationMs, language, text), newest last
     this.results = new Map();    // request id -> error ('' accepted)
@@ -257,6 +258,11 @@ export class RoomClient {
         this.unitMorphs.set(m.avatar, m);
         return this.notify('unitMorphs', m.avatar);
       }
+      case MessageType.previewSurface:
+        // A face-lab preview's own face only (PROTOCOL.md 5.18): the whole
+        // residual each time; the lab view adds it to the face it draws.
+        this.previewSurface = m;
+        return this.notify('previewSurface', m.avatar);
       case MessageType.pong: return undefined;
       default: return this.protocolProblem(`a message of type ${type} a client never receives`);
     }

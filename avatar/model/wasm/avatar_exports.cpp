@@ -51,6 +51,9 @@ struct Avatar {
   std::array<float, 6> centres{}, shapes{};
   std::vector<std::uint32_t> regions;
   std::vector<float> frame;  // the last frame: positions 3V, uvs 2V, normals 3V
+  // A face-lab preview's simulated skin beyond its action units, carried
+  // onto the fit (fw_avatar_set_surface); empty: none.
+  std::vector<glm::vec3> surface;
 };
 
 fw::wasm::Handles<Avatar> avatars;
@@ -195,7 +198,9 @@ EMSCRIPTEN_KEEPALIVE const float* fw_avatar_morph(int handle, int channel, int f
 EMSCRIPTEN_KEEPALIVE const float* fw_avatar_frame(int handle, const float* params) {
   Avatar* a = avatars.find(handle);
   if (!a) return nullptr;
-  const fw::model::FaceShape shape = fw::model::reconstruct_face(a->model, fw::wasm::face_params_from_floats(params));
+  fw::model::FaceShape shape = fw::model::reconstruct_face(a->model, fw::wasm::face_params_from_floats(params));
+  if (a->surface.size() == shape.positions.size())
+    for (std::size_t v = 0; v < a->surface.size(); ++v) shape.positions[v] += a->surface[v];
   Mesh mesh;
   mesh.positions = shape.positions;
   mesh.triangles = a->model.face.skin.triangles;
@@ -229,6 +234,31 @@ EMSCRIPTEN_KEEPALIVE int fw_avatar_set_unit_morphs(int handle, const std::int32_
     return 0;
   }
   fw::model::set_unit_morphs(a->model, generic, *set);
+  return 1;
+}
+
+/// A face-lab preview's skin beyond its frames' action units (server/PROTOCOL.md
+/// 5.18), from a preview surface message's moves as `count` int32s: the
+/// number of moves, then per move the generic vertex and dx, dy, dz in the
+/// wire's steps; carried onto the fit and added to the frames that follow.
+/// No moves (`count` 1, a 0) clears it.
+/// @return 1, or 0 and fw_last_error() (a malformed list, a vertex past the face, an unknown handle)
+EMSCRIPTEN_KEEPALIVE int fw_avatar_set_surface(int handle, const std::int32_t* data, int count) {
+  Avatar* a = avatars.find(handle);
+  if (!a) return 0;
+  std::vector<fw::codec::UnitMorphs::Move> moves;
+  std::string error;
+  if (!fw::wasm::surface_moves_from_ints({data, static_cast<std::size_t>(std::max(count, 0))}, moves, error)) {
+    fw::wasm::set_error(error);
+    return 0;
+  }
+  auto surface =
+      fw::model::carried_surface(a->model, moves, fw::model::generic_face().skin.positions.size(), error);
+  if (!surface) {
+    fw::wasm::set_error(error);
+    return 0;
+  }
+  a->surface = moves.empty() ? std::vector<glm::vec3>{} : std::move(*surface);
   return 1;
 }
 

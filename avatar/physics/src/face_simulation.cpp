@@ -61,7 +61,9 @@ FaceSimulation::FaceSimulation(std::shared_ptr<const TissueModel> model, const S
 
 void FaceSimulation::set_action_units(const std::array<float, codec::kAuChannelCount>& targets) {
   au_targets_ = targets;
-  set_muscle_activations(physics::muscle_activations(targets));
+  std::array<float, kMuscleCount> activations = physics::muscle_activations(targets);
+  for (std::size_t i = 0; i < kMuscleCount; ++i) activations[i] = std::max(activations[i], floor_[i]);
+  set_muscle_activations(activations);
 }
 
 void FaceSimulation::set_muscle_activations(const std::array<float, kMuscleCount>& targets) {

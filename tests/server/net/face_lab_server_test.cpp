@@ -2,7 +2,8 @@
 // 5.16): one address gets its share of previews and no more, with a reason
 // that says when to try again; the server's own limit holds for everyone
 // else; a preview's room is not listed and nobody else can join it; its
-// overrides are answered, a room's refused.
+// overrides are answered, a room's refused; a muscle set on it sends the
+// preview's page its simulated surface (5.18), and nobody else.
 #include <thread>
 
 #include <gtest/gtest.h>
@@ -121,6 +122,45 @@ TEST(FaceLabServer, OverridesAreAnsweredInAPreviewAndRefusedInARoom) {
   const auto refused = answer(*room, override_command(4, {codec::OverridePart::emotion, 0, 0, 10000}));
   ASSERT_TRUE(refused);
   EXPECT_NE(refused->find("face-lab preview"), std::string::npos) << *refused;
+}
+
+TEST(FaceLabServer, AMuscleSetOnAPreviewSendsItsSurfaceToItsPageAloneAtMostTenTimesASecond) {
+  RunningServer server(test::kManyClientsFromOneAddress);
+  auto lab = preview_from(server, "127.0.0.1", "Ada");
+  ASSERT_TRUE(lab->welcome);
+  auto room = test::join(server, Transport::tcp, "plain", "Bo");
+  ASSERT_TRUE(room->welcome);
+  lab->pump_for(500ms);
+  EXPECT_TRUE(lab->preview_surfaces.empty()) << "a neutral face has no residual to send";
+
+  // The left zygomatic minor: half of AU 10's upper-lip raise, no unit's
+  // shape alone, so much of its pull is beyond the action units.
+  EXPECT_EQ(answer(*lab, override_command(1, {codec::OverridePart::muscle, 20, 0, 10000})), "");
+  EXPECT_EQ(answer(*lab, override_command(2, {codec::OverridePart::skin_age, 0, 0, 6000})), "");
+  const auto muscle_42 = answer(*lab, override_command(3, {codec::OverridePart::muscle, 42, 0, 10000}));
+  ASSERT_TRUE(muscle_42);
+  EXPECT_NE(muscle_42->find("muscle 42 does not exist"), std::string::npos) << *muscle_42;
+  const auto start = std::chrono::steady_clock::now();
+  lab->pump_for(2s);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ASSERT_FALSE(lab->preview_surfaces.empty()) << "the preview's page was sent no surface";
+  EXPECT_LE(static_cast<double>(lab->preview_surfaces.size()), 10.0 * seconds + 3) << "more than ten a second";
+  const codec::PreviewSurface& last = lab->preview_surfaces.back();
+  EXPECT_EQ(last.avatar, lab->welcome->you);
+  EXPECT_FALSE(last.moves.empty());
+  EXPECT_TRUE(lab->errors.empty()) << lab->errors.front();
+
+  room->pump_for(200ms);
+  EXPECT_TRUE(room->preview_surfaces.empty()) << "a room's client was sent a preview surface";
+  const auto refused = answer(*room, override_command(4, {codec::OverridePart::muscle, 20, 0, 10000}));
+  ASSERT_TRUE(refused);
+  EXPECT_NE(refused->find("face-lab preview"), std::string::npos) << *refused;
+
+  // Reset: the face goes back to neutral and the residual with it.
+  EXPECT_EQ(answer(*lab, override_command(5, {codec::OverridePart::reset, 0, 0, 0})), "");
+  ASSERT_TRUE(lab->pump_until(
+      [&] { return !lab->preview_surfaces.empty() && lab->preview_surfaces.back().moves.empty(); }, 5s))
+      << "the residual did not go after a reset";
 }
 
 }  // namespace

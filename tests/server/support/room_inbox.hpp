@@ -1,6 +1,6 @@
 #pragma once
 // What a room-protocol client received, filed by kind: welcome, presence,
-// chat, command results, closing, link statistics, seats, attention, speaking, unit morphs, room frames decoded by a
+// chat, command results, closing, link statistics, seats, attention, speaking, unit morphs, preview surfaces, room frames decoded by a
 // codec::RoomDecoder, package chunks reassembled, and anything a correct
 // server never sends. Shared by the socket client (room_test_client.hpp)
 // and the in-memory peer (in_memory_server.hpp).
@@ -30,6 +30,7 @@ struct RoomInbox {
   std::vector<codec::Attention> attention;
   std::vector<codec::Speaking> speaking;
   std::vector<codec::UnitMorphs> unit_morphs;
+  std::vector<codec::PreviewSurface> preview_surfaces;
   /// For each speaking message: the tick of the last timed room frame
   /// filed before it (0: none), to check it came before its line's frame.
   std::vector<std::uint32_t> last_tick_before_speaking;
@@ -84,6 +85,7 @@ struct RoomInbox {
         last_tick_before_speaking.push_back(ticks.empty() ? 0 : ticks.back().second);
         return file_into(m, speaking, "speaking");
       case codec::MessageType::unit_morphs: return file_into(m, unit_morphs, "unit morphs");
+      case codec::MessageType::preview_surface: return file_into(m, preview_surfaces, "preview surface");
       default: errors.push_back("a message the server never sends"); return;
     }
   }

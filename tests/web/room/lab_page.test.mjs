@@ -1,5 +1,6 @@
 // The face lab (lab.html) on a real server in Chromium: its preview is drawn
-// by the room's renderer, the joy slider moves the mouth, the cheeks' blush
+// by the room's renderer, the joy slider moves the mouth, a muscle's slider
+// the region the muscle pulls (the skin age and looseness are taken), the cheeks' blush
 // sliders redden the cheeks, and so does the blushing example loaded and
 // played from the editor, a script with a syntax error is shown at its
 // line and column, and the lobby links the lab. Pixels are read from the
@@ -103,6 +104,65 @@ test('a vascular script loaded from a file and played reddens the cheeks', async
     most = Math.max(most, await cheekRedness(page));
   }
   assert.ok(most > before * 1.04, `R/G in the cheeks: ${before.toFixed(3)} before, at most ${most.toFixed(3)} with the script`);
+  await page.close();
+});
+
+/** The canvas pixels of a square of `side` CSS pixels around `centre`. */
+async function squareAround(page, centre, side) {
+  const { data } = await canvasPixels(page, { x: centre[0] - side / 2, y: centre[1] - side / 2, w: side, h: side });
+  return Array.from(data);
+}
+
+test('a muscle slider moves the region that muscle pulls, and the skin sliders are taken', async (t) => {
+  const page = await openLab();
+  // The left zygomatic major (muscle 22, PROTOCOL.md 5.16) pulls the left
+  // mouth corner (landmark 54) up and out; the right brow (19) is far from it.
+  const [corner, brow, l36, l45] = await landmarks(page, [54, 19, 36, 45]);
+  const side = 0.35 * Math.hypot(l45[0] - l36[0], l45[1] - l36[1]);
+  const before = { corner: await squareAround(page, corner, side), brow: await squareAround(page, brow, side) };
+  const slider = page.locator('input[data-key="muscle-22"]');
+  assert.equal(await slider.getAttribute('aria-label'), 'Muscles: zygomatic major (left)');
+  await slide(page, 'muscle-22', 100);
+  await page.waitForTimeout(SETTLE_MS);
+  const after = { corner: await squareAround(page, corner, side), brow: await squareAround(page, brow, side) };
+  const near = meanAbsDifference(before.corner, after.corner);
+  const far = meanAbsDifference(before.brow, after.brow);
+  t.diagnostic(`mouth corner changed by ${near.toFixed(2)}, far brow by ${far.toFixed(2)}`);
+  assert.ok(near > 3 && near > 4 * far, `the mouth corner changed by ${near.toFixed(2)}, the far brow by ${far.toFixed(2)}`);
+  const surface = await page.evaluate(() => window.facewireLab.client.previewSurface);
+  assert.ok(surface && surface.moves.length > 0, 'the page was sent the simulated surface (5.18)');
+  t.diagnostic(`preview surface: ${surface.moves.length} vertices`);
+
+  // The page draws the simulated skin, not only its action units: the left
+  // zygomatic minor (20) is no unit's muscle alone, and the face drawn
+  // without the surface it was sent differs where that muscle pulls.
+  await slide(page, 'muscle-22', 0);
+  await slide(page, 'muscle-20', 100);
+  await page.waitForTimeout(SETTLE_MS);
+  const [lip, l36b, l45b] = await landmarks(page, [52, 36, 45]);
+  const lipSide = 0.35 * Math.hypot(l45b[0] - l36b[0], l45b[1] - l36b[1]);
+  const drawn = await squareAround(page, lip, lipSide);
+  await page.waitForTimeout(200);
+  const still = meanAbsDifference(drawn, await squareAround(page, lip, lipSide));
+  const stripped = await page.evaluate(() => {
+    const { view, client } = window.facewireLab;
+    const face = view.room.ownFace ?? view.room.faces.get(client.you);
+    face.model.setSurface([]);  // until the next message or the next showSurface: held while the face rests
+    return client.previewSurface.moves.length;
+  });
+  await page.waitForTimeout(200);
+  const without = await squareAround(page, lip, lipSide);
+  const residual = meanAbsDifference(drawn, without);
+  t.diagnostic(`zygomatic minor: surface of ${stripped} vertices; the upper lip drawn without it differs by ${residual.toFixed(2)} (held: ${still.toFixed(2)})`);
+  assert.ok(residual > 0.5 && residual > 3 * still, `the surface changed the drawn lip by ${residual.toFixed(2)} only (held: ${still.toFixed(2)})`);
+
+  await slide(page, 'skin-age', 100);
+  await slide(page, 'skin-looseness', 50);
+  await page.waitForTimeout(SETTLE_MS);
+  const results = await page.evaluate(() => [...window.facewireLab.client.results.values()]);
+  assert.ok(results.length >= 3, `${results.length} overrides answered`);
+  assert.deepEqual(results.filter((error) => error !== ''), [], 'the server refused an override');
+  assert.equal(await page.textContent('#control-result'), '');
   await page.close();
 });
 

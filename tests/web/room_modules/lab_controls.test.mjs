@@ -24,6 +24,18 @@ test('a slider sends ten-thousandths, clamped to its range, on the side chosen',
   assert.deepEqual(overrideOf(slider('blush-2'), 50), { part: OverridePart.blush, index: 2, side: 0, value: 5000 });
 });
 
+test('the physics level: one slider per muscle in the server\'s order, and the skin\'s age and looseness', () => {
+  const muscles = SLIDERS.filter((s) => s.group === 'muscles');
+  assert.equal(muscles.length, 42, 'avatar/physics kMuscleCount');
+  assert.deepEqual(muscles.map((s) => s.index), [...Array(42).keys()]);
+  assert.equal(slider('muscle-22').label, 'zygomatic major (left)', 'left 2i, right 2i + 1 (facial_muscles.hpp)');
+  assert.equal(slider('muscle-23').label, 'zygomatic major (right)');
+  assert.deepEqual(overrideOf(slider('muscle-22'), 80, Side.right), { part: OverridePart.muscle, index: 22, side: 0, value: 8000 },
+    'a muscle names its side itself');
+  assert.deepEqual(overrideOf(slider('skin-age'), 100), { part: OverridePart.skinAge, index: 0, side: 0, value: 10000 });
+  assert.deepEqual(overrideOf(slider('skin-looseness'), 30), { part: OverridePart.skinLooseness, index: 0, side: 0, value: 3000 });
+});
+
 test('the sender sends the newest value of each control, at most every interval', () => {
   let now = 0;
   let pending = null;

@@ -12,6 +12,18 @@ export const ACTION_UNITS = [
   [26, 'jaw drop', true], [27, 'mouth stretch', true],
 ].map(([au, name, middle = false]) => ({ au, name, middle }));
 
+/**
+ * The physics face's muscles, one side's, in the server's order
+ * (avatar/physics facial_muscles.hpp, PROTOCOL.md 5.16): muscle i of the
+ * person's left side has index 2i, its right twin 2i + 1.
+ */
+export const MUSCLES = [
+  'frontalis, inner', 'frontalis, outer', 'corrugator', 'procerus', 'levator palpebrae',
+  'orbicularis oculi, orbital', 'orbicularis oculi, palpebral', 'levator labii sup. alaeque nasi', 'nasalis',
+  'levator labii superioris', 'zygomatic minor', 'zygomatic major', 'buccinator', 'risorius',
+  'depressor anguli oris', 'depressor labii inferioris', 'mentalis', 'orbicularis oris, peripheral',
+  'orbicularis oris, marginal', 'masseter', 'digastric',
+];
 const EMOTIONS = ['joy', 'sadness', 'anger', 'fear', 'surprise', 'disgust'];
 const REGIONS = ['forehead', 'left cheek', 'right cheek', 'nose', 'sides'];
 const DEGREE = Math.PI / 180;
@@ -44,11 +56,15 @@ export const SLIDERS = [
   percent('lid-right', 'lids', 'right lid closed', OverridePart.lids, 0, Side.right),
   ...REGIONS.map((name, i) => percent(`blush-${i}`, 'colour', `blush: ${name}`, OverridePart.blush, i)),
   percent('pallor', 'colour', 'pallor', OverridePart.pallor),
+  ...MUSCLES.flatMap((name, i) => ['left', 'right'].map((side, k) =>
+    percent(`muscle-${2 * i + k}`, 'muscles', `${name} (${side})`, OverridePart.muscle, 2 * i + k))),
+  percent('skin-age', 'skin', 'age', OverridePart.skinAge),
+  percent('skin-looseness', 'skin', 'looseness', OverridePart.skinLooseness),
 ];
 
 export const GROUPS = [
   ['emotions', 'Emotions'], ['action-units', 'Action units'], ['head', 'Head and eyes'], ['lids', 'Lids'],
-  ['colour', 'Colour regions'],
+  ['colour', 'Colour regions'], ['muscles', 'Muscles'], ['skin', 'Skin'],
 ];
 
 /**

@@ -37,6 +37,7 @@ export class LabView {
     gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
     const params = you ? this.client.face(you, nowMs) : null;
     if (!face || !params) return;
+    this.showSurface(face);
     const rect = { x: 0, y: 0, w: width, h: height };
     room.drawTile('lab', rect, 0, height, pixelRatio, face, params, mat4.identity(), this.camera(this.cameraYawRad, 0, width / Math.max(1, height)));
     this.drawnParams = params;
@@ -67,6 +68,23 @@ export class LabView {
     if (!this.drawnFace) return false;
     this.room.drawTile(key, { x: 0, y: 0, w: size, h: size }, 0, size, 1, this.drawnFace, params, mat4.identity(), camera);
     return true;
+  }
+
+  /**
+   * The simulated skin itself, not only its projection on the action units:
+   * the server's residual (PROTOCOL.md 5.18) added to the face the frames
+   * rebuild, whenever a newer one came or the face's model was built again.
+   */
+  showSurface(face) {
+    const wanted = this.client.previewSurface;
+    if (face.surface === wanted) return;
+    face.surface = wanted;
+    try {
+      face.model.setSurface(wanted ? wanted.moves : []);
+    } catch (error) {
+      console.warn(`preview surface: ${error.message}; drawing the action units alone`);
+      face.model.setSurface([]);
+    }
   }
 
   /** Landmarks (68-point scheme) of the face as last drawn (or of a still's `key`), CSS pixels on its picture. */

@@ -57,8 +57,9 @@ enum class MessageType : std::uint8_t {
   attention = 15,        ///< down: whom faces attend, for those whose target changed
   speaking = 16,         ///< down (version 4): a face begins to say a chat line
   unit_morphs = 17,      ///< down (version 5): an avatar's action units as its person redefined them
+  preview_surface = 18,  ///< down, face-lab previews only: what of the simulated skin the action units do not show
 };
-inline constexpr MessageType kLastMessageType = MessageType::unit_morphs;
+inline constexpr MessageType kLastMessageType = MessageType::preview_surface;
 inline constexpr std::uint8_t kSessionMessageBit = 0x80;
 
 /// What a message on the connection is, from its first byte.
@@ -228,13 +229,14 @@ struct Chat {
 enum class OverridePart : std::uint8_t {
   emotion = 0, action_unit = 1, head_yaw = 2, head_pitch = 3, head_roll = 4, eye_yaw = 5, eye_pitch = 6,
   lids = 7, blush = 8, pallor = 9, behaviour = 10, reset = 11,
+  muscle = 12, skin_age = 13, skin_looseness = 14,  ///< the physics face's own level
 };
-inline constexpr std::uint8_t kLastOverridePart = static_cast<std::uint8_t>(OverridePart::reset);
+inline constexpr std::uint8_t kLastOverridePart = static_cast<std::uint8_t>(OverridePart::skin_looseness);
 
 /// One override of a face-lab preview: held until set again or reset.
 struct FaceOverride {
   OverridePart part = OverridePart::emotion;
-  std::uint8_t index = 0;  ///< emotion 0 .. 5 (joy .. disgust), a FACS AU number, a colour region 0 .. 4
+  std::uint8_t index = 0;  ///< emotion 0 .. 5 (joy .. disgust), a FACS AU number, a colour region 0 .. 4, a muscle 0 .. 41
   std::uint8_t side = 0;   ///< action unit and lids: 0 both, 1 left, 2 right
   std::int16_t value = 0;  ///< ten-thousandths: of an intensity (0 .. 10000) or of a radian; behaviour 0 off, 1 on
   bool operator==(const FaceOverride&) const = default;
@@ -372,6 +374,18 @@ struct UnitMorphs {
   std::vector<Unit> units;                     ///< at most kMaxRedefinedChannels
 };
 
+/// Down, to the connection that owns a face-lab preview only (PROTOCOL.md
+/// 5.18): the part of its avatar's simulated skin displacement that the
+/// action units of its frames do not explain (the residual), per skin
+/// vertex of the generic face. A client adds it to the face it rebuilds
+/// from the frames, so it draws the simulated surface itself. Each message
+/// holds the whole residual: a vertex not listed has none.
+struct PreviewSurface {
+  std::uint32_t avatar = 0;
+  std::vector<UnitMorphs::Move> moves;  ///< vertices strictly increasing, at most kMaxUnitMorphMoves; deltas in 1/kUnitMorphStepsPerUnit model units
+  bool operator==(const PreviewSurface&) const = default;
+};
+
 /// Down, instead of a bare room frame when the hello asked for timestamps.
 struct TimedRoomFrame {
   std::uint32_t tick = 0;            ///< the room's tick index
@@ -398,6 +412,7 @@ void write_message(const Seats& message, std::vector<std::uint8_t>& out);
 void write_message(const Attention& message, std::vector<std::uint8_t>& out);
 void write_message(const Speaking& message, std::vector<std::uint8_t>& out);
 void write_message(const UnitMorphs& message, std::vector<std::uint8_t>& out);
+void write_message(const PreviewSurface& message, std::vector<std::uint8_t>& out);
 
 // Readers parse one whole message; on error the output holds no meaning.
 // A hello or welcome of version 3 or 4 reads (with the layout of its version);
@@ -421,6 +436,7 @@ MessageError read_message(std::span<const std::uint8_t> bytes, Seats& message);
 MessageError read_message(std::span<const std::uint8_t> bytes, Attention& message);
 MessageError read_message(std::span<const std::uint8_t> bytes, Speaking& message);
 MessageError read_message(std::span<const std::uint8_t> bytes, UnitMorphs& message);
+MessageError read_message(std::span<const std::uint8_t> bytes, PreviewSurface& message);
 
 // ---------------------------------------------------------------------------
 // TCP framing: every message is preceded by its length as an unsigned LEB128

@@ -8,6 +8,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "fw/codec/messages.hpp"
 #include "fw/model/avatar_model.hpp"
@@ -17,6 +18,10 @@ namespace fw::model {
 
 /// Redefined units by FaceParams channel, as morphs of the generic face.
 using UnitMorphSet = std::map<std::size_t, Morph>;
+
+/// A displacement (model units) in the wire's steps (1/kUnitMorphStepsPerUnit),
+/// rounded and held to 16 bits: a unit morph's, a preview surface's.
+std::int16_t unit_morph_steps(float units);
 
 /// A generic morph as the wire carries it: the vertices it moves, their
 /// displacements rounded to the wire's step (texture slides are not carried:
@@ -35,5 +40,14 @@ Morph as_carried(std::size_t channel, const Morph& generic);
 /// onto the fit, every other the shipped unit (generic.action_units) carried
 /// onto it again, so an empty set restores the shipped face.
 void set_unit_morphs(AvatarModel& avatar, const GenericFace& generic, const UnitMorphSet& units);
+
+/// A displacement of the generic face's skin as the wire carries it (a
+/// face-lab preview surface's moves, server/PROTOCOL.md 5.18), carried onto
+/// the avatar's fit as its units are: one offset per skin vertex of the
+/// fit, model units, added to the face its frames rebuild. nullopt and
+/// `error` when a vertex is past the generic face's `vertex_count`.
+std::optional<std::vector<glm::vec3>> carried_surface(const AvatarModel& avatar,
+                                                      const std::vector<codec::UnitMorphs::Move>& moves,
+                                                      std::size_t vertex_count, std::string& error);
 
 }  // namespace fw::model

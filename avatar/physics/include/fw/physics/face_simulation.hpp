@@ -72,6 +72,19 @@ class FaceSimulation {
   /// Drives the muscles directly (each clamped to [0,1]), bypassing the AU table.
   void set_muscle_activations(const std::array<float, kMuscleCount>& targets);
 
+  // The face lab's physics level (face_simulation_lab.cpp).
+  /// The least activation of each muscle (each clamped to [0,1], NaN = 0):
+  /// a muscle is driven by the larger of this and what the AU targets give
+  /// it, from now on and by every later set_action_units. All 0: the AU
+  /// table alone again. Wakes a resting face if its targets change.
+  void set_muscle_floor(const std::array<float, kMuscleCount>& floor);
+  const std::array<float, kMuscleCount>& muscle_floor() const { return floor_; }
+  /// The same face with another tissue model (another material: the
+  /// skin's age and looseness, TissueMaterial::aged). `model` must be built
+  /// from the same face (the same node count): the nodes keep their places
+  /// and speeds, so the face goes on from where it is, and it wakes.
+  void replace_model(std::shared_ptr<const TissueModel> model);
+
   /// Advances by `dt_seconds` (one rendered frame; internally several
   /// sub-steps). dt is clamped to [0, 1] s; a non-finite dt is ignored. A face
   /// at rest only advances its clock.
@@ -121,6 +134,7 @@ class FaceSimulation {
   std::array<float, kMuscleCount> strength_{};
   std::array<float, kMuscleCount> target_{}, activation_{};
   std::array<float, codec::kAuChannelCount> au_targets_{};
+  std::array<float, kMuscleCount> floor_{};  ///< set_muscle_floor
   float jaw_angle_ = 0, jaw_speed_ = 0, jaw_target_ = 0;
   float jaw_cos_ = 1, jaw_sin_ = 0;
   double time_s_ = 0;
