@@ -19,11 +19,16 @@ constexpr double kFrame = 1.0 / 30.0;
 using test::generic_tissue;
 
 std::string solver_name(const ::testing::TestParamInfo<Solver>& info) {
-  return info.param == Solver::mass_spring ? "MassSpring" : "Pbd";
+  switch (info.param) {
+    case Solver::mass_spring: return "MassSpring";
+    case Solver::pbd: return "Pbd";
+    case Solver::projective: return "Projective";
+  }
+  return "Unknown";
 }
 
 class FaceSimulationLong : public ::testing::TestWithParam<Solver> {};
-INSTANTIATE_TEST_SUITE_P(Solvers, FaceSimulationLong, ::testing::Values(Solver::mass_spring, Solver::pbd),
+INSTANTIATE_TEST_SUITE_P(Solvers, FaceSimulationLong, ::testing::Values(Solver::mass_spring, Solver::pbd, Solver::projective),
                          solver_name);
 
 float max_displacement(const FaceSimulation& sim) {

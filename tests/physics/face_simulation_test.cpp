@@ -46,11 +46,16 @@ SimulationOptions with_solver(Solver solver) {
 }
 
 std::string solver_name(const ::testing::TestParamInfo<Solver>& info) {
-  return info.param == Solver::mass_spring ? "MassSpring" : "Pbd";
+  switch (info.param) {
+    case Solver::mass_spring: return "MassSpring";
+    case Solver::pbd: return "Pbd";
+    case Solver::projective: return "Projective";
+  }
+  return "Unknown";
 }
 
 class FaceSimulationBothSolvers : public ::testing::TestWithParam<Solver> {};
-INSTANTIATE_TEST_SUITE_P(Solvers, FaceSimulationBothSolvers, ::testing::Values(Solver::mass_spring, Solver::pbd),
+INSTANTIATE_TEST_SUITE_P(Solvers, FaceSimulationBothSolvers, ::testing::Values(Solver::mass_spring, Solver::pbd, Solver::projective),
                          solver_name);
 
 // A step of AU 12 (lip corner puller): the corner starts to move after the
