@@ -3,6 +3,7 @@
 // keeps, and one factorisation per tissue model.
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -70,12 +71,11 @@ TEST(ProjectiveDynamics, SettledActionUnitsHaveTheMassSpringShapes) {
 // ones by 0.8 mm RMS of 1.7 mm: another material; README "Accuracy".) The
 // test holds each solver to its measured level.
 class SettledVolumes : public ::testing::TestWithParam<Solver> {};
+std::string settled_solver_name(const ::testing::TestParamInfo<Solver>& info) {
+  return info.param == Solver::mass_spring ? "MassSpring" : info.param == Solver::pbd ? "Pbd" : "Projective";
+}
 INSTANTIATE_TEST_SUITE_P(Solvers, SettledVolumes, ::testing::Values(Solver::mass_spring, Solver::pbd, Solver::projective),
-                         [](const ::testing::TestParamInfo<Solver>& info) -> std::string {
-                           return info.param == Solver::mass_spring ? "MassSpring"
-                                  : info.param == Solver::pbd      ? "Pbd"
-                                                                   : "Projective";
-                         });
+                         settled_solver_name);
 
 TEST_P(SettledVolumes, EachPrismKeepsItsMeasuredShareOfItsVolume) {
   struct Levels {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "hot_clones.hpp"
 #include "wedge_volume.hpp"
 
 namespace fw::physics::detail {
@@ -10,15 +11,10 @@ namespace {
 
 constexpr std::size_t kBlock = 128;
 
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-#define FW_LOCAL_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
-#else
-#define FW_LOCAL_CLONES
-#endif
 
 // Springs in blocks: every projection of a block first (no writes to shared
 // nodes, so the loop vectorises), then the block added onto its nodes.
-FW_LOCAL_CLONES
+FW_HOT_CLONES
 void add_spring_projections(const ProjectiveSystem& s, const NodeVectors& q, const NodeVectors& u, const NodeSums& out) {
   const std::uint16_t* sa = s.spring_a.data();
   const std::uint16_t* sb = s.spring_b.data();
@@ -56,7 +52,7 @@ void add_spring_projections(const ProjectiveSystem& s, const NodeVectors& q, con
 // them along the volume gradient by lambda = (V0 - V) / |grad V|^2, one
 // Newton step onto the rest volume. The gradient sums to zero (moving a
 // prism keeps its volume), so the target stays about the centroid.
-FW_LOCAL_CLONES
+FW_HOT_CLONES
 void add_volume_projections(const ProjectiveSystem& s, const NodeVectors& q, const NodeVectors& u, const NodeSums& out) {
   const std::size_t count = s.element_weight.size();
   const std::uint16_t* corner[6];

@@ -7,6 +7,7 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
+#include "hot_clones.hpp"
 #include "wedge_volume.hpp"
 
 namespace fw::physics::detail {
@@ -23,15 +24,10 @@ namespace {
 // little; 15 ms and more make it creep.
 constexpr float kDampingS = 0.008f;
 
-// Built twice, for AVX2 machines and for any x86-64, and chosen at load
-// time; the loops over lanes then use 256-bit registers. No FMA contraction
-// (CMakeLists.txt), so every width gives every lane the same bits.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-#define FW_SOLVE_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
-#else
-#define FW_SOLVE_CLONES
-#endif
 
+// Each width is built for AVX2 and for any x86-64 (hot_clones.hpp), without
+// fused multiply-adds (CMakeLists.txt), so every width gives a lane the
+// same bits: a face steps alike alone and in a batch.
 template <std::size_t W>
 inline __attribute__((always_inline)) void substitute(const std::uint32_t* start, const std::uint16_t* row,
                                                       const float* value, const float* inverse_diagonal, std::size_t n,
@@ -63,7 +59,7 @@ inline __attribute__((always_inline)) void substitute(const std::uint32_t* start
 }
 
 #define FW_SUBSTITUTE(W)                                                                                           \
-  FW_SOLVE_CLONES void substitute_##W(const std::uint32_t* start, const std::uint16_t* row, const float* value, \
+  FW_HOT_CLONES void substitute_##W(const std::uint32_t* start, const std::uint16_t* row, const float* value, \
                                       const float* inverse_diagonal, std::size_t n, float* y) {                  \
     substitute<W>(start, row, value, inverse_diagonal, n, y);                                                    \
   }

@@ -1,24 +1,18 @@
 #include "tissue_forces.hpp"
 
-#include "wedge_volume.hpp"
-
 #include <algorithm>
 #include <cmath>
 
 #include <glm/geometric.hpp>
+
+#include "hot_clones.hpp"
+#include "wedge_volume.hpp"
 
 namespace fw::physics::detail {
 namespace {
 
 constexpr std::size_t kBlock = 128;
 
-// Built twice, for AVX2/FMA machines and for any x86-64, and chosen at load
-// time: the block loops then vectorise with gathers where the CPU has them.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-#define FW_HOT_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
-#else
-#define FW_HOT_CLONES
-#endif
 
 }  // namespace
 
