@@ -30,9 +30,9 @@ FacePool::~FacePool() {
 
 void FacePool::drain() {
   for (;;) {
-    const std::size_t begin = next_.fetch_add(kChunk, std::memory_order_relaxed);
+    const std::size_t begin = next_.fetch_add(chunk_, std::memory_order_relaxed);
     if (begin >= count_) return;
-    const std::size_t end = std::min(count_, begin + kChunk);
+    const std::size_t end = std::min(count_, begin + chunk_);
     for (std::size_t i = begin; i < end; ++i) (*job_)(i);
   }
 }
@@ -54,9 +54,11 @@ void FacePool::work() {
   }
 }
 
-void FacePool::for_each(std::size_t count, const std::function<void(std::size_t)>& job) {
+void FacePool::for_each(std::size_t count, const std::function<void(std::size_t)>& job) { run(count, kChunk, job); }
+
+void FacePool::run(std::size_t count, std::size_t chunk, const std::function<void(std::size_t)>& job) {
   if (count == 0) return;
-  if (workers_.empty() || count <= kChunk) {
+  if (workers_.empty() || count <= chunk) {
     for (std::size_t i = 0; i < count; ++i) job(i);
     return;
   }
@@ -64,6 +66,7 @@ void FacePool::for_each(std::size_t count, const std::function<void(std::size_t)
     std::lock_guard lock(mutex_);
     job_ = &job;
     count_ = count;
+    chunk_ = chunk;
     next_.store(0, std::memory_order_relaxed);
     busy_ = workers_.size();
     ++generation_;
@@ -101,7 +104,8 @@ void FacePool::step_all(std::span<FaceSimulation* const> faces, double dt_second
     jobs.push_back(std::span<FaceSimulation* const>(projective).subspan(begin, end - begin));
     begin = end;
   }
-  for_each(jobs.size(), [&](std::size_t j) {
+  // A batch is a big job: one per grab, so that both threads get some.
+  run(jobs.size(), 1, [&](std::size_t j) {
     if (jobs[j].size() == 1 && jobs[j][0]->options().solver != Solver::projective) jobs[j][0]->step(dt_seconds);
     else ProjectiveStepper::step(jobs[j], dt_seconds);
   });

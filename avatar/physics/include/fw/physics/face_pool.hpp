@@ -36,6 +36,8 @@ class FacePool {
   void for_each(std::size_t count, const std::function<void(std::size_t)>& job);
 
  private:
+  /// for_each, handing out `chunk` jobs per grab.
+  void run(std::size_t count, std::size_t chunk, const std::function<void(std::size_t)>& job);
   void work();
   void drain();
 
@@ -43,7 +45,7 @@ class FacePool {
   std::mutex mutex_;
   std::condition_variable wake_, done_;
   const std::function<void(std::size_t)>* job_ = nullptr;
-  std::size_t count_ = 0;
+  std::size_t count_ = 0, chunk_ = 1;
   std::atomic<std::size_t> next_{0};
   std::size_t busy_ = 0;
   std::size_t generation_ = 0;
