@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cmath>
 #include <vector>
 
 #include "projective_local_step.hpp"
@@ -65,10 +66,16 @@ void ProjectiveStepper::step(std::span<FaceSimulation* const> faces, double dt_s
   }
 }
 
+float ProjectiveStepper::tissue_step(float h) {
+  constexpr double kGrid = 1.02;
+  const double steps = std::round(std::log(double(h) / kFrameStepS) / std::log(kGrid));
+  return static_cast<float>(kFrameStepS * std::pow(kGrid, steps));
+}
+
 void ProjectiveStepper::substep(std::span<FaceSimulation* const> faces, float h) {
   assert(!faces.empty() && faces.size() <= kMaxBatchFaces);
   const TissueModel& m = faces.front()->model();
-  const auto system_ptr = m.projective_systems.get(m, h);
+  const auto system_ptr = m.projective_systems.get(m, tissue_step(h));
   const detail::ProjectiveSystem& system = *system_ptr;
   const std::size_t nodes = m.node_count, moving = m.moving_node_count;
   const std::size_t lanes = detail::lanes_for(faces.size()), width = lanes / 3;
@@ -76,7 +83,10 @@ void ProjectiveStepper::substep(std::span<FaceSimulation* const> faces, float h)
   const std::vector<std::uint16_t>& free_nodes = system.free_nodes();
   Scratch& s = scratch_for(nodes, system.free_count() * lanes, faces.size());
   const float mass = m.material.node_mass, beta = system.damping_s();
-  const float inertia = mass / (h * h);
+  // The tissue steps by the system's h, the muscles and the bone by the
+  // frame's (tissue_step).
+  const float ht = system.step_s();
+  const float inertia = mass / (ht * ht);
 
   // Per face: the bone moves, the muscles pull; the part of the right-hand
   // side that the iterations do not change, and the inertial prediction as
@@ -98,7 +108,7 @@ void ProjectiveStepper::substep(std::span<FaceSimulation* const> faces, float h)
     // u = (beta / h) x_n - (1 + beta / h) [prescribed positions now]: L u,
     // added with the projections, carries the damping of the last
     // positions and the pull of the prescribed nodes into the free rows.
-    const float damp = beta / h, hold = 1.0f + beta / h;
+    const float damp = beta / ht, hold = 1.0f + beta / ht;
     for (std::size_t i = 0; i < nodes; ++i) {
       const bool held = row_of[i] < 0;
       s.u[f][0][i] = damp * px[i] - (held ? hold * x[i] : 0.0f);
@@ -117,7 +127,7 @@ void ProjectiveStepper::substep(std::span<FaceSimulation* const> faces, float h)
       // not s: a face held still by its muscles then starts every step from
       // where it is, so the few iterations end at the exact equilibrium
       // instead of short of it by what the force moves s.
-      const float gx = x[i] + h * vx[i], gy = y[i] + h * vy[i], gz = z[i] + h * vz[i];
+      const float gx = x[i] + ht * vx[i], gy = y[i] + ht * vy[i], gz = z[i] + ht * vz[i];
       c[0][i] = inertia * gx + s.sum[0][i], c[1][i] = inertia * gy + s.sum[1][i], c[2][i] = inertia * gz + s.sum[2][i];
       x[i] = gx, y[i] = gy, z[i] = gz;
     }
@@ -150,7 +160,7 @@ void ProjectiveStepper::substep(std::span<FaceSimulation* const> faces, float h)
   }
 
   // Velocities from the positions (implicit Euler), then the skull.
-  const float inv_h = 1.0f / h;
+  const float inv_h = 1.0f / ht;
   for (FaceSimulation* face : faces) {
     for (const std::uint16_t i : free_nodes) {
       face->vx_[i] = (face->x_[i] - face->fx_[i]) * inv_h;

@@ -211,9 +211,9 @@ ProjectiveSystemCache& ProjectiveSystemCache::operator=(const ProjectiveSystemCa
 }
 
 std::shared_ptr<const detail::ProjectiveSystem> ProjectiveSystemCache::get(const TissueModel& model, float step_s) const {
-  // Frames come at a handful of rates; a model fed from everywhere keeps
-  // the most recent few.
-  constexpr std::size_t kMaxSystems = 4;
+  // Frames come at a handful of rates (and their lengths on a 2 % grid,
+  // ProjectiveStepper::tissue_step); a model fed from everywhere starts over.
+  constexpr std::size_t kMaxSystems = 8;
   std::lock_guard lock(mutex_);
   auto it = systems_.find(step_s);
   if (it != systems_.end()) return it->second;
