@@ -9,9 +9,9 @@
 // over the moving nodes that are not held (the bone layer and the held
 // outline are prescribed positions, moved to the right-hand side), factored
 // once as P^T L D L^T P. The same matrix serves x, y and z and every face of
-// the model, so a solve takes many right-hand sides at once: rows of
-// kLanes... floats, the three coordinates of up to 16 faces side by side, so
-// that every nonzero of L is one vector operation across faces.
+// the model, so a solve takes many right-hand sides at once: rows of up to
+// 48 floats, the three coordinates of up to 16 faces side by side, so that
+// every nonzero of L is a few vector operations across faces.
 #include <array>
 #include <cstddef>
 #include <cstdint>
