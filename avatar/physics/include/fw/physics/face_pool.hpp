@@ -27,7 +27,9 @@ class FacePool {
 
   unsigned thread_count() const { return static_cast<unsigned>(workers_.size()) + 1; }
 
-  /// Steps every face that is not at rest by `dt_seconds`.
+  /// Steps every face that is not at rest by `dt_seconds`: projective faces
+  /// of one model in batches of up to 16 that share each solve (a batch is
+  /// one thread's job), every other face on its own.
   void step_all(std::span<FaceSimulation> faces, double dt_seconds);
   void step_all(std::span<FaceSimulation* const> faces, double dt_seconds);
 
