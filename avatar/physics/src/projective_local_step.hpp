@@ -6,19 +6,12 @@
 #include <cstddef>
 
 #include "projective_system.hpp"
+#include "tissue_forces.hpp"
 
 namespace fw::physics::detail {
 
-struct NodeVectors {
-  const float* x;
-  const float* y;
-  const float* z;
-};
-struct NodeSums {
-  float* x;
-  float* y;
-  float* z;
-};
+using NodeVectors = NodeAxes<const float>;
+using NodeSums = NodeAxes<float>;
 
 /// out += sum over constraints of w A^T (p + A u): p the constraint's
 /// projection of the positions q (springs: their direction now at the

@@ -13,9 +13,10 @@
 namespace fw::physics::detail {
 namespace {
 
-// Rayleigh damping, beta in D = beta K (Baraff & Witkin 1998 damp a cloth's
-// stretching in proportion to its stiffness): the units resist their
-// stretching speed, not the world. The stiff, fast modes stop at once
+// Stiffness-proportional (Rayleigh) damping, D = beta K (Baraff & Witkin
+// 1998, "Large Steps in Cloth Simulation", likewise damp each condition
+// along its own stiffness): the units resist their stretching speed, not
+// the world. The stiff, fast modes stop at once
 // (zeta = beta omega / 2 is 2 at omega = 500/s); the slowest, near 5 Hz
 // (omega ~ 31/s, zeta 0.12), are damped further by implicit Euler itself
 // (at 30 Hz a step of h = 1/omega). 8 ms is the largest beta that keeps
@@ -23,7 +24,6 @@ namespace {
 // at 200 Hz steps (face_simulation_test.cpp), where implicit Euler damps
 // little; 15 ms and more make it creep.
 constexpr float kDampingS = 0.008f;
-
 
 // Each width is built for AVX2 and for any x86-64 (hot_clones.hpp), without
 // fused multiply-adds (CMakeLists.txt), so every width gives a lane the

@@ -13,6 +13,14 @@
 
 namespace fw::physics::detail {
 
+/// One array over the nodes per axis.
+template <typename T>
+struct NodeAxes {
+  T* x;
+  T* y;
+  T* z;
+};
+
 struct NodeArrays {
   const float* x;
   const float* y;
