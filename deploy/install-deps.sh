@@ -21,6 +21,7 @@ build_packages=(
   libboost-dev libboost-system-dev            # Asio + Beast (server, client)
   libopencv-dev opencv-data                   # photo preparation
   libglm-dev                                  # vector maths (model, physics)
+  libeigen3-dev                               # sparse LDL^T factorisation (physics' projective solver)
   libosmesa6-dev libgl-dev mesa-utils         # offscreen GL renderer (llvmpipe)
   libpng-dev libwebp-dev zlib1g-dev           # image members of avatar packages
   libjpeg-dev                                 # photos: decoded by the server, downsized by the client

@@ -40,7 +40,7 @@ TEST(FacePool, RunsEveryJobOnce) {
 
 // Threads change nothing: each face is stepped by one thread at a time.
 TEST(FacePool, StepsManyFacesExactlyAsOneThreadWould) {
-  for (Solver solver : {Solver::mass_spring, Solver::pbd}) {
+  for (Solver solver : {Solver::mass_spring, Solver::pbd, Solver::projective}) {
     auto parallel = faces(23, solver), serial = faces(23, solver);
     FacePool pool(3);
     for (int f = 0; f < 10; ++f) {

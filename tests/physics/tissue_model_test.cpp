@@ -1,9 +1,13 @@
 #include "fw/physics/tissue_model.hpp"
 
+#include <cmath>
+#include <vector>
+
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 #include "fw/model/generic_face.hpp"
+#include "fw/physics/prism_volume.hpp"
 #include "generic_tissue.hpp"
 
 namespace fw::physics {
@@ -66,8 +70,63 @@ TEST(TissueModel, TheLowerLipRidesTheJawAndTheBrowDoesNot) {
   EXPECT_FLOAT_EQ(m.jaw_share[face.landmark_vertices[24]], 0.0f) << "brow";
 }
 
-TEST(TissueModel, StepsStablyAtFourSubStepsPerFrame) {
-  EXPECT_GE(test::generic_tissue()->stable_substep_s, 1.0f / 300.0f);
+// The largest omega^2 of the mass-spring solver's linearised tissue at rest:
+// the top eigenvalue of M^-1 K, K the units at their stiffer slope and the
+// prisms' volume stiffness, the held nodes fixed; by power iteration, apart
+// from the model's own (Gershgorin) estimate.
+double largest_omega2(const TissueModel& m) {
+  const std::size_t n = m.node_count;
+  auto moves = [&](std::size_t i) { return i < m.moving_node_count && m.explicit_inverse_mass[i] > 0.0f; };
+  auto rest = [&](std::size_t i) { return glm::vec3(m.rest_x[i], m.rest_y[i], m.rest_z[i]); };
+  std::vector<glm::vec3> v(n, glm::vec3(0.0f)), kv(n);
+  for (std::size_t i = 0; i < n; ++i)
+    if (moves(i)) v[i] = glm::vec3(std::sin(1.0f + i), std::cos(2.0f * i), std::sin(3.0f * i + 0.5f));
+  double lambda = 0.0;
+  for (int iteration = 0; iteration < 400; ++iteration) {
+    std::fill(kv.begin(), kv.end(), glm::vec3(0.0f));
+    for (std::size_t s = 0; s < m.spring_count(); ++s) {
+      const std::size_t a = m.spring_a[s], b = m.spring_b[s];
+      const StressStrainCurve& c = m.material.curves[static_cast<std::size_t>(m.spring_kind[s])];
+      const glm::vec3 d = glm::normalize(rest(b) - rest(a));
+      const glm::vec3 f = c.stiffness * c.stiff_ratio * glm::dot(d, v[a] - v[b]) * d;
+      kv[a] += f;
+      kv[b] -= f;
+    }
+    for (std::size_t e = 0; e < m.element_count(); ++e) {
+      const auto nodes = m.element(e);
+      PrismNodes p, gradient;
+      for (std::size_t k = 0; k < 6; ++k) p[k] = rest(nodes[k]);
+      prism_volume(p, &gradient);
+      float dv = 0.0f;
+      for (std::size_t k = 0; k < 6; ++k) dv += glm::dot(gradient[k], v[nodes[k]]);
+      for (std::size_t k = 0; k < 6; ++k)
+        kv[nodes[k]] += m.material.volume_stiffness * m.element_force_scale[e] * dv * gradient[k];
+    }
+    double norm2 = 0.0, before2 = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      kv[i] = moves(i) ? kv[i] * m.explicit_inverse_mass[i] : glm::vec3(0.0f);
+      norm2 += glm::dot(kv[i], kv[i]);
+      before2 += glm::dot(v[i], v[i]);
+    }
+    lambda = std::sqrt(norm2 / before2);
+    for (std::size_t i = 0; i < n; ++i) v[i] = kv[i] / static_cast<float>(std::sqrt(norm2));
+  }
+  return lambda;
+}
+
+// The sub-step the model states stable for the mass-spring solver must be:
+// semi-implicit Euler is stable while h omega_max <= 2; measured 1.02 (the
+// estimate keeps 1.8 of 2 and Gershgorin's bound is loose), and not below
+// 0.5, which would spend sub-steps for nothing. (The former check, that the
+// bound is at least 1/300 s, could not fail: the mass scaling makes every
+// bound at least 1/184 s.) What the bound costs is the mass the scaling
+// adds: measured 0.09 %.
+TEST(TissueModel, TheStatedStableSubStepIsStableAndTheMassItAddsIsStated) {
+  const TissueModel& m = *test::generic_tissue();
+  const double omega = std::sqrt(largest_omega2(m));
+  EXPECT_LE(m.stable_substep_s * omega, 2.0) << "omega_max " << omega << "/s, sub-step " << m.stable_substep_s << " s";
+  EXPECT_GE(m.stable_substep_s * omega, 0.5) << "omega_max " << omega << "/s, sub-step " << m.stable_substep_s << " s";
+  EXPECT_LT(m.added_mass_share, 0.01f);
 }
 
 TEST(TissueModel, FitsTheMemoryBudget) {

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 
+#include "projective_dynamics.hpp"
+#include "projective_system.hpp"
+
 namespace fw::physics {
 namespace {
 
@@ -27,9 +30,9 @@ FacePool::~FacePool() {
 
 void FacePool::drain() {
   for (;;) {
-    const std::size_t begin = next_.fetch_add(kChunk, std::memory_order_relaxed);
+    const std::size_t begin = next_.fetch_add(chunk_, std::memory_order_relaxed);
     if (begin >= count_) return;
-    const std::size_t end = std::min(count_, begin + kChunk);
+    const std::size_t end = std::min(count_, begin + chunk_);
     for (std::size_t i = begin; i < end; ++i) (*job_)(i);
   }
 }
@@ -51,9 +54,11 @@ void FacePool::work() {
   }
 }
 
-void FacePool::for_each(std::size_t count, const std::function<void(std::size_t)>& job) {
+void FacePool::for_each(std::size_t count, const std::function<void(std::size_t)>& job) { run(count, kChunk, job); }
+
+void FacePool::run(std::size_t count, std::size_t chunk, const std::function<void(std::size_t)>& job) {
   if (count == 0) return;
-  if (workers_.empty() || count <= kChunk) {
+  if (workers_.empty() || count <= chunk) {
     for (std::size_t i = 0; i < count; ++i) job(i);
     return;
   }
@@ -61,6 +66,7 @@ void FacePool::for_each(std::size_t count, const std::function<void(std::size_t)
     std::lock_guard lock(mutex_);
     job_ = &job;
     count_ = count;
+    chunk_ = chunk;
     next_.store(0, std::memory_order_relaxed);
     busy_ = workers_.size();
     ++generation_;
@@ -73,12 +79,36 @@ void FacePool::for_each(std::size_t count, const std::function<void(std::size_t)
 }
 
 void FacePool::step_all(std::span<FaceSimulation> faces, double dt_seconds) {
-  // A face at rest only advances its clock inside step().
-  for_each(faces.size(), [&](std::size_t i) { faces[i].step(dt_seconds); });
+  std::vector<FaceSimulation*> pointers(faces.size());
+  for (std::size_t i = 0; i < faces.size(); ++i) pointers[i] = &faces[i];
+  step_all(std::span<FaceSimulation* const>(pointers), dt_seconds);
 }
 
 void FacePool::step_all(std::span<FaceSimulation* const> faces, double dt_seconds) {
-  for_each(faces.size(), [&](std::size_t i) { faces[i]->step(dt_seconds); });
+  // Projective faces of one model go in batches that share each solve
+  // (projective_dynamics.hpp); every other face is a job of its own. A face
+  // at rest only advances its clock.
+  std::vector<FaceSimulation*> projective;
+  std::vector<std::span<FaceSimulation* const>> jobs;
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    if (faces[i]->options().solver == Solver::projective && !faces[i]->at_rest()) projective.push_back(faces[i]);
+    else jobs.push_back(faces.subspan(i, 1));
+  }
+  std::stable_sort(projective.begin(), projective.end(),
+                   [](const FaceSimulation* a, const FaceSimulation* b) { return &a->model() < &b->model(); });
+  for (std::size_t begin = 0; begin < projective.size();) {
+    std::size_t end = begin + 1;
+    while (end < projective.size() && end - begin < detail::kMaxBatchFaces &&
+           &projective[end]->model() == &projective[begin]->model())
+      ++end;
+    jobs.push_back(std::span<FaceSimulation* const>(projective).subspan(begin, end - begin));
+    begin = end;
+  }
+  // A batch is a big job: one per grab, so that both threads get some.
+  run(jobs.size(), 1, [&](std::size_t j) {
+    if (jobs[j].size() == 1 && jobs[j][0]->options().solver != Solver::projective) jobs[j][0]->step(dt_seconds);
+    else ProjectiveStepper::step(jobs[j], dt_seconds);
+  });
 }
 
 }  // namespace fw::physics

@@ -11,6 +11,7 @@
 #include "fw/physics/au_projection.hpp"
 #include "fw/physics/prism_volume.hpp"
 #include "fw/physics/skull_contact.hpp"
+#include "projective_dynamics.hpp"
 
 namespace fw::physics {
 namespace {
@@ -80,17 +81,26 @@ void FaceSimulation::set_muscle_activations(const std::array<float, kMuscleCount
 int FaceSimulation::substeps_for(double dt_seconds) const {
   double h = options_.max_substep_s > 0.0 ? options_.max_substep_s : 1.0 / 120.0;
   if (options_.solver == Solver::mass_spring) h = std::min(h, double(model_->stable_substep_s));
+  if (options_.solver == Solver::projective) h = ProjectiveStepper::kLongestStepS;
   return std::max(1, static_cast<int>(std::ceil(std::clamp(dt_seconds, 0.0, kMaxStepS) / h - 1e-9)));
 }
 
-void FaceSimulation::step(double dt_seconds) {
-  if (!std::isfinite(dt_seconds) || dt_seconds <= 0.0) return;
+int FaceSimulation::begin_step(double& dt_seconds) {
+  if (!std::isfinite(dt_seconds) || dt_seconds <= 0.0) return 0;
   dt_seconds = std::min(dt_seconds, kMaxStepS);
   time_s_ += dt_seconds;
-  if (at_rest_) return;
-  const int n = substeps_for(dt_seconds);
+  return at_rest_ ? 0 : substeps_for(dt_seconds);
+}
+
+void FaceSimulation::step(double dt_seconds) {
+  const int n = begin_step(dt_seconds);
+  if (n == 0) return;
   const float h = static_cast<float>(dt_seconds / n);
   for (int i = 0; i < n; ++i) substep(h);
+  update_rest_state();
+}
+
+void FaceSimulation::update_rest_state() {
   bool settled = max_speed2_ < kRestSpeed * kRestSpeed && std::abs(jaw_speed_) < kRestSpeed &&
                  std::abs(jaw_angle_ - jaw_target_) < kRestActivation;
   for (std::size_t i = 0; i < kMuscleCount && settled; ++i)
@@ -99,6 +109,11 @@ void FaceSimulation::step(double dt_seconds) {
 }
 
 void FaceSimulation::substep(float h) {
+  if (options_.solver == Solver::projective) {
+    FaceSimulation* self = this;
+    ProjectiveStepper::substep(std::span<FaceSimulation* const>(&self, 1), h);
+    return;
+  }
   update_muscles_and_jaw(h);
   place_bone(h);
   if (options_.solver == Solver::mass_spring) mass_spring_substep(h);
@@ -124,6 +139,15 @@ glm::vec3 FaceSimulation::jaw_turned(const glm::vec3& p, float share) const {
   const float qy = p.y - m.jaw_hinge.y, qz = p.z - m.jaw_hinge.z;
   const glm::vec3 turned(p.x, m.jaw_hinge.y + jaw_cos_ * qy - jaw_sin_ * qz, m.jaw_hinge.z + jaw_sin_ * qy + jaw_cos_ * qz);
   return p + share * (turned - p);
+}
+
+std::array<glm::vec3, kMuscleCount> FaceSimulation::muscle_origins() const {
+  std::array<glm::vec3, kMuscleCount> origin;
+  for (std::size_t i = 0; i < kMuscleCount; ++i) {
+    const TissueMuscle& muscle = model_->muscles[i];
+    origin[i] = muscle.origin_jaw_share > 0.0f ? jaw_turned(muscle.origin, muscle.origin_jaw_share) : muscle.origin;
+  }
+  return origin;
 }
 
 // Moves node i to its rest place turned by `share` of the jaw, keeping the

@@ -44,31 +44,7 @@ void FaceSimulation::mass_spring_substep(float h) {
   detail::add_spring_forces(m, detail::spring_kind_table(m.material), nodes);
   detail::add_volume_forces(m, nodes);
 
-  // Muscles: each attached node is pulled toward the origin (linear) or the
-  // centre (sphincter) by activation x strength x its profile weight.
-  for (std::size_t i = 0; i < kMuscleCount; ++i) {
-    const float a = activation_[i];
-    const TissueMuscle& muscle = m.muscles[i];
-    if (a < 1e-5f || muscle.first == muscle.last) continue;
-    const float pull = a * strength_[i];
-    const glm::vec3 o = muscle.origin_jaw_share > 0.0f ? jaw_turned(muscle.origin, muscle.origin_jaw_share) : muscle.origin;
-    const glm::vec3 scale = muscle.kind == MuscleKind::sphincter ? muscle.pull_scale : glm::vec3(1.0f);
-    const bool slides = muscle.kind == MuscleKind::linear;
-    for (std::uint32_t t = muscle.first; t < muscle.last; ++t) {
-      const std::size_t n = m.attach_node[t];
-      glm::vec3 d(o.x - x[n], o.y - y[n], o.z - z[n]);
-      // A linear muscle's fibres run along the skull: the tissue is pulled
-      // along the bone surface, not into it.
-      if (slides) {
-        const glm::vec3& normal = skull_normal_[m.attach_column[t]];
-        d -= glm::dot(d, normal) * normal;
-      }
-      const float length = glm::length(d);
-      if (length < 1e-6f) continue;
-      const glm::vec3 f = (pull * m.attach_weight[t] / length) * (d * scale);
-      fx[n] += f.x, fy[n] += f.y, fz[n] += f.z;
-    }
-  }
+  detail::add_muscle_forces(m, {activation_, strength_, muscle_origins(), skull_normal_.data()}, nodes);
 
   // Semi-implicit Euler; the drag of the medium taken implicitly.
   // Pinned nodes (inverse mass 0) keep the speed place_bone gave them.

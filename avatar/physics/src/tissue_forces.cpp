@@ -3,18 +3,16 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glm/geometric.hpp>
+
+#include "hot_clones.hpp"
+#include "wedge_volume.hpp"
+
 namespace fw::physics::detail {
 namespace {
 
 constexpr std::size_t kBlock = 128;
 
-// Built twice, for AVX2/FMA machines and for any x86-64, and chosen at load
-// time: the block loops then vectorise with gathers where the CPU has them.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-#define FW_HOT_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
-#else
-#define FW_HOT_CLONES
-#endif
 
 }  // namespace
 
@@ -75,7 +73,6 @@ void add_volume_forces(const TissueModel& model, const NodeArrays& n) {
   const std::size_t count = model.element_count();
   const std::uint16_t* corner[6];
   for (std::size_t k = 0; k < 6; ++k) corner[k] = model.element_node[k].data();
-  constexpr float kTwelfth = 1.0f / 12.0f, kSixth = 1.0f / 6.0f, kThird = 1.0f / 3.0f;
   float g[18][kBlock];
   for (std::size_t begin = 0; begin < count; begin += kBlock) {
     const std::size_t size = std::min(kBlock, count - begin);
@@ -87,51 +84,13 @@ void add_volume_forces(const TissueModel& model, const NodeArrays& n) {
         const std::size_t node = corner[k][e];
         px[k] = n.x[node], py[k] = n.y[node], pz[k] = n.z[node];
       }
-      // Edges of the outer (a), inner (b) and middle (m) triangles from their corner 0.
-      const float a1x = px[1] - px[0], a1y = py[1] - py[0], a1z = pz[1] - pz[0];
-      const float a2x = px[2] - px[0], a2y = py[2] - py[0], a2z = pz[2] - pz[0];
-      const float b1x = px[4] - px[3], b1y = py[4] - py[3], b1z = pz[4] - pz[3];
-      const float b2x = px[5] - px[3], b2y = py[5] - py[3], b2z = pz[5] - pz[3];
-      const float m1x = 0.5f * (a1x + b1x), m1y = 0.5f * (a1y + b1y), m1z = 0.5f * (a1z + b1z);
-      const float m2x = 0.5f * (a2x + b2x), m2y = 0.5f * (a2y + b2y), m2z = 0.5f * (a2z + b2z);
-      const float sx = (a1y * a2z - a1z * a2y) + (b1y * b2z - b1z * b2y) + 4.0f * (m1y * m2z - m1z * m2y);
-      const float sy = (a1z * a2x - a1x * a2z) + (b1z * b2x - b1x * b2z) + 4.0f * (m1z * m2x - m1x * m2z);
-      const float sz = (a1x * a2y - a1y * a2x) + (b1x * b2y - b1y * b2x) + 4.0f * (m1x * m2y - m1y * m2x);
-      const float dx = kThird * (px[0] + px[1] + px[2] - px[3] - px[4] - px[5]);
-      const float dy = kThird * (py[0] + py[1] + py[2] - py[3] - py[4] - py[5]);
-      const float dz = kThird * (pz[0] + pz[1] + pz[2] - pz[3] - pz[4] - pz[5]);
-      const float volume = kTwelfth * (sx * dx + sy * dy + sz * dz);
+      float gradient[6][3];
+      const float volume = wedge_volume_gradient(px, py, pz, gradient);
       const float f = stiffness * (model.element_rest_volume[e] - volume) * model.element_force_scale[e];
-      // dV/dp: S/36 along the depth (+ outer, - inner), plus for each
-      // triangle x in {a, b, m}: d(N_x . d)/dx_i = (x2 - x0) x d at corner 1,
-      // d x (x1 - x0) at corner 2, minus both at corner 0; m counts 4/2 on
-      // both outer and inner corners.
-      auto add_triangle = [&](float e1x, float e1y, float e1z, float e2x, float e2y, float e2z, float w, float* c0, float* c1,
-                        float* c2) {
-        const float u1x = (e2y * dz - e2z * dy) * w, u1y = (e2z * dx - e2x * dz) * w, u1z = (e2x * dy - e2y * dx) * w;
-        const float u2x = (dy * e1z - dz * e1y) * w, u2y = (dz * e1x - dx * e1z) * w, u2z = (dx * e1y - dy * e1x) * w;
-        c1[0] += u1x, c1[1] += u1y, c1[2] += u1z;
-        c2[0] += u2x, c2[1] += u2y, c2[2] += u2z;
-        c0[0] -= u1x + u2x, c0[1] -= u1y + u2y, c0[2] -= u1z + u2z;
-      };
-      float ga[3][3], gb[3][3], gm[3][3];
-      const float depth_x = sx / 36.0f, depth_y = sy / 36.0f, depth_z = sz / 36.0f;
+#pragma GCC unroll 6
+      for (int k = 0; k < 6; ++k)
 #pragma GCC unroll 3
-      for (int k = 0; k < 3; ++k) {
-        ga[k][0] = depth_x, ga[k][1] = depth_y, ga[k][2] = depth_z;
-        gb[k][0] = -depth_x, gb[k][1] = -depth_y, gb[k][2] = -depth_z;
-        gm[k][0] = gm[k][1] = gm[k][2] = 0.0f;
-      }
-      add_triangle(a1x, a1y, a1z, a2x, a2y, a2z, kTwelfth, ga[0], ga[1], ga[2]);
-      add_triangle(b1x, b1y, b1z, b2x, b2y, b2z, kTwelfth, gb[0], gb[1], gb[2]);
-      add_triangle(m1x, m1y, m1z, m2x, m2y, m2z, kSixth, gm[0], gm[1], gm[2]);
-#pragma GCC unroll 3
-      for (int k = 0; k < 3; ++k)
-#pragma GCC unroll 3
-        for (int c = 0; c < 3; ++c) {
-          g[k * 3 + c][j] = f * (ga[k][c] + gm[k][c]);
-          g[9 + k * 3 + c][j] = f * (gb[k][c] + gm[k][c]);
-        }
+        for (int c = 0; c < 3; ++c) g[k * 3 + c][j] = f * gradient[k][c];
     }
     for (std::size_t j = 0; j < size; ++j)
       for (std::size_t k = 0; k < 6; ++k) {
@@ -140,6 +99,32 @@ void add_volume_forces(const TissueModel& model, const NodeArrays& n) {
         n.fy[node] += g[k * 3 + 1][j];
         n.fz[node] += g[k * 3 + 2][j];
       }
+  }
+}
+
+void add_muscle_forces(const TissueModel& m, const MuscleDrive& drive, const NodeArrays& n) {
+  for (std::size_t i = 0; i < kMuscleCount; ++i) {
+    const float a = drive.activation[i];
+    const TissueMuscle& muscle = m.muscles[i];
+    if (a < 1e-5f || muscle.first == muscle.last) continue;
+    const float pull = a * drive.strength[i];
+    const glm::vec3 o = drive.origin[i];
+    const glm::vec3 scale = muscle.kind == MuscleKind::sphincter ? muscle.pull_scale : glm::vec3(1.0f);
+    const bool slides = muscle.kind == MuscleKind::linear;
+    for (std::uint32_t t = muscle.first; t < muscle.last; ++t) {
+      const std::size_t node = m.attach_node[t];
+      glm::vec3 d(o.x - n.x[node], o.y - n.y[node], o.z - n.z[node]);
+      // A linear muscle's fibres run along the skull: the tissue is pulled
+      // along the bone surface, not into it.
+      if (slides) {
+        const glm::vec3& normal = drive.skull_normal[m.attach_column[t]];
+        d -= glm::dot(d, normal) * normal;
+      }
+      const float length = glm::length(d);
+      if (length < 1e-6f) continue;
+      const glm::vec3 f = (pull * m.attach_weight[t] / length) * (d * scale);
+      n.fx[node] += f.x, n.fy[node] += f.y, n.fz[node] += f.z;
+    }
   }
 }
 

@@ -4,11 +4,22 @@
 // blocks: first every element's force is computed into a small local block
 // (no writes to shared nodes, so the compiler vectorises it, with gathers
 // where the CPU has them), then the block is added onto the nodes.
+#include <array>
 #include <cstddef>
+
+#include <glm/vec3.hpp>
 
 #include "fw/physics/tissue_model.hpp"
 
 namespace fw::physics::detail {
+
+/// One array over the nodes per axis.
+template <typename T>
+struct NodeAxes {
+  T* x;
+  T* y;
+  T* z;
+};
 
 struct NodeArrays {
   const float* x;
@@ -34,5 +45,17 @@ SpringKindTable spring_kind_table(const TissueMaterial& material);
 
 void add_spring_forces(const TissueModel& model, const SpringKindTable& table, const NodeArrays& nodes);
 void add_volume_forces(const TissueModel& model, const NodeArrays& nodes);
+
+/// What drives the muscles now: activation x strength, each muscle's origin
+/// where the jaw has carried it, the skull normals turned with the jaw.
+struct MuscleDrive {
+  const std::array<float, kMuscleCount>& activation;
+  const std::array<float, kMuscleCount>& strength;
+  const std::array<glm::vec3, kMuscleCount>& origin;
+  const glm::vec3* skull_normal;  ///< #V
+};
+/// Each attached node pulled toward its muscle's origin (linear, along the
+/// skull) or centre (sphincter) by activation x strength x profile weight.
+void add_muscle_forces(const TissueModel& model, const MuscleDrive& drive, const NodeArrays& nodes);
 
 }  // namespace fw::physics::detail

@@ -27,7 +27,9 @@ class FacePool {
 
   unsigned thread_count() const { return static_cast<unsigned>(workers_.size()) + 1; }
 
-  /// Steps every face that is not at rest by `dt_seconds`.
+  /// Steps every face that is not at rest by `dt_seconds`: projective faces
+  /// of one model in batches of up to 16 that share each solve (a batch is
+  /// one thread's job), every other face on its own.
   void step_all(std::span<FaceSimulation> faces, double dt_seconds);
   void step_all(std::span<FaceSimulation* const> faces, double dt_seconds);
 
@@ -36,6 +38,8 @@ class FacePool {
   void for_each(std::size_t count, const std::function<void(std::size_t)>& job);
 
  private:
+  /// for_each, handing out `chunk` jobs per grab.
+  void run(std::size_t count, std::size_t chunk, const std::function<void(std::size_t)>& job);
   void work();
   void drain();
 
@@ -43,7 +47,7 @@ class FacePool {
   std::mutex mutex_;
   std::condition_variable wake_, done_;
   const std::function<void(std::size_t)>* job_ = nullptr;
-  std::size_t count_ = 0;
+  std::size_t count_ = 0, chunk_ = 1;
   std::atomic<std::size_t> next_{0};
   std::size_t busy_ = 0;
   std::size_t generation_ = 0;

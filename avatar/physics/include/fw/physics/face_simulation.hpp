@@ -30,7 +30,10 @@ namespace fw::physics {
 enum class Solver : std::uint8_t {
   mass_spring,  ///< viscoelastic units, muscle forces, semi-implicit Euler sub-steps (Lee et al. 1995)
   pbd,          ///< position-based dynamics: distance, bending, area and volume constraints (Müller et al. 2007)
+  projective,   ///< projective dynamics, implicit, one factored matrix per model (Bouaziz et al. 2014)
 };
+
+class ProjectiveStepper;
 
 struct SimulationOptions {
   Solver solver = Solver::mass_spring;
@@ -40,6 +43,7 @@ struct SimulationOptions {
   float individual_variation = 0.0f;
   /// Longest sub-step, seconds; a mass-spring step never exceeds the
   /// model's stable bound either. 1/120 s is the paper's four per frame.
+  /// The projective solver steps up to 35 ms whatever this says.
   double max_substep_s = 1.0 / 120.0;
   /// Muscle excitation-contraction lag: first-order time constants, seconds.
   float activation_time_s = 0.08f;
@@ -119,6 +123,11 @@ class FaceSimulation {
   std::size_t state_bytes() const;
 
  private:
+  friend class ProjectiveStepper;  // steps faces of one model together (projective_dynamics.hpp)
+  /// Advances the clock; the sub-steps step(dt) takes, 0 if the face does not move.
+  int begin_step(double& dt_seconds);
+  void update_rest_state();
+  std::array<glm::vec3, kMuscleCount> muscle_origins() const;
   void substep(float h);
   void update_muscles_and_jaw(float h);
   void place_bone(float h);

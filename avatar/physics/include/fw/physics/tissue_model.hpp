@@ -24,6 +24,7 @@
 #include "fw/model/generic_face.hpp"
 #include "fw/physics/au_projection.hpp"
 #include "fw/physics/facial_muscles.hpp"
+#include "fw/physics/projective_system_cache.hpp"
 #include "fw/physics/stress_strain.hpp"
 
 namespace fw::physics {
@@ -140,6 +141,10 @@ struct TissueModel {
   /// Longest explicit sub-step that the stiffest node allows (a Gershgorin
   /// bound on the mass-scaled stiffness matrix), seconds.
   float stable_substep_s = 0;
+
+  /// The projective-dynamics solver's factorisations, made when a face of
+  /// this model first steps with it (projective_system_cache.hpp).
+  ProjectiveSystemCache projective_systems;
 
   std::size_t spring_count() const { return spring_a.size(); }
   std::size_t element_count() const { return element_node[0].size(); }

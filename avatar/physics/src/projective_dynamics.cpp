@@ -1,0 +1,178 @@
+#include "projective_dynamics.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <vector>
+
+#include "projective_local_step.hpp"
+#include "projective_system.hpp"
+#include "tissue_forces.hpp"
+
+namespace fw::physics {
+namespace {
+
+using detail::kMaxBatchFaces;
+
+// Per thread, reused: a pool thread steps batch after batch.
+struct Scratch {
+  std::vector<float> rows;                                     // free rows x lanes
+  std::vector<float> constant[kMaxBatchFaces][3];              // per face, per axis, #nodes
+  std::vector<float> u[kMaxBatchFaces][3];                     // per face, per axis, #nodes
+  std::vector<float> sum[3];                                   // #nodes
+};
+
+Scratch& scratch_for(std::size_t nodes, std::size_t rows, std::size_t faces) {
+  thread_local Scratch s;
+  s.rows.assign(rows, 0.0f);  // padding lanes stay 0 through the solve
+  for (std::size_t f = 0; f < faces; ++f) {
+    for (auto& v : s.constant[f]) v.resize(nodes);
+    for (auto& v : s.u[f]) v.resize(nodes);
+  }
+  for (auto& v : s.sum) v.resize(nodes);
+  return s;
+}
+
+}  // namespace
+
+void ProjectiveStepper::step(std::span<FaceSimulation* const> faces, double dt_seconds) {
+  struct Moving {
+    FaceSimulation* face;
+    double dt;
+    int substeps;
+  };
+  std::vector<Moving> moving;
+  for (FaceSimulation* face : faces) {
+    assert(face->options().solver == Solver::projective);
+    double dt = dt_seconds;
+    const int n = face->begin_step(dt);
+    if (n > 0) moving.push_back({face, dt, n});
+  }
+  std::stable_sort(moving.begin(), moving.end(), [](const Moving& a, const Moving& b) {
+    return &a.face->model() != &b.face->model() ? &a.face->model() < &b.face->model() : a.substeps < b.substeps;
+  });
+  std::vector<FaceSimulation*> batch;
+  for (std::size_t begin = 0; begin < moving.size();) {
+    std::size_t end = begin + 1;
+    while (end < moving.size() && end - begin < kMaxBatchFaces && &moving[end].face->model() == &moving[begin].face->model() &&
+           moving[end].substeps == moving[begin].substeps)
+      ++end;
+    batch.clear();
+    for (std::size_t i = begin; i < end; ++i) batch.push_back(moving[i].face);
+    const float h = static_cast<float>(moving[begin].dt / moving[begin].substeps);
+    for (int i = 0; i < moving[begin].substeps; ++i) substep(batch, h);
+    for (FaceSimulation* face : batch) face->update_rest_state();
+    begin = end;
+  }
+}
+
+float ProjectiveStepper::tissue_step(float h) {
+  constexpr double kGrid = 1.02;
+  const double steps = std::round(std::log(double(h) / kFrameStepS) / std::log(kGrid));
+  return static_cast<float>(kFrameStepS * std::pow(kGrid, steps));
+}
+
+void ProjectiveStepper::substep(std::span<FaceSimulation* const> faces, float h) {
+  assert(!faces.empty() && faces.size() <= kMaxBatchFaces);
+  const TissueModel& m = faces.front()->model();
+  const auto system_ptr = m.projective_systems.get(m, tissue_step(h));
+  const detail::ProjectiveSystem& system = *system_ptr;
+  const std::size_t nodes = m.node_count, moving = m.moving_node_count;
+  const std::size_t lanes = detail::lanes_for(faces.size()), width = lanes / 3;
+  const std::vector<std::int32_t>& row_of = system.row_of_node();
+  const std::vector<std::uint16_t>& free_nodes = system.free_nodes();
+  Scratch& s = scratch_for(nodes, system.free_count() * lanes, faces.size());
+  const float mass = m.material.node_mass, beta = system.damping_s();
+  // The tissue steps by the system's h, the muscles and the bone by the
+  // frame's (tissue_step).
+  const float ht = system.step_s();
+  const float inertia = mass / (ht * ht);
+
+  // Per face: the bone moves, the muscles pull; the part of the right-hand
+  // side that the iterations do not change, and the inertial prediction as
+  // the first guess.
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    FaceSimulation& face = *faces[f];
+    float* x = face.x_.data();
+    float* y = face.y_.data();
+    float* z = face.z_.data();
+    float* vx = face.vx_.data();
+    float* vy = face.vy_.data();
+    float* vz = face.vz_.data();
+    float* px = face.fx_.data();  // the previous positions, as in PBD
+    float* py = face.fy_.data();
+    float* pz = face.fz_.data();
+    std::copy(x, x + nodes, px), std::copy(y, y + nodes, py), std::copy(z, z + nodes, pz);
+    face.update_muscles_and_jaw(h);
+    face.place_bone(h);
+    // u = (beta / h) x_n - (1 + beta / h) [prescribed positions now]: L u,
+    // added with the projections, carries the damping of the last
+    // positions and the pull of the prescribed nodes into the free rows.
+    const float damp = beta / ht, hold = 1.0f + beta / ht;
+    for (std::size_t i = 0; i < nodes; ++i) {
+      const bool held = row_of[i] < 0;
+      s.u[f][0][i] = damp * px[i] - (held ? hold * x[i] : 0.0f);
+      s.u[f][1][i] = damp * py[i] - (held ? hold * y[i] : 0.0f);
+      s.u[f][2][i] = damp * pz[i] - (held ? hold * z[i] : 0.0f);
+    }
+    auto& c = s.constant[f];  // read in the free rows only
+    // Muscles and gravity, external forces at the start of the step.
+    std::fill(s.sum[0].begin(), s.sum[0].end(), 0.0f);
+    std::fill(s.sum[1].begin(), s.sum[1].end(), -face.options_.gravity * mass);
+    std::fill(s.sum[2].begin(), s.sum[2].end(), 0.0f);
+    detail::add_muscle_forces(m, {face.activation_, face.strength_, face.muscle_origins(), face.skull_normal_.data()},
+                              {x, y, z, vx, vy, vz, s.sum[0].data(), s.sum[1].data(), s.sum[2].data()});
+    for (const std::uint16_t i : free_nodes) {
+      // M s / h^2 with s = x + h v + h^2 f / m. The first guess is x + h v,
+      // not s: a face held still by its muscles then starts every step from
+      // where it is, so the few iterations end at the exact equilibrium
+      // instead of short of it by what the force moves s.
+      const float gx = x[i] + ht * vx[i], gy = y[i] + ht * vy[i], gz = z[i] + ht * vz[i];
+      c[0][i] = inertia * gx + s.sum[0][i], c[1][i] = inertia * gy + s.sum[1][i], c[2][i] = inertia * gz + s.sum[2][i];
+      x[i] = gx, y[i] = gy, z[i] = gz;
+    }
+  }
+
+  for (int iteration = 0; iteration < kIterations; ++iteration) {
+    // Local: every constraint projects this face's positions.
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+      FaceSimulation& face = *faces[f];
+      for (std::size_t axis = 0; axis < 3; ++axis) std::copy(s.constant[f][axis].begin(), s.constant[f][axis].end(), s.sum[axis].begin());
+      detail::add_projections(system, {face.x_.data(), face.y_.data(), face.z_.data()},
+                              {s.u[f][0].data(), s.u[f][1].data(), s.u[f][2].data()},
+                              {s.sum[0].data(), s.sum[1].data(), s.sum[2].data()});
+      for (std::size_t r = 0; r < free_nodes.size(); ++r) {
+        float* row = s.rows.data() + r * lanes + f;
+        const std::size_t i = free_nodes[r];
+        row[0] = s.sum[0][i], row[width] = s.sum[1][i], row[2 * width] = s.sum[2][i];
+      }
+    }
+    // Global: one solve for all faces and axes.
+    system.solve(s.rows.data(), lanes);
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+      FaceSimulation& face = *faces[f];
+      for (std::size_t r = 0; r < free_nodes.size(); ++r) {
+        const float* row = s.rows.data() + r * lanes + f;
+        const std::size_t i = free_nodes[r];
+        face.x_[i] = row[0], face.y_[i] = row[width], face.z_[i] = row[2 * width];
+      }
+    }
+  }
+
+  // Velocities from the positions (implicit Euler), then the skull.
+  const float inv_h = 1.0f / ht;
+  for (FaceSimulation* face : faces) {
+    for (const std::uint16_t i : free_nodes) {
+      face->vx_[i] = (face->x_[i] - face->fx_[i]) * inv_h;
+      face->vy_[i] = (face->y_[i] - face->fy_[i]) * inv_h;
+      face->vz_[i] = (face->z_[i] - face->fz_[i]) * inv_h;
+    }
+    face->resolve_skull();
+    float max_speed2 = 0.0f;
+    for (std::size_t i = 0; i < moving; ++i)
+      max_speed2 = std::max(max_speed2, face->vx_[i] * face->vx_[i] + face->vy_[i] * face->vy_[i] + face->vz_[i] * face->vz_[i]);
+    face->max_speed2_ = max_speed2;
+  }
+}
+
+}  // namespace fw::physics

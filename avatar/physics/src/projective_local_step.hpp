@@ -1,0 +1,25 @@
+#pragma once
+// The local step of projective dynamics (Bouaziz et al. 2014, sec. 3-4) and
+// the constraint operator L = sum w A^T A, over flat node arrays: each
+// constraint's projection of the current positions, weighted and summed
+// into the right-hand side of the global step.
+#include <cstddef>
+
+#include "projective_system.hpp"
+#include "tissue_forces.hpp"
+
+namespace fw::physics::detail {
+
+using NodeVectors = NodeAxes<const float>;
+using NodeSums = NodeAxes<float>;
+
+/// out += sum over constraints of w A^T (p + A u): p the constraint's
+/// projection of the positions q (springs: their direction now at the
+/// length their curve asks; prisms: the six corners about their centroid,
+/// moved along the volume gradient onto the rest volume by one Newton
+/// step), and u any vector over the nodes, whose L u = sum w A^T A u comes
+/// in the same pass (the damping and the prescribed nodes, see
+/// projective_dynamics.cpp).
+void add_projections(const ProjectiveSystem& system, const NodeVectors& q, const NodeVectors& u, const NodeSums& out);
+
+}  // namespace fw::physics::detail

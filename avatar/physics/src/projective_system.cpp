@@ -1,0 +1,238 @@
+#include "projective_system.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <stdexcept>
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+
+#include "hot_clones.hpp"
+#include "wedge_volume.hpp"
+
+namespace fw::physics::detail {
+namespace {
+
+// Stiffness-proportional (Rayleigh) damping, D = beta K (Baraff & Witkin
+// 1998, "Large Steps in Cloth Simulation", likewise damp each condition
+// along its own stiffness): the units resist their stretching speed, not
+// the world. The stiff, fast modes stop at once
+// (zeta = beta omega / 2 is 2 at omega = 500/s); the slowest, near 5 Hz
+// (omega ~ 31/s, zeta 0.12), are damped further by implicit Euler itself
+// (at 30 Hz a step of h = 1/omega). 8 ms is the largest beta that keeps
+// AU 12's step response half-way within 300 ms and settled to 2 % by 1 s
+// at 200 Hz steps (face_simulation_test.cpp), where implicit Euler damps
+// little; 15 ms and more make it creep.
+constexpr float kDampingS = 0.008f;
+
+// Each width is built for AVX2 and for any x86-64 (hot_clones.hpp), without
+// fused multiply-adds (CMakeLists.txt), so every width gives a lane the
+// same bits: a face steps alike alone and in a batch.
+template <std::size_t W>
+inline __attribute__((always_inline)) void substitute(const std::uint32_t* start, const std::uint16_t* row,
+                                                      const float* value, const float* inverse_diagonal, std::size_t n,
+                                                      float* __restrict y) {
+  // L z = b, column by column: z_j is final once its column is reached.
+  for (std::size_t j = 0; j < n; ++j) {
+    const float* __restrict zj = y + j * W;
+    for (std::uint32_t p = start[j]; p < start[j + 1]; ++p) {
+      float* __restrict zi = y + std::size_t(row[p]) * W;
+      const float l = value[p];
+      for (std::size_t k = 0; k < W; ++k) zi[k] -= l * zj[k];
+    }
+  }
+  for (std::size_t j = 0; j < n; ++j) {
+    const float d = inverse_diagonal[j];
+    for (std::size_t k = 0; k < W; ++k) y[j * W + k] *= d;
+  }
+  // L^T x = z, last row first: row j of L^T is column j of L.
+  for (std::size_t j = n; j-- > 0;) {
+    float sum[W];
+    for (std::size_t k = 0; k < W; ++k) sum[k] = y[j * W + k];
+    for (std::uint32_t p = start[j]; p < start[j + 1]; ++p) {
+      const float* __restrict xi = y + std::size_t(row[p]) * W;
+      const float l = value[p];
+      for (std::size_t k = 0; k < W; ++k) sum[k] -= l * xi[k];
+    }
+    for (std::size_t k = 0; k < W; ++k) y[j * W + k] = sum[k];
+  }
+}
+
+#define FW_SUBSTITUTE(W)                                                                                           \
+  FW_HOT_CLONES void substitute_##W(const std::uint32_t* start, const std::uint16_t* row, const float* value, \
+                                      const float* inverse_diagonal, std::size_t n, float* y) {                  \
+    substitute<W>(start, row, value, inverse_diagonal, n, y);                                                    \
+  }
+FW_SUBSTITUTE(3)
+FW_SUBSTITUTE(6)
+FW_SUBSTITUTE(12)
+FW_SUBSTITUTE(24)
+FW_SUBSTITUTE(48)
+#undef FW_SUBSTITUTE
+
+}  // namespace
+
+std::size_t lanes_for(std::size_t faces) {
+  assert(faces >= 1 && faces <= kMaxBatchFaces);
+  if (faces <= 1) return 3;
+  if (faces <= 2) return 6;
+  if (faces <= 4) return 12;
+  if (faces <= 8) return 24;
+  return 48;
+}
+
+ProjectiveSystem::ProjectiveSystem(const TissueModel& m, float step_s) : step_s_(step_s), damping_s_(kDampingS) {
+  const std::size_t moving = m.moving_node_count;
+  auto is_free = [&](std::size_t node) { return node < moving && m.inverse_mass[node] != 0.0f; };
+  std::vector<std::int32_t> index(m.node_count, -1);  // free index in node order
+  std::vector<std::uint16_t> free_by_index;
+  for (std::size_t i = 0; i < moving; ++i)
+    if (is_free(i)) {
+      index[i] = static_cast<std::int32_t>(free_by_index.size());
+      free_by_index.push_back(static_cast<std::uint16_t>(i));
+    }
+  const std::size_t n = free_by_index.size();
+  if (n == 0 || n > 65535) throw std::invalid_argument("projective dynamics: the model needs 1..65535 free nodes");
+
+  // Springs: the viscoelastic units' biphasic curves (stress_strain.hpp).
+  // PD's weights are constants; the stiffer slope is the weight and the
+  // projection bends the target length (projective_local_step.cpp), the
+  // way quasi-Newton PD treats nonlinear materials (Liu, Bouaziz & Kavan
+  // 2017, "Quasi-Newton Methods for Real-Time Simulation of Hyperelastic
+  // Materials", ACM TOG 36(3)): exact at rest, slower to converge on the
+  // soft branch.
+  for (std::size_t s = 0; s < m.spring_count(); ++s) {
+    if (!is_free(m.spring_a[s]) && !is_free(m.spring_b[s])) continue;
+    const StressStrainCurve& c = m.material.curves[static_cast<std::size_t>(m.spring_kind[s])];
+    spring_a.push_back(m.spring_a[s]);
+    spring_b.push_back(m.spring_b[s]);
+    const float stiff_ratio = std::max(c.stiff_ratio, 1.0f);
+    spring_length.push_back(m.spring_rest[s] * (1.0f - c.residual_strain));
+    spring_knee_length.push_back(m.spring_rest[s] * (1.0f - c.residual_strain + c.knee_strain));
+    spring_weight.push_back(c.stiffness * stiff_ratio);
+    spring_soft_share.push_back(1.0f / stiff_ratio);
+  }
+  // Volumes: weight w = kappa s |grad V|^2 at rest, so that near rest the
+  // projection's pull w lambda grad V, lambda = (V0 - V) / |grad V|^2, is the
+  // mass-spring solver's kappa s (V0 - V) grad V (Lee et al. 1995, eq. 6).
+  for (std::size_t e = 0; e < m.element_count(); ++e) {
+    const auto nodes = m.element(e);
+    if (std::none_of(nodes.begin(), nodes.end(), [&](std::uint16_t i) { return is_free(i); })) continue;
+    float px[6], py[6], pz[6], gradient[6][3];
+    for (std::size_t k = 0; k < 6; ++k) px[k] = m.rest_x[nodes[k]], py[k] = m.rest_y[nodes[k]], pz[k] = m.rest_z[nodes[k]];
+    wedge_volume_gradient(px, py, pz, gradient);
+    float g2 = 0.0f;
+    for (const auto& g : gradient) g2 += g[0] * g[0] + g[1] * g[1] + g[2] * g[2];
+    for (std::size_t k = 0; k < 6; ++k) element_node[k].push_back(nodes[k]);
+    element_rest_volume.push_back(m.element_rest_volume[e]);
+    element_weight.push_back(m.material.volume_stiffness * m.element_force_scale[e] * g2);
+  }
+
+  // S over the free nodes, in node order.
+  const double h = step_s, scale = 1.0 + double(kDampingS) / h;
+  std::vector<Eigen::Triplet<double>> entries;
+  for (std::size_t i = 0; i < n; ++i)
+    entries.emplace_back(int(i), int(i), double(m.material.node_mass) / (h * h));
+  for (std::size_t s = 0; s < spring_a.size(); ++s) {
+    const int a = index[spring_a[s]], b = index[spring_b[s]];
+    const double w = scale * spring_weight[s];
+    if (a >= 0) entries.emplace_back(a, a, w);
+    if (b >= 0) entries.emplace_back(b, b, w);
+    if (a >= 0 && b >= 0) entries.emplace_back(a, b, -w), entries.emplace_back(b, a, -w);
+  }
+  for (std::size_t e = 0; e < element_weight.size(); ++e) {
+    const double w = scale * element_weight[e];
+    for (std::size_t k = 0; k < 6; ++k)
+      for (std::size_t l = 0; l < 6; ++l) {
+        const int a = index[element_node[k][e]], b = index[element_node[l][e]];
+        if (a >= 0 && b >= 0) entries.emplace_back(a, b, w * ((k == l ? 1.0 : 0.0) - 1.0 / 6.0));
+      }
+  }
+  Eigen::SparseMatrix<double> matrix(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+  matrix.setFromTriplets(entries.begin(), entries.end());
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt(matrix);
+  if (ldlt.info() != Eigen::Success) throw std::runtime_error("projective dynamics: the system is not positive definite");
+
+  // Eigen solves with P b, L, D, L^T, P^-1: free node i sits in row P(i).
+  const auto& permutation = ldlt.permutationP().indices();
+  row_of_node_.assign(m.node_count, -1);
+  free_nodes_.assign(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    row_of_node_[free_by_index[i]] = permutation(int(i));
+    free_nodes_[std::size_t(permutation(int(i)))] = free_by_index[i];
+  }
+  const Eigen::SparseMatrix<double>& lower = ldlt.matrixL().nestedExpression();
+  column_start_.assign(n + 1, 0);
+  for (int j = 0; j < int(n); ++j) {
+    for (Eigen::SparseMatrix<double>::InnerIterator it(lower, j); it; ++it) {
+      if (it.row() <= j) continue;  // the unit diagonal, where it is stored
+      row_.push_back(static_cast<std::uint16_t>(it.row()));
+      value_.push_back(static_cast<float>(it.value()));
+    }
+    column_start_[std::size_t(j) + 1] = static_cast<std::uint32_t>(row_.size());
+  }
+  inverse_diagonal_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) inverse_diagonal_[i] = static_cast<float>(1.0 / ldlt.vectorD()(int(i)));
+}
+
+std::size_t ProjectiveSystem::memory_bytes() const {
+  auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
+  std::size_t total = sizeof(*this) + bytes(spring_a) + bytes(spring_b) + bytes(spring_length) + bytes(spring_knee_length) + bytes(spring_weight) + bytes(spring_soft_share) +
+                      bytes(element_rest_volume) + bytes(element_weight) + bytes(row_of_node_) + bytes(free_nodes_) +
+                      bytes(column_start_) + bytes(row_) + bytes(value_) + bytes(inverse_diagonal_);
+  for (const auto& corner : element_node) total += bytes(corner);
+  return total;
+}
+
+void ProjectiveSystem::solve(float* y, std::size_t lanes) const {
+  const std::size_t n = free_nodes_.size();
+  const auto* start = column_start_.data();
+  const auto* row = row_.data();
+  const float* value = value_.data();
+  const float* diagonal = inverse_diagonal_.data();
+  switch (lanes) {
+    case 3: return substitute_3(start, row, value, diagonal, n, y);
+    case 6: return substitute_6(start, row, value, diagonal, n, y);
+    case 12: return substitute_12(start, row, value, diagonal, n, y);
+    case 24: return substitute_24(start, row, value, diagonal, n, y);
+    case 48: return substitute_48(start, row, value, diagonal, n, y);
+    default: throw std::invalid_argument("projective dynamics: a solve takes 3, 6, 12, 24 or 48 lanes");
+  }
+}
+
+}  // namespace fw::physics::detail
+
+namespace fw::physics {
+
+ProjectiveSystemCache& ProjectiveSystemCache::operator=(const ProjectiveSystemCache&) {
+  std::lock_guard lock(mutex_);
+  systems_.clear();
+  return *this;
+}
+
+std::shared_ptr<const detail::ProjectiveSystem> ProjectiveSystemCache::get(const TissueModel& model, float step_s) const {
+  // Frames come at a handful of rates (and their lengths on a 2 % grid,
+  // ProjectiveStepper::tissue_step); a model fed from everywhere starts over.
+  constexpr std::size_t kMaxSystems = 8;
+  std::lock_guard lock(mutex_);
+  auto it = systems_.find(step_s);
+  if (it != systems_.end()) return it->second;
+  if (systems_.size() >= kMaxSystems) systems_.clear();
+  auto system = std::make_shared<const detail::ProjectiveSystem>(model, step_s);
+  systems_.emplace(step_s, system);
+  return system;
+}
+
+std::size_t ProjectiveSystemCache::size() const {
+  std::lock_guard lock(mutex_);
+  return systems_.size();
+}
+
+std::size_t ProjectiveSystemCache::memory_bytes() const {
+  std::lock_guard lock(mutex_);
+  std::size_t bytes = 0;
+  for (const auto& [step, system] : systems_) bytes += system->memory_bytes();
+  return bytes;
+}
+
+}  // namespace fw::physics

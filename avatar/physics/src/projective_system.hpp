@@ -1,0 +1,79 @@
+#pragma once
+// The global step of projective dynamics (Bouaziz, Martin, Liu, Kavan &
+// Pauly 2014, "Projective Dynamics: Fusing Constraint Projections for Fast
+// Simulation", SIGGRAPH, eq. 10-11) for one tissue model and one step
+// length h: the constraints with their weights, and the matrix
+//
+//   S = M / h^2 + (1 + beta / h) sum_i w_i A_i^T A_i
+//
+// over the moving nodes that are not held (the bone layer and the held
+// outline are prescribed positions, moved to the right-hand side), factored
+// once as P^T L D L^T P. The same matrix serves x, y and z and every face of
+// the model, so a solve takes many right-hand sides at once: rows of up to
+// 48 floats, the three coordinates of up to 16 faces side by side, so that
+// every nonzero of L is a few vector operations across faces.
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "fw/physics/tissue_model.hpp"
+
+namespace fw::physics::detail {
+
+/// Faces whose right-hand sides one solve interleaves.
+inline constexpr std::size_t kMaxBatchFaces = 16;
+
+class ProjectiveSystem {
+ public:
+  ProjectiveSystem(const TissueModel& model, float step_s);
+
+  float step_s() const { return step_s_; }
+  /// Stiffness-proportional (Rayleigh) damping: the units resist their
+  /// stretching speed by beta times their stiffness, seconds.
+  float damping_s() const { return damping_s_; }
+
+  // The constraints that move a free node. Springs: A = e_b - e_a, projected
+  // onto their rest length. Volumes: A = the six nodes about their centroid,
+  // projected onto the prism's rest volume.
+  // A spring's weight is its stiffer slope k2 (past the knee); the local
+  // step projects it to the length p at which k2 (L - p) is the biphasic
+  // curve's force at its length L now, so the equilibrium is the curve's.
+  std::vector<std::uint16_t> spring_a, spring_b;
+  std::vector<float> spring_length, spring_knee_length, spring_weight;
+  std::vector<float> spring_soft_share;  ///< k1 / k2
+  std::array<std::vector<std::uint16_t>, 6> element_node;
+  std::vector<float> element_rest_volume, element_weight;
+
+  /// Row (after the fill-reducing permutation) of node i, or -1 where the
+  /// node is prescribed (bone, held outline).
+  const std::vector<std::int32_t>& row_of_node() const { return row_of_node_; }
+  std::size_t free_count() const { return free_nodes_.size(); }
+  const std::vector<std::uint16_t>& free_nodes() const { return free_nodes_; }
+  /// Nonzeros below the diagonal of L.
+  std::size_t factor_nonzeros() const { return row_.size(); }
+  std::size_t memory_bytes() const;
+
+  /// Solves S x = b in place for `lanes` right-hand sides interleaved row by
+  /// row (y[row * lanes + lane], rows in permuted order); lanes is 3, 6, 12,
+  /// 24 or 48.
+  void solve(float* y, std::size_t lanes) const;
+
+ private:
+  template <std::size_t W>
+  void solve_lanes(float* y) const;
+
+  float step_s_ = 0, damping_s_ = 0;
+  std::vector<std::int32_t> row_of_node_;
+  std::vector<std::uint16_t> free_nodes_;  ///< by row
+  // L, unit lower triangular, by columns (compressed sparse column), and D^-1.
+  std::vector<std::uint32_t> column_start_;
+  std::vector<std::uint16_t> row_;
+  std::vector<float> value_, inverse_diagonal_;
+};
+
+/// Padded lanes for `faces` faces: 3 coordinates each, rounded up to a
+/// width solve() takes.
+std::size_t lanes_for(std::size_t faces);
+
+}  // namespace fw::physics::detail
