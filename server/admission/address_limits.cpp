@@ -35,6 +35,8 @@ BucketRate rate_of(const AbuseLimits& limits, AddressRate rate) {
     case AddressRate::upload: return limits.uploads;
     case AddressRate::room_creation: return limits.room_creations;
     case AddressRate::script: return limits.scripts;
+    case AddressRate::look_save: return limits.look_saves;
+    case AddressRate::avatar_look_save: return limits.avatar_look_saves;
   }
   return {};
 }
