@@ -26,9 +26,10 @@ struct AbuseLimits {
   /// Saved looks written or deleted (PUT and DELETE /api/avatars/ID/looks/NAME)
   /// from one address, and of one avatar from any address: each is a
   /// durable write (and a Redis write in a cluster). The bursts let a
-  /// person fill an avatar's 16 looks at once; then one every 10 s.
-  BucketRate look_saves{0.1, 24};
-  BucketRate avatar_look_saves{0.1, 20};
+  /// person fill an avatar's 16 looks at once and correct a few; then one
+  /// every 10 s.
+  BucketRate look_saves{0.1, 32};
+  BucketRate avatar_look_saves{0.1, 24};
   /// Chat lines into one room, from everyone in it.
   BucketRate room_chat{5.0, 20};
   /// Joins into one room, from every address together.
