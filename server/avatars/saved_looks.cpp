@@ -24,13 +24,17 @@ bool read_count(std::string_view bytes, std::size_t& at, char end, std::size_t& 
 
 std::string normalize_look_name(std::string_view name, std::string& normalized) {
   if (name.empty()) return "a look needs a name: 1 to " + std::to_string(kMaxLookNameBytes) + " bytes";
+  const auto too_long = [](std::size_t bytes) {
+    return "the look's name is " + std::to_string(bytes) + " bytes; at most " + std::to_string(kMaxLookNameBytes) +
+           " (32 letters of the Latin alphabet): choose a shorter one";
+  };
+  // The rules of display names, in words about a look.
   if (std::string why = normalize_display_name(name, normalized); !why.empty()) {
-    if (why.starts_with("a display name")) return "a look's name needs at least one visible character";
+    if (why.starts_with("a display name needs")) return "a look's name needs at least one visible character";
+    if (why.starts_with("a display name is")) return too_long(name.size());
     return why;
   }
-  if (normalized.size() > kMaxLookNameBytes)
-    return "the look's name is " + std::to_string(normalized.size()) + " bytes; at most " +
-           std::to_string(kMaxLookNameBytes) + " (32 letters of the Latin alphabet): choose a shorter one";
+  if (normalized.size() > kMaxLookNameBytes) return too_long(normalized.size());
   return {};
 }
 

@@ -4,7 +4,8 @@
 // would, with its own behaviour off until turned on. Sliders set overrides
 // that hold until changed (lab_controls.js, override_sender.js); the face is
 // drawn as the room draws it (lab_view.js); a script editor checks and plays
-// FACS sentences (script_result.js).
+// FACS sentences (script_result.js) and keeps them with the person's avatar
+// as saved looks (saved_looks.js).
 import { Limits } from '../../protocol/session_types.js';
 import { parseServers } from '../../shared/server_list.js';
 import { fetchOwnPackage, loadRenderer } from '../page_resources.js';
@@ -12,6 +13,7 @@ import { RoomClient } from '../room_client.js';
 import { GROUPS, SLIDERS, Side, RESET_OVERRIDE, behaviourOverride, overrideOf } from './lab_controls.js';
 import { LabView } from './lab_view.js';
 import { OverrideSender } from './override_sender.js';
+import { wireSavedLooks } from './saved_looks.js';
 import { offsetOf, readScriptResult } from './script_result.js';
 
 const $ = (id) => document.getElementById(id);
@@ -53,6 +55,7 @@ async function main() {
   wireBehaviourAndReset(sender, controls);
   wireCamera(view, canvas);
   wireScript(client);
+  wireSavedLooks({ client, editor: $('script'), identity });
   client.start();
 
   let lastDraw = -Infinity;
@@ -174,7 +177,7 @@ function wireCamera(view, canvas) {
   apply(0);
 }
 
-/** The script editor: load a file, check and play on the server, save a copy. */
+/** The script editor: load a file, check and play on the server, download a copy. */
 function wireScript(client) {
   const text = $('script');
   const result = $('script-result');
@@ -228,7 +231,7 @@ function wireScript(client) {
     result.textContent = `loaded ${file.name}`;
     result.classList.remove('error');
   });
-  $('script-save').addEventListener('click', () => {
+  $('script-download').addEventListener('click', () => {
     const link = document.createElement('a');
     link.href = URL.createObjectURL(new Blob([text.value], { type: 'text/plain' }));
     link.download = 'expression.facs';
