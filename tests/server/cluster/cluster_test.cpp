@@ -27,6 +27,7 @@
 #include "redis_blocking.hpp"
 #include "redis_process.hpp"
 #include "room_test_server.hpp"
+#include "saved_looks_client.hpp"
 
 namespace fw::test {
 namespace {
@@ -652,6 +653,55 @@ TEST(Cluster, MessagesForgedIntoRedisChangeNothingAClientSees) {
   // The room goes on for both, as before.
   for (auto* c : both) c->frames_per_avatar.clear();
   EXPECT_TRUE(eventually([&] { pump_all(both, 100ms); return everyone_sees(both, {first_id, bridged_id}); }, 10s));
+}
+
+
+// Saved looks are the cluster's (PROTOCOL.md 8.2): saved on one node, listed
+// and played on another (the room owned by either node: one of the two
+// people is bridged), and gone from every node and from Redis with their
+// avatar.
+TEST(Cluster, ALookSavedOnOneNodePlaysOnAnotherAndGoesWithItsAvatar) {
+  Cluster cluster;
+  cluster.add_node("a");
+  cluster.add_node("b");
+  for (std::size_t i = 0; i < 2; ++i) ASSERT_TRUE(eventually([&] { return ready(cluster.node(i).http_port()); }, 20s));
+  RunningServer& a = cluster.node(0);
+  RunningServer& b = cluster.node(1);
+  const test::OwnedAvatar ann = test::upload_own_face("127.0.4.1", a.http_port(), 21);
+  ASSERT_FALSE(ann.key.empty());
+  ASSERT_EQ(test::save_look("127.0.4.1", a.http_port(), ann, "flushed", test::kBlushLook).status, 200);
+  const std::string smile = "ClearAllFrame\nBeginKeyFrame\n  12 2.0\nAnimate 5 \"smile\"\nend\n";
+  ASSERT_EQ(test::save_look("127.0.4.1", b.http_port(), ann, "smile", smile).status, 200);
+  const auto listed = test::look_request("127.0.4.1", b.http_port(), "GET", ann.asset, "", ann.key);
+  ASSERT_EQ(listed.status, 200);
+  EXPECT_EQ(nlohmann::json::parse(listed.body)["looks"].size(), 2u) << listed.body;
+  EXPECT_TRUE(std::filesystem::exists(b.data() / "avatars" / (ann.asset + ".looks")));
+
+  auto bo = join_node(a, "looks", "Bo", "", "127.0.5.1");
+  auto ann_in = test::wear_in(b.tcp_port(), "127.0.4.1", "looks", "Ann", ann);
+  ASSERT_TRUE(bo->welcome && ann_in->welcome) << (ann_in->closing ? ann_in->closing->reason : "no answer");
+  const std::uint32_t ann_id = ann_in->welcome->you;
+  ASSERT_TRUE(bo->pump_until([&] { return bo->decoder.avatar(ann_id) != nullptr; }, 15s)) << "Bo never saw Ann";
+  bo->pump_for(1000ms);
+  const float before = test::largest_blush(*bo, ann_id);
+  const auto played = test::play_look(*ann_in, 1, "flushed");
+  ASSERT_TRUE(played);
+  EXPECT_EQ(*played, "");
+  float during = 0;
+  bo->pump_until([&] { return (during = test::largest_blush(*bo, ann_id)) > before + 0.1f; }, 10s);
+  EXPECT_GT(during, before + 0.1f) << "the look saved on node a, played on node b, did not redden Ann for Bo";
+
+  const auto deleted = http_exchange(a.http_port(), "DELETE /api/avatars/" + ann.asset +
+                                                        " HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\n"
+                                                        "X-Avatar-Key: " + ann.key + "\r\n\r\n");
+  ASSERT_EQ(deleted.status, 204);
+  server::RedisBlocking redis(cluster.redis_address(), 2000ms);
+  const auto in_redis = redis.command({"EXISTS", "fw:avatar:" + ann.asset + ":looks"});
+  ASSERT_TRUE(in_redis);
+  EXPECT_EQ(in_redis->integer, 0) << "Redis kept the looks of a deleted avatar";
+  EXPECT_TRUE(eventually([&] { return !std::filesystem::exists(b.data() / "avatars" / (ann.asset + ".looks")); }, 10s))
+      << "node b kept its copy of the looks";
+  EXPECT_EQ(test::look_request("127.0.4.1", b.http_port(), "GET", ann.asset, "", ann.key).status, 404);
 }
 
 }  // namespace

@@ -69,7 +69,7 @@ test('a look saved in the lab is listed after a reload, loads, plays, and the ro
   const before = await ownBlush(page, 'facewireLab');
   await entry.locator('button[data-action="play"]').click();
   await pageUntil(page, (p) => p.textContent('#looks-result'), (t) => t.includes("playing 'flushed'"), 'the look played');
-  const during = await pageUntil(page, (p) => ownBlush(p, 'facewireLab'), (b) => b > before + 0.2,
+  const during = await pageUntil(page, (p) => ownBlush(p, 'facewireLab'), (b) => b > before + 0.1,
     'the played look reddening the face', 15000);
   console.log(`lab: blush ${before.toFixed(2)} -> ${during.toFixed(2)}`);
   await page.close();
@@ -85,7 +85,7 @@ test('a look saved in the lab is listed after a reload, loads, plays, and the ro
   await room.click('#look-play');
   await pageUntil(room, (p) => p.textContent('#command-result'), (t) => t.includes("Look 'flushed': on your face now"),
     'the look accepted in the room');
-  const roomDuring = await pageUntil(room, (p) => ownBlush(p, 'facewireRoom'), (b) => b > roomBefore + 0.2,
+  const roomDuring = await pageUntil(room, (p) => ownBlush(p, 'facewireRoom'), (b) => b > roomBefore + 0.1,
     'the look reddening the face in the room', 15000);
   console.log(`room: blush ${roomBefore.toFixed(2)} -> ${roomDuring.toFixed(2)}`);
   await room.close();
