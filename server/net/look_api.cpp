@@ -4,6 +4,7 @@
 
 #include "avatar_deletion.hpp"
 #include "peer_address.hpp"
+#include "percent_decoding.hpp"
 #include "rest_api.hpp"
 #include "script_check.hpp"
 
@@ -22,30 +23,6 @@ struct LookTarget {
   std::string name;  ///< percent-decoded, not yet checked
   bool named = false;
 };
-
-int hex_value(char c) {
-  if (c >= '0' && c <= '9') return c - '0';
-  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-  return -1;
-}
-
-/// `text` with its %XX escapes decoded; nullopt when one is malformed.
-std::optional<std::string> percent_decoded(std::string_view text) {
-  std::string out;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    if (text[i] != '%') {
-      out += text[i];
-      continue;
-    }
-    if (i + 2 >= text.size()) return std::nullopt;
-    const int high = hex_value(text[i + 1]), low = hex_value(text[i + 2]);
-    if (high < 0 || low < 0) return std::nullopt;
-    out += static_cast<char>(high * 16 + low);
-    i += 2;
-  }
-  return out;
-}
 
 std::optional<LookTarget> look_target(std::string_view target) {
   const std::string_view path = target.substr(0, target.find('?'));

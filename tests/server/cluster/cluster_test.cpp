@@ -86,6 +86,15 @@ bool eventually(Predicate done, std::chrono::milliseconds timeout) {
   return done();
 }
 
+/// Two nodes, "a" and "b", with the default flags, each ready (its /readyz) within 20 s.
+bool two_ready_nodes(Cluster& cluster) {
+  cluster.add_node("a");
+  cluster.add_node("b");
+  for (std::size_t i = 0; i < 2; ++i)
+    if (!eventually([&] { return ready(cluster.node(i).http_port()); }, 20s)) return false;
+  return true;
+}
+
 /// The avatars a client knows are in its room: the welcome's, then presence.
 std::set<std::uint32_t> known_avatars(const RoomTestClient& client) {
   std::set<std::uint32_t> ids;
@@ -496,9 +505,7 @@ TEST(Cluster, AFaceUploadedToANodeThatDiesIsWornOnAnother) {
 
 TEST(Cluster, AnAvatarDeletedOnOneNodeIsGoneFromEveryNodeAndItsWearerShownNeutral) {
   Cluster cluster;
-  cluster.add_node("a");
-  cluster.add_node("b");
-  for (std::size_t i = 0; i < 2; ++i) ASSERT_TRUE(eventually([&] { return ready(cluster.node(i).http_port()); }, 20s));
+  ASSERT_TRUE(two_ready_nodes(cluster));
   RunningServer& a = cluster.node(0);
   RunningServer& b = cluster.node(1);
   const auto package = server::make_demo_package(13);  // a face of its own: checked, not prepared
@@ -662,9 +669,7 @@ TEST(Cluster, MessagesForgedIntoRedisChangeNothingAClientSees) {
 // avatar.
 TEST(Cluster, ALookSavedOnOneNodePlaysOnAnotherAndGoesWithItsAvatar) {
   Cluster cluster;
-  cluster.add_node("a");
-  cluster.add_node("b");
-  for (std::size_t i = 0; i < 2; ++i) ASSERT_TRUE(eventually([&] { return ready(cluster.node(i).http_port()); }, 20s));
+  ASSERT_TRUE(two_ready_nodes(cluster));
   RunningServer& a = cluster.node(0);
   RunningServer& b = cluster.node(1);
   const test::OwnedAvatar ann = test::upload_own_face("127.0.4.1", a.http_port(), 21);
@@ -687,9 +692,8 @@ TEST(Cluster, ALookSavedOnOneNodePlaysOnAnotherAndGoesWithItsAvatar) {
   const auto played = test::play_look(*ann_in, 1, "flushed");
   ASSERT_TRUE(played);
   EXPECT_EQ(*played, "");
-  float during = 0;
-  bo->pump_until([&] { return (during = test::largest_blush(*bo, ann_id)) > before + 0.1f; }, 10s);
-  EXPECT_GT(during, before + 0.1f) << "the look saved on node a, played on node b, did not redden Ann for Bo";
+  EXPECT_GT(test::blush_within(*bo, ann_id, before + 0.1f, 10s), before + 0.1f)
+      << "the look saved on node a, played on node b, did not redden Ann for Bo";
 
   const auto deleted = http_exchange(a.http_port(), "DELETE /api/avatars/" + ann.asset +
                                                         " HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\n"

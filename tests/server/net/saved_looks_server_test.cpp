@@ -109,9 +109,8 @@ TEST(SavedLooks, ASavedEpisodePlayedByNameReddensItsWearerForOthers) {
   const auto played = test::play_look(*alice_in, 2, "flushed");
   ASSERT_TRUE(played);
   EXPECT_EQ(*played, "");
-  float during = 0;
-  bob->pump_until([&] { return (during = test::largest_blush(*bob, alice_id)) > before + 0.1f; }, 10s);
-  EXPECT_GT(during, before + 0.1f) << "the saved episode did not redden Alice's face as Bob receives it";
+  EXPECT_GT(test::blush_within(*bob, alice_id, before + 0.1f, 10s), before + 0.1f)
+      << "the saved episode did not redden Alice's face as Bob receives it";
 
   // Bob wears a face the room gave him: no looks of his own to play.
   const auto bobs = test::play_look(*bob, 3, "flushed");

@@ -118,6 +118,15 @@ inline float largest_blush(const RoomTestClient& client, std::uint32_t avatar) {
   return largest;
 }
 
+/// Pumps `client` until `avatar`'s largest blush passes `level`, for
+/// `timeout` at most; the blush then (at most `level` when it never passed).
+inline float blush_within(RoomTestClient& client, std::uint32_t avatar, float level,
+                          std::chrono::milliseconds timeout) {
+  float blush = 0;
+  client.pump_until([&] { return (blush = largest_blush(client, avatar)) > level; }, timeout);
+  return blush;
+}
+
 /// A vascular episode, as the face lab's example (blushing.fws) reduced to one stage.
 inline const std::string kBlushLook =
     "[emotion flushed\n  [stage1 duration 100 [expression flush intensity 1.0]]]\n"
