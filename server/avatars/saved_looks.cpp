@@ -61,7 +61,8 @@ bool decode_looks(std::string_view bytes, std::vector<SavedLook>& looks) {
         bytes.size() - at < name_bytes + script_bytes + 1 || bytes[at + name_bytes + script_bytes] != '\n' ||
         read.size() == kMaxLooksPerAvatar)
       return false;
-    read.push_back({std::string(bytes.substr(at, name_bytes)), std::string(bytes.substr(at + name_bytes, script_bytes))});
+    read.push_back(
+        {std::string(bytes.substr(at, name_bytes)), std::string(bytes.substr(at + name_bytes, script_bytes))});
     at += name_bytes + script_bytes + 1;
   }
   looks = std::move(read);

@@ -331,10 +331,11 @@ void HttpSession::on_read(beast::error_code ec, std::size_t) {
     auto self = shared_from_this();
     net::post(services_.api.workers, [self, request = std::move(request)]() mutable {
       Response response = *respond_to_looks(self->services_.api, request, self->peer_address_);
-      net::post(self->stream_.get_executor(), [self, request = std::move(request), response = std::move(response)]() mutable {
-        self->note_if_refused(response, request);
-        self->send(std::move(response));
-      });
+      net::post(self->stream_.get_executor(),
+                [self, request = std::move(request), response = std::move(response)]() mutable {
+                  self->note_if_refused(response, request);
+                  self->send(std::move(response));
+                });
     });
     return;
   }

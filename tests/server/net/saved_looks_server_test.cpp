@@ -51,7 +51,8 @@ TEST(SavedLooks, AreKeptWithTheAvatarsKeyAndRefusedWithoutIt) {
   EXPECT_EQ(unnamed.status, 400) << unnamed.body;
 
   ASSERT_EQ(save_look(kAlice, port, alice, "blush%20slowly", test::kBlushLook).status, 200);
-  for (int i = 1; i < 16; ++i) ASSERT_EQ(save_look(kAlice, port, alice, "smile" + std::to_string(i), kSmile).status, 200) << i;
+  for (int i = 1; i < 16; ++i)
+    ASSERT_EQ(save_look(kAlice, port, alice, "smile" + std::to_string(i), kSmile).status, 200) << i;
   const auto seventeenth = save_look(kAlice, port, alice, "one too many", kSmile);
   EXPECT_EQ(seventeenth.status, 409);
   EXPECT_NE(seventeenth.body.find("delete one"), std::string::npos) << seventeenth.body;
@@ -112,7 +113,15 @@ TEST(SavedLooks, ASavedEpisodePlayedByNameReddensItsWearerForOthers) {
   EXPECT_GT(test::blush_within(*bob, alice_id, before + 0.1f, 10s), before + 0.1f)
       << "the saved episode did not redden Alice's face as Bob receives it";
 
-  // Bob wears a face the room gave him: no looks of his own to play.
+  // Bob wears a face the room gave him: one of the server's own, which
+  // keeps no looks (nobody holds its key), and no looks of his own to play.
+  std::string bobs_face;
+  for (const auto& info : bob->welcome->avatars)
+    if (info.id == bob->welcome->you) bobs_face = info.asset;
+  ASSERT_FALSE(bobs_face.empty());
+  const auto own = look_request(kBob, server.http_port(), "PUT", bobs_face, "mine", alice.key, kSmile);
+  EXPECT_EQ(own.status, 403);
+  EXPECT_NE(own.body.find("server's own faces"), std::string::npos) << own.body;
   const auto bobs = test::play_look(*bob, 3, "flushed");
   ASSERT_TRUE(bobs);
   EXPECT_NE(bobs->find("uploaded avatar"), std::string::npos) << *bobs;
