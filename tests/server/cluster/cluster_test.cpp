@@ -663,27 +663,29 @@ TEST(Cluster, MessagesForgedIntoRedisChangeNothingAClientSees) {
 }
 
 
-// Saved looks are the cluster's (PROTOCOL.md 8.2): saved on one node, listed
-// and played on another (the room owned by either node: one of the two
-// people is bridged), and gone from every node and from Redis with their
-// avatar.
+// Saved looks are the cluster's (PROTOCOL.md 8.2): saved on the node that
+// owns the room, listed and played from the other, whose person is bridged
+// to it, and gone from every node and from Redis with their avatar.
 TEST(Cluster, ALookSavedOnOneNodePlaysOnAnotherAndGoesWithItsAvatar) {
   Cluster cluster;
   ASSERT_TRUE(two_ready_nodes(cluster));
-  RunningServer& a = cluster.node(0);
-  RunningServer& b = cluster.node(1);
-  const test::OwnedAvatar ann = test::upload_own_face("127.0.4.1", a.http_port(), 21);
+  auto bo = join_node(cluster.node(0), "looks", "Bo", "", "127.0.5.1");
+  const std::string owner = cluster.owner_of("looks");
+  ASSERT_FALSE(owner.empty());
+  RunningServer& saving = cluster.node(cluster.index_of(owner));
+  RunningServer& bridging = cluster.node(1 - cluster.index_of(owner));
+  const test::OwnedAvatar ann = test::upload_own_face("127.0.4.1", saving.http_port(), 21);
   ASSERT_FALSE(ann.key.empty());
-  ASSERT_EQ(test::save_look("127.0.4.1", a.http_port(), ann, "flushed", test::kBlushLook).status, 200);
+  ASSERT_EQ(test::save_look("127.0.4.1", saving.http_port(), ann, "flushed", test::kBlushLook).status, 200);
   const std::string smile = "ClearAllFrame\nBeginKeyFrame\n  12 2.0\nAnimate 5 \"smile\"\nend\n";
-  ASSERT_EQ(test::save_look("127.0.4.1", b.http_port(), ann, "smile", smile).status, 200);
-  const auto listed = test::look_request("127.0.4.1", b.http_port(), "GET", ann.asset, "", ann.key);
+  ASSERT_EQ(test::save_look("127.0.4.1", bridging.http_port(), ann, "smile", smile).status, 200);
+  const auto listed = test::look_request("127.0.4.1", bridging.http_port(), "GET", ann.asset, "", ann.key);
   ASSERT_EQ(listed.status, 200);
   EXPECT_EQ(nlohmann::json::parse(listed.body)["looks"].size(), 2u) << listed.body;
-  EXPECT_TRUE(std::filesystem::exists(b.data() / "avatars" / (ann.asset + ".looks")));
+  const auto copy = bridging.data() / "avatars" / (ann.asset + ".looks");
+  EXPECT_TRUE(std::filesystem::exists(copy));
 
-  auto bo = join_node(a, "looks", "Bo", "", "127.0.5.1");
-  auto ann_in = test::wear_in(b.tcp_port(), "127.0.4.1", "looks", "Ann", ann);
+  auto ann_in = test::wear_in(bridging.tcp_port(), "127.0.4.1", "looks", "Ann", ann);
   ASSERT_TRUE(bo->welcome && ann_in->welcome) << (ann_in->closing ? ann_in->closing->reason : "no answer");
   const std::uint32_t ann_id = ann_in->welcome->you;
   ASSERT_TRUE(bo->pump_until([&] { return bo->decoder.avatar(ann_id) != nullptr; }, 15s)) << "Bo never saw Ann";
@@ -693,19 +695,18 @@ TEST(Cluster, ALookSavedOnOneNodePlaysOnAnotherAndGoesWithItsAvatar) {
   ASSERT_TRUE(played);
   EXPECT_EQ(*played, "");
   EXPECT_GT(test::blush_within(*bo, ann_id, before + 0.1f, 10s), before + 0.1f)
-      << "the look saved on node a, played on node b, did not redden Ann for Bo";
+      << "the look saved on " << owner << ", played through the bridge, did not redden Ann for Bo";
 
-  const auto deleted = http_exchange(a.http_port(), "DELETE /api/avatars/" + ann.asset +
-                                                        " HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\n"
-                                                        "X-Avatar-Key: " + ann.key + "\r\n\r\n");
+  const auto deleted = http_exchange(saving.http_port(), "DELETE /api/avatars/" + ann.asset +
+                                                             " HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\n"
+                                                             "X-Avatar-Key: " + ann.key + "\r\n\r\n");
   ASSERT_EQ(deleted.status, 204);
   server::RedisBlocking redis(cluster.redis_address(), 2000ms);
   const auto in_redis = redis.command({"EXISTS", "fw:avatar:" + ann.asset + ":looks"});
   ASSERT_TRUE(in_redis);
   EXPECT_EQ(in_redis->integer, 0) << "Redis kept the looks of a deleted avatar";
-  EXPECT_TRUE(eventually([&] { return !std::filesystem::exists(b.data() / "avatars" / (ann.asset + ".looks")); }, 10s))
-      << "node b kept its copy of the looks";
-  EXPECT_EQ(test::look_request("127.0.4.1", b.http_port(), "GET", ann.asset, "", ann.key).status, 404);
+  EXPECT_TRUE(eventually([&] { return !std::filesystem::exists(copy); }, 10s)) << "the other node kept its copy";
+  EXPECT_EQ(test::look_request("127.0.4.1", bridging.http_port(), "GET", ann.asset, "", ann.key).status, 404);
 }
 
 }  // namespace
