@@ -50,7 +50,9 @@ std::optional<double> AddressLimits::take(AddressRate rate, const std::string& k
   auto& bucket = it->second.buckets[static_cast<std::size_t>(rate)];
   if (!bucket) bucket.emplace(rate_of(rate), now);
   if (bucket->take(now)) {
-    if (sharing_) spent_[{key, rate}] += 1;
+    // An avatar's own rate is kept on each node: the other nodes take
+    // addresses only in their limits news (cluster_limits.hpp).
+    if (sharing_ && rate != AddressRate::avatar_look_save) spent_[{key, rate}] += 1;
     return std::nullopt;
   }
   return bucket->seconds_until(now);

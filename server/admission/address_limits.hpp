@@ -22,7 +22,8 @@ namespace fw::server {
 
 /// look_save counts an address's saved-look changes; avatar_look_save
 /// counts one avatar's, under the key avatar_rate_key() makes (whoever
-/// holds its key, from any address).
+/// holds its key, from any address), on each node alone: it is never in
+/// the spending a cluster shares, which names addresses only.
 enum class AddressRate { join, chat, upload, room_creation, script, look_save, avatar_look_save };
 inline constexpr std::size_t kAddressRateCount = 7;
 

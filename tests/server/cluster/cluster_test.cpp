@@ -709,5 +709,47 @@ TEST(Cluster, ALookSavedOnOneNodePlaysOnAnotherAndGoesWithItsAvatar) {
   EXPECT_EQ(test::look_request("127.0.4.1", bridging.http_port(), "GET", ann.asset, "", ann.key).status, 404);
 }
 
+// While Redis is away a node keeps saved looks on its own disk (and says
+// so in its log); when Redis comes back without them, the node shares its
+// copy again, and the other node lists them.
+TEST(Cluster, LooksSavedWhileRedisIsAwayAreKeptAndSharedWhenItIsBack) {
+  Cluster cluster;
+  ASSERT_TRUE(two_ready_nodes(cluster));
+  RunningServer& a = cluster.node(0);
+  RunningServer& b = cluster.node(1);
+  const long refused_before = test::refusal_count(b.http_port(), "cluster_message");
+  const test::OwnedAvatar ann = test::upload_own_face("127.0.4.1", a.http_port(), 22);
+  ASSERT_FALSE(ann.key.empty());
+  ASSERT_EQ(test::save_look("127.0.4.1", a.http_port(), ann, "flushed", test::kBlushLook).status, 200);
+
+  // Twice a second the nodes share what addresses spent: once at least before Redis goes.
+  std::this_thread::sleep_for(1500ms);
+  cluster.redis().stop();
+  const std::string smile = "ClearAllFrame\nBeginKeyFrame\n  12 2.0\nAnimate 5 \"smile\"\nend\n";
+  EXPECT_EQ(test::save_look("127.0.4.1", a.http_port(), ann, "smile", smile).status, 200);
+  const auto here = test::look_request("127.0.4.1", a.http_port(), "GET", ann.asset, "", ann.key);
+  ASSERT_EQ(here.status, 200);
+  EXPECT_EQ(nlohmann::json::parse(here.body)["looks"].size(), 2u) << "node a without Redis: " << here.body;
+
+  // The node's blocking connection tries Redis again at most once a second:
+  // calls that failed just now would keep it from sharing its copies at
+  // once when Redis is back (it shares them as it reconnects).
+  std::this_thread::sleep_for(1500ms);
+  ASSERT_TRUE(cluster.redis().start()) << cluster.redis().error();
+  EXPECT_TRUE(eventually([&] { return ready(a.http_port()) && ready(b.http_port()); }, 15s));
+  std::string listed;
+  EXPECT_TRUE(eventually(
+      [&] {
+        const auto reply = test::look_request("127.0.4.1", b.http_port(), "GET", ann.asset, "", ann.key);
+        listed = reply.body;
+        const auto looks = nlohmann::json::parse(reply.body, nullptr, false);
+        return reply.status == 200 && looks.is_object() && looks["looks"].size() == 2;
+      },
+      20s))
+      << "node b did not list the looks node a kept while Redis was away: " << listed;
+  // The changes' rates took nothing the other node's limits news refuses.
+  EXPECT_EQ(test::refusal_count(b.http_port(), "cluster_message"), refused_before);
+}
+
 }  // namespace
 }  // namespace fw::test
