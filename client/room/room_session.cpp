@@ -387,6 +387,18 @@ void RoomSession::on_room_frame(std::span<const std::uint8_t> room_frame, const 
 // What goes up.
 
 void RoomSession::chat(const std::string& text) {
+  constexpr std::string_view kLook = "/look ";
+  if (text.starts_with(kLook)) {
+    const std::string name = text.substr(kLook.size());
+    if (name.empty() || name.size() > codec::kMaxLookNameBytes)
+      return event("/look takes the name of a look saved with your avatar (1 to " +
+                   std::to_string(codec::kMaxLookNameBytes) + " bytes); nothing sent");
+    codec::Command command;
+    command.request_id = ++command_serial_;
+    command.kind = codec::Command::Kind::play_look;
+    command.sentence = name;
+    return send_message(command);
+  }
   codec::Chat chat;
   chat.text = text;
   send_message(chat);

@@ -94,7 +94,9 @@ class RoomSession {
   /// Closes the connection and stops reconnecting (call on the io thread,
   /// e.g. through asio::post).
   void stop();
-  /// Sends a chat line (from the io thread).
+  /// Sends a chat line (from the io thread). A line "/look NAME" is no
+  /// chat: it plays the look NAME saved with the person's avatar (command
+  /// kind 6, PROTOCOL.md 8.2); a refusal comes back as an event.
   void chat(const std::string& text);
   /// A line the person typed (from the io thread): sent now when in the
   /// room, else with the first welcome, after the --say lines.

@@ -145,7 +145,7 @@ MessageError read_message(std::span<const std::uint8_t> bytes, Command& m) {
   m.request_id = r.varint(5);
   const std::uint8_t kind = r.u8();
   if (r.failed()) return failure_of(r);
-  if (kind > static_cast<std::uint8_t>(Command::Kind::check)) return MessageError::value_out_of_range;
+  if (kind > static_cast<std::uint8_t>(Command::Kind::play_look)) return MessageError::value_out_of_range;
   m.kind = static_cast<Command::Kind>(kind);
   m.emotion.clear();
   m.sentence.clear();
@@ -167,6 +167,10 @@ MessageError read_message(std::span<const std::uint8_t> bytes, Command& m) {
     case Command::Kind::facs:
     case Command::Kind::check:
       read_string(r, kMaxSentenceBytes, m.sentence, error, /*allow_layout=*/true);
+      break;
+    case Command::Kind::play_look:
+      read_string(r, kMaxLookNameBytes, m.sentence, error);
+      if (m.sentence.empty()) fail(error, MessageError::value_out_of_range);
       break;
     case Command::Kind::override_face: {
       const std::uint8_t part = r.u8();

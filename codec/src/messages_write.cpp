@@ -116,6 +116,10 @@ void write_message(const Command& m, std::vector<std::uint8_t>& out) {
       assert(m.sentence.size() <= kMaxSentenceBytes);
       write_string(w, m.sentence);
       break;
+    case Command::Kind::play_look:
+      assert(!m.sentence.empty() && m.sentence.size() <= kMaxLookNameBytes);
+      write_string(w, m.sentence);
+      break;
     case Command::Kind::override_face:
       assert(m.override_face.side <= 2);
       w.u8(static_cast<std::uint8_t>(m.override_face.part));

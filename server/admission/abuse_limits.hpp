@@ -23,6 +23,13 @@ struct AbuseLimits {
   /// connections: each is read on its room's strand, so a crowd of
   /// connections from one address may not keep rooms reading.
   BucketRate scripts{2.0, 10};
+  /// Saved looks written or deleted (PUT and DELETE /api/avatars/ID/looks/NAME)
+  /// from one address, and of one avatar from any address: each is a
+  /// durable write (and a Redis write in a cluster). The bursts let a
+  /// person fill an avatar's 16 looks at once and correct a few; then one
+  /// every 10 s.
+  BucketRate look_saves{0.1, 32};
+  BucketRate avatar_look_saves{0.1, 24};
   /// Chat lines into one room, from everyone in it.
   BucketRate room_chat{5.0, 20};
   /// Joins into one room, from every address together.

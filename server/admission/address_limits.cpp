@@ -35,6 +35,8 @@ BucketRate rate_of(const AbuseLimits& limits, AddressRate rate) {
     case AddressRate::upload: return limits.uploads;
     case AddressRate::room_creation: return limits.room_creations;
     case AddressRate::script: return limits.scripts;
+    case AddressRate::look_save: return limits.look_saves;
+    case AddressRate::avatar_look_save: return limits.avatar_look_saves;
   }
   return {};
 }
@@ -48,7 +50,9 @@ std::optional<double> AddressLimits::take(AddressRate rate, const std::string& k
   auto& bucket = it->second.buckets[static_cast<std::size_t>(rate)];
   if (!bucket) bucket.emplace(rate_of(rate), now);
   if (bucket->take(now)) {
-    if (sharing_) spent_[{key, rate}] += 1;
+    // An avatar's own rate is kept on each node: the other nodes take
+    // addresses only in their limits news (cluster_limits.hpp).
+    if (sharing_ && rate != AddressRate::avatar_look_save) spent_[{key, rate}] += 1;
     return std::nullopt;
   }
   return bucket->seconds_until(now);

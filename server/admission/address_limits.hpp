@@ -20,8 +20,16 @@
 
 namespace fw::server {
 
-enum class AddressRate { join, chat, upload, room_creation, script };
-inline constexpr std::size_t kAddressRateCount = 5;
+/// look_save counts an address's saved-look changes; avatar_look_save
+/// counts one avatar's, under the key avatar_rate_key() makes (whoever
+/// holds its key, from any address), on each node alone: it is never in
+/// the spending a cluster shares, which names addresses only.
+enum class AddressRate { join, chat, upload, room_creation, script, look_save, avatar_look_save };
+inline constexpr std::size_t kAddressRateCount = 7;
+
+/// The key an avatar's own rates are counted under (beside address keys,
+/// which never start so).
+inline std::string avatar_rate_key(const std::string& asset) { return "avatar:" + asset; }
 
 /// The bucket of `rate` under `limits`.
 BucketRate rate_of(const AbuseLimits& limits, AddressRate rate);

@@ -47,7 +47,8 @@ AvatarLookup deleted() {
           "this avatar was deleted by whoever uploaded it; upload your own photo to make one"};
 }
 
-constexpr const char* kAvatarFiles[] = {".fwa", ".preview.fwa", ".photo"};
+// The saved looks (look_store.hpp) go with the avatar.
+constexpr const char* kAvatarFiles[] = {".fwa", ".preview.fwa", ".photo", ".looks"};
 
 // The preview beside a package, made again when it is missing or does not
 // parse (a crash between writing the package and its preview). Writing it

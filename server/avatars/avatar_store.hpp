@@ -133,6 +133,8 @@ class AvatarStore {
   void set_repreparer(AvatarRepreparer repreparer);
   /// The cluster's copy (set once, before the store is used by others).
   void set_replica(AvatarReplica replica) { replica_ = std::move(replica); }
+  /// Where the files are: DIR/avatars (the saved looks are kept there too).
+  const std::filesystem::path& directory() const { return directory_; }
   /// Every avatar id stored here, and one avatar's files: for a node that
   /// shares its avatars again after Redis lost them.
   std::vector<std::string> stored_assets() const;

@@ -34,6 +34,8 @@ inline std::string room_chat(const std::string& room) { return kPrefix + "room:"
 inline std::string room_down(const std::string& room) { return kPrefix + "room:" + room + ":down"; }
 inline std::string room_up(const std::string& room) { return kPrefix + "room:" + room + ":up"; }
 inline std::string avatar(const std::string& asset) { return kPrefix + "avatar:" + asset; }
+/// A hash of an avatar's saved looks: name -> script; expires with the avatar's copy.
+inline std::string avatar_looks(const std::string& asset) { return kPrefix + "avatar:" + asset + ":looks"; }
 
 /// The room a room channel names ("fw:room:NAME:down" -> NAME), and which
 /// way it goes; empty when `channel` is no room channel.

@@ -65,6 +65,7 @@ ClusterNode::ClusterNode(const ClusterServices& services, net::any_io_executor e
       timer_(strand_), avatars_(address, std::chrono::milliseconds(2000)) {
   adopt_server_key();
   keep_avatars_in_redis();
+  keep_looks_in_redis();
 }
 
 ClusterNode::~ClusterNode() {

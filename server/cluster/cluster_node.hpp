@@ -109,6 +109,10 @@ class ClusterNode : public RoomBus {
   void publish(const std::string& channel, bridge::Bytes message);
   // cluster_node_avatars.cpp
   void keep_avatars_in_redis();
+  /// The saved looks likewise (cluster_node_looks.cpp).
+  void keep_looks_in_redis();
+  /// Shares `asset`'s saved looks from this node's copy when Redis has none.
+  void reshare_looks(const std::string& asset);
   void reshare_avatars();
   void adopt_server_key();
   /// Another node deleted the avatar `payload` names: this node drops its copy.
@@ -145,5 +149,9 @@ class ClusterNode : public RoomBus {
   /// What nodes not (yet) seen alive said, while their liveness is read.
   std::map<std::string, std::deque<std::pair<std::string, std::function<void()>>>> held_from_;
 };
+
+/// The command that starts the expiry of `key`, a part of an avatar's copy
+/// in Redis, again: --avatar-retention-days, or none when that is 0.
+std::vector<std::string> avatar_key_expiry(const ServerConfig& config, const std::string& key);
 
 }  // namespace fw::server

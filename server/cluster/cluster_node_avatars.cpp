@@ -14,11 +14,20 @@ namespace keys = cluster_keys;
 
 namespace {
 
+}  // namespace
+
+std::vector<std::string> avatar_key_expiry(const ServerConfig& config, const std::string& key) {
+  if (config.avatar_retention_days == 0) return {"PERSIST", key};
+  return {"EXPIRE", key, std::to_string(std::uint64_t{config.avatar_retention_days} * 86400)};
+}
+
+namespace {
+
 /// Redis forgets its copy of an avatar unused for --avatar-retention-days
-/// on every node: each use here starts its expiry again (at most hourly).
+/// on every node: each use here starts its expiry again (at most hourly),
+/// and its saved looks' with it.
 std::vector<std::string> expiry_of(const ServerConfig& config, const std::string& asset) {
-  if (config.avatar_retention_days == 0) return {"PERSIST", keys::avatar(asset)};
-  return {"EXPIRE", keys::avatar(asset), std::to_string(std::uint64_t{config.avatar_retention_days} * 86400)};
+  return avatar_key_expiry(config, keys::avatar(asset));
 }
 
 }  // namespace
@@ -49,12 +58,16 @@ void ClusterNode::keep_avatars_in_redis() {
             spdlog::info("avatar {} fetched from the cluster", asset);
             return true;
           },
-      .touch = [this](const std::string& asset) { avatars_.command(expiry_of(services_.config, asset)); },
+      .touch =
+          [this](const std::string& asset) {
+            avatars_.command(expiry_of(services_.config, asset));
+            avatars_.command(avatar_key_expiry(services_.config, keys::avatar_looks(asset)));
+          },
       .remove =
           [this](const std::string& asset) {
             // The mark first: a node that misses the message finds it when it comes back.
             const auto marked = avatars_.command({"SADD", keys::kDeletedAvatars, asset});
-            avatars_.command({"DEL", keys::avatar(asset)});
+            avatars_.command({"DEL", keys::avatar(asset), keys::avatar_looks(asset)});
             avatars_.command({"SREM", keys::kAvatars, asset});
             avatars_.command({"PUBLISH", keys::kAvatarDeletions, asset});
             if (!marked || marked->is_error())
@@ -99,6 +112,7 @@ void ClusterNode::reshare_avatars() {
         replace_deleted_avatar_in_rooms(services_.rooms, asset);
         continue;
       }
+      reshare_looks(asset);
       const auto known = avatars_.command({"SISMEMBER", keys::kAvatars, asset});
       if (!known || known->integer == 1) continue;
       std::vector<std::uint8_t> package, photo;

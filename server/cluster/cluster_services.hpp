@@ -11,6 +11,7 @@
 #include "abuse_log.hpp"
 #include "address_limits.hpp"
 #include "avatar_store.hpp"
+#include "look_store.hpp"
 #include "room_bus_relay.hpp"
 #include "room_registry.hpp"
 #include "server_config.hpp"
@@ -26,6 +27,7 @@ struct ClusterServices {
   AddressLimits& addresses;    ///< spending and connections shared with the other nodes
   TokenHolders& tokens;        ///< join tokens held here and elsewhere
   AvatarStore& store;          ///< its copies in Redis
+  LookStore& looks;            ///< the avatars' saved looks, kept in Redis beside them
   /// Signs avatar keys: the node puts the cluster's in its place before
   /// any request is served.
   std::string& server_key;

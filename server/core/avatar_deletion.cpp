@@ -8,7 +8,8 @@
 
 namespace fw::server {
 
-AvatarDeletion delete_avatar(const AvatarDeletionServices& services, const std::string& asset, std::string_view key) {
+AvatarDeletion check_avatar_owner(const AvatarDeletionServices& services, const std::string& asset,
+                                  std::string_view key) {
   const AvatarStatus status = services.store.lookup(asset).status;
   if (status == AvatarStatus::unknown || status == AvatarStatus::deleted) return AvatarDeletion::unknown;
   // Their keys were handed to anyone who uploaded their bytes before ids
@@ -18,6 +19,12 @@ AvatarDeletion delete_avatar(const AvatarDeletionServices& services, const std::
     return AvatarDeletion::server_face;
   if (key.empty()) return AvatarDeletion::no_key;
   if (!avatar_key_matches(services.server_key, asset, key)) return AvatarDeletion::wrong_key;
+  return AvatarDeletion::deleted;
+}
+
+AvatarDeletion delete_avatar(const AvatarDeletionServices& services, const std::string& asset, std::string_view key) {
+  if (const AvatarDeletion owner = check_avatar_owner(services, asset, key); owner != AvatarDeletion::deleted)
+    return owner;
   services.store.remove(asset);
   replace_deleted_avatar_in_rooms(services.rooms, asset);
   return AvatarDeletion::deleted;

@@ -30,6 +30,12 @@ enum class AvatarDeletion {
   server_face,  ///< one of the server's own faces, nobody's to delete
 };
 
+/// Whether a request that shows `key` comes from the owner of avatar
+/// `asset` (deletion, saved looks): `deleted` stands for "yes, its owner";
+/// else why not, as a deletion would be answered.
+AvatarDeletion check_avatar_owner(const AvatarDeletionServices& services, const std::string& asset,
+                                  std::string_view key);
+
 /// Deletes the avatar `asset` (package, preview, photo) if `key` is its
 /// key (server_keys.hpp: the one its upload answered).
 AvatarDeletion delete_avatar(const AvatarDeletionServices& services, const std::string& asset, std::string_view key);

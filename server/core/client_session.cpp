@@ -276,6 +276,7 @@ void ClientSession::handle_hello(std::span<const std::uint8_t> message) {
                   Abuse::face_not_yours);
   if (!claim_token(hello)) return;
   preview_ = hello.preview;
+  worn_asset_ = hello.avatar;  // its key matched above
   RoomOpening opening = preview_ ? services_.rooms.open_preview(address_key(peer_))
                                  : services_.rooms.open_for(hello.room, address_key(peer_));
   if (!opening.room) return refuse(opening.code, opening.refusal, opening.abuse);
@@ -439,14 +440,38 @@ void ClientSession::handle_chat(std::span<const std::uint8_t> message) {
 void ClientSession::handle_command(std::span<const std::uint8_t> message) {
   codec::Command command;
   if (const auto e = codec::read_message(message, command); e != MessageError::ok) return malformed(e, "command");
-  if (command.kind == codec::Command::Kind::facs) {
-    if (auto refusal = script_refusal()) {
-      auto result = encode_shared(codec::CommandResult{command.request_id, std::move(*refusal)});
-      queued_bytes_.fetch_add(result->size(), std::memory_order_relaxed);  // as deliver() does
-      return do_deliver(std::move(result));
-    }
+  if (command.kind == codec::Command::Kind::facs || command.kind == codec::Command::Kind::play_look) {
+    // A saved look is a script: it takes the script rate before it is read.
+    if (auto refusal = script_refusal()) return answer_command(command.request_id, std::move(*refusal));
   }
+  if (command.kind == codec::Command::Kind::play_look) return play_look(std::move(command));
   room_->command(avatar_, std::move(command));
+}
+
+void ClientSession::answer_command(std::uint32_t request_id, std::string error) {
+  auto result = encode_shared(codec::CommandResult{request_id, std::move(error)});
+  queued_bytes_.fetch_add(result->size(), std::memory_order_relaxed);  // as deliver() does
+  do_deliver(std::move(result));
+}
+
+void ClientSession::play_look(codec::Command command) {
+  if (worn_asset_.empty())
+    return answer_command(command.request_id,
+                          "saved looks are kept with an uploaded avatar: join wearing yours (with its key) to play "
+                          "them");
+  net::post(services_.workers, [self = shared_from_this(), command = std::move(command)]() mutable {
+    std::optional<SavedLook> look = self->services_.looks.find(self->worn_asset_, command.sentence);
+    net::post(self->executor_, [self, command = std::move(command), look = std::move(look)]() mutable {
+      if (self->state_ != State::joined) return;
+      if (!look)
+        return self->answer_command(
+            command.request_id, "your avatar has no look named '" + command.sentence.substr(0, 32) +
+                                    "': save it first (face lab, Save), or pick one of yours");
+      command.kind = codec::Command::Kind::facs;
+      command.sentence = std::move(look->script);
+      self->room_->command(self->avatar_, std::move(command));
+    });
+  });
 }
 
 // A script over the connection's or its address's rate is refused with a

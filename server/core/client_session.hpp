@@ -107,6 +107,12 @@ class ClientSession : public RoomConnection, public std::enable_shared_from_this
   /// Why a face script may not be played now (the connection's or the
   /// address's script rate), nullopt when it may; takes its tokens.
   std::optional<std::string> script_refusal();
+  /// Command kind 6: reads the look off the connection's strand (the store
+  /// may wait for Redis), then sends its script into the room as a FACS
+  /// command, so that a room (or the node that owns it) plays it as one.
+  void play_look(codec::Command command);
+  /// Answers command `request_id` here, without the room.
+  void answer_command(std::uint32_t request_id, std::string error);
   void handle_set_rate(std::span<const std::uint8_t> message);
   void handle_ping(std::span<const std::uint8_t> message);
   void malformed(codec::MessageError error, const char* what);
@@ -153,6 +159,9 @@ class ClientSession : public RoomConnection, public std::enable_shared_from_this
   std::string close_reason_;
   bool quick_close_ = false;  ///< closing_quickly()
   bool preview_ = false;      ///< the hello asked for a face-lab preview (PROTOCOL.md 5.16)
+  /// The uploaded avatar the hello wore with its key (empty: a procedural
+  /// face): whose saved looks command kind 6 plays.
+  std::string worn_asset_;
 };
 
 }  // namespace fw::server

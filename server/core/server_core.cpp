@@ -41,6 +41,7 @@ ServerCore::ServerCore(const ServerConfig& config, std::unique_ptr<Metrics> metr
       physics_lod_(config_.physics && config_.physics_lod),
       addresses_(config_.abuse),
       store_(std::move(store)),
+      looks_(store_->directory()),
       server_key_(std::move(server_key)),
       demo_avatars_(std::move(demo_avatars)),
       residents_(std::move(residents)),
@@ -50,8 +51,9 @@ ServerCore::ServerCore(const ServerConfig& config, std::unique_ptr<Metrics> metr
       rooms_(RoomServices{config_, *metrics_, physics_lod_, abuse_, workers_, *store_, demo_avatars_, bus_,
                           state_.draining, speech_},
              addresses_),
-      session_services_{config_, *metrics_, abuse_,         tokens_,     addresses_,     *store_,
-                        rooms_,  sessions_, demo_avatars_, server_key_, state_.draining} {}
+      session_services_{config_, *metrics_, abuse_,         tokens_,     addresses_,      *store_,
+                        looks_,  workers_,  rooms_,        sessions_,   demo_avatars_, server_key_,
+                        state_.draining} {}
 
 ServerCore::~ServerCore() { stop(); }
 

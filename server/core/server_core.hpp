@@ -21,6 +21,7 @@
 #include "abuse_log.hpp"
 #include "address_limits.hpp"
 #include "avatar_store.hpp"
+#include "look_store.hpp"
 #include "metrics.hpp"
 #include "physics_governor.hpp"
 #include "room_bus_relay.hpp"
@@ -62,6 +63,8 @@ class ServerCore {
   AddressLimits& addresses() { return addresses_; }
   TokenHolders& tokens() { return tokens_; }
   AvatarStore& store() { return *store_; }
+  /// The avatars' saved looks, kept beside them (look_store.hpp).
+  LookStore& looks() { return looks_; }
   /// Signs avatar keys: DATA/server.key, until a cluster node adopts the
   /// cluster's (before any request is served).
   std::string& server_key() { return server_key_; }
@@ -93,6 +96,7 @@ class ServerCore {
   TokenHolders tokens_;
   AddressLimits addresses_;  ///< per-address connections, rates and upload bytes (config.abuse)
   std::unique_ptr<AvatarStore> store_;
+  LookStore looks_;
   std::string server_key_;
   const std::vector<StoredAvatar> demo_avatars_;
   const std::vector<StoredAvatar> residents_;

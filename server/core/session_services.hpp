@@ -9,7 +9,10 @@
 
 #include "abuse_log.hpp"
 #include "address_limits.hpp"
+#include <boost/asio/thread_pool.hpp>
+
 #include "avatar_store.hpp"
+#include "look_store.hpp"
 #include "metrics.hpp"
 #include "server_config.hpp"
 #include "token_holders.hpp"
@@ -26,6 +29,10 @@ struct SessionServices {
   TokenHolders& tokens;        ///< which connection holds each join token
   AddressLimits& addresses;    ///< joins and chat per address (config.abuse)
   AvatarStore& store;          ///< the uploaded avatars a hello names
+  LookStore& looks;            ///< the saved looks a play-look command names
+  /// Where a saved look is read (it may wait for the disk or Redis): never
+  /// the connection's strand nor a room's.
+  boost::asio::thread_pool& workers;
   RoomRegistry& rooms;         ///< the room a hello opens or joins
   SessionRegistry& sessions;   ///< the sessions open now, for a drain
   /// Faces for people who join without a package, chosen by name.

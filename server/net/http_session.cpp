@@ -11,6 +11,7 @@
 #include "connection_refusal.hpp"
 #include "http_responses.hpp"
 #include "log_text.hpp"
+#include "look_api.hpp"
 #include "peer_address.hpp"
 #include "photo_preparation.hpp"
 #include "rest_api.hpp"
@@ -194,9 +195,15 @@ void HttpSession::on_header(beast::error_code ec, std::size_t) {
       return send(std::move(refusal));
     }
   }
-  const std::size_t limit = upload_ ? services_.config.max_upload_bytes : limits::kMaxBodyBytes;
-  if (parser_->content_length() && *parser_->content_length() > limit)
-    return (void)answer_read_error(http::error::body_limit);
+  // A look's script is refused by its declared size, before its body is read.
+  const bool look_save = is_look_save(header.method(), target);
+  const std::size_t limit =
+      upload_ ? services_.config.max_upload_bytes : look_save ? kMaxLookScriptBytes : limits::kMaxBodyBytes;
+  if (parser_->content_length() && *parser_->content_length() > limit) {
+    if (!look_save) return (void)answer_read_error(http::error::body_limit);
+    note_bad_request(413, "a saved look's script over " + std::to_string(limit) + " bytes");
+    return send(oversized_look(header.version(), *parser_->content_length()));
+  }
   parser_->body_limit(limit);  // for chunked bodies
   // An upload is admitted or refused before its body is read (a refused
   // body is drained by the lingering close): its address's rate, whether
@@ -316,6 +323,19 @@ void HttpSession::on_read(beast::error_code ec, std::size_t) {
         self->upload_bytes_.release();  // answered: its body is no longer held
         self->send(std::move(response));
       });
+    });
+    return;
+  }
+  if (is_look_route(std::string_view(request.target().data(), request.target().size()))) {
+    // Off the loop: the look store may wait for the disk or Redis.
+    auto self = shared_from_this();
+    net::post(services_.api.workers, [self, request = std::move(request)]() mutable {
+      Response response = *respond_to_looks(self->services_.api, request, self->peer_address_);
+      net::post(self->stream_.get_executor(),
+                [self, request = std::move(request), response = std::move(response)]() mutable {
+                  self->note_if_refused(response, request);
+                  self->send(std::move(response));
+                });
     });
     return;
   }

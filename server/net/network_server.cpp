@@ -148,8 +148,9 @@ std::string node_name(const ServerConfig& config, unsigned short http_port) {
 // What each part above the core receives of it, made once here.
 
 ApiServices api_services(ServerCore& core) {
-  return {core.config(), core.metrics(),      core.physics_lod(), core.abuse(), core.store(),
-          core.rooms(),  core.own_faces(),    core.server_key(),  core.state()};
+  return {core.config(), core.metrics(),   core.physics_lod(), core.abuse(), core.store(),
+          core.rooms(),  core.own_faces(), core.server_key(),  core.state(), core.looks(),
+          core.addresses(), core.workers()};
 }
 
 UploadServices upload_services(ServerCore& core) {
@@ -158,8 +159,9 @@ UploadServices upload_services(ServerCore& core) {
 }
 
 ClusterServices cluster_services(ServerCore& core) {
-  return {core.config(),       core.abuse(),   core.addresses(), core.tokens(), core.store(),    core.server_key(),
-          core.residents(),    core.workers(), core.room_bus(),  core.rooms(),  core.sessions(), core.state()};
+  return {core.config(),    core.abuse(),    core.addresses(), core.tokens(),   core.store(),
+          core.looks(),     core.server_key(), core.residents(), core.workers(), core.room_bus(),
+          core.rooms(),     core.sessions(), core.state()};
 }
 
 /// Runs `ioc` on `threads` threads, this one included, until it stops.

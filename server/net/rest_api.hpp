@@ -6,9 +6,13 @@
 #include <string>
 #include <vector>
 
+#include <boost/asio/thread_pool.hpp>
+
 #include "abuse_log.hpp"
+#include "address_limits.hpp"
 #include "avatar_store.hpp"
 #include "http_responses.hpp"
+#include "look_store.hpp"
 #include "metrics.hpp"
 #include "physics_governor.hpp"
 #include "server_config.hpp"
@@ -30,6 +34,11 @@ struct ApiServices {
   const std::vector<StoredAvatar>& own_faces;  ///< the server's faces, nobody's to delete
   const std::string& server_key;  ///< checks an avatar's key before its deletion
   const ServerState& state;    ///< /readyz
+  LookStore& looks;            ///< saved looks (look_api.hpp)
+  AddressLimits& addresses;    ///< saved-look changes per address and per avatar
+  /// Where saved-look requests are answered: the store may wait for the
+  /// disk or Redis, which the I/O loop must not.
+  boost::asio::thread_pool& workers;
 };
 
 /// The answer to a GET, HEAD or DELETE the API serves, or nullopt when the

@@ -34,7 +34,10 @@ AvatarCommand to_simulation(const codec::Command& c) {
     case codec::Command::Kind::snub: return SnubCommand{c.target, seconds};
     case codec::Command::Kind::override_face: return OverrideCommand{c.override_face};
     case codec::Command::Kind::check: return CheckCommand{c.sentence};
-    case codec::Command::Kind::facs: break;
+    case codec::Command::Kind::facs:
+    // Never here: the session that took it sends the look's script as a
+    // FACS command (client_session.cpp); OwnedRoom::command refuses it.
+    case codec::Command::Kind::play_look: break;
   }
   return FacsCommand{c.sentence};
 }
@@ -98,7 +101,9 @@ void OwnedRoom::command(std::uint32_t avatar, const codec::Command& command) {
   OwnedMember& member = it->second;
   if (!member.stream && member.node.empty()) return;
   const auto before = simulation_.unit_morphs(avatar);
-  std::string error = simulation_.command(avatar, to_simulation(command));
+  std::string error = command.kind == codec::Command::Kind::play_look
+                          ? "a saved look is played through the connection that names it"
+                          : simulation_.command(avatar, to_simulation(command));
   const auto after = simulation_.unit_morphs(avatar);
   if (after && (!before || before->version != after->version)) broadcast_unit_morphs(avatar);
   const auto result =

@@ -29,4 +29,14 @@ std::string check_script(std::string_view text) {
   return out + first->message;
 }
 
+std::string playable_script(std::string_view text, std::vector<std::string>& kinds) {
+  kinds.clear();
+  behavior::RoomScript read;
+  if (std::string error = behavior::read_room_script(text, read); !error.empty()) return error;
+  if (read.animation) kinds.push_back("expression");
+  if (read.emotion) kinds.push_back("vascular");
+  if (!read.units.empty()) kinds.push_back("definitions");
+  return {};
+}
+
 }  // namespace fw::server

@@ -5,6 +5,7 @@
 // command result carries (at most 120 bytes).
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace fw::server {
 
@@ -13,5 +14,11 @@ namespace fw::server {
 /// are others, or what a room refuses of a well-formed script (a bound it
 /// passes: room_script.hpp), as playing it would answer.
 std::string check_script(std::string_view text);
+
+/// What a room would play of `text` (a saved look, PROTOCOL.md 8.2): "" and
+/// what it holds in `kinds` ("expression", "vascular", "definitions", in
+/// that order) when a room plays it; else what playing it would answer (a
+/// script error as "script LINE:COLUMN: message", or the bound it passes).
+std::string playable_script(std::string_view text, std::vector<std::string>& kinds);
 
 }  // namespace fw::server

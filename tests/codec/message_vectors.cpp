@@ -207,6 +207,8 @@ json make_vectors() {
                 .duration_ms = 3000, .sentence = "", .override_face = {OverridePart::skin_age, 0, 0, 5000}});
   v.add(Command{.request_id = 7, .kind = Command::Kind::check, .emotion = "", .intensity = 1, .target = 0,
                 .duration_ms = 3000, .sentence = "ClearAllFrame\nBeginKeyFrame 12 1.0"});
+  v.add(Command{.request_id = 8, .kind = Command::Kind::play_look, .emotion = "", .intensity = 1, .target = 0,
+                .duration_ms = 3000, .sentence = "blush slowly"});
   v.add(CommandResult{4, "no such action unit"});
   v.add(PackageChunk{7, PackageChunk::Quality::full, 20000, 16000, {1, 2, 3, 250, 0}});
   v.add(SetRate{2400});

@@ -384,6 +384,25 @@ TEST(Messages, FaceLabCommandsAndPreviewHelloRoundTrip) {
   ASSERT_EQ(read_message(bytes_of(check), back), MessageError::ok);
   EXPECT_EQ(back.sentence, check.sentence);
 
+  // A saved look by its name: 1 .. 32 bytes of text without layout.
+  Command play{.request_id = 10, .kind = Command::Kind::play_look, .emotion = "", .intensity = 1, .target = 0,
+               .duration_ms = 3000, .sentence = "blush slowly"};
+  ASSERT_EQ(read_message(bytes_of(play), back), MessageError::ok);
+  EXPECT_EQ(back.kind, Command::Kind::play_look);
+  EXPECT_EQ(back.sentence, "blush slowly");
+  std::vector<std::uint8_t> unnamed = bytes_of(play);
+  unnamed.resize(3);
+  unnamed.push_back(0);  // an empty name
+  EXPECT_EQ(read_message(unnamed, back), MessageError::value_out_of_range);
+  std::vector<std::uint8_t> long_name = bytes_of(play);
+  long_name.resize(3);
+  long_name.push_back(kMaxLookNameBytes + 1);
+  long_name.insert(long_name.end(), kMaxLookNameBytes + 1, 'a');
+  EXPECT_EQ(read_message(long_name, back), MessageError::string_too_long);
+  std::vector<std::uint8_t> past = bytes_of(play);
+  past[2] = 7;  // no kind 7
+  EXPECT_EQ(read_message(past, back), MessageError::value_out_of_range);
+
   Hello hello;
   hello.room = "lab";
   hello.name = "Ada";

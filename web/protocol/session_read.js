@@ -160,7 +160,7 @@ const readers = {
     const requestId = f.r.varint(5);
     const kind = f.r.u8();
     if (f.r.failed) return { error: failureOf(f.r) };
-    if (kind > CommandKind.check) return { error: E.valueOutOfRange };
+    if (kind > CommandKind.playLook) return { error: E.valueOutOfRange };
     const m = {
       requestId, kind, emotion: '', intensity: 1, target: 0, durationMs: 3000, sentence: '',
       override: { part: 0, index: 0, side: 0, value: 0 },
@@ -181,6 +181,9 @@ const readers = {
       const value = f.r.i16();
       if (!f.r.failed && (part > LAST_OVERRIDE_PART || side > 2)) f.fail(E.valueOutOfRange);
       m.override = { part, index, side, value };
+    } else if (kind === CommandKind.playLook) {
+      m.sentence = f.string(Limits.lookNameBytes);
+      if (!f.r.failed && m.sentence === '') f.fail(E.valueOutOfRange);
     } else {
       m.sentence = f.string(Limits.sentenceBytes, true);
     }

@@ -32,7 +32,7 @@ export const CloseCode = Object.freeze({
   avatarBeingPrepared: 12,
 });
 export const PresenceChange = Object.freeze({ joined: 0, left: 1 });
-export const CommandKind = Object.freeze({ express: 0, lookAt: 1, snub: 2, facs: 3, override: 4, check: 5 });
+export const CommandKind = Object.freeze({ express: 0, lookAt: 1, snub: 2, facs: 3, override: 4, check: 5, playLook: 6 });
 /** What a face-lab override sets (PROTOCOL.md 5.16): its `part`. */
 export const OverridePart = Object.freeze({
   emotion: 0, actionUnit: 1, headYaw: 2, headPitch: 3, headRoll: 4, eyeYaw: 5, eyePitch: 6, lids: 7, blush: 8,
@@ -56,6 +56,7 @@ export const Limits = Object.freeze({
   speakingMs: 20_000,
   emotionBytes: 16,
   sentenceBytes: 4096,
+  lookNameBytes: 32,
   reasonBytes: 120,
   listEntries: 64,
   packageBytes: 8 * 1024 * 1024,

@@ -91,6 +91,8 @@ export class RoomClient {
   facs(sentence) { return this.command({ kind: CommandKind.facs, sentence }); }
   /** A face-lab preview's override ({ part, index, side, value }, PROTOCOL.md 5.17). */
   override(fields) { return this.command({ kind: CommandKind.override, override: fields }); }
+  /** Plays a look the person saved with their avatar, by its name (PROTOCOL.md 8.2). */
+  playLook(name) { return this.command({ kind: CommandKind.playLook, sentence: name }); }
   /** Asks the server to parse a face script without playing it. */
   check(script) { return this.command({ kind: CommandKind.check, sentence: script }); }
   setRate(maxBps) {

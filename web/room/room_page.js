@@ -10,6 +10,7 @@
 import { AttentionTarget, isLanguageCode } from '../protocol/session_types.js';
 import { fetchOwnPackage, loadRenderer } from './page_resources.js';
 import { RoomClient } from './room_client.js';
+import { SavedLooksApi } from './saved_looks_api.js';
 import { MuteList } from './mute_list.js';
 import { ReadAloudPlayer } from './read_aloud_player.js';
 import { RoomView, TILE_BACKGROUND_CSS } from './room_view.js';
@@ -89,6 +90,7 @@ async function main() {
     client.setRate(budgetBps(budget.value));
   });
   wireControls(client, mutes, toggleMute);
+  wireSavedLooks(client);
 
   let lastDraw = -Infinity;
   const frame = (now) => {
@@ -243,6 +245,28 @@ function showResults(client) {
     $('command-result').textContent = error ? `refused: ${error}` : `${button.dataset.label}: on your face now`;
     setTimeout(() => button.classList.remove('accepted', 'refused'), 2500);
   }
+}
+
+/**
+ * The person's saved looks (kept with their uploaded avatar in the face
+ * lab), in a picker that plays one by name (command kind 6). Shown only
+ * when there are some.
+ */
+async function wireSavedLooks(client) {
+  const api = new SavedLooksApi({ asset: identity.asset, key: identity.key });
+  if (!api.available) return;
+  const answer = await api.list().catch((error) => ({ error: error.message }));
+  if (answer.error || answer.looks.length === 0) return;
+  const pick = $('look-pick');
+  pick.replaceChildren(...answer.looks.map((look) => new Option(`${look.name} (${look.kinds.join(', ')})`, look.name)));
+  $('saved-looks').hidden = false;
+  $('look-play').addEventListener('click', () => {
+    const button = $('look-play');
+    button.dataset.label = `Look '${pick.value}'`;
+    button.classList.remove('accepted', 'refused');
+    button.classList.add('sent');
+    pending.set(client.playLook(pick.value), button);
+  });
 }
 
 function wireControls(client, mutes, toggleMute) {

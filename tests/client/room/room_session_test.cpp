@@ -190,6 +190,24 @@ TEST_F(RoomSessionTest, ChatLinesGoUp) {
   EXPECT_EQ(read_as<codec::Chat>(sent[0]).text, "hi all");
 }
 
+TEST_F(RoomSessionTest, ALookLinePlaysASavedLookInsteadOfSayingIt) {
+  join();
+  upstream();
+  session_->chat("/look blush slowly");
+  auto sent = upstream();
+  ASSERT_EQ(sent.size(), 1u);
+  const auto command = read_as<codec::Command>(sent[0]);
+  EXPECT_EQ(command.kind, codec::Command::Kind::play_look);
+  EXPECT_EQ(command.sentence, "blush slowly");
+  session_->chat("/look " + std::string(codec::kMaxLookNameBytes + 1, 'x'));
+  EXPECT_TRUE(upstream().empty()) << "a name no server takes was sent";
+  EXPECT_TRUE(saw_event("/look takes the name"));
+  session_->chat("/looking good");
+  sent = upstream();
+  ASSERT_EQ(sent.size(), 1u);
+  EXPECT_EQ(read_as<codec::Chat>(sent[0]).text, "/looking good");
+}
+
 TEST_F(RoomSessionTest, ANewBudgetIsAskedForAndKeptForTheNextConnection) {
   join();
   upstream();

@@ -28,6 +28,7 @@
 #include "redis_process.hpp"
 #include "room_test_server.hpp"
 #include "cluster_fixture.hpp"
+#include "saved_looks_client.hpp"
 
 namespace fw::test {
 namespace {
@@ -35,6 +36,15 @@ namespace {
 using namespace std::chrono_literals;
 using Transport = RoomTestClient::Transport;
 using Clock = std::chrono::steady_clock;
+
+/// Two nodes, "a" and "b", with the default flags, each ready (its /readyz) within 20 s.
+bool two_ready_nodes(Cluster& cluster) {
+  cluster.add_node("a");
+  cluster.add_node("b");
+  for (std::size_t i = 0; i < 2; ++i)
+    if (!eventually([&] { return ready(cluster.node(i).http_port()); }, 20s)) return false;
+  return true;
+}
 
 /// Whether each client decodes frames of every one of `ids` (its own too).
 bool everyone_sees(const std::vector<RoomTestClient*>& clients, const std::set<std::uint32_t>& ids) {
@@ -408,9 +418,7 @@ TEST(Cluster, AFaceUploadedToANodeThatDiesIsWornOnAnother) {
 
 TEST(Cluster, AnAvatarDeletedOnOneNodeIsGoneFromEveryNodeAndItsWearerShownNeutral) {
   Cluster cluster;
-  cluster.add_node("a");
-  cluster.add_node("b");
-  for (std::size_t i = 0; i < 2; ++i) ASSERT_TRUE(eventually([&] { return ready(cluster.node(i).http_port()); }, 20s));
+  ASSERT_TRUE(two_ready_nodes(cluster));
   RunningServer& a = cluster.node(0);
   RunningServer& b = cluster.node(1);
   const auto package = server::make_demo_package(13);  // a face of its own: checked, not prepared
@@ -600,6 +608,94 @@ TEST(Cluster, FaceLabPreviewsOnTwoNodesKeepNothingInRedis) {
   for (const auto& key : keys->elements) found += key.text + " ";
   EXPECT_TRUE(keys->elements.empty()) << "previews wrote to Redis: " << found;
   for (auto* lab : both) EXPECT_FALSE(lab->closed()) << "a preview ended: " << lab->closing->reason;
+}
+
+// Saved looks are the cluster's (PROTOCOL.md 8.2): saved on the node that
+// owns the room, listed and played from the other, whose person is bridged
+// to it, and gone from every node and from Redis with their avatar.
+TEST(Cluster, ALookSavedOnOneNodePlaysOnAnotherAndGoesWithItsAvatar) {
+  Cluster cluster;
+  ASSERT_TRUE(two_ready_nodes(cluster));
+  auto bo = join_node(cluster.node(0), "looks", "Bo", "", "127.0.5.1");
+  const std::string owner = cluster.owner_of("looks");
+  ASSERT_FALSE(owner.empty());
+  RunningServer& saving = cluster.node(cluster.index_of(owner));
+  RunningServer& bridging = cluster.node(1 - cluster.index_of(owner));
+  const test::OwnedAvatar ann = test::upload_own_face("127.0.4.1", saving.http_port(), 21);
+  ASSERT_FALSE(ann.key.empty());
+  ASSERT_EQ(test::save_look("127.0.4.1", saving.http_port(), ann, "flushed", test::kBlushLook).status, 200);
+  const std::string smile = "ClearAllFrame\nBeginKeyFrame\n  12 2.0\nAnimate 5 \"smile\"\nend\n";
+  ASSERT_EQ(test::save_look("127.0.4.1", bridging.http_port(), ann, "smile", smile).status, 200);
+  const auto listed = test::look_request("127.0.4.1", bridging.http_port(), "GET", ann.asset, "", ann.key);
+  ASSERT_EQ(listed.status, 200);
+  EXPECT_EQ(nlohmann::json::parse(listed.body)["looks"].size(), 2u) << listed.body;
+  const auto copy = bridging.data() / "avatars" / (ann.asset + ".looks");
+  EXPECT_TRUE(std::filesystem::exists(copy));
+
+  auto ann_in = test::wear_in(bridging.tcp_port(), "127.0.4.1", "looks", "Ann", ann);
+  ASSERT_TRUE(bo->welcome && ann_in->welcome) << (ann_in->closing ? ann_in->closing->reason : "no answer");
+  const std::uint32_t ann_id = ann_in->welcome->you;
+  ASSERT_TRUE(bo->pump_until([&] { return bo->decoder.avatar(ann_id) != nullptr; }, 15s)) << "Bo never saw Ann";
+  bo->pump_for(1000ms);
+  const float before = test::largest_blush(*bo, ann_id);
+  const auto played = test::play_look(*ann_in, 1, "flushed");
+  ASSERT_TRUE(played);
+  EXPECT_EQ(*played, "");
+  EXPECT_GT(test::blush_within(*bo, ann_id, before + 0.1f, 10s), before + 0.1f)
+      << "the look saved on " << owner << ", played through the bridge, did not redden Ann for Bo";
+
+  const auto deleted = http_exchange(saving.http_port(), "DELETE /api/avatars/" + ann.asset +
+                                                             " HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\n"
+                                                             "X-Avatar-Key: " + ann.key + "\r\n\r\n");
+  ASSERT_EQ(deleted.status, 204);
+  server::RedisBlocking redis(cluster.redis_address(), 2000ms);
+  const auto in_redis = redis.command({"EXISTS", "fw:avatar:" + ann.asset + ":looks"});
+  ASSERT_TRUE(in_redis);
+  EXPECT_EQ(in_redis->integer, 0) << "Redis kept the looks of a deleted avatar";
+  EXPECT_TRUE(eventually([&] { return !std::filesystem::exists(copy); }, 10s)) << "the other node kept its copy";
+  EXPECT_EQ(test::look_request("127.0.4.1", bridging.http_port(), "GET", ann.asset, "", ann.key).status, 404);
+}
+
+// While Redis is away a node keeps saved looks on its own disk (and says
+// so in its log); when Redis comes back without them, the node shares its
+// copy again, and the other node lists them.
+TEST(Cluster, LooksSavedWhileRedisIsAwayAreKeptAndSharedWhenItIsBack) {
+  Cluster cluster;
+  ASSERT_TRUE(two_ready_nodes(cluster));
+  RunningServer& a = cluster.node(0);
+  RunningServer& b = cluster.node(1);
+  const long refused_before = test::refusal_count(b.http_port(), "cluster_message");
+  const test::OwnedAvatar ann = test::upload_own_face("127.0.4.1", a.http_port(), 22);
+  ASSERT_FALSE(ann.key.empty());
+  ASSERT_EQ(test::save_look("127.0.4.1", a.http_port(), ann, "flushed", test::kBlushLook).status, 200);
+
+  // Twice a second the nodes share what addresses spent: once at least before Redis goes.
+  std::this_thread::sleep_for(1500ms);
+  cluster.redis().stop();
+  const std::string smile = "ClearAllFrame\nBeginKeyFrame\n  12 2.0\nAnimate 5 \"smile\"\nend\n";
+  EXPECT_EQ(test::save_look("127.0.4.1", a.http_port(), ann, "smile", smile).status, 200);
+  const auto here = test::look_request("127.0.4.1", a.http_port(), "GET", ann.asset, "", ann.key);
+  ASSERT_EQ(here.status, 200);
+  EXPECT_EQ(nlohmann::json::parse(here.body)["looks"].size(), 2u) << "node a without Redis: " << here.body;
+
+  // The node's blocking connection tries Redis again at most once a second:
+  // calls that failed just now would keep it from sharing its copies at
+  // once when Redis is back (it shares them as it reconnects).
+  std::this_thread::sleep_for(1500ms);
+  ASSERT_TRUE(cluster.redis().start()) << cluster.redis().error();
+  EXPECT_TRUE(eventually([&] { return ready(a.http_port()) && ready(b.http_port()); }, 15s));
+  std::string listed;
+  EXPECT_TRUE(eventually(
+      [&] {
+        const auto reply = test::look_request("127.0.4.1", b.http_port(), "GET", ann.asset, "", ann.key);
+        listed = reply.body;
+        const auto looks = nlohmann::json::parse(reply.body, nullptr, false);
+        return reply.status == 200 && looks.is_object() && looks["looks"].size() == 2;
+      },
+      20s))
+      << "node b did not list the looks node a kept while Redis was away: " << listed;
+  // The changes' rates took nothing the other node's limits news refuses.
+  EXPECT_EQ(test::refusal_count(b.http_port(), "cluster_message"), refused_before);
 }
 
 }  // namespace

@@ -4,8 +4,9 @@
 // would, with its own behaviour off until turned on. Sliders set overrides
 // that hold until changed (lab_controls.js, override_sender.js); the face is
 // drawn as the room draws it (lab_view.js); a script editor checks and plays
-// FACS sentences (script_result.js); the contact sheet shows the face as it
-// is now from several views (sheet_dialog.js, contact_sheet.js).
+// FACS sentences (script_result.js) and keeps them with the person's avatar
+// as saved looks (saved_looks.js); the contact sheet shows the face as it is
+// now from several views (sheet_dialog.js, contact_sheet.js).
 import { Limits } from '../../protocol/session_types.js';
 import { parseServers } from '../../shared/server_list.js';
 import { fetchOwnPackage, loadRenderer } from '../page_resources.js';
@@ -14,6 +15,7 @@ import { GROUPS, SLIDERS, Side, RESET_OVERRIDE, behaviourOverride, overrideOf } 
 import { LabView } from './lab_view.js';
 import { OverrideSender } from './override_sender.js';
 import { wireContactSheet } from './sheet_dialog.js';
+import { wireSavedLooks } from './saved_looks.js';
 import { offsetOf, readScriptResult } from './script_result.js';
 
 const $ = (id) => document.getElementById(id);
@@ -56,6 +58,7 @@ async function main() {
   wireCamera(view, canvas);
   window.facewireLab.sheet = wireContactSheet({ button: $('contact-sheet'), view, name: identity.name });
   wireScript(client);
+  wireSavedLooks({ client, editor: $('script'), identity });
   client.start();
 
   let lastDraw = -Infinity;
@@ -177,7 +180,7 @@ function wireCamera(view, canvas) {
   apply(0);
 }
 
-/** The script editor: load a file, check and play on the server, save a copy. */
+/** The script editor: load a file, check and play on the server, download a copy. */
 function wireScript(client) {
   const text = $('script');
   const result = $('script-result');
@@ -231,7 +234,7 @@ function wireScript(client) {
     result.textContent = `loaded ${file.name}`;
     result.classList.remove('error');
   });
-  $('script-save').addEventListener('click', () => {
+  $('script-download').addEventListener('click', () => {
     const link = document.createElement('a');
     link.href = URL.createObjectURL(new Blob([text.value], { type: 'text/plain' }));
     link.download = 'expression.facs';

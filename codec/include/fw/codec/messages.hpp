@@ -115,6 +115,8 @@ inline constexpr std::size_t kMaxLanguageBytes = 16;
 inline constexpr std::uint32_t kMaxSpeakingMs = 20'000;
 inline constexpr std::size_t kMaxEmotionBytes = 16;
 inline constexpr std::size_t kMaxSentenceBytes = 4096;
+/// A saved look's name (play look, PROTOCOL.md 5.5): what a person reads in a picker.
+inline constexpr std::size_t kMaxLookNameBytes = 32;
 inline constexpr std::size_t kMaxReasonBytes = 120;
 inline constexpr std::size_t kMaxWelcomeAvatars = 64;
 inline constexpr std::size_t kMaxPackageBytes = 8 * 1024 * 1024;
@@ -243,15 +245,18 @@ struct FaceOverride {
 };
 
 struct Command {
-  /// override and check: a face lab's (PROTOCOL.md 5.16).
-  enum class Kind : std::uint8_t { express = 0, look_at = 1, snub = 2, facs = 3, override_face = 4, check = 5 };
+  /// override and check: a face lab's (PROTOCOL.md 5.16); play_look: a
+  /// script its avatar's owner saved (PROTOCOL.md 8.2), played as facs.
+  enum class Kind : std::uint8_t {
+    express = 0, look_at = 1, snub = 2, facs = 3, override_face = 4, check = 5, play_look = 6
+  };
   std::uint32_t request_id = 0;  ///< echoed in the result
   Kind kind = Kind::express;
   std::string emotion;           ///< express: joy, sadness, anger, fear, surprise, disgust, neutral
   float intensity = 1;           ///< express: 0 .. 1 (carried in hundredths)
   std::uint32_t target = 0;      ///< look_at, snub: an avatar id
   std::uint32_t duration_ms = 3000;  ///< express, look_at, snub: 0 .. 600000
-  std::string sentence;          ///< facs: a FACS expression sentence; check: a script to parse
+  std::string sentence;          ///< facs: a FACS expression sentence; check: a script to parse; play_look: the look's name
   FaceOverride override_face;    ///< override_face
 };
 

@@ -1,0 +1,33 @@
+import { readFileSync } from 'node:fs';
+import { openWeb, sourceFile } from '../support/harness.mjs';
+const out = process.argv[2];
+const web = await openWeb([]);
+try {
+  const photo = readFileSync(sourceFile('tests/data/astronaut.png'));
+  const res = await fetch(`${web.server.url}api/avatars`, { method: 'POST', headers: { 'Content-Type': 'image/png' }, body: photo });
+  const up = await res.json();
+  const page = await web.page({ width: 1280, height: 800 });
+  page.on('console', (m) => console.log('console:', m.text()));
+  await page.goto(`${web.server.url}lab.html?name=Eileen&asset=${up.asset}&key=${up.key}`);
+  await page.waitForFunction(() => window.facewireLab && window.facewireLab.client.status === 'joined' && window.facewireLab.view.frames > 10, null, { timeout: 90000 });
+  await page.waitForTimeout(3000);
+  const slide = (key, v) => page.locator(`input[data-key="${key}"]`).evaluate((input, v) => { input.value = String(v); input.dispatchEvent(new Event('input', { bubbles: true })); }, v);
+  await page.screenshot({ path: `${out}/photo-rest.png` });
+  await page.evaluate(() => { for (const d of document.querySelectorAll('details')) d.open = d.textContent.includes('Muscles') || d.textContent.includes('Skin'); });
+  await slide('muscle-22', 100);
+  await page.waitForTimeout(2500);
+  await page.screenshot({ path: `${out}/photo-zyg-left.png` });
+  await slide('muscle-22', 0);
+  const keys = await page.evaluate(() => [...document.querySelectorAll('input[data-key]')].map((i) => i.dataset.key + ':' + (i.closest('label')?.textContent || '').trim().slice(0, 40)));
+  console.log(keys.filter((k) => k.startsWith('muscle') || k.startsWith('skin')).join('\n'));
+  await page.waitForTimeout(2500);
+  await slide('skin-age', 100);
+  await slide('skin-looseness', 100);
+  await slide('emotion-joy', 100);
+  await page.waitForTimeout(3000);
+  await page.screenshot({ path: `${out}/photo-old-joy.png` });
+  await slide('skin-age', 0);
+  await slide('skin-looseness', 0);
+  await page.waitForTimeout(3000);
+  await page.screenshot({ path: `${out}/photo-young-joy.png` });
+} finally { await web.close(); }
