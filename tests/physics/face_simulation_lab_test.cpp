@@ -18,6 +18,7 @@ void expect_same(const TissueMaterial& a, const TissueMaterial& b) {
   for (std::size_t k = 0; k < kSpringKindCount; ++k) {
     EXPECT_FLOAT_EQ(a.curves[k].stiffness, b.curves[k].stiffness) << "kind " << k;
     EXPECT_FLOAT_EQ(a.curves[k].residual_strain, b.curves[k].residual_strain) << "kind " << k;
+    EXPECT_FLOAT_EQ(a.curves[k].compression_share, b.curves[k].compression_share) << "kind " << k;
     EXPECT_FLOAT_EQ(a.curves[k].knee_strain, b.curves[k].knee_strain) << "kind " << k;
     EXPECT_FLOAT_EQ(a.damping[k], b.damping[k]) << "kind " << k;
   }
@@ -38,6 +39,8 @@ TEST(AgedSkin, RunsFromNormalToLooseAndEachControlChangesItsOwnParameter) {
   const TissueMaterial loose = TissueMaterial::aged(0, 0.5f);
   EXPECT_FLOAT_EQ(loose.curves[skin].stiffness, normal.curves[skin].stiffness) << "looseness alone keeps the slopes";
   EXPECT_FLOAT_EQ(loose.curves[skin].residual_strain, -0.025f);
+  EXPECT_FLOAT_EQ(loose.curves[skin].compression_share, 0.5f) << "half as loose, half the resistance to compression";
+  EXPECT_FLOAT_EQ(half_aged.curves[skin].compression_share, 1.0f) << "age alone keeps it";
 }
 
 TEST(FaceSimulationLab, AMuscleFloorDrivesTheMuscleOnTopOfTheActionUnits) {

@@ -319,6 +319,29 @@ TEST(FaceSimulation, LooseSkinSagsMoreUnderGravity) {
   EXPECT_GT(loose, 1.3f * normal) << "normal " << normal << " mm, loose " << loose << " mm";
 }
 
+// Aged skin is slack at rest: its units are naturally longer than the
+// neutral face and carry tension only, so with no muscle pulling nothing
+// moves. The face lab ages a resting face this way (replace_model wakes
+// it); a pre-compressed skin would push its nodes about.
+TEST(FaceSimulation, AgedSkinIsSlackAtRest) {
+  TissueOptions tissue;
+  tissue.material = TissueMaterial::loose();
+  const auto aged = build_tissue_model(model::generic_face(), model::generic_face().action_units, tissue);
+  for (const Solver solver : {Solver::mass_spring, Solver::projective}) {
+    SimulationOptions options;
+    options.solver = solver;
+    FaceSimulation sim(generic_tissue(), options);
+    sim.replace_model(aged);
+    for (int f = 0; f < 60; ++f) sim.step(kFrame);
+    const auto surface = sim.surface();
+    const auto& rest = model::generic_face().skin.positions;
+    float worst = 0.0f;
+    for (std::size_t v = 0; v < surface.size(); ++v) worst = std::max(worst, glm::distance(surface[v], rest[v]) * kMm);
+    EXPECT_LT(worst, 0.01f) << "solver " << static_cast<int>(solver) << ": aged skin moved " << worst
+                            << " mm at rest";
+  }
+}
+
 TEST(FaceSimulation, StateFitsTheMemoryBudget) {
   FaceSimulation sim(generic_tissue());
   EXPECT_LT(sim.state_bytes() + sim.model().memory_bytes(), 256u * 1024u) << "issue 6: at most 256 KB per face";

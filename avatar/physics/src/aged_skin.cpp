@@ -17,6 +17,10 @@ TissueMaterial TissueMaterial::aged(float age, float looseness) {
     c.stiffness = young.curves[k].stiffness + a * (old.curves[k].stiffness - young.curves[k].stiffness);
     c.residual_strain =
         young.curves[k].residual_strain + l * (old.curves[k].residual_strain - young.curves[k].residual_strain);
+    // Looser skin is also slacker: it loses its resistance to compression
+    // as it gains length, so a slider moves the material without a jump.
+    c.compression_share = young.curves[k].compression_share +
+                          l * (old.curves[k].compression_share - young.curves[k].compression_share);
   }
   return m;
 }

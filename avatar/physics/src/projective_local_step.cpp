@@ -22,6 +22,7 @@ void add_spring_projections(const ProjectiveSystem& s, const NodeVectors& q, con
   const float* knee = s.spring_knee_length.data();
   const float* weight = s.spring_weight.data();
   const float* soft = s.spring_soft_share.data();
+  const float* compression = s.spring_compression.data();
   const std::size_t count = s.spring_a.size();
   float gx[kBlock], gy[kBlock], gz[kBlock];
   for (std::size_t begin = 0; begin < count; begin += kBlock) {
@@ -31,8 +32,11 @@ void add_spring_projections(const ProjectiveSystem& s, const NodeVectors& q, con
       const float dx = q.x[b] - q.x[a], dy = q.y[b] - q.y[a], dz = q.z[b] - q.z[a];
       const float length2 = std::max(dx * dx + dy * dy + dz * dz, 1e-18f);
       const float inverse = 1.0f / std::sqrt(length2), now = length2 * inverse;
-      // k2 (now - target) = k1 (now - L0) + (k2 - k1) max(0, now - knee).
-      const float stretch = soft[i] * (now - length[i]) + (1.0f - soft[i]) * std::max(0.0f, now - knee[i]);
+      // k2 (now - target) = k1 (max(0, d) + c min(0, d)) + (k2 - k1) max(0, now - knee), d = now - L0:
+      // a slack unit (c = 0) shorter than its natural length targets its own length.
+      const float from_natural = now - length[i];
+      const float linear = std::max(0.0f, from_natural) + compression[i] * std::min(0.0f, from_natural);
+      const float stretch = soft[i] * linear + (1.0f - soft[i]) * std::max(0.0f, now - knee[i]);
       const float scale = (now - stretch) * inverse;
       // w (p + A u): the projection and the spring's share of L u.
       gx[j] = weight[i] * (scale * dx + u.x[b] - u.x[a]);

@@ -111,6 +111,7 @@ ProjectiveSystem::ProjectiveSystem(const TissueModel& m, float step_s) : step_s_
     spring_knee_length.push_back(m.spring_rest[s] * (1.0f - c.residual_strain + c.knee_strain));
     spring_weight.push_back(c.stiffness * stiff_ratio);
     spring_soft_share.push_back(1.0f / stiff_ratio);
+    spring_compression.push_back(c.compression_share);
   }
   // Volumes: weight w = kappa s |grad V|^2 at rest, so that near rest the
   // projection's pull w lambda grad V, lambda = (V0 - V) / |grad V|^2, is the
@@ -177,7 +178,7 @@ ProjectiveSystem::ProjectiveSystem(const TissueModel& m, float step_s) : step_s_
 
 std::size_t ProjectiveSystem::memory_bytes() const {
   auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
-  std::size_t total = sizeof(*this) + bytes(spring_a) + bytes(spring_b) + bytes(spring_length) + bytes(spring_knee_length) + bytes(spring_weight) + bytes(spring_soft_share) +
+  std::size_t total = sizeof(*this) + bytes(spring_a) + bytes(spring_b) + bytes(spring_length) + bytes(spring_knee_length) + bytes(spring_weight) + bytes(spring_soft_share) + bytes(spring_compression) +
                       bytes(element_rest_volume) + bytes(element_weight) + bytes(row_of_node_) + bytes(free_nodes_) +
                       bytes(column_start_) + bytes(row_) + bytes(value_) + bytes(inverse_diagonal_);
   for (const auto& corner : element_node) total += bytes(corner);

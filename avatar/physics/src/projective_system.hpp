@@ -42,6 +42,7 @@ class ProjectiveSystem {
   std::vector<std::uint16_t> spring_a, spring_b;
   std::vector<float> spring_length, spring_knee_length, spring_weight;
   std::vector<float> spring_soft_share;  ///< k1 / k2
+  std::vector<float> spring_compression;  ///< the curve's compression share (1: resists, 0: slack when short)
   std::array<std::vector<std::uint16_t>, 6> element_node;
   std::vector<float> element_rest_volume, element_weight;
 

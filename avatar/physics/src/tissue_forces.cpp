@@ -21,6 +21,7 @@ SpringKindTable spring_kind_table(const TissueMaterial& material) {
   for (std::size_t k = 0; k < kSpringKindCount; ++k) {
     const StressStrainCurve& c = material.curves[k];
     t.k1[k] = c.stiffness;
+    t.compression_share[k] = c.compression_share;
     t.k2_extra[k] = c.stiffness * (c.stiff_ratio - 1.0f);
     t.slack[k] = 1.0f - c.residual_strain;
     t.knee[k] = 1.0f - c.residual_strain + c.knee_strain;
@@ -49,7 +50,9 @@ void add_spring_forces(const TissueModel& model, const SpringKindTable& table, c
       const float inv = 1.0f / std::sqrt(length2);
       const float length = length2 * inv;
       const float speed = ((n.vx[b] - n.vx[a]) * dx + (n.vy[b] - n.vy[a]) * dy + (n.vz[b] - n.vz[a]) * dz) * inv;
-      const float force = table.k1[kind] * (length - rest[s] * table.slack[kind]) +
+      const float from_natural = length - rest[s] * table.slack[kind];
+      const float force = table.k1[kind] * (std::max(0.0f, from_natural) +
+                                            table.compression_share[kind] * std::min(0.0f, from_natural)) +
                           table.k2_extra[kind] * std::max(0.0f, length - rest[s] * table.knee[kind]) +
                           table.damping[kind] * speed;
       const float scale = force * inv;

@@ -33,9 +33,11 @@ struct NodeArrays {
   float* fz;
 };
 
-/// Per spring kind: F = k1 (L - slack L0) + k2_extra max(0, L - knee L0) + c dL/dt.
+/// Per spring kind: F = k1 (max(0, d) + share min(0, d)) + k2_extra max(0, L - knee L0) + c dL/dt,
+/// d = L - slack L0 (stress_strain.hpp).
 struct SpringKindTable {
   float k1[kSpringKindCount];
+  float compression_share[kSpringKindCount];
   float k2_extra[kSpringKindCount];
   float slack[kSpringKindCount];
   float knee[kSpringKindCount];

@@ -484,6 +484,7 @@ TissueMaterial TissueMaterial::loose() {
     StressStrainCurve& c = m.curves[static_cast<std::size_t>(kind)];
     c.stiffness *= 0.5f;
     c.residual_strain = -0.05f;
+    c.compression_share = 0.0f;  // slack at rest, not pre-compressed
   }
   return m;
 }

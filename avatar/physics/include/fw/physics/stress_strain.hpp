@@ -21,16 +21,25 @@ struct StressStrainCurve {
   /// is naturally longer, so it is slack until stretched by -residual_strain
   /// (the paper's looser, aged skin).
   float residual_strain = 0.0f;
+  /// How much of k1 resists compression below the natural length: 1 for
+  /// young skin; 0 for aged skin, whose slack fibres carry tension only
+  /// (an elastic unit naturally longer than the neutral face hangs slack at
+  /// rest instead of pushing its ends apart: Lee, Terzopoulos & Waters 1995
+  /// model skin as fibres that straighten under tension; the
+  /// behavioral-animation paper's Fig. 2b curve starts flat at rest).
+  float compression_share = 1.0f;
 };
 
 /// Stress of the curve at `strain` (dimensionless, from the neutral length):
-///   s(e) = k1 (e + r) + (k2 - k1) max(0, e + r - knee)
+///   s(e) = k1 (max(0, e + r) + c min(0, e + r)) + (k2 - k1) max(0, e + r - knee)
+/// with c the compression share.
 /// @param[in] curve   the curve
 /// @param[in] strain  (length - rest) / rest
 /// @return force per unit rest length; positive pulls the ends together
 inline float stress(const StressStrainCurve& curve, float strain) {
   const float e = strain + curve.residual_strain;
-  return curve.stiffness * (e + (curve.stiff_ratio - 1.0f) * std::max(0.0f, e - curve.knee_strain));
+  const float linear = std::max(0.0f, e) + curve.compression_share * std::min(0.0f, e);
+  return curve.stiffness * (linear + (curve.stiff_ratio - 1.0f) * std::max(0.0f, e - curve.knee_strain));
 }
 
 }  // namespace fw::physics

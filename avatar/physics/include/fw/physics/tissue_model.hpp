@@ -58,12 +58,14 @@ struct TissueMaterial {
   /// Normal adult skin (the paper's Fig. 2a).
   static TissueMaterial normal();
   /// Looser, aged skin (Fig. 2b): softer skin layers with a negative
-  /// residual strain, so the skin is slack at its neutral length.
+  /// residual strain and tension only, so the skin hangs slack at its
+  /// neutral length instead of pushing.
   static TissueMaterial loose();
   /// Between the two, for the face lab (aged_skin.cpp): `age` (0 .. 1)
   /// softens the skin layers' slopes from normal() to loose()'s half (the
   /// elastin lost with age), `looseness` (0 .. 1) takes their residual
-  /// strain from 0 to loose()'s -0.05 (skin slack at its neutral length).
+  /// strain from 0 to loose()'s -0.05 and their compression share from 1
+  /// to 0 (skin slack at its neutral length).
   /// aged(0, 0) is normal(), aged(1, 1) is loose(); values are clamped.
   static TissueMaterial aged(float age, float looseness);
 };
