@@ -16,6 +16,7 @@ RoomSimulationOptions simulation_options(const ServerConfig& config, std::uint64
                                          std::shared_ptr<TrackMaker> track_maker, bool preview) {
   RoomSimulationOptions options{seed, config.tick_hz, config.physics, config.physics_sleeps};
   options.preview = preview;
+  options.physics_projective = config.physics_projective;
   options.track_maker = std::move(track_maker);
   options.id_space = config.avatar_id_space;
   // Ticks never run ahead of the clock, so this many of them last at least as long.

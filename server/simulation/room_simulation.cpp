@@ -44,6 +44,7 @@ using AuTargets = std::array<float, codec::kAuChannelCount>;
 // face that gets physics back blends from it into the physics output.
 struct PhysicsFace {
   std::unique_ptr<physics::FaceSimulation> simulation;
+  physics::Solver solver = physics::Solver::mass_spring;  ///< the simulation's, when it is made
   AuTargets shown{};      ///< the physics face's last measurement
   AuTargets kinematic{};  ///< the targets followed without tissue
   double blend = 1;       ///< weight of the physics output: 0 .. 1
@@ -112,6 +113,7 @@ physics::FaceSimulation& simulation_of(PhysicsFace& face, std::uint64_t seed) {
   if (!face.simulation) {
     physics::SimulationOptions o;
     o.seed = seed;
+    o.solver = face.solver;
     face.simulation = std::make_unique<physics::FaceSimulation>(generic_tissue(), o);
   }
   return *face.simulation;
@@ -475,6 +477,7 @@ void RoomSimulation::tick() {
       apply_overrides(a.overrides, a.face, played ? &*played : nullptr, now_s < a.scripted_colour_until_s);
     }
     const std::uint64_t seed = s.options.seed ^ id;
+    a.physics.solver = s.options.physics_projective ? physics::Solver::projective : physics::Solver::mass_spring;
     if (!s.options.physics) {
       a.physics.resting = true;  // no physics face to step
     } else {

@@ -43,6 +43,7 @@ struct FanoutArgs {
   bool json = false;
   std::string physics = "sleeping";  // sleeping, awake, off
   std::string physics_lod = "on";    // on: the server sheds physics under load (its default); off: never
+  std::string solver = "massspring";  // the physics face's: massspring (the server's default) or projective
   int client_threads = 1;
   int server_threads = 2;
   int server_workers = 2;
@@ -149,6 +150,7 @@ nlohmann::json run_once(const FanoutArgs& args, int node_count) {
   if (args.physics == "awake") server_args += " --physics-always-awake";
   if (args.physics == "off") server_args += " --no-physics";
   if (args.physics_lod == "off") server_args += " --no-physics-lod";
+  if (args.solver == "projective") server_args += " --physics-projective";
   auto servers = std::make_unique<FanoutServers>(server_binary, server_args, node_count);
   if (!servers->error().empty()) {
     const std::string why = servers->error();
@@ -273,6 +275,7 @@ nlohmann::json run_once(const FanoutArgs& args, int node_count) {
       {"seconds", round2(window)},
       {"physics", args.physics},
       {"physics_lod", args.physics_lod},
+      {"solver", args.solver},
       {"physics_share_end", round2(physics_share)},
       {"kinematic_faces_end", kinematic_faces},
       {"clients", clients},
@@ -362,6 +365,9 @@ void add_fanout_bench(CLI::App& app) {
   cmd->add_option("--physics-lod", args->physics_lod,
                   "on: the server sheds physics when its ticks run late (its default); off: it never does")
       ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
+  cmd->add_option("--solver", args->solver, "the physics face's solver: massspring (the server's default) or projective")
+      ->check(CLI::IsMember({"massspring", "projective"}))
       ->capture_default_str();
   cmd->add_option("--client-threads", args->client_threads, "threads running the clients")->check(CLI::Range(1, 16))->capture_default_str();
   cmd->add_option("--server-threads", args->server_threads, "the server's --threads")->check(CLI::Range(1, 64))->capture_default_str();
