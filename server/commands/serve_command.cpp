@@ -237,8 +237,9 @@ void add_proxy_flags(CLI::App& cmd, ServerConfig& config) {
 void add_simulation_flags(CLI::App& cmd, ServerConfig& config) {
   cmd.add_flag("!--no-physics", config.physics, "drive faces by behavior only (no physics face)");
   cmd.add_flag("!--physics-always-awake", config.physics_sleeps, "faces at rest keep stepping (for benchmarks)");
-  cmd.add_flag("--physics-projective", config.physics_projective,
-               "solve the physics face by projective dynamics (about 4x cheaper than mass-spring)");
+  cmd.add_flag("!--physics-mass-spring", config.physics_projective,
+               "solve the physics face by mass-spring sub-steps (about 4x the cost of the default, projective "
+               "dynamics)");
   cmd.add_flag("!--no-physics-lod", config.physics_lod,
                "never shed physics under load (rooms then tick late instead; for benchmarks)");
 }

@@ -83,8 +83,8 @@ struct ServerConfig {
   bool physics_lod = true;       ///< shed physics (faces follow targets kinematically) when ticks run late
   /// Solve the physics face by projective dynamics (avatar/physics
   /// Solver::projective: about a quarter of mass-spring's cost per face, a
-  /// little less accurate) instead of mass-spring.
-  bool physics_projective = false;
+  /// little less accurate), else by mass-spring (--physics-mass-spring).
+  bool physics_projective = true;
   double drain_seconds = 10;
   std::string log_level = "info";
   bool log_json = false;

@@ -43,7 +43,7 @@ struct FanoutArgs {
   bool json = false;
   std::string physics = "sleeping";  // sleeping, awake, off
   std::string physics_lod = "on";    // on: the server sheds physics under load (its default); off: never
-  std::string solver = "massspring";  // the physics face's: massspring (the server's default) or projective
+  std::string solver = "projective";  // the physics face's: projective (the server's default) or massspring
   int client_threads = 1;
   int server_threads = 2;
   int server_workers = 2;
@@ -150,7 +150,7 @@ nlohmann::json run_once(const FanoutArgs& args, int node_count) {
   if (args.physics == "awake") server_args += " --physics-always-awake";
   if (args.physics == "off") server_args += " --no-physics";
   if (args.physics_lod == "off") server_args += " --no-physics-lod";
-  if (args.solver == "projective") server_args += " --physics-projective";
+  if (args.solver == "massspring") server_args += " --physics-mass-spring";
   auto servers = std::make_unique<FanoutServers>(server_binary, server_args, node_count);
   if (!servers->error().empty()) {
     const std::string why = servers->error();
@@ -366,7 +366,7 @@ void add_fanout_bench(CLI::App& app) {
                   "on: the server sheds physics when its ticks run late (its default); off: it never does")
       ->check(CLI::IsMember({"on", "off"}))
       ->capture_default_str();
-  cmd->add_option("--solver", args->solver, "the physics face's solver: massspring (the server's default) or projective")
+  cmd->add_option("--solver", args->solver, "the physics face's solver: projective (the server's default) or massspring")
       ->check(CLI::IsMember({"massspring", "projective"}))
       ->capture_default_str();
   cmd->add_option("--client-threads", args->client_threads, "threads running the clients")->check(CLI::Range(1, 16))->capture_default_str();

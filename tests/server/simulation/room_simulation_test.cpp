@@ -60,8 +60,8 @@ TEST(RoomSimulationLevelOfDetail, WithoutPhysicsFacesStillFollowTheirTargets) {
   EXPECT_TRUE(rested);
 }
 
-// --physics-projective: the room's physics face is solved by projective
-// dynamics. Its smile follows the mass-spring one closely (the solvers settle
+// By default the room's physics face is solved by projective dynamics
+// (--physics-mass-spring: by mass-spring). Its smile follows the mass-spring one closely (the solvers settle
 // within 0.12 mm of each other, avatar/physics README) but is not the same
 // number: the option reached the solver.
 TEST(RoomSimulationSolver, ProjectiveDynamicsSmilesAsMassSpringDoes) {
