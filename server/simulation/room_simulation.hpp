@@ -29,7 +29,7 @@ struct RoomSimulationOptions {
   int tick_hz = 30;          ///< ticks per simulated second
   bool physics = true;       ///< drive the AUs through the physics face
   bool physics_sleeps = true;  ///< a face at rest stops stepping until a target changes
-  bool physics_projective = true;  ///< the physics face's solver: projective dynamics, else mass-spring
+  bool physics_projective = true;  ///< the physics face's solver: projective dynamics, else mass-spring (always in a preview)
   /// Seats laid out in the room (fw::behavior::seat_layout(seats); avatars
   /// take the first free one); 0: as many as avatars present, laid out again
   /// whenever one joins or leaves.
