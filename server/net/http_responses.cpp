@@ -24,6 +24,22 @@ Response text_response(http::status status, unsigned version, bool keep_alive, s
   return response;
 }
 
+}  // namespace
+
+Response plain_response(http::status status, const Request& request, std::string body) {
+  return text_response(status, request.version(), request.keep_alive(), std::move(body));
+}
+
+Response no_content_response(const Request& request) {
+  Response response{http::status::no_content, request.version()};
+  response.set(http::field::server, kServerName);
+  response.keep_alive(request.keep_alive());
+  response.prepare_payload();
+  return response;
+}
+
+namespace {
+
 Response file_response(const Request& request, const StaticFile& file) {
   if (request[http::field::if_none_match] == file.etag) {
     Response response{http::status::not_modified, request.version()};

@@ -39,14 +39,9 @@ std::optional<LookTarget> look_target(std::string_view target) {
   return out;
 }
 
-Response plain(http::status status, const Request& request, std::string body) {
-  Response response{status, request.version()};
-  response.set(http::field::server, "facewire");
-  response.set(http::field::content_type, "text/plain; charset=utf-8");
-  response.keep_alive(request.keep_alive());
-  response.body() = std::move(body) + "\n";
-  response.prepare_payload();
-  return response;
+/// The looks' answers end their text with a line break, as curl users expect.
+Response plain(http::status status, const Request& request, const std::string& body) {
+  return plain_response(status, request, body + "\n");
 }
 
 Response retry_later(const Request& request, double seconds, const std::string& whose) {
@@ -90,13 +85,7 @@ Response deletion_response(const ApiServices& services, const Request& request, 
                            const std::string& name) {
   std::string why;
   switch (services.looks.remove(asset, name, why)) {
-    case LookChange::done: {
-      Response response{http::status::no_content, request.version()};
-      response.set(http::field::server, "facewire");
-      response.keep_alive(request.keep_alive());
-      response.prepare_payload();
-      return response;
-    }
+    case LookChange::done: return no_content_response(request);
     case LookChange::unknown_look: return plain(http::status::not_found, request, why);
     default: return plain(http::status::service_unavailable, request, why);
   }

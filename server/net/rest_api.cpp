@@ -14,13 +14,7 @@ namespace http = boost::beast::http;
 namespace {
 
 Response plain(http::status status, const Request& request, std::string body) {
-  Response response{status, request.version()};
-  response.set(http::field::server, "facewire");
-  response.set(http::field::content_type, "text/plain; charset=utf-8");
-  response.keep_alive(request.keep_alive());
-  response.body() = std::move(body);
-  response.prepare_payload();
-  return response;
+  return plain_response(status, request, std::move(body));
 }
 
 /// The answer for a stored avatar that cannot be served (avatar_store.hpp).
@@ -76,13 +70,7 @@ Response deletion_response(const ApiServices& services, const Request& request, 
       delete_avatar({services.store, services.rooms, services.own_faces, services.server_key}, asset, key);
   const std::string message = deletion_message(outcome, asset);
   switch (outcome) {
-    case AvatarDeletion::deleted: {
-      Response response{http::status::no_content, request.version()};
-      response.set(http::field::server, "facewire");
-      response.keep_alive(request.keep_alive());
-      response.prepare_payload();
-      return response;
-    }
+    case AvatarDeletion::deleted: return no_content_response(request);
     case AvatarDeletion::unknown: return plain(http::status::not_found, request, message + "\n");
     case AvatarDeletion::no_key:
     case AvatarDeletion::wrong_key:

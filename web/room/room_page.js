@@ -9,6 +9,7 @@
 // lips: read_aloud_player.js; off until the person turns it on).
 import { AttentionTarget, isLanguageCode } from '../protocol/session_types.js';
 import { fetchOwnPackage, loadRenderer } from './page_resources.js';
+import { startDrawLoop } from './draw_loop.js';
 import { RoomClient } from './room_client.js';
 import { SavedLooksApi } from './saved_looks_api.js';
 import { MuteList } from './mute_list.js';
@@ -92,26 +93,12 @@ async function main() {
   wireControls(client, mutes, toggleMute);
   wireSavedLooks(client);
 
-  let lastDraw = -Infinity;
-  const frame = (now) => {
-    requestAnimationFrame(frame);
-    // Faces change at most at the room's tick rate (30 Hz): drawing more
-    // often only burns the battery, or a software renderer's cores.
-    if (now - lastDraw < 1000 / 32) return;
-    lastDraw = now;
-    const ratio = Math.min(2, window.devicePixelRatio || 1);
-    const width = canvas.clientWidth;
-    const height = canvas.clientHeight;
-    if (canvas.width !== Math.round(width * ratio) || canvas.height !== Math.round(height * ratio)) {
-      canvas.width = Math.round(width * ratio);
-      canvas.height = Math.round(height * ratio);
-    }
+  startDrawLoop(canvas, (width, height, ratio, now) => {
     view.draw(width, height, ratio, now);
     readAloud.shown(client.framesReceived, now);
     placeOverlays(client, view);
     canvas.dataset.frames = String(view.frames);
-  };
-  requestAnimationFrame(frame);
+  });
   setInterval(() => showMeter(client), 500);
 
   function changed(what, detail) {

@@ -10,6 +10,7 @@
 import { Limits } from '../../protocol/session_types.js';
 import { parseServers } from '../../shared/server_list.js';
 import { fetchOwnPackage, loadRenderer } from '../page_resources.js';
+import { startDrawLoop } from '../draw_loop.js';
 import { RoomClient } from '../room_client.js';
 import { GROUPS, SLIDERS, Side, RESET_OVERRIDE, behaviourOverride, overrideOf } from './lab_controls.js';
 import { LabView } from './lab_view.js';
@@ -61,22 +62,10 @@ async function main() {
   wireSavedLooks({ client, editor: $('script'), identity });
   client.start();
 
-  let lastDraw = -Infinity;
-  const frame = (now) => {
-    requestAnimationFrame(frame);
-    if (now - lastDraw < 1000 / 32) return;  // the room's tick rate, as room_page.js
-    lastDraw = now;
-    const ratio = Math.min(2, window.devicePixelRatio || 1);
-    const width = canvas.clientWidth;
-    const height = canvas.clientHeight;
-    if (canvas.width !== Math.round(width * ratio) || canvas.height !== Math.round(height * ratio)) {
-      canvas.width = Math.round(width * ratio);
-      canvas.height = Math.round(height * ratio);
-    }
+  startDrawLoop(canvas, (width, height, ratio, now) => {
     view.draw(width, height, ratio, now);
     canvas.dataset.frames = String(view.frames);
-  };
-  requestAnimationFrame(frame);
+  });
 
   function changed(what) {
     if (what === 'result') showResults(client, refused);
