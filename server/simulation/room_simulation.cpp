@@ -189,6 +189,15 @@ struct RoomSimulation::State {
           return b;
         }()) {}
 
+  /// A room's faces are solved by projective dynamics, a quarter of the
+  /// cost; a preview, which shows one person the simulated skin itself, by
+  /// the more exact mass-spring (a muscle no action unit has alone pulls the
+  /// lip 8 times as far there: 1.44 against 0.18 in the lab's test).
+  physics::Solver solver() const {
+    return options.physics_projective && !options.preview ? physics::Solver::projective
+                                                          : physics::Solver::mass_spring;
+  }
+
   struct Avatar {
     AvatarSetup setup;
     PhysicsFace physics;
@@ -281,7 +290,7 @@ AvatarId RoomSimulation::add_avatar(const AvatarSetup& setup) {
     s.ids.cancel(id);  // the room is full
     return 0;
   }
-  s.avatars[id] = {setup, {}, {}, {}};
+  s.avatars[id] = {setup, PhysicsFace{.solver = s.solver()}};
   s.collect_events();
   return id;
 }
@@ -293,7 +302,7 @@ bool RoomSimulation::restore_avatar(AvatarId id, const AvatarSetup& setup) {
     s.ids.cancel(id);
     return false;
   }
-  s.avatars[id] = {setup, {}, {}, {}};
+  s.avatars[id] = {setup, PhysicsFace{.solver = s.solver()}};
   s.collect_events();
   return true;
 }
@@ -477,12 +486,6 @@ void RoomSimulation::tick() {
       apply_overrides(a.overrides, a.face, played ? &*played : nullptr, now_s < a.scripted_colour_until_s);
     }
     const std::uint64_t seed = s.options.seed ^ id;
-    // A room's faces are solved by projective dynamics, a quarter of the cost;
-    // a preview, which shows one person the simulated skin itself, by the
-    // more exact mass-spring (a muscle no action unit has alone pulls the
-    // lip 8 times as far there: 1.44 against 0.18 in the lab's test).
-    const bool projective = s.options.physics_projective && !s.options.preview;
-    a.physics.solver = projective ? physics::Solver::projective : physics::Solver::mass_spring;
     if (!s.options.physics) {
       a.physics.resting = true;  // no physics face to step
     } else {
