@@ -198,6 +198,10 @@ struct RoomSimulation::State {
                                                           : physics::Solver::mass_spring;
   }
 
+  struct Avatar;
+  /// A new avatar's state, its physics face to be solved by solver().
+  void place(AvatarId id, const AvatarSetup& setup);
+
   struct Avatar {
     AvatarSetup setup;
     PhysicsFace physics;
@@ -282,6 +286,12 @@ void RoomSimulation::State::say_line(const LineJob& job, LineToSay line) {
   // leaves the avatar speaking; its next line waits for the end of this one.
 }
 
+void RoomSimulation::State::place(AvatarId id, const AvatarSetup& setup) {
+  Avatar& avatar = avatars[id] = Avatar{};
+  avatar.setup = setup;
+  avatar.physics.solver = solver();
+}
+
 AvatarId RoomSimulation::add_avatar(const AvatarSetup& setup) {
   State& s = *state_;
   const AvatarId id = s.ids.take(s.room.tick_index());
@@ -290,7 +300,7 @@ AvatarId RoomSimulation::add_avatar(const AvatarSetup& setup) {
     s.ids.cancel(id);  // the room is full
     return 0;
   }
-  s.avatars[id] = {setup, PhysicsFace{.solver = s.solver()}};
+  s.place(id, setup);
   s.collect_events();
   return id;
 }
@@ -302,7 +312,7 @@ bool RoomSimulation::restore_avatar(AvatarId id, const AvatarSetup& setup) {
     s.ids.cancel(id);
     return false;
   }
-  s.avatars[id] = {setup, PhysicsFace{.solver = s.solver()}};
+  s.place(id, setup);
   s.collect_events();
   return true;
 }
