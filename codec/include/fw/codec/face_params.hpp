@@ -71,6 +71,13 @@ inline constexpr std::size_t kColourRegionCount = static_cast<std::size_t>(Colou
 inline constexpr std::array<std::string_view, kColourRegionCount> kColourRegionNames = {
     "forehead", "cheek_left", "cheek_right", "nose", "sides"};
 
+/// Corrective components of the physics face (avatar/physics, the face
+/// asset's `correctives`): what the simulated skin does beyond the sum of
+/// its action units (the tissue's non-linear response to combined units and
+/// to motion), as the weights of a few principal components of that
+/// residual. Clients that draw the AU morphs alone may ignore them.
+inline constexpr std::size_t kCorrectiveCount = 6;
+
 /// One eye's rotation. Left and right are the person's own (the left eye is
 /// on the viewer's right), so vergence is the difference of the two yaws.
 struct EyeRotation {
@@ -98,6 +105,9 @@ struct FaceParams {
   std::array<float, kColourRegionCount> blush{};
   /// Whole-face pallor in [0,1] (lowers saturation, shifts toward a paler tone).
   float pallor = 0;
+  /// Corrective weights in [-1,1], one per component of the face asset's
+  /// corrective basis (kCorrectiveCount): 0 on a face without physics.
+  std::array<float, kCorrectiveCount> corrective{};
 
   /// Sets `au` to `intensity` on every side it has (both sides of a bilateral AU).
   void set_au(int au_number, float intensity);
