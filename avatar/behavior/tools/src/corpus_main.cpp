@@ -103,8 +103,7 @@ BehaviourCorpus held_out_part() {
 bool write(const std::string& path, const BehaviourCorpus& corpus) {
   const std::string text = fw::physics::write_behaviour_corpus(corpus);
   std::string error;
-  if (fw::model::write_file_atomically(
-          path, std::span<const std::uint8_t>(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()), error)) {
+  if (fw::model::write_file_atomically(path, text, error)) {
     std::cout << "wrote " << path << ": " << corpus.sequences.size() << " sequences, " << corpus.frame_count()
               << " frames\n";
     return true;

@@ -74,9 +74,7 @@ int main(int argc, char** argv) {
   if (!held_out.empty()) report("held out", held_corpus);
 
   const std::string text = fw::model::serialize_face_asset(face);
-  if (!fw::model::write_file_atomically(
-          output, std::span<const std::uint8_t>(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()),
-          error)) {
+  if (!fw::model::write_file_atomically(output, text, error)) {
     std::cerr << "facewire-correctives: " << error << "\n";
     return 1;
   }
