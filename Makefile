@@ -72,6 +72,8 @@ bench: build
 facegen: build
 	./build/bin/facewire-facegen -o avatar/model/assets/generic_face.json
 	./build/bin/facewire-aubasis -i avatar/model/assets/generic_face.json -o avatar/model/assets/generic_face.json
+	./build/bin/facewire-correctives -i avatar/model/assets/generic_face.json -o avatar/model/assets/generic_face.json \
+	  --fitting avatar/physics/corpus/fitting.txt --held-out avatar/physics/corpus/held_out.txt
 
 clean:
 	rm -rf build build-debug build-asan

@@ -28,13 +28,15 @@ namespace fw::server {
 namespace {
 
 using AuTargets = std::array<float, codec::kAuChannelCount>;
+using Correctives = std::array<float, codec::kCorrectiveCount>;
 
 // ---------------------------------------------------------------------------
 // The physics face: the one place it is called.
 //
 // Behavior wants `targets` (action-unit intensities); the physics face turns
 // them into muscle activations, steps the soft tissue by `dt_s`, and its
-// measured surface, projected on the AU basis, is what the face shows. A face
+// measured surface, projected on the AU basis, is what the face shows, with
+// what the AUs leave projected on the corrective components. A face
 // at rest (muscles at their targets, nothing moving) is neither stepped nor
 // measured again while its targets stay the same.
 //
@@ -46,6 +48,7 @@ struct PhysicsFace {
   std::unique_ptr<physics::FaceSimulation> simulation;
   physics::Solver solver = physics::Solver::mass_spring;  ///< the simulation's, when it is made
   AuTargets shown{};      ///< the physics face's last measurement
+  Correctives corrective{};  ///< ... its corrective weights (0 with redefined units)
   AuTargets kinematic{};  ///< the targets followed without tissue
   double blend = 1;       ///< weight of the physics output: 0 .. 1
   double catching_up_s = 0;  ///< time the physics face has had to catch up since it came back
@@ -70,11 +73,18 @@ void follow_kinematically(PhysicsFace& face, const AuTargets& targets, double dt
   }
 }
 
-// Every avatar is drawn as the generic face, so they share its tissue model.
+// Every avatar is drawn as the generic face, so they share its tissue model
+// and its corrective components.
 std::shared_ptr<const physics::TissueModel> generic_tissue() {
   static const std::shared_ptr<const physics::TissueModel> tissue =
       physics::build_tissue_model(model::generic_face(), model::generic_face().action_units);
   return tissue;
+}
+
+std::shared_ptr<const physics::CorrectiveBasis> generic_correctives() {
+  static const auto correctives = std::make_shared<const physics::CorrectiveBasis>(
+      physics::CorrectiveBasis::from_morphs(model::generic_face().correctives, generic_tissue()->basis));
+  return correctives;
 }
 
 // A preview's physics level (face_overrides.hpp): its muscles' floor, and
@@ -108,13 +118,15 @@ bool redefined_at_rest(const PhysicsFace& face, const AuTargets& targets, const 
 
 // A face with redefined units (redefined_units.hpp): the physics face makes
 // the shipped ones, each redefined unit moves by its morph on its own track,
-// and the face is measured against the avatar's own basis every tick.
+// and the face is measured against the avatar's own basis every tick. Its
+// corrective weights are 0: the components were fitted to what the shipped
+// basis leaves, and what the avatar's own basis leaves is another residual.
 physics::FaceSimulation& simulation_of(PhysicsFace& face, std::uint64_t seed) {
   if (!face.simulation) {
     physics::SimulationOptions o;
     o.seed = seed;
     o.solver = face.solver;
-    face.simulation = std::make_unique<physics::FaceSimulation>(generic_tissue(), o);
+    face.simulation = std::make_unique<physics::FaceSimulation>(generic_tissue(), o, generic_correctives());
   }
   return *face.simulation;
 }
@@ -126,23 +138,29 @@ AuTargets step_physics(PhysicsFace& face, const AuTargets& targets, double dt_s,
     sim.set_action_units(units.physics_targets(targets));
     if (!sleeps || !sim.at_rest()) sim.step(dt_s);
     units.measure(sim, face.kinematic, face.shown);
+    face.corrective = {};
     face.resting = sleeps && sim.at_rest() && redefined_at_rest(face, targets, units);
     return face.shown;
   }
   sim.set_action_units(targets);
   if (!sleeps || !sim.at_rest()) {
     sim.step(dt_s);
-    face.shown = sim.measure().action_units;
+    const physics::FaceMeasurement m = sim.measure();
+    face.shown = m.action_units;
+    face.corrective = m.corrective;
   }
   face.resting = sleeps && sim.at_rest();  // a face kept awake is stepped: it does not sleep
   return face.shown;
 }
 
 // One tick of a face's action units: physics when it may, else kinematic,
-// blending after a change from kinematic to physics.
+// blending after a change from kinematic to physics. `corrective` takes the
+// corrective weights: the physics face's, blended like the AUs (a
+// kinematic face has none, so they fade in from 0).
 AuTargets step_action_units(PhysicsFace& face, const AuTargets& targets, double dt_s, std::uint64_t seed, bool sleeps,
-                            bool physics_allowed, const RedefinedUnits& units) {
+                            bool physics_allowed, const RedefinedUnits& units, Correctives& corrective) {
   follow_kinematically(face, targets, dt_s);
+  corrective = {};
   if (!physics_allowed) {
     face.blend = 0;
     face.catching_up_s = 0;
@@ -154,13 +172,18 @@ AuTargets step_action_units(PhysicsFace& face, const AuTargets& targets, double 
     return face.kinematic;
   }
   const AuTargets physical = step_physics(face, targets, dt_s, seed, sleeps, units);
-  if (face.blend >= 1) return physical;
+  if (face.blend >= 1) {
+    corrective = face.corrective;
+    return physical;
+  }
   face.resting = false;  // still catching up or blending
   float gap = 0;
   for (std::size_t c = 0; c < physical.size(); ++c) gap = std::max(gap, std::abs(physical[c] - face.kinematic[c]));
   face.catching_up_s += dt_s;
   if (face.blend == 0 && gap > kCloseEnough && face.catching_up_s < kCatchUpS) return face.kinematic;
   face.blend = std::min(1.0, face.blend + dt_s / RoomSimulation::kPhysicsBlendS);
+  for (std::size_t k = 0; k < corrective.size(); ++k)
+    corrective[k] = static_cast<float>(face.blend * face.corrective[k]);
   AuTargets mixed;
   for (std::size_t c = 0; c < mixed.size(); ++c)
     mixed[c] = static_cast<float>(face.blend * physical[c] + (1.0 - face.blend) * face.kinematic[c]);
@@ -508,8 +531,13 @@ void RoomSimulation::tick() {
         apply_physics_level(simulation_of(a.physics, seed), a.overrides, a.skin, now_s, a.skin_built_s);
         sleeps = sleeps && !a.overrides.any_muscle();
       }
-      a.face.au = step_action_units(a.physics, a.face.au, s.room.dt_s(), seed, sleeps, allowed, a.units);
+      a.face.au = step_action_units(a.physics, a.face.au, s.room.dt_s(), seed, sleeps, allowed, a.units,
+                                    a.face.corrective);
       a.measured = a.face.au;
+      // A preview's frames carry its whole residual in its preview surface
+      // (preview_surface.hpp, what the AUs do not rebuild): corrective
+      // weights on top would count it twice.
+      if (s.options.preview) a.face.corrective = {};
       ++(allowed ? s.physics_faces : s.kinematic_faces);
     }
     // Speech moves jaw and lips at syllable rate (4-5 a second); the

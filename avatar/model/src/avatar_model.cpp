@@ -12,6 +12,8 @@ AvatarModel make_avatar_model(const GenericFace& generic, std::span<const glm::v
   avatar.jacobians = fit_jacobians(generic.skin, fitted_xy);
   for (std::size_t c = 0; c < avatar.morphs.size(); ++c)
     avatar.morphs[c] = clone_morph(generic.action_units[c], avatar.jacobians);
+  for (const Morph& component : generic.correctives)
+    avatar.correctives.push_back(clone_morph(component, avatar.jacobians));
   return avatar;
 }
 
@@ -19,6 +21,7 @@ AvatarModel generic_avatar_model() {
   AvatarModel avatar;
   avatar.face = generic_face();
   avatar.morphs = avatar.face.action_units;
+  avatar.correctives = avatar.face.correctives;
   return avatar;
 }
 

@@ -102,6 +102,30 @@ void read_action_units(const json& units, GenericFace& face) {
   }
 }
 
+// Corrective components in order, each naming its index; a vertex field
+// only (the physics residual moves skin, it slides no texture).
+void read_correctives(const json& components, GenericFace& face) {
+  if (components.size() > codec::kCorrectiveCount)
+    throw AssetError("asset.correctives: at most " + std::to_string(codec::kCorrectiveCount) + " components, found " +
+                     std::to_string(components.size()));
+  const std::size_t vertex_count = face.skin.positions.size();
+  face.correctives.assign(components.size(), Morph{});
+  for (std::size_t k = 0; k < components.size(); ++k) {
+    const std::string where = "correctives[" + std::to_string(k) + "]";
+    const json& index = member(components[k], "component", where);
+    if (!index.is_number_unsigned() || index.get<std::size_t>() != k)
+      throw AssetError(where + ": expected component " + std::to_string(k));
+    Morph& morph = face.correctives[k];
+    morph.vertex_delta.assign(vertex_count, glm::vec3(0.0f));
+    for (const json& move : read_array(components[k], "moves", where)) {
+      if (!move.is_array() || move.size() != 4) throw AssetError(where + ".moves: expected [vertex, dx, dy, dz]");
+      const std::uint32_t v = read_index(move[0], where);
+      if (v >= vertex_count) throw AssetError(where + ".moves: vertex index out of range");
+      morph.vertex_delta[v] = {read_float(move[1], where), read_float(move[2], where), read_float(move[3], where)};
+    }
+  }
+}
+
 GenericFace read_face(const json& root) {
   GenericFace face;
   if (member(root, "format", "asset") != "facewire-generic-face")
@@ -150,6 +174,7 @@ GenericFace read_face(const json& root) {
   for (const json& r : read_array(head, "outline", "head")) face.head.outline.push_back(read_float(r, "head.outline"));
   face.head.mesh = read_mesh(member(head, "mesh", "head"), "head.mesh");
   read_action_units(read_array(root, "action_units", "asset"), face);
+  read_correctives(read_array(root, "correctives", "asset"), face);
   return face;
 }
 

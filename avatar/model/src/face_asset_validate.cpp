@@ -143,6 +143,35 @@ void check_head(const HeadShell& head, const Mesh& skin, std::vector<std::string
     }
 }
 
+// The corrective components (at most codec::kCorrectiveCount): each a
+// finite vertex field over the whole skin that moves something, no farther
+// than an action unit may, and slides no texture.
+void check_correctives(const GenericFace& face, std::vector<std::string>& problems) {
+  const std::size_t vertex_count = face.skin.positions.size();
+  if (face.correctives.size() > codec::kCorrectiveCount)
+    problems.push_back("the face has " + std::to_string(face.correctives.size()) + " corrective components, at most " +
+                       std::to_string(codec::kCorrectiveCount) + " fit the stream");
+  for (std::size_t k = 0; k < face.correctives.size(); ++k) {
+    const Morph& m = face.correctives[k];
+    const std::string name = "corrective component " + std::to_string(k);
+    if (m.vertex_delta.size() != vertex_count) {
+      problems.push_back(name + " does not cover every skin vertex");
+      continue;
+    }
+    if (std::any_of(m.uv_delta.begin(), m.uv_delta.end(), [](glm::vec2 t) { return t != glm::vec2(0.0f); }))
+      problems.push_back(name + " slides the texture; a corrective moves vertices only");
+    bool moves = false;
+    for (std::size_t v = 0; v < vertex_count; ++v) {
+      if (!(glm::length(m.vertex_delta[v]) < 1.0f)) {
+        problems.push_back(name + " moves vertex " + std::to_string(v) + " implausibly far");
+        break;
+      }
+      moves = moves || m.vertex_delta[v] != glm::vec3(0.0f);
+    }
+    if (!moves) problems.push_back(name + " moves no vertex");
+  }
+}
+
 }  // namespace
 
 std::vector<std::string> validate_generic_face(const GenericFace& face) {
@@ -200,6 +229,7 @@ std::vector<std::string> validate_generic_face(const GenericFace& face) {
         break;
       }
   }
+  check_correctives(face, problems);
   return problems;
 }
 

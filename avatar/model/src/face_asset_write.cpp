@@ -116,7 +116,21 @@ std::string serialize_face_asset(const GenericFace& face) {
     }
     out << "]}";
   }
-  out << "\n  ]\n}\n";
+  // Corrective components: only the vertices each moves, as [vertex, dx, dy, dz].
+  out << "\n  ],\n  \"correctives\": [";
+  for (std::size_t k = 0; k < face.correctives.size(); ++k) {
+    out << (k ? ",\n" : "\n") << "    {\"component\": " << k << ", \"moves\": [";
+    bool first = true;
+    const std::vector<glm::vec3>& delta = face.correctives[k].vertex_delta;
+    for (std::size_t v = 0; v < delta.size(); ++v) {
+      if (delta[v] == glm::vec3(0.0f)) continue;
+      out << (first ? "\n      [" : ",\n      [") << v << ", " << number(delta[v].x) << ", " << number(delta[v].y)
+          << ", " << number(delta[v].z) << "]";
+      first = false;
+    }
+    out << "]}";
+  }
+  out << (face.correctives.empty() ? "]\n}\n" : "\n  ]\n}\n");
   return out.str();
 }
 

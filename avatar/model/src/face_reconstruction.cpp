@@ -1,6 +1,7 @@
 #include "fw/model/face_reconstruction.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include <glm/geometric.hpp>
 
@@ -60,6 +61,13 @@ FaceShape reconstruct_face(const AvatarModel& avatar, const codec::FaceParams& p
       shape.positions[v] += w * m.vertex_delta[v];
       shape.uvs[v] += w * m.uv_delta[v];
     }
+  }
+  // The physics face's residual components: skin only, no texture slide.
+  for (std::size_t k = 0; k < std::min(avatar.correctives.size(), params.corrective.size()); ++k) {
+    const float w = std::isfinite(params.corrective[k]) ? std::clamp(params.corrective[k], -1.0f, 1.0f) : 0.0f;
+    if (w == 0.0f) continue;
+    const std::vector<glm::vec3>& delta = avatar.correctives[k].vertex_delta;
+    for (std::size_t v = 0; v < shape.positions.size(); ++v) shape.positions[v] += w * delta[v];
   }
   close_lids(avatar.face, params, shape.positions);
   return shape;

@@ -54,4 +54,9 @@ bool write_file_atomically(const std::filesystem::path& path, std::span<const st
   return true;
 }
 
+bool write_file_atomically(const std::filesystem::path& path, std::string_view text, std::string& error) {
+  return write_file_atomically(
+      path, std::span<const std::uint8_t>(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()), error);
+}
+
 }  // namespace fw::model

@@ -36,13 +36,18 @@ std::uint64_t splitmix64(std::uint64_t& state) {
 }  // namespace
 
 FaceSimulation::FaceSimulation(const model::GenericFace& face, const SimulationOptions& options)
-    : FaceSimulation(build_tissue_model(face, face.action_units), options) {}
+    : FaceSimulation(build_tissue_model(face, face.action_units), options) {
+  correctives_ = std::make_shared<const CorrectiveBasis>(CorrectiveBasis::from_morphs(face.correctives, model_->basis));
+}
 
 FaceSimulation::FaceSimulation(const model::AvatarModel& avatar, const SimulationOptions& options)
-    : FaceSimulation(build_tissue_model(avatar.face, avatar.morphs), options) {}
+    : FaceSimulation(build_tissue_model(avatar.face, avatar.morphs), options) {
+  correctives_ = std::make_shared<const CorrectiveBasis>(CorrectiveBasis::from_morphs(avatar.correctives, model_->basis));
+}
 
-FaceSimulation::FaceSimulation(std::shared_ptr<const TissueModel> model, const SimulationOptions& options)
-    : model_(std::move(model)), options_(options) {
+FaceSimulation::FaceSimulation(std::shared_ptr<const TissueModel> model, const SimulationOptions& options,
+                               std::shared_ptr<const CorrectiveBasis> correctives)
+    : model_(std::move(model)), correctives_(std::move(correctives)), options_(options) {
   assert(model_);
   const TissueModel& m = *model_;
   x_ = m.rest_x;
@@ -216,6 +221,7 @@ FaceMeasurement FaceSimulation::measure() {
   const double residual2 =
       project_onto_basis(m.basis, std::span<const float>(d, 3 * n), last_weights_);
   out.action_units = last_weights_;
+  if (correctives_) out.corrective = project_corrective(*correctives_, std::span<const float>(d, 3 * n), last_weights_);
   out.residual_rms_mm = static_cast<float>(std::sqrt(residual2 / double(n)) * model::kMillimetresPerUnit);
   return out;
 }

@@ -40,6 +40,8 @@ void replace_action_unit_displacements(
     morph.vertex_delta = displacements[c];
     morph.uv_delta.resize(morph.vertex_delta.size(), glm::vec2(0.0f));
   }
+  // Fitted to what the replaced units left: facewire-correctives fits them again.
+  face.correctives.clear();
 }
 
 }  // namespace fw::physics

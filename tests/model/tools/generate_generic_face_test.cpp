@@ -41,6 +41,7 @@ TEST(GenerateGenericFace, MatchesTheCommittedAsset) {
   model::GenericFace face = generate_generic_face();
   for (std::size_t c = 0; c < face.action_units.size(); ++c)
     face.action_units[c].vertex_delta = committed_face.action_units[c].vertex_delta;
+  face.correctives = committed_face.correctives;  // facewire-correctives' (tests/physics checks them)
   const std::string generated = model::serialize_face_asset(face);
   if (generated == committed) return;
   // Report where they part, so a stale asset is easy to recognise.

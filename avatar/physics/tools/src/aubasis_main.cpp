@@ -106,9 +106,7 @@ int main(int argc, char** argv) {
   if (print_report) report(before, face);
 
   const std::string text = fw::model::serialize_face_asset(face);
-  if (!fw::model::write_file_atomically(
-          output, std::span<const std::uint8_t>(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()),
-          error)) {
+  if (!fw::model::write_file_atomically(output, text, error)) {
     std::cerr << "facewire-aubasis: " << error << "\n";
     return 1;
   }

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace fw::model {
@@ -17,5 +18,7 @@ bool read_file(const std::filesystem::path& path, std::size_t max_bytes, std::ve
 /// Writes `bytes` to `path` atomically: into a temporary file beside it, then
 /// renamed over it, so a failure never leaves a partial file behind.
 bool write_file_atomically(const std::filesystem::path& path, std::span<const std::uint8_t> bytes, std::string& error);
+/// The same for text (the tools' assets and corpora).
+bool write_file_atomically(const std::filesystem::path& path, std::string_view text, std::string& error);
 
 }  // namespace fw::model

@@ -17,7 +17,7 @@
 
 namespace fw::model {
 
-inline constexpr int kGenericFaceVersion = 6;
+inline constexpr int kGenericFaceVersion = 7;
 
 /// Named skin regions. Every skin triangle belongs to exactly one. The names
 /// (kFaceRegionNames) are what the asset file stores; the order is fixed.
@@ -85,6 +85,12 @@ struct GenericFace {
   /// The action-unit basis: one morph per FaceParams action-unit channel
   /// (codec::kAuChannels order), defined geometrically on this face.
   std::array<Morph, codec::kAuChannelCount> action_units;
+  /// The physics face's corrective basis: at most codec::kCorrectiveCount
+  /// vertex fields (no texture slides), the principal components of what
+  /// the action units leave of the simulated skin over a corpus of
+  /// behaviour (avatar/physics, facewire-correctives), each scaled so that
+  /// a weight in [-1,1] covers the corpus. Empty until that tool has run.
+  std::vector<Morph> correctives;
 };
 
 /// The generic face compiled into this binary (assets/generic_face.json),

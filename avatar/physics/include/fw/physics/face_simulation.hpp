@@ -22,6 +22,7 @@
 #include "fw/codec/face_params.hpp"
 #include "fw/model/avatar_model.hpp"
 #include "fw/model/generic_face.hpp"
+#include "fw/physics/corrective_projection.hpp"
 #include "fw/physics/facial_muscles.hpp"
 #include "fw/physics/tissue_model.hpp"
 
@@ -54,20 +55,28 @@ struct SimulationOptions {
   int pbd_iterations = 1;  ///< constraint passes per PBD sub-step
 };
 
-/// The simulated surface as FaceParams' action-unit part.
+/// The simulated surface as FaceParams' action-unit and corrective parts.
 struct FaceMeasurement {
   std::array<float, codec::kAuChannelCount> action_units{};  ///< least squares, each in [0,1]
   float residual_rms_mm = 0;  ///< RMS over the skin vertices of what the AUs do not explain
+  /// What the AUs leave, projected on the face's corrective components
+  /// (least squares, each in [-1,1]); 0 where the face has none.
+  std::array<float, codec::kCorrectiveCount> corrective{};
 };
 
 class FaceSimulation {
  public:
-  /// A simulation of `face` measured against its own action units.
+  /// A simulation of `face` measured against its own action units and
+  /// corrective components.
   explicit FaceSimulation(const model::GenericFace& face, const SimulationOptions& options = {});
-  /// A simulation of an avatar's fitted face, measured against its cloned morphs.
+  /// A simulation of an avatar's fitted face, measured against its cloned
+  /// morphs and corrective components.
   explicit FaceSimulation(const model::AvatarModel& avatar, const SimulationOptions& options = {});
-  /// A simulation sharing a tissue model with others (faces of one avatar model).
-  explicit FaceSimulation(std::shared_ptr<const TissueModel> model, const SimulationOptions& options = {});
+  /// A simulation sharing a tissue model with others (faces of one avatar
+  /// model), and the corrective components made for that model's AU basis
+  /// (none: the measurement's corrective weights stay 0).
+  explicit FaceSimulation(std::shared_ptr<const TissueModel> model, const SimulationOptions& options = {},
+                          std::shared_ptr<const CorrectiveBasis> correctives = nullptr);
 
   /// New AU intensity targets (kAuChannels order; clamped to [0,1], NaN = 0),
   /// turned into muscle activations by au_muscle_map.hpp. Wakes a resting face
@@ -99,7 +108,8 @@ class FaceSimulation {
   bool at_rest() const { return at_rest_; }
 
   /// Projects the current surface onto the AU basis (least squares with the
-  /// weights kept in [0,1], warm-started from the last measurement).
+  /// weights kept in [0,1], warm-started from the last measurement), and
+  /// what those leave onto the corrective components (corrective_projection.hpp).
   FaceMeasurement measure();
 
   // Inspection, for tests, tools and benchmarks.
@@ -138,6 +148,7 @@ class FaceSimulation {
   glm::vec3 jaw_turned(const glm::vec3& p, float share) const;
 
   std::shared_ptr<const TissueModel> model_;
+  std::shared_ptr<const CorrectiveBasis> correctives_;  ///< null: no corrective weights
   SimulationOptions options_;
 
   std::array<float, kMuscleCount> strength_{};

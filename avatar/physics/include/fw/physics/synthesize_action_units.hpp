@@ -32,7 +32,8 @@ struct BasisSynthesisOptions {
 std::array<std::vector<glm::vec3>, codec::kAuChannelCount> synthesize_action_units(
     const model::GenericFace& face, const BasisSynthesisOptions& options = {}, FacePool* pool = nullptr);
 
-/// `face` with its action units' vertex fields replaced by `displacements`.
+/// `face` with its action units' vertex fields replaced by `displacements`,
+/// and without corrective components (they were fitted against the old ones).
 void replace_action_unit_displacements(
     model::GenericFace& face, const std::array<std::vector<glm::vec3>, codec::kAuChannelCount>& displacements);
 

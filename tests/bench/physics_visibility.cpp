@@ -1,0 +1,84 @@
+#include "physics_visibility.hpp"
+
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "bench_failure.hpp"
+#include "fw/model/avatar_model.hpp"
+#include "fw/model/face_reconstruction.hpp"
+#include "fw/model/landmark_template.hpp"
+#include "fw/physics/corrective_fit.hpp"
+#include "fw/physics/face_pool.hpp"
+
+namespace fw::bench {
+namespace {
+
+double rounded(double v) { return std::round(v * 1000.0) / 1000.0; }
+
+// The kinematic fallback of a room's face (server/simulation
+// room_simulation.cpp, follow_kinematically): each AU approaches its target
+// with the muscles' activation time constants, avatar/physics' defaults.
+class KinematicTrack {
+ public:
+  void follow(const physics::AuFrame& targets, double dt_s) {
+    const physics::SimulationOptions muscles;
+    for (std::size_t c = 0; c < targets.size(); ++c) {
+      const double tau = targets[c] > weights_[c] ? muscles.activation_time_s : muscles.deactivation_time_s;
+      weights_[c] += static_cast<float>((1.0 - std::exp(-dt_s / tau)) * (targets[c] - weights_[c]));
+    }
+  }
+  const physics::AuFrame& weights() const { return weights_; }
+
+ private:
+  physics::AuFrame weights_{};
+};
+
+double squared_distance(const model::FaceShape& a, const model::FaceShape& b) {
+  double sum = 0.0;
+  for (std::size_t v = 0; v < a.positions.size(); ++v) {
+    const glm::vec3 d = a.positions[v] - b.positions[v];
+    sum += double(glm::dot(d, d));
+  }
+  return sum;
+}
+
+}  // namespace
+
+nlohmann::json physics_visibility(const std::string& corpus_path) {
+  physics::BehaviourCorpus corpus;
+  std::string error;
+  if (!physics::load_behaviour_corpus(corpus_path, corpus, error)) fail_bench("sim", error);
+  const model::AvatarModel avatar = model::generic_avatar_model();
+  physics::FacePool pool;
+  const physics::CorpusRecording recording =
+      physics::record_corpus(avatar.face, corpus, physics::Solver::projective, &pool);
+  double with = 0.0, without = 0.0;
+  for (std::size_t s = 0; s + 1 < recording.sequence_start.size(); ++s) {
+    KinematicTrack kinematic;
+    for (std::size_t f = recording.sequence_start[s]; f < recording.sequence_start[s + 1]; ++f) {
+      kinematic.follow(recording.targets[f], physics::kCorpusFrameS);
+      codec::FaceParams k, p;
+      k.au = kinematic.weights();
+      p.au = recording.measured[f].action_units;
+      const model::FaceShape kinematic_face = model::reconstruct_face(avatar, k);
+      without += squared_distance(model::reconstruct_face(avatar, p), kinematic_face);
+      p.corrective = recording.measured[f].corrective;
+      with += squared_distance(model::reconstruct_face(avatar, p), kinematic_face);
+    }
+  }
+  const double samples = double(recording.frame_count()) * double(recording.vertex_count);
+  const auto mm = [&](double sum) { return samples > 0 ? std::sqrt(sum / samples) * model::kMillimetresPerUnit : 0.0; };
+  const physics::CorrectiveErrors errors = physics::corrective_errors(avatar.face, recording);
+  return {
+      {"corpus_frames", recording.frame_count()},
+      {"corrective_components", avatar.face.correctives.size()},
+      {"physics_vs_kinematic_mm", rounded(mm(with))},
+      {"physics_vs_kinematic_mm_without_correctives", rounded(mm(without))},
+      {"corrective_residual_mm_without", rounded(errors.without_mm)},
+      {"corrective_residual_mm_with", rounded(errors.with_mm)},
+      {"corrective_error_cut", rounded(errors.cut())},
+  };
+}
+
+}  // namespace fw::bench
