@@ -104,6 +104,7 @@ class ServerCore {
   ServerState state_;
   boost::asio::thread_pool workers_;  ///< room ticks, encoding
   SpeechWorker speech_;               ///< chat lines' lip-sync tracks (speech_worker.hpp)
+  FaceModels face_models_;            ///< every avatar's own face, by package version (face_models.hpp)
   RoomBusRelay bus_;
   SessionRegistry sessions_;
   RoomRegistry rooms_;

@@ -15,8 +15,11 @@
 #include "fw/behavior/plateau_motion.hpp"
 #include "spoken_lines.hpp"
 #include "fw/model/generic_face.hpp"
+#include "fw/physics/avatar_tissue.hpp"
 #include "fw/physics/face_simulation.hpp"
+#include "fw/physics/muscle_variation.hpp"
 #include "fw/physics/tissue_model.hpp"
+#include "face_model.hpp"
 #include "avatar_ids.hpp"
 #include "face_overrides.hpp"
 #include "preview_surface.hpp"
@@ -45,6 +48,10 @@ using AuTargets = std::array<float, codec::kAuChannelCount>;
 struct PhysicsFace {
   std::unique_ptr<physics::FaceSimulation> simulation;
   physics::Solver solver = physics::Solver::mass_spring;  ///< the simulation's, when it is made
+  /// The avatar's own face (face_model.hpp), null until it is built: the
+  /// generic face meanwhile. `variation_seed` its muscles' (its asset id's).
+  std::shared_ptr<const FaceModel> own;
+  std::uint64_t variation_seed = 0;
   AuTargets shown{};      ///< the physics face's last measurement
   AuTargets kinematic{};  ///< the targets followed without tissue
   double blend = 1;       ///< weight of the physics output: 0 .. 1
@@ -70,11 +77,10 @@ void follow_kinematically(PhysicsFace& face, const AuTargets& targets, double dt
   }
 }
 
-// Every avatar is drawn as the generic face, so they share its tissue model.
-std::shared_ptr<const physics::TissueModel> generic_tissue() {
-  static const std::shared_ptr<const physics::TissueModel> tissue =
-      physics::build_tissue_model(model::generic_face(), model::generic_face().action_units);
-  return tissue;
+// The tissue model a face simulates: its avatar's own once built, else the
+// generic face's (shared by every face).
+std::shared_ptr<const physics::TissueModel> tissue_of(const PhysicsFace& face) {
+  return face.own ? face.own->tissue : physics::generic_tissue_model();
 }
 
 // A preview's physics level (face_overrides.hpp): its muscles' floor, and
@@ -85,7 +91,7 @@ std::shared_ptr<const physics::TissueModel> generic_tissue() {
 // rebuilds at most every kSkinRebuildS and takes the newest values then.
 constexpr double kSkinRebuildS = 0.2;
 
-void apply_physics_level(physics::FaceSimulation& sim, const FaceOverrides& overrides,
+void apply_physics_level(const PhysicsFace& face, physics::FaceSimulation& sim, const FaceOverrides& overrides,
                          std::pair<float, float>& applied_skin, double now_s, double& rebuilt_s) {
   static_assert(kOverrideMuscles == physics::kMuscleCount);
   if (overrides.muscles != sim.muscle_floor()) sim.set_muscle_floor(overrides.muscles);
@@ -93,10 +99,11 @@ void apply_physics_level(physics::FaceSimulation& sim, const FaceOverrides& over
   if (skin == applied_skin || now_s - rebuilt_s < kSkinRebuildS) return;
   applied_skin = skin;
   rebuilt_s = now_s;
-  if (skin == std::pair<float, float>{0.0f, 0.0f}) return sim.replace_model(generic_tissue());
+  if (skin == std::pair<float, float>{0.0f, 0.0f}) return sim.replace_model(tissue_of(face));
   physics::TissueOptions options;
   options.material = physics::TissueMaterial::aged(skin.first, skin.second);
-  sim.replace_model(physics::build_tissue_model(model::generic_face(), model::generic_face().action_units, options));
+  sim.replace_model(physics::build_avatar_tissue_model(face.own ? face.own->avatar : model::generic_avatar_model(),
+                                                       nullptr, options));
 }
 
 // Whether every redefined unit's own track has reached its target.
@@ -112,9 +119,10 @@ bool redefined_at_rest(const PhysicsFace& face, const AuTargets& targets, const 
 physics::FaceSimulation& simulation_of(PhysicsFace& face, std::uint64_t seed) {
   if (!face.simulation) {
     physics::SimulationOptions o;
-    o.seed = seed;
+    o.seed = face.variation_seed ? face.variation_seed : seed;
+    o.individual_variation = 1.0f;  // a person's muscles (muscle_variation.hpp)
     o.solver = face.solver;
-    face.simulation = std::make_unique<physics::FaceSimulation>(generic_tissue(), o);
+    face.simulation = std::make_unique<physics::FaceSimulation>(tissue_of(face), o);
   }
   return *face.simulation;
 }
@@ -290,6 +298,29 @@ void RoomSimulation::State::place(AvatarId id, const AvatarSetup& setup) {
   Avatar& avatar = avatars[id] = Avatar{};
   avatar.setup = setup;
   avatar.physics.solver = solver();
+  avatar.physics.own = setup.face;
+  if (!setup.asset.empty()) avatar.physics.variation_seed = physics::variation_seed(setup.asset);
+}
+
+void RoomSimulation::wear_face(AvatarId avatar, std::shared_ptr<const FaceModel> face) {
+  const auto it = state_->avatars.find(avatar);
+  if (it == state_->avatars.end() || !face || it->second.physics.own == face) return;
+  State::Avatar& a = it->second;
+  a.setup.face = face;
+  PhysicsFace& p = a.physics;
+  p.own = std::move(face);
+  if (!p.simulation) return;  // made with it at its first tick
+  // The tissue goes on from where it is on the new face (replace_model
+  // keeps each node's displacement), but its weights are measured against
+  // the avatar's own morphs from now on: what it shows goes over to them
+  // as a face given physics back does, from what it showed.
+  p.simulation->replace_model(tissue_of(p));
+  if (p.blend >= 1) {
+    p.kinematic = p.shown;
+    p.blend = 0;
+    p.catching_up_s = 0;
+  }
+  if (state_->options.preview) a.skin = {-1.0f, -1.0f}, a.skin_built_s = -1e9;  // its skin again, on this face
 }
 
 AvatarId RoomSimulation::add_avatar(const AvatarSetup& setup) {
@@ -505,7 +536,7 @@ void RoomSimulation::tick() {
       const bool allowed = s.options.preview || s.physics_share >= 1.0 || physics_rank(seed) < s.physics_share;
       bool sleeps = s.options.physics_sleeps;
       if (s.options.preview) {
-        apply_physics_level(simulation_of(a.physics, seed), a.overrides, a.skin, now_s, a.skin_built_s);
+        apply_physics_level(a.physics, simulation_of(a.physics, seed), a.overrides, a.skin, now_s, a.skin_built_s);
         sleeps = sleeps && !a.overrides.any_muscle();
       }
       a.face.au = step_action_units(a.physics, a.face.au, s.room.dt_s(), seed, sleeps, allowed, a.units);
