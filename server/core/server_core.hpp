@@ -76,6 +76,7 @@ class ServerCore {
   const std::vector<StoredAvatar>& own_faces() const { return own_faces_; }
   ServerState& state() { return state_; }
   boost::asio::thread_pool& workers() { return workers_; }
+  FaceModels& face_models() { return face_models_; }
   SpeechWorker& speech() { return speech_; }
   /// The bus every room holds (room_bus_relay.hpp): a cluster node attaches itself to it.
   RoomBusRelay& room_bus() { return bus_; }

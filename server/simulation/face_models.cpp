@@ -22,6 +22,7 @@ std::shared_ptr<const FaceModel> FaceModels::find(const std::string& version) {
 std::shared_ptr<const FaceModel> FaceModels::build(const std::string& version, std::span<const std::uint8_t> bytes,
                                                    std::string& error) {
   if (auto found = find(version)) return found;
+  if (before_build_) before_build_();
   model::AvatarPackage package;
   if (!model::parse_avatar_package(bytes, package, error)) return nullptr;
   // Outside the lock: two rooms asking for one new face at once may both

@@ -14,6 +14,7 @@
 // Thread-safe.
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <list>
 #include <map>
 #include <memory>
@@ -44,6 +45,9 @@ class FaceModels {
   /// Models kept now; builds made (not found).
   std::size_t size() const;
   std::uint64_t builds() const;
+  /// Run on the building thread before each build: tests hold builds back
+  /// to see a room tick on meanwhile. Set before any build.
+  void set_before_build(std::function<void()> hook) { before_build_ = std::move(hook); }
 
  private:
   void keep(const std::string& version, std::shared_ptr<const FaceModel> model);
@@ -57,6 +61,7 @@ class FaceModels {
   };
   std::map<std::string, Entry> models_;
   std::uint64_t builds_ = 0;
+  std::function<void()> before_build_;
 };
 
 }  // namespace fw::server

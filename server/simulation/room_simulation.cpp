@@ -302,6 +302,11 @@ void RoomSimulation::State::place(AvatarId id, const AvatarSetup& setup) {
   if (!setup.asset.empty()) avatar.physics.variation_seed = physics::variation_seed(setup.asset);
 }
 
+bool RoomSimulation::wears_own_face(AvatarId avatar) const {
+  const auto it = state_->avatars.find(avatar);
+  return it != state_->avatars.end() && it->second.physics.own != nullptr;
+}
+
 void RoomSimulation::wear_face(AvatarId avatar, std::shared_ptr<const FaceModel> face) {
   const auto it = state_->avatars.find(avatar);
   if (it == state_->avatars.end() || !face || it->second.physics.own == face) return;

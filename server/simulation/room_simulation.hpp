@@ -147,6 +147,9 @@ class RoomSimulation {
   /// tick on, measured against its own morphs, going on from where it is
   /// (no jump: what it shows goes over in kPhysicsBlendS).
   void wear_face(AvatarId avatar, std::shared_ptr<const FaceModel> face);
+  /// Whether `avatar` simulates its own face (wear_face or AvatarSetup::face),
+  /// not the generic one.
+  bool wears_own_face(AvatarId avatar) const;
   std::vector<AvatarId> avatars() const;
 
   /// A person's command; an empty string when accepted, else why not (an
