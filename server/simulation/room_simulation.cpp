@@ -52,6 +52,10 @@ struct PhysicsFace {
   /// generic face meanwhile. `variation_seed` its muscles' (its asset id's).
   std::shared_ptr<const FaceModel> own;
   std::uint64_t variation_seed = 0;
+  /// What the face showed last, and, after it took its own face, the share
+  /// (0 .. 1) of the new face's output in what it shows (wear_face).
+  AuTargets output{};
+  double own_blend = 1;
   AuTargets shown{};      ///< the physics face's last measurement
   AuTargets kinematic{};  ///< the targets followed without tissue
   double blend = 1;       ///< weight of the physics output: 0 .. 1
@@ -146,10 +150,33 @@ AuTargets step_physics(PhysicsFace& face, const AuTargets& targets, double dt_s,
   return face.shown;
 }
 
-// One tick of a face's action units: physics when it may, else kinematic,
-// blending after a change from kinematic to physics.
+AuTargets step_physics_or_kinematic(PhysicsFace& face, const AuTargets& targets, double dt_s, std::uint64_t seed,
+                                    bool sleeps, bool physics_allowed, const RedefinedUnits& units);
+
+// One tick of a face's action units, and after it took its own face
+// (wear_face) what it showed going over to them in kOwnFaceBlendS: the
+// same surface measured against other morphs gives other weights, and its
+// muscles, laid on its own landmarks, hold it a little elsewhere (a smile
+// on a face 10 % wider measures 0.2 to 0.4 less of AU 12); the tissue gets
+// there within a few hundred milliseconds, which a second of blending
+// spreads below a few hundredths of a unit a tick.
 AuTargets step_action_units(PhysicsFace& face, const AuTargets& targets, double dt_s, std::uint64_t seed, bool sleeps,
                             bool physics_allowed, const RedefinedUnits& units) {
+  AuTargets out = step_physics_or_kinematic(face, targets, dt_s, seed, sleeps, physics_allowed, units);
+  if (face.own_blend < 1) {
+    face.own_blend = std::min(1.0, face.own_blend + dt_s / RoomSimulation::kOwnFaceBlendS);
+    for (std::size_t c = 0; c < out.size(); ++c)
+      out[c] = static_cast<float>(face.own_blend * out[c] + (1.0 - face.own_blend) * face.output[c]);
+    face.resting = false;
+  }
+  face.output = out;
+  return out;
+}
+
+// Physics when it may, else kinematic, blending after a change from
+// kinematic to physics.
+AuTargets step_physics_or_kinematic(PhysicsFace& face, const AuTargets& targets, double dt_s, std::uint64_t seed,
+                                    bool sleeps, bool physics_allowed, const RedefinedUnits& units) {
   follow_kinematically(face, targets, dt_s);
   if (!physics_allowed) {
     face.blend = 0;
@@ -318,13 +345,9 @@ void RoomSimulation::wear_face(AvatarId avatar, std::shared_ptr<const FaceModel>
   // The tissue goes on from where it is on the new face (replace_model
   // keeps each node's displacement), but its weights are measured against
   // the avatar's own morphs from now on: what it shows goes over to them
-  // as a face given physics back does, from what it showed.
+  // from what it showed (step_action_units).
   p.simulation->replace_model(tissue_of(p));
-  if (p.blend >= 1) {
-    p.kinematic = p.shown;
-    p.blend = 0;
-    p.catching_up_s = 0;
-  }
+  p.own_blend = 0;
   if (state_->options.preview) a.skin = {-1.0f, -1.0f}, a.skin_built_s = -1e9;  // its skin again, on this face
 }
 

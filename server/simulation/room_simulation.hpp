@@ -145,8 +145,9 @@ class RoomSimulation {
   /// `avatar`'s own face, built off the room's strand after it joined
   /// (face_models.hpp): its physics face simulates that fit from the next
   /// tick on, measured against its own morphs, going on from where it is
-  /// (no jump: what it shows goes over in kPhysicsBlendS).
+  /// (no jump: what it shows goes over in kOwnFaceBlendS).
   void wear_face(AvatarId avatar, std::shared_ptr<const FaceModel> face);
+  static constexpr double kOwnFaceBlendS = 1.0;
   /// Whether `avatar` simulates its own face (wear_face or AvatarSetup::face),
   /// not the generic one.
   bool wears_own_face(AvatarId avatar) const;
