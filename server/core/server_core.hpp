@@ -103,9 +103,11 @@ class ServerCore {
   const std::vector<StoredAvatar> residents_;
   const std::vector<StoredAvatar> own_faces_;
   ServerState state_;
+  /// Every avatar's own face, by package version (face_models.hpp); before
+  /// the workers, which build into it until they are joined.
+  FaceModels face_models_;
   boost::asio::thread_pool workers_;  ///< room ticks, encoding
   SpeechWorker speech_;               ///< chat lines' lip-sync tracks (speech_worker.hpp)
-  FaceModels face_models_;            ///< every avatar's own face, by package version (face_models.hpp)
   RoomBusRelay bus_;
   SessionRegistry sessions_;
   RoomRegistry rooms_;
