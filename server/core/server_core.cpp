@@ -49,7 +49,7 @@ ServerCore::ServerCore(const ServerConfig& config, std::unique_ptr<Metrics> metr
       workers_(static_cast<std::size_t>(config_.workers)),
       speech_(static_cast<std::size_t>(config_.speech_threads), config_.speech_queue),
       rooms_(RoomServices{config_, *metrics_, physics_lod_, abuse_, workers_, *store_, demo_avatars_, bus_,
-                          state_.draining, speech_},
+                          state_.draining, speech_, &face_models_},
              addresses_),
       session_services_{config_, *metrics_, abuse_,         tokens_,     addresses_,      *store_,
                         looks_,  workers_,  rooms_,        sessions_,   demo_avatars_, server_key_,

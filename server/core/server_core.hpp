@@ -76,6 +76,7 @@ class ServerCore {
   const std::vector<StoredAvatar>& own_faces() const { return own_faces_; }
   ServerState& state() { return state_; }
   boost::asio::thread_pool& workers() { return workers_; }
+  FaceModels& face_models() { return face_models_; }
   SpeechWorker& speech() { return speech_; }
   /// The bus every room holds (room_bus_relay.hpp): a cluster node attaches itself to it.
   RoomBusRelay& room_bus() { return bus_; }
@@ -102,6 +103,9 @@ class ServerCore {
   const std::vector<StoredAvatar> residents_;
   const std::vector<StoredAvatar> own_faces_;
   ServerState state_;
+  /// Every avatar's own face, by package version (face_models.hpp); before
+  /// the workers, which build into it until they are joined.
+  FaceModels face_models_;
   boost::asio::thread_pool workers_;  ///< room ticks, encoding
   SpeechWorker speech_;               ///< chat lines' lip-sync tracks (speech_worker.hpp)
   RoomBusRelay bus_;

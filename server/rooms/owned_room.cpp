@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include <boost/asio/post.hpp>
 #include <spdlog/spdlog.h>
 
 #include "monotonic_clock.hpp"
@@ -122,8 +123,10 @@ void OwnedRoom::set_rate(std::uint32_t avatar, std::uint32_t bps) {
 
 void OwnedRoom::replace_deleted_avatar(const std::string& asset) {
   // Whoever takes the room over, or welcomes a newcomer on another node, names the new face.
-  replace_deleted_face(members_, asset, services_.procedural_faces, name_,
-                       [this](const OwnedMember& member) { keep(member); });
+  replace_deleted_face(members_, asset, services_.procedural_faces, name_, [this](const OwnedMember& member) {
+    keep(member);
+    give_own_face(member.info.id, member.avatar);
+  });
 }
 
 void OwnedRoom::join(JoinRequest request) {
@@ -131,7 +134,8 @@ void OwnedRoom::join(JoinRequest request) {
   if (const auto refusal = refusal_of(request)) return refuse(request, refusal->first, refusal->second);
   request.avatar = unworn_procedural_face(members_, services_.procedural_faces, request.avatar);
   const bool person = request.connection != nullptr || !request.node.empty();
-  const std::uint32_t id = simulation_.add_avatar(AvatarSetup{request.name, person, request.language});
+  const std::uint32_t id =
+      simulation_.add_avatar(AvatarSetup{request.name, person, request.language, request.avatar.asset});
   if (id == 0) {
     services_.abuse.count_quietly(Abuse::room_full, 1);
     return refuse(request, codec::CloseCode::room_full, "room '" + name_ + "' is full; try another room");
@@ -147,6 +151,7 @@ void OwnedRoom::join(JoinRequest request) {
                  static_cast<std::uint32_t>(request.avatar.full ? request.avatar.full->size() : 0), person,
                  simulation_.seat(id)};
   member.avatar = request.avatar;
+  give_own_face(id, member.avatar);
   const SharedBytes moved = reseat();
   // Counted before anyone hears of the joiner: whoever reads the counts
   // after a welcome or a presence message finds the joiner in them.
@@ -174,6 +179,27 @@ void OwnedRoom::join(JoinRequest request) {
   services_.abuse.event(request.address.empty() ? std::string_view("-") : std::string_view(request.address),
                         "room '" + name_ + "': " + request.name + " joined as avatar " + std::to_string(id) +
                             (person ? " (person)" : " (autonomous)"));
+}
+
+void OwnedRoom::give_own_face(std::uint32_t avatar, const StoredAvatar& face) {
+  FaceModels* models = services_.face_models;
+  if (!models || !face.full || face.full->empty() || face.version.empty()) return;
+  if (auto built = models->find(face.version)) return simulation_.wear_face(avatar, std::move(built));
+  // Tens of milliseconds: on the worker pool, while the room ticks on.
+  boost::asio::post(services_.workers, [models, version = face.version, bytes = face.full, room = room_.weak_from_this(),
+                                avatar]() mutable {
+    std::string error;
+    auto built = models->build(version, *bytes, error);
+    // A package the store holds parses; one that does not keeps the generic face.
+    if (!built) return;
+    if (const auto open = room.lock()) open->wear_face(avatar, std::move(version), std::move(built));
+  });
+}
+
+void OwnedRoom::wear_face(std::uint32_t avatar, const std::string& version, std::shared_ptr<const FaceModel> face) {
+  const auto it = members_.find(avatar);
+  if (it == members_.end() || it->second.avatar.version != version) return;  // gone, or wears another face now
+  simulation_.wear_face(avatar, std::move(face));
 }
 
 std::size_t OwnedRoom::seats_of(const std::string& address) const {

@@ -57,6 +57,7 @@ class OwnedRoom : public RoomRole {
   void node_back(const std::string& node) override;
   void keep_all() override;
   void step_down() override;
+  void wear_face(std::uint32_t avatar, const std::string& version, std::shared_ptr<const FaceModel> face) override;
   /// Seats again the members of the record of a room taken over, in join
   /// order and under their ids, with the people connected here (`here`)
   /// keeping their streams; the people on nodes not in `live_nodes` are
@@ -74,6 +75,10 @@ class OwnedRoom : public RoomRole {
   std::size_t seats_of(const std::string& address) const;
   /// Seats held by people from `block` (address_group()).
   std::size_t seats_of_block(const std::string& block) const;
+  /// `avatar`'s own face from its package `face`: at once when already
+  /// built, else built on the worker pool and worn when back (the generic
+  /// face meanwhile), so a join never waits for a build.
+  void give_own_face(std::uint32_t avatar, const StoredAvatar& face);
   /// A line from the server (avatar 0) to one person only.
   void notice(OwnedMember& member, const std::string& text);
   /// `avatar` begins to say a line: a speaking message to everyone (5.15).

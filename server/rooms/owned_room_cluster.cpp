@@ -153,7 +153,8 @@ void OwnedRoom::restore(std::vector<bridge::MemberRecord> records, std::optional
   for (bridge::MemberRecord& record : records) {
     const std::uint32_t id = record.info.id;
     // Seated again in join order, under their ids: the same one leads.
-    if (!simulation_.restore_avatar(id, AvatarSetup{record.info.name, record.info.person, record.language})) continue;
+    if (!simulation_.restore_avatar(id, AvatarSetup{record.info.name, record.info.person, record.language, record.info.asset}))
+      continue;
     OwnedMember member;
     if (auto old = here.find(id); old != here.end()) {
       static_cast<Member&>(member) = std::move(old->second);
@@ -176,6 +177,7 @@ void OwnedRoom::restore(std::vector<bridge::MemberRecord> records, std::optional
     }
     restore_unit_morphs(record);
     persons += member.info.person;
+    give_own_face(id, member.avatar);
     members_.emplace(id, std::move(member));
   }
   // Local people the records do not know (their join was in flight) come again.

@@ -82,6 +82,12 @@ void Room::then(std::function<void()> done) {
   net::post(strand_, [self = shared_from_this(), done = std::move(done)] { done(); });
 }
 
+void Room::wear_face(std::uint32_t avatar, std::string version, std::shared_ptr<const FaceModel> face) {
+  post_open([avatar, version = std::move(version), face = std::move(face)](RoomRole& role) mutable {
+    role.wear_face(avatar, version, std::move(face));
+  });
+}
+
 void Room::join(JoinRequest request) {
   counts_.pending_joins.fetch_add(1);
   net::post(strand_, [self = shared_from_this(), request = std::move(request)]() mutable {

@@ -76,6 +76,9 @@ class Room : public std::enable_shared_from_this<Room> {
   /// Runs `done` on the room's strand once everything asked of the room
   /// before this call has been done (the joins of the demo room, say).
   void then(std::function<void()> done);
+  /// `avatar`'s own face, built off the strand (OwnedRoom::give_own_face):
+  /// its role wears it on the strand, if the room is still open.
+  void wear_face(std::uint32_t avatar, std::string version, std::shared_ptr<const FaceModel> face);
   void leave(std::uint32_t avatar);
   void chat(std::uint32_t avatar, std::string text);
   void command(std::uint32_t avatar, codec::Command command);

@@ -20,6 +20,7 @@
 #include "join_request.hpp"
 #include "room_bus.hpp"
 #include "room_members.hpp"
+#include "room_services.hpp"
 
 namespace fw::server {
 
@@ -72,6 +73,9 @@ class RoomRole {
   virtual void ask_roster() {}
   /// Another node owns the room now: the people here are asked to come back.
   virtual void step_down() {}
+  /// `avatar`'s own face, built on the worker pool from the package of
+  /// version `version` (face_models.hpp): worn if it still wears that one.
+  virtual void wear_face(std::uint32_t, const std::string&, std::shared_ptr<const FaceModel>) {}
 };
 
 }  // namespace fw::server

@@ -10,6 +10,7 @@
 
 #include "abuse_log.hpp"
 #include "avatar_store.hpp"
+#include "face_models.hpp"
 #include "metrics.hpp"
 #include "physics_governor.hpp"
 #include "room_bus.hpp"
@@ -30,6 +31,9 @@ struct RoomServices {
   RoomBus& bus;                  ///< the other nodes (LocalRoomBus alone)
   const std::atomic<bool>& draining;  ///< SIGTERM: no new joins
   SpeechWorker& speech;          ///< makes chat lines' lip-sync tracks off the rooms' strands
+  /// Every avatar's own face, built once per package version on `workers`
+  /// (face_models.hpp); null: every avatar simulates the generic face.
+  FaceModels* face_models = nullptr;
 };
 
 }  // namespace fw::server

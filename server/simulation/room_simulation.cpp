@@ -15,8 +15,11 @@
 #include "fw/behavior/plateau_motion.hpp"
 #include "spoken_lines.hpp"
 #include "fw/model/generic_face.hpp"
+#include "fw/physics/avatar_tissue.hpp"
 #include "fw/physics/face_simulation.hpp"
+#include "fw/physics/muscle_variation.hpp"
 #include "fw/physics/tissue_model.hpp"
+#include "face_model.hpp"
 #include "avatar_ids.hpp"
 #include "face_overrides.hpp"
 #include "preview_surface.hpp"
@@ -47,6 +50,15 @@ using Correctives = std::array<float, codec::kCorrectiveCount>;
 struct PhysicsFace {
   std::unique_ptr<physics::FaceSimulation> simulation;
   physics::Solver solver = physics::Solver::mass_spring;  ///< the simulation's, when it is made
+  /// The avatar's own face (face_model.hpp), null until it is built: the
+  /// generic face meanwhile. `variation_seed` its muscles' (its asset id's).
+  std::shared_ptr<const FaceModel> own;
+  std::uint64_t variation_seed = 0;
+  /// What the face showed last, and, after it took its own face, the share
+  /// (0 .. 1) of the new face's output in what it shows (wear_face).
+  AuTargets output{};
+  Correctives output_corrective{};
+  double own_blend = 1;
   AuTargets shown{};      ///< the physics face's last measurement
   Correctives corrective{};  ///< ... its corrective weights (0 with redefined units)
   AuTargets kinematic{};  ///< the targets followed without tissue
@@ -73,18 +85,19 @@ void follow_kinematically(PhysicsFace& face, const AuTargets& targets, double dt
   }
 }
 
-// Every avatar is drawn as the generic face, so they share its tissue model
-// and its corrective components.
-std::shared_ptr<const physics::TissueModel> generic_tissue() {
-  static const std::shared_ptr<const physics::TissueModel> tissue =
-      physics::build_tissue_model(model::generic_face(), model::generic_face().action_units);
-  return tissue;
+// The tissue model a face simulates: its avatar's own once built, else the
+// generic face's (shared by every face).
+std::shared_ptr<const physics::TissueModel> tissue_of(const PhysicsFace& face) {
+  return face.own ? face.own->tissue : physics::generic_tissue_model();
 }
 
-std::shared_ptr<const physics::CorrectiveBasis> generic_correctives() {
-  static const auto correctives = std::make_shared<const physics::CorrectiveBasis>(
-      physics::CorrectiveBasis::from_morphs(model::generic_face().correctives, generic_tissue()->basis));
-  return correctives;
+// The corrective components it is measured against, cloned onto the same
+// face as its tissue model's AU basis.
+std::shared_ptr<const physics::CorrectiveBasis> correctives_of(const PhysicsFace& face) {
+  if (face.own) return face.own->correctives;
+  static const auto generic = std::make_shared<const physics::CorrectiveBasis>(
+      physics::CorrectiveBasis::from_morphs(model::generic_face().correctives, physics::generic_tissue_model()->basis));
+  return generic;
 }
 
 // A preview's physics level (face_overrides.hpp): its muscles' floor, and
@@ -95,7 +108,7 @@ std::shared_ptr<const physics::CorrectiveBasis> generic_correctives() {
 // rebuilds at most every kSkinRebuildS and takes the newest values then.
 constexpr double kSkinRebuildS = 0.2;
 
-void apply_physics_level(physics::FaceSimulation& sim, const FaceOverrides& overrides,
+void apply_physics_level(const PhysicsFace& face, physics::FaceSimulation& sim, const FaceOverrides& overrides,
                          std::pair<float, float>& applied_skin, double now_s, double& rebuilt_s) {
   static_assert(kOverrideMuscles == physics::kMuscleCount);
   if (overrides.muscles != sim.muscle_floor()) sim.set_muscle_floor(overrides.muscles);
@@ -103,10 +116,11 @@ void apply_physics_level(physics::FaceSimulation& sim, const FaceOverrides& over
   if (skin == applied_skin || now_s - rebuilt_s < kSkinRebuildS) return;
   applied_skin = skin;
   rebuilt_s = now_s;
-  if (skin == std::pair<float, float>{0.0f, 0.0f}) return sim.replace_model(generic_tissue());
+  if (skin == std::pair<float, float>{0.0f, 0.0f}) return sim.replace_model(tissue_of(face));
   physics::TissueOptions options;
   options.material = physics::TissueMaterial::aged(skin.first, skin.second);
-  sim.replace_model(physics::build_tissue_model(model::generic_face(), model::generic_face().action_units, options));
+  sim.replace_model(physics::build_avatar_tissue_model(face.own ? face.own->avatar : model::generic_avatar_model(),
+                                                       nullptr, options));
 }
 
 // Whether every redefined unit's own track has reached its target.
@@ -124,9 +138,10 @@ bool redefined_at_rest(const PhysicsFace& face, const AuTargets& targets, const 
 physics::FaceSimulation& simulation_of(PhysicsFace& face, std::uint64_t seed) {
   if (!face.simulation) {
     physics::SimulationOptions o;
-    o.seed = seed;
+    o.seed = face.variation_seed ? face.variation_seed : seed;
+    o.individual_variation = 1.0f;  // a person's muscles (muscle_variation.hpp)
     o.solver = face.solver;
-    face.simulation = std::make_unique<physics::FaceSimulation>(generic_tissue(), o, generic_correctives());
+    face.simulation = std::make_unique<physics::FaceSimulation>(tissue_of(face), o, correctives_of(face));
   }
   return *face.simulation;
 }
@@ -153,12 +168,40 @@ AuTargets step_physics(PhysicsFace& face, const AuTargets& targets, double dt_s,
   return face.shown;
 }
 
-// One tick of a face's action units: physics when it may, else kinematic,
-// blending after a change from kinematic to physics. `corrective` takes the
-// corrective weights: the physics face's, blended like the AUs (a
-// kinematic face has none, so they fade in from 0).
+AuTargets step_physics_or_kinematic(PhysicsFace& face, const AuTargets& targets, double dt_s, std::uint64_t seed,
+                                    bool sleeps, bool physics_allowed, const RedefinedUnits& units,
+                                    Correctives& corrective);
+
+// One tick of a face's action units, and after it took its own face
+// (wear_face) what it showed going over to them in kOwnFaceBlendS: the
+// same surface measured against other morphs gives other weights, and its
+// muscles, laid on its own landmarks, hold it a little elsewhere (a smile
+// on a face 10 % wider measures 0.2 to 0.4 less of AU 12); the tissue gets
+// there within a few hundred milliseconds, which a second of blending
+// spreads below a few hundredths of a unit a tick.
+// `corrective` takes the corrective weights, blended the same ways.
 AuTargets step_action_units(PhysicsFace& face, const AuTargets& targets, double dt_s, std::uint64_t seed, bool sleeps,
                             bool physics_allowed, const RedefinedUnits& units, Correctives& corrective) {
+  AuTargets out = step_physics_or_kinematic(face, targets, dt_s, seed, sleeps, physics_allowed, units, corrective);
+  if (face.own_blend < 1) {
+    face.own_blend = std::min(1.0, face.own_blend + dt_s / RoomSimulation::kOwnFaceBlendS);
+    const auto mix = [w = face.own_blend](float now, float before) { return static_cast<float>(w * now + (1.0 - w) * before); };
+    for (std::size_t c = 0; c < out.size(); ++c) out[c] = mix(out[c], face.output[c]);
+    for (std::size_t k = 0; k < corrective.size(); ++k) corrective[k] = mix(corrective[k], face.output_corrective[k]);
+    face.resting = false;
+  }
+  face.output = out;
+  face.output_corrective = corrective;
+  return out;
+}
+
+// Physics when it may, else kinematic, blending after a change from
+// kinematic to physics. `corrective` takes the corrective weights: the
+// physics face's, blended like the AUs (a kinematic face has none, so they
+// fade in from 0).
+AuTargets step_physics_or_kinematic(PhysicsFace& face, const AuTargets& targets, double dt_s, std::uint64_t seed,
+                                    bool sleeps, bool physics_allowed, const RedefinedUnits& units,
+                                    Correctives& corrective) {
   follow_kinematically(face, targets, dt_s);
   corrective = {};
   if (!physics_allowed) {
@@ -313,6 +356,31 @@ void RoomSimulation::State::place(AvatarId id, const AvatarSetup& setup) {
   Avatar& avatar = avatars[id] = Avatar{};
   avatar.setup = setup;
   avatar.physics.solver = solver();
+  avatar.physics.own = setup.face;
+  if (!setup.asset.empty()) avatar.physics.variation_seed = physics::variation_seed(setup.asset);
+}
+
+bool RoomSimulation::wears_own_face(AvatarId avatar) const {
+  const auto it = state_->avatars.find(avatar);
+  return it != state_->avatars.end() && it->second.physics.own != nullptr;
+}
+
+void RoomSimulation::wear_face(AvatarId avatar, std::shared_ptr<const FaceModel> face) {
+  const auto it = state_->avatars.find(avatar);
+  if (it == state_->avatars.end() || !face || it->second.physics.own == face) return;
+  State::Avatar& a = it->second;
+  a.setup.face = face;
+  PhysicsFace& p = a.physics;
+  p.own = std::move(face);
+  if (!p.simulation) return;  // made with it at its first tick
+  // The tissue goes on from where it is on the new face (replace_model
+  // keeps each node's displacement), but its weights are measured against
+  // the avatar's own morphs from now on: what it shows goes over to them
+  // from what it showed (step_action_units).
+  p.simulation->replace_model(tissue_of(p));
+  p.simulation->set_correctives(correctives_of(p));
+  p.own_blend = 0;
+  if (state_->options.preview) a.skin = {-1.0f, -1.0f}, a.skin_built_s = -1e9;  // its skin again, on this face
 }
 
 AvatarId RoomSimulation::add_avatar(const AvatarSetup& setup) {
@@ -528,7 +596,7 @@ void RoomSimulation::tick() {
       const bool allowed = s.options.preview || s.physics_share >= 1.0 || physics_rank(seed) < s.physics_share;
       bool sleeps = s.options.physics_sleeps;
       if (s.options.preview) {
-        apply_physics_level(simulation_of(a.physics, seed), a.overrides, a.skin, now_s, a.skin_built_s);
+        apply_physics_level(a.physics, simulation_of(a.physics, seed), a.overrides, a.skin, now_s, a.skin_built_s);
         sleeps = sleeps && !a.overrides.any_muscle();
       }
       a.face.au = step_action_units(a.physics, a.face.au, s.room.dt_s(), seed, sleeps, allowed, a.units,

@@ -52,6 +52,8 @@ struct RoomSimulationOptions {
   bool preview = false;
 };
 
+struct FaceModel;  // face_model.hpp
+
 struct AvatarSetup {
   std::string name;
   /// Nobody is at the keyboard: the behavior repertoire runs unattended.
@@ -60,6 +62,13 @@ struct AvatarSetup {
   /// The language the avatar's lines are said in; empty: the room's
   /// (RoomSimulationOptions::speech_language).
   std::string language = {};
+  /// The avatar's asset id: its muscles' individual variation is drawn
+  /// from it (avatar/physics muscle_variation.hpp), so it moves alike in
+  /// every room; empty: from the room's seed and the avatar id.
+  std::string asset = {};
+  /// Its own face (face_models.hpp), when already built; null: the generic
+  /// face until wear_face gives it its own.
+  std::shared_ptr<const FaceModel> face = {};
 };
 
 /// A person's commands to their own avatar (they override autonomy for their
@@ -133,6 +142,15 @@ class RoomSimulation {
   /// Whether add_avatar would find an id now (false: all are in use or rest).
   bool has_free_id() const;
   void remove_avatar(AvatarId avatar);
+  /// `avatar`'s own face, built off the room's strand after it joined
+  /// (face_models.hpp): its physics face simulates that fit from the next
+  /// tick on, measured against its own morphs, going on from where it is
+  /// (no jump: what it shows goes over in kOwnFaceBlendS).
+  void wear_face(AvatarId avatar, std::shared_ptr<const FaceModel> face);
+  static constexpr double kOwnFaceBlendS = 1.0;
+  /// Whether `avatar` simulates its own face (wear_face or AvatarSetup::face),
+  /// not the generic one.
+  bool wears_own_face(AvatarId avatar) const;
   std::vector<AvatarId> avatars() const;
 
   /// A person's command; an empty string when accepted, else why not (an

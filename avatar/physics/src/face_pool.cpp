@@ -85,7 +85,8 @@ void FacePool::step_all(std::span<FaceSimulation> faces, double dt_seconds) {
 }
 
 void FacePool::step_all(std::span<FaceSimulation* const> faces, double dt_seconds) {
-  // Projective faces of one model go in batches that share each solve
+  // Projective faces that share a factorisation (one model, or fitted faces
+  // of the generic one's topology) go in batches that share each solve
   // (projective_dynamics.hpp); every other face is a job of its own. A face
   // at rest only advances its clock.
   std::vector<FaceSimulation*> projective;
@@ -95,11 +96,11 @@ void FacePool::step_all(std::span<FaceSimulation* const> faces, double dt_second
     else jobs.push_back(faces.subspan(i, 1));
   }
   std::stable_sort(projective.begin(), projective.end(),
-                   [](const FaceSimulation* a, const FaceSimulation* b) { return &a->model() < &b->model(); });
+                   [](const FaceSimulation* a, const FaceSimulation* b) { return factor_owner(*a) < factor_owner(*b); });
   for (std::size_t begin = 0; begin < projective.size();) {
     std::size_t end = begin + 1;
     while (end < projective.size() && end - begin < detail::kMaxBatchFaces &&
-           &projective[end]->model() == &projective[begin]->model())
+           factor_owner(*projective[end]) == factor_owner(*projective[begin]))
       ++end;
     jobs.push_back(std::span<FaceSimulation* const>(projective).subspan(begin, end - begin));
     begin = end;

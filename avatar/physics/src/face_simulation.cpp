@@ -9,6 +9,7 @@
 #include "fw/model/landmark_template.hpp"
 #include "fw/physics/au_muscle_map.hpp"
 #include "fw/physics/au_projection.hpp"
+#include "fw/physics/muscle_variation.hpp"
 #include "fw/physics/prism_volume.hpp"
 #include "fw/physics/skull_contact.hpp"
 #include "projective_dynamics.hpp"
@@ -23,15 +24,6 @@ constexpr float kRestActivation = 1e-4f;
 constexpr double kMaxStepS = 1.0;
 // The jaw: a critically damped turn toward the angle its muscles hold.
 constexpr float kJawOmega = 20.0f;
-
-// SplitMix64: a fixed, portable generator, so a seed means the same face
-// on every platform.
-std::uint64_t splitmix64(std::uint64_t& state) {
-  std::uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
 
 }  // namespace
 
@@ -58,11 +50,8 @@ FaceSimulation::FaceSimulation(std::shared_ptr<const TissueModel> model, const S
   // The neutral mesh is the shape at rest without gravity; with it, the
   // tissue has somewhere to go.
   at_rest_ = options_.gravity == 0.0f;
-  std::uint64_t state = options_.seed;
-  for (std::size_t i = 0; i < kMuscleCount; ++i) {
-    const double u = double(splitmix64(state) >> 11) / double(1ULL << 53) * 2.0 - 1.0;  // [-1, 1)
-    strength_[i] = m.muscles[i].strength * (1.0f + options_.individual_variation * static_cast<float>(u));
-  }
+  strength_factor_ = muscle_strength_factors(options_.seed, options_.individual_variation);
+  for (std::size_t i = 0; i < kMuscleCount; ++i) strength_[i] = m.muscles[i].strength * strength_factor_[i];
 }
 
 void FaceSimulation::set_action_units(const std::array<float, codec::kAuChannelCount>& targets) {

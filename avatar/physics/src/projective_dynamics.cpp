@@ -1,8 +1,10 @@
 #include "projective_dynamics.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <cmath>
+#include <memory>
 #include <vector>
 
 #include "projective_local_step.hpp"
@@ -49,12 +51,13 @@ void ProjectiveStepper::step(std::span<FaceSimulation* const> faces, double dt_s
     if (n > 0) moving.push_back({face, dt, n});
   }
   std::stable_sort(moving.begin(), moving.end(), [](const Moving& a, const Moving& b) {
-    return &a.face->model() != &b.face->model() ? &a.face->model() < &b.face->model() : a.substeps < b.substeps;
+    const TissueModel *ma = factor_owner(*a.face), *mb = factor_owner(*b.face);
+    return ma != mb ? ma < mb : a.substeps < b.substeps;
   });
   std::vector<FaceSimulation*> batch;
   for (std::size_t begin = 0; begin < moving.size();) {
     std::size_t end = begin + 1;
-    while (end < moving.size() && end - begin < kMaxBatchFaces && &moving[end].face->model() == &moving[begin].face->model() &&
+    while (end < moving.size() && end - begin < kMaxBatchFaces && factor_owner(*moving[end].face) == factor_owner(*moving[begin].face) &&
            moving[end].substeps == moving[begin].substeps)
       ++end;
     batch.clear();
@@ -74,9 +77,13 @@ float ProjectiveStepper::tissue_step(float h) {
 
 void ProjectiveStepper::substep(std::span<FaceSimulation* const> faces, float h) {
   assert(!faces.empty() && faces.size() <= kMaxBatchFaces);
-  const TissueModel& m = faces.front()->model();
-  const auto system_ptr = m.projective_systems.get(m, tissue_step(h));
-  const detail::ProjectiveSystem& system = *system_ptr;
+  // Each face's own constraints (its rest shape), one factor for all.
+  const float step = tissue_step(h);
+  std::array<std::shared_ptr<const detail::ProjectiveSystem>, kMaxBatchFaces> systems;
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    systems[f] = faces[f]->model().projective_systems.get(faces[f]->model(), step);
+  const detail::ProjectiveSystem& system = *systems[0];
+  const TissueModel& m = faces.front()->model();  // its topology and material are every face's
   const std::size_t nodes = m.node_count, moving = m.moving_node_count;
   const std::size_t lanes = detail::lanes_for(faces.size()), width = lanes / 3;
   const std::vector<std::int32_t>& row_of = system.row_of_node();
@@ -93,6 +100,7 @@ void ProjectiveStepper::substep(std::span<FaceSimulation* const> faces, float h)
   // the first guess.
   for (std::size_t f = 0; f < faces.size(); ++f) {
     FaceSimulation& face = *faces[f];
+    assert(systems[f]->factor() == system.factor());
     float* x = face.x_.data();
     float* y = face.y_.data();
     float* z = face.z_.data();
@@ -120,7 +128,7 @@ void ProjectiveStepper::substep(std::span<FaceSimulation* const> faces, float h)
     std::fill(s.sum[0].begin(), s.sum[0].end(), 0.0f);
     std::fill(s.sum[1].begin(), s.sum[1].end(), -face.options_.gravity * mass);
     std::fill(s.sum[2].begin(), s.sum[2].end(), 0.0f);
-    detail::add_muscle_forces(m, {face.activation_, face.strength_, face.muscle_origins(), face.skull_normal_.data()},
+    detail::add_muscle_forces(face.model(), {face.activation_, face.strength_, face.muscle_origins(), face.skull_normal_.data()},
                               {x, y, z, vx, vy, vz, s.sum[0].data(), s.sum[1].data(), s.sum[2].data()});
     for (const std::uint16_t i : free_nodes) {
       // M s / h^2 with s = x + h v + h^2 f / m. The first guess is x + h v,
@@ -138,7 +146,7 @@ void ProjectiveStepper::substep(std::span<FaceSimulation* const> faces, float h)
     for (std::size_t f = 0; f < faces.size(); ++f) {
       FaceSimulation& face = *faces[f];
       for (std::size_t axis = 0; axis < 3; ++axis) std::copy(s.constant[f][axis].begin(), s.constant[f][axis].end(), s.sum[axis].begin());
-      detail::add_projections(system, {face.x_.data(), face.y_.data(), face.z_.data()},
+      detail::add_projections(*systems[f], {face.x_.data(), face.y_.data(), face.z_.data()},
                               {s.u[f][0].data(), s.u[f][1].data(), s.u[f][2].data()},
                               {s.sum[0].data(), s.sum[1].data(), s.sum[2].data()});
       for (std::size_t r = 0; r < free_nodes.size(); ++r) {

@@ -16,6 +16,14 @@
 
 namespace fw::physics {
 
+/// The model whose factorisations a face's steps solve with: faces with the
+/// same one (every avatar's fitted face shares the generic face's,
+/// TissueModel::projective_reference) go in one batch.
+inline const TissueModel* factor_owner(const FaceSimulation& face) {
+  const TissueModel& m = face.model();
+  return m.projective_reference ? m.projective_reference.get() : &m;
+}
+
 class ProjectiveStepper {
  public:
   /// The longest sub-step: the tissue is stable at any length, the muscles'
@@ -32,7 +40,7 @@ class ProjectiveStepper {
   static constexpr int kIterations = 1;
 
   /// Steps `faces` by `dt_seconds` as FaceSimulation::step does, those of one
-  /// model and with the same sub-steps together, up to
+  /// factor_owner() and with the same sub-steps together, up to
   /// detail::kMaxBatchFaces per solve. Every face must use Solver::projective.
   static void step(std::span<FaceSimulation* const> faces, double dt_seconds);
   /// The step the tissue takes for a sub-step of h: h on a grid of 2 %
@@ -40,7 +48,7 @@ class ProjectiveStepper {
   /// one factorisation (the matrix holds h) instead of each making its own;
   /// the tissue then runs up to 1 % fast or slow against the clock.
   static float tissue_step(float h);
-  /// One sub-step of faces that all share one model.
+  /// One sub-step of faces that all share one factor_owner().
   static void substep(std::span<FaceSimulation* const> faces, float h);
 };
 

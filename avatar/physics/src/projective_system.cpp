@@ -81,19 +81,35 @@ std::size_t lanes_for(std::size_t faces) {
   return 48;
 }
 
-ProjectiveSystem::ProjectiveSystem(const TissueModel& m, float step_s) : step_s_(step_s), damping_s_(kDampingS) {
-  const std::size_t moving = m.moving_node_count;
-  auto is_free = [&](std::size_t node) { return node < moving && m.inverse_mass[node] != 0.0f; };
-  std::vector<std::int32_t> index(m.node_count, -1);  // free index in node order
-  std::vector<std::uint16_t> free_by_index;
-  for (std::size_t i = 0; i < moving; ++i)
-    if (is_free(i)) {
-      index[i] = static_cast<std::int32_t>(free_by_index.size());
-      free_by_index.push_back(static_cast<std::uint16_t>(i));
-    }
-  const std::size_t n = free_by_index.size();
-  if (n == 0 || n > 65535) throw std::invalid_argument("projective dynamics: the model needs 1..65535 free nodes");
+namespace {
 
+bool is_free(const TissueModel& m, std::size_t node) { return node < m.moving_node_count && m.inverse_mass[node] != 0.0f; }
+
+}  // namespace
+
+ProjectiveSystem::ProjectiveSystem(const TissueModel& m, float step_s) : step_s_(step_s), damping_s_(kDampingS) {
+  gather_constraints(m);
+  factor_ = std::make_shared<const ProjectiveFactor>(m, *this, step_s_, damping_s_);
+}
+
+ProjectiveSystem::ProjectiveSystem(const TissueModel& m, const ProjectiveSystem& reference)
+    : step_s_(reference.step_s_), damping_s_(reference.damping_s_), factor_(reference.factor_), owns_factor_(false) {
+  gather_constraints(m);
+  // The same topology and material (TissueModel::projective_reference):
+  // the same constraints in the same order, the springs' weights the same.
+  if (spring_a != reference.spring_a || spring_b != reference.spring_b || element_node != reference.element_node ||
+      spring_weight != reference.spring_weight)
+    throw std::invalid_argument("projective dynamics: a model shares the factorisation of one with another topology or material");
+  // The prisms' weights are the reference's: they are what the factor holds.
+  // Each face keeps its own rest volumes, so its rest shape is still the
+  // exact equilibrium; away from rest its volume stiffness is the
+  // reference's per prism (README, "Every avatar its own face").
+  element_weight = reference.element_weight;
+}
+
+void ProjectiveSystem::gather_constraints(const TissueModel& m) {
+  if (m.inverse_mass.size() < m.moving_node_count)
+    throw std::invalid_argument("projective dynamics: the model has no masses");
   // Springs: the viscoelastic units' biphasic curves (stress_strain.hpp).
   // PD's weights are constants; the stiffer slope is the weight and the
   // projection bends the target length (projective_local_step.cpp), the
@@ -102,7 +118,7 @@ ProjectiveSystem::ProjectiveSystem(const TissueModel& m, float step_s) : step_s_
   // Materials", ACM TOG 36(3)): exact at rest, slower to converge on the
   // soft branch.
   for (std::size_t s = 0; s < m.spring_count(); ++s) {
-    if (!is_free(m.spring_a[s]) && !is_free(m.spring_b[s])) continue;
+    if (!is_free(m, m.spring_a[s]) && !is_free(m, m.spring_b[s])) continue;
     const StressStrainCurve& c = m.material.curves[static_cast<std::size_t>(m.spring_kind[s])];
     spring_a.push_back(m.spring_a[s]);
     spring_b.push_back(m.spring_b[s]);
@@ -118,7 +134,7 @@ ProjectiveSystem::ProjectiveSystem(const TissueModel& m, float step_s) : step_s_
   // mass-spring solver's kappa s (V0 - V) grad V (Lee et al. 1995, eq. 6).
   for (std::size_t e = 0; e < m.element_count(); ++e) {
     const auto nodes = m.element(e);
-    if (std::none_of(nodes.begin(), nodes.end(), [&](std::uint16_t i) { return is_free(i); })) continue;
+    if (std::none_of(nodes.begin(), nodes.end(), [&](std::uint16_t i) { return is_free(m, i); })) continue;
     float px[6], py[6], pz[6], gradient[6][3];
     for (std::size_t k = 0; k < 6; ++k) px[k] = m.rest_x[nodes[k]], py[k] = m.rest_y[nodes[k]], pz[k] = m.rest_z[nodes[k]];
     wedge_volume_gradient(px, py, pz, gradient);
@@ -128,24 +144,36 @@ ProjectiveSystem::ProjectiveSystem(const TissueModel& m, float step_s) : step_s_
     element_rest_volume.push_back(m.element_rest_volume[e]);
     element_weight.push_back(m.material.volume_stiffness * m.element_force_scale[e] * g2);
   }
+}
+
+ProjectiveFactor::ProjectiveFactor(const TissueModel& m, const ProjectiveSystem& c, float step_s, float damping_s) {
+  std::vector<std::int32_t> index(m.node_count, -1);  // free index in node order
+  std::vector<std::uint16_t> free_by_index;
+  for (std::size_t i = 0; i < m.moving_node_count; ++i)
+    if (is_free(m, i)) {
+      index[i] = static_cast<std::int32_t>(free_by_index.size());
+      free_by_index.push_back(static_cast<std::uint16_t>(i));
+    }
+  const std::size_t n = free_by_index.size();
+  if (n == 0 || n > 65535) throw std::invalid_argument("projective dynamics: the model needs 1..65535 free nodes");
 
   // S over the free nodes, in node order.
-  const double h = step_s, scale = 1.0 + double(kDampingS) / h;
+  const double h = step_s, scale = 1.0 + double(damping_s) / h;
   std::vector<Eigen::Triplet<double>> entries;
   for (std::size_t i = 0; i < n; ++i)
     entries.emplace_back(int(i), int(i), double(m.material.node_mass) / (h * h));
-  for (std::size_t s = 0; s < spring_a.size(); ++s) {
-    const int a = index[spring_a[s]], b = index[spring_b[s]];
-    const double w = scale * spring_weight[s];
+  for (std::size_t s = 0; s < c.spring_a.size(); ++s) {
+    const int a = index[c.spring_a[s]], b = index[c.spring_b[s]];
+    const double w = scale * c.spring_weight[s];
     if (a >= 0) entries.emplace_back(a, a, w);
     if (b >= 0) entries.emplace_back(b, b, w);
     if (a >= 0 && b >= 0) entries.emplace_back(a, b, -w), entries.emplace_back(b, a, -w);
   }
-  for (std::size_t e = 0; e < element_weight.size(); ++e) {
-    const double w = scale * element_weight[e];
+  for (std::size_t e = 0; e < c.element_weight.size(); ++e) {
+    const double w = scale * c.element_weight[e];
     for (std::size_t k = 0; k < 6; ++k)
       for (std::size_t l = 0; l < 6; ++l) {
-        const int a = index[element_node[k][e]], b = index[element_node[l][e]];
+        const int a = index[c.element_node[k][e]], b = index[c.element_node[l][e]];
         if (a >= 0 && b >= 0) entries.emplace_back(a, b, w * ((k == l ? 1.0 : 0.0) - 1.0 / 6.0));
       }
   }
@@ -176,16 +204,21 @@ ProjectiveSystem::ProjectiveSystem(const TissueModel& m, float step_s) : step_s_
   for (std::size_t i = 0; i < n; ++i) inverse_diagonal_[i] = static_cast<float>(1.0 / ldlt.vectorD()(int(i)));
 }
 
+std::size_t ProjectiveFactor::memory_bytes() const {
+  auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
+  return sizeof(*this) + bytes(row_of_node_) + bytes(free_nodes_) + bytes(column_start_) + bytes(row_) + bytes(value_) +
+         bytes(inverse_diagonal_);
+}
+
 std::size_t ProjectiveSystem::memory_bytes() const {
   auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
   std::size_t total = sizeof(*this) + bytes(spring_a) + bytes(spring_b) + bytes(spring_length) + bytes(spring_knee_length) + bytes(spring_weight) + bytes(spring_soft_share) + bytes(spring_compression) +
-                      bytes(element_rest_volume) + bytes(element_weight) + bytes(row_of_node_) + bytes(free_nodes_) +
-                      bytes(column_start_) + bytes(row_) + bytes(value_) + bytes(inverse_diagonal_);
+                      bytes(element_rest_volume) + bytes(element_weight);
   for (const auto& corner : element_node) total += bytes(corner);
-  return total;
+  return total + (owns_factor_ ? factor_->memory_bytes() : 0);
 }
 
-void ProjectiveSystem::solve(float* y, std::size_t lanes) const {
+void ProjectiveFactor::solve(float* y, std::size_t lanes) const {
   const std::size_t n = free_nodes_.size();
   const auto* start = column_start_.data();
   const auto* row = row_.data();
@@ -219,7 +252,13 @@ std::shared_ptr<const detail::ProjectiveSystem> ProjectiveSystemCache::get(const
   auto it = systems_.find(step_s);
   if (it != systems_.end()) return it->second;
   if (systems_.size() >= kMaxSystems) systems_.clear();
-  auto system = std::make_shared<const detail::ProjectiveSystem>(model, step_s);
+  // A model that shares its reference's factorisation (an avatar's fitted
+  // face, TissueModel::projective_reference) takes the reference's system
+  // for this step, made first if need be, with its own rest shape.
+  auto system = model.projective_reference
+                    ? std::make_shared<const detail::ProjectiveSystem>(
+                          model, *model.projective_reference->projective_systems.get(*model.projective_reference, step_s))
+                    : std::make_shared<const detail::ProjectiveSystem>(model, step_s);
   systems_.emplace(step_s, system);
   return system;
 }

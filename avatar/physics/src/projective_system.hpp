@@ -12,9 +12,16 @@
 // the model, so a solve takes many right-hand sides at once: rows of up to
 // 48 floats, the three coordinates of up to 16 faces side by side, so that
 // every nonzero of L is a few vector operations across faces.
+//
+// The matrix depends on the topology, the masses, the weights and h, never
+// on the rest shape: every avatar's fitted face shares the generic face's
+// (ProjectiveFactor, through TissueModel::projective_reference) and keeps
+// its own rest lengths and volumes in the local step, so faces of
+// different avatars go in one batch.
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "fw/physics/tissue_model.hpp"
@@ -24,14 +31,48 @@ namespace fw::physics::detail {
 /// Faces whose right-hand sides one solve interleaves.
 inline constexpr std::size_t kMaxBatchFaces = 16;
 
+class ProjectiveSystem;
+
+/// S = M / h^2 + (1 + beta / h) sum w A^T A over the free nodes, factored.
+class ProjectiveFactor {
+ public:
+  /// Factors the matrix of `constraints` (their nodes and weights) over the
+  /// free nodes of `model`.
+  ProjectiveFactor(const TissueModel& model, const ProjectiveSystem& constraints, float step_s, float damping_s);
+
+  /// Row (after the fill-reducing permutation) of node i, or -1 where the
+  /// node is prescribed (bone, held outline).
+  const std::vector<std::int32_t>& row_of_node() const { return row_of_node_; }
+  const std::vector<std::uint16_t>& free_nodes() const { return free_nodes_; }
+  std::size_t factor_nonzeros() const { return row_.size(); }
+  std::size_t memory_bytes() const;
+  void solve(float* y, std::size_t lanes) const;
+
+ private:
+  std::vector<std::int32_t> row_of_node_;
+  std::vector<std::uint16_t> free_nodes_;  ///< by row
+  // L, unit lower triangular, by columns (compressed sparse column), and D^-1.
+  std::vector<std::uint32_t> column_start_;
+  std::vector<std::uint16_t> row_;
+  std::vector<float> value_, inverse_diagonal_;
+};
+
 class ProjectiveSystem {
  public:
+  /// The constraints of `model` and their own factorisation.
   ProjectiveSystem(const TissueModel& model, float step_s);
+  /// The constraints of `model` at its own rest shape with the weights and
+  /// the factorisation of `reference`, a system of a model with the same
+  /// topology and material (TissueModel::projective_reference).
+  ProjectiveSystem(const TissueModel& model, const ProjectiveSystem& reference);
 
   float step_s() const { return step_s_; }
   /// Stiffness-proportional (Rayleigh) damping: the units resist their
   /// stretching speed by beta times their stiffness, seconds.
   float damping_s() const { return damping_s_; }
+  /// The factored matrix, shared by every system made from the same reference:
+  /// faces whose systems have the same factor share a solve.
+  const ProjectiveFactor* factor() const { return factor_.get(); }
 
   // The constraints that move a free node. Springs: A = e_b - e_a, projected
   // onto their rest length. Volumes: A = the six nodes about their centroid,
@@ -48,29 +89,26 @@ class ProjectiveSystem {
 
   /// Row (after the fill-reducing permutation) of node i, or -1 where the
   /// node is prescribed (bone, held outline).
-  const std::vector<std::int32_t>& row_of_node() const { return row_of_node_; }
-  std::size_t free_count() const { return free_nodes_.size(); }
-  const std::vector<std::uint16_t>& free_nodes() const { return free_nodes_; }
+  const std::vector<std::int32_t>& row_of_node() const { return factor_->row_of_node(); }
+  std::size_t free_count() const { return factor_->free_nodes().size(); }
+  const std::vector<std::uint16_t>& free_nodes() const { return factor_->free_nodes(); }
   /// Nonzeros below the diagonal of L.
-  std::size_t factor_nonzeros() const { return row_.size(); }
+  std::size_t factor_nonzeros() const { return factor_->factor_nonzeros(); }
+  /// Bytes of the constraints, and of the factor when this system owns it
+  /// alone (a shared factor is counted where it was made).
   std::size_t memory_bytes() const;
 
   /// Solves S x = b in place for `lanes` right-hand sides interleaved row by
   /// row (y[row * lanes + lane], rows in permuted order); lanes is 3, 6, 12,
   /// 24 or 48.
-  void solve(float* y, std::size_t lanes) const;
+  void solve(float* y, std::size_t lanes) const { factor_->solve(y, lanes); }
 
  private:
-  template <std::size_t W>
-  void solve_lanes(float* y) const;
+  void gather_constraints(const TissueModel& model);
 
   float step_s_ = 0, damping_s_ = 0;
-  std::vector<std::int32_t> row_of_node_;
-  std::vector<std::uint16_t> free_nodes_;  ///< by row
-  // L, unit lower triangular, by columns (compressed sparse column), and D^-1.
-  std::vector<std::uint32_t> column_start_;
-  std::vector<std::uint16_t> row_;
-  std::vector<float> value_, inverse_diagonal_;
+  std::shared_ptr<const ProjectiveFactor> factor_;
+  bool owns_factor_ = true;
 };
 
 /// Padded lanes for `faces` faces: 3 coordinates each, rounded up to a

@@ -15,6 +15,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -39,8 +40,9 @@ class ProjectiveStepper;
 struct SimulationOptions {
   Solver solver = Solver::mass_spring;
   std::uint64_t seed = 1;
-  /// Each face's muscles are this share stronger or weaker than the table,
-  /// drawn from the seed (real faces differ); 0 for the reference face.
+  /// How far each face's muscles depart from the table, drawn from the seed
+  /// (muscle_strength_factors, muscle_variation.hpp: real faces differ):
+  /// 1 a person's spread, 0 the reference face.
   float individual_variation = 0.0f;
   /// Longest sub-step, seconds; a mass-spring step never exceeds the
   /// model's stable bound either. 1/120 s is the paper's four per frame.
@@ -92,11 +94,17 @@ class FaceSimulation {
   /// table alone again. Wakes a resting face if its targets change.
   void set_muscle_floor(const std::array<float, kMuscleCount>& floor);
   const std::array<float, kMuscleCount>& muscle_floor() const { return floor_; }
-  /// The same face with another tissue model (another material: the
-  /// skin's age and looseness, TissueMaterial::aged). `model` must be built
-  /// from the same face (the same node count): the nodes keep their places
-  /// and speeds, so the face goes on from where it is, and it wakes.
+  /// The same face with another tissue model: another material (the
+  /// skin's age and looseness, TissueMaterial::aged), or the avatar's own
+  /// fitted face once it is built (avatar_tissue.hpp). `model` must have
+  /// the same node count. Every node keeps its displacement from the rest
+  /// shape and its speed, so the face goes on from where it is (no jump in
+  /// what measure() sees), and it wakes. The muscles keep this face's
+  /// variation, on the new model's strengths.
   void replace_model(std::shared_ptr<const TissueModel> model);
+  /// The corrective components measure() projects on from now on (null:
+  /// none), built against the AU basis of the model the face now has.
+  void set_correctives(std::shared_ptr<const CorrectiveBasis> correctives) { correctives_ = std::move(correctives); }
 
   /// Advances by `dt_seconds` (one rendered frame; internally several
   /// sub-steps). dt is clamped to [0, 1] s; a non-finite dt is ignored. A face
@@ -151,6 +159,7 @@ class FaceSimulation {
   std::shared_ptr<const CorrectiveBasis> correctives_;  ///< null: no corrective weights
   SimulationOptions options_;
 
+  std::array<float, kMuscleCount> strength_factor_{};  ///< muscle_strength_factors
   std::array<float, kMuscleCount> strength_{};
   std::array<float, kMuscleCount> target_{}, activation_{};
   std::array<float, codec::kAuChannelCount> au_targets_{};

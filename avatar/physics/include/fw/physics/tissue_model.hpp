@@ -147,6 +147,10 @@ struct TissueModel {
   /// The projective-dynamics solver's factorisations, made when a face of
   /// this model first steps with it (projective_system_cache.hpp).
   ProjectiveSystemCache projective_systems;
+  /// A model of the same topology and material (the generic face's) whose
+  /// projective-dynamics weights and factorisations this one shares, keeping
+  /// its own rest shape (avatar_tissue.hpp); null: its own.
+  std::shared_ptr<const TissueModel> projective_reference;
 
   std::size_t spring_count() const { return spring_a.size(); }
   std::size_t element_count() const { return element_node[0].size(); }
