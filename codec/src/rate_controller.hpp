@@ -28,6 +28,13 @@ class RateController {
   void on_frame_sent(double bits, bool key);
 
   int level() const { return level_; }
+  /// The spending over the last seconds for the budget, or the bucket's fill
+  /// for 3/4 of its capacity, whichever is higher: above 0.95 the level goes
+  /// coarser, under 0.75 finer.
+  double pressure() const;
+  /// Whether bits are left over: the pressure is under the point where the
+  /// level goes finer, so optional channels (the correctives) may spend them.
+  bool has_spare() const;
   /// Ticks between key frames in a loss-tolerant stream: key frames take
   /// about an eighth of the budget, come at most every 2 s and at least
   /// every `max_ticks`.
