@@ -50,11 +50,15 @@ constexpr double kPartnerShare = 0.3;
 constexpr double kGazePriority = 100.0;
 constexpr double kUrgentPriority = 2.0;
 // The corrective weights only spend what the budget has to spare: a frame
-// carries them while the rate control has bits left over (its pressure is
-// under the point where it would go finer) and the bucket stays under this
-// share of its capacity (a second of budget); they alone make a frame only
-// then. So a tight link spends its bits on gaze and action units and holds
-// the correctives.
+// carries them while the rate control's pressure is under
+// kCorrectivePressure (the 0.75 under which it would go finer: the rest of
+// the face leaves bits over) and the bucket stays under
+// kCorrectiveBucketShare of its capacity (a second of budget); they alone
+// make a frame only then. Their bits fill the bucket but do not count in
+// the spending that sets the level (RateController::on_frame_sent), so they
+// never make the level coarser for the rest. So a tight link spends its
+// bits on gaze and action units and holds the correctives.
+constexpr double kCorrectivePressure = 0.75;
 constexpr double kCorrectiveBucketShare = 1.0 / 3.0;
 
 bool is_corrective(std::size_t c) { return channel_table()[c].group == ChannelGroup::correctives; }
@@ -89,6 +93,10 @@ struct FrameTrial {
   std::optional<CodingState> next;
   std::vector<std::uint8_t> bytes;
   FrameType type = FrameType::predicted;
+  /// The share of the frame's bits that carries corrective weights (their
+  /// share of the channels it updates; none in a key frame, which every
+  /// channel needs).
+  double corrective_share = 0;
 };
 
 }  // namespace
@@ -134,7 +142,9 @@ struct Encoder::State {
       x = to_steps(channel_value(params, c), c);
       const int base = channel_table()[c].base;
       if (base >= 0) x += source.x[static_cast<std::size_t>(base)];  // bases come first in the table
-      const Motion motion = estimate_motion(c, x, tolerance(c, level));
+      // A corrective is sent without velocity: it may be held for long on a
+      // tight link, and a held one must stand still, not drift on.
+      const Motion motion = is_corrective(c) ? Motion{} : estimate_motion(c, x, tolerance(c, level));
       source.velocity[c] = motion.velocity;
       source.wanted.target[c] = round_nearest(x);
       source.wanted.velocity[c] = round_nearest(motion.velocity * kSubSteps);
@@ -322,7 +332,7 @@ struct Encoder::State {
     // Correctives go only on spare budget; with none spare (the bucket
     // already holds a share) no trial frame is written for them at all.
     const bool spare =
-        rate.has_spare() && rate.bucket_bits() + overhead_bits() <= kCorrectiveBucketShare * rate.capacity_bits();
+        rate.pressure() < kCorrectivePressure && rate.bucket_bits() + overhead_bits() <= kCorrectiveBucketShare * rate.capacity_bits();
     if (need == FrameNeed::correctives && !spare) return false;
     if (!spare) drop_correctives(decision);
     const bool fits = try_frame(decision, source.wanted, false, trial);
@@ -430,6 +440,14 @@ struct Encoder::State {
     trial.bytes.clear();
     write_frame(*trial.next, options.stream, sequence, decision, trial.bytes);
     trial.type = decision.type;
+    trial.corrective_share = 0;
+    if (decision.type == FrameType::key) return;
+    std::size_t updated = 0, correctives = 0;
+    for (std::size_t c = 0; c < kChannelCount; ++c) {
+      updated += decision.update[c] ? 1 : 0;
+      correctives += decision.update[c] && is_corrective(c) ? 1 : 0;
+    }
+    if (updated > 0) trial.corrective_share = static_cast<double>(correctives) / static_cast<double>(updated);
   }
 
   // What the container adds to every frame, charged to the budget.
@@ -442,7 +460,7 @@ struct Encoder::State {
     const bool key = trial.type == FrameType::key;
     coding = std::move(*trial.next);
     sent_source = x;
-    rate.on_frame_sent(bits, key);
+    rate.on_frame_sent(bits, key, bits * trial.corrective_share);
     ticks_since_frame = 0;
     if (key) {
       ticks_since_key = 0;

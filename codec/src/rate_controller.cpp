@@ -56,15 +56,13 @@ double RateController::pressure() const {
                   kCoarserPressure * bucket_bits_ / (kFullBucket * capacity_bits_));
 }
 
-bool RateController::has_spare() const { return pressure() < kFinerPressure; }
-
 bool RateController::allows(double bits, bool urgent) const {
   return bucket_bits_ <= 0.0 || bucket_bits_ + bits <= capacity_bits_ * (urgent ? kUrgentReserve : 1.0);
 }
 
-void RateController::on_frame_sent(double bits, bool key) {
+void RateController::on_frame_sent(double bits, bool key, double optional_bits) {
   bucket_bits_ += bits;
-  spent_this_tick_ += bits;
+  spent_this_tick_ += bits - optional_bits;
   if (key) last_key_bits_ = bits;
 }
 

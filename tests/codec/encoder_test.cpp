@@ -323,7 +323,7 @@ TEST(Encoder, UnderATightBudgetTheCorrectivesGiveWayToGazeAndActionUnits) {
     std::printf("%.0f bit/s: gaze max %.4f vs %.4f rad, AU rms %.4f vs %.4f, corrective rms %.4f\n", bps, a.gaze_max,
                 b.gaze_max, a.au_rms, b.au_rms, a.corrective_rms);
     EXPECT_LE(a.gaze_max, b.gaze_max * 1.05 + 0.001) << bps << " bit/s";
-    EXPECT_LE(a.au_rms, b.au_rms * 1.15 + 0.001) << bps << " bit/s";
+    EXPECT_LE(a.au_rms, b.au_rms * 1.05 + 0.001) << bps << " bit/s";
     EXPECT_GT(a.corrective_rms, 0.02) << bps << " bit/s: the correctives were coarsened or held";
   }
   // With bits to spare they follow the face within what a viewer sees.
