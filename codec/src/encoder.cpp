@@ -331,10 +331,13 @@ struct Encoder::State {
     if (need == FrameNeed::none) return false;
     // Correctives go only on spare budget; with none spare (the bucket
     // already holds a share) no trial frame is written for them at all.
-    const bool spare =
-        rate.pressure() < kCorrectivePressure && rate.bucket_bits() + overhead_bits() <= kCorrectiveBucketShare * rate.capacity_bits();
+    const bool spare = rate.pressure() < kCorrectivePressure &&
+                       rate.bucket_bits() + overhead_bits() <= kCorrectiveBucketShare * rate.capacity_bits();
     if (need == FrameNeed::correctives && !spare) return false;
     if (!spare) drop_correctives(decision);
+    // A refresh whose only news were correctives has nothing left to say.
+    const auto& update = decision.update;
+    if (need == FrameNeed::refresh && std::none_of(update.begin(), update.end(), [](bool u) { return u; })) return false;
     const bool fits = try_frame(decision, source.wanted, false, trial);
     if (need == FrameNeed::refresh) return fits && refresh_affordable(trial);
     if (need == FrameNeed::correctives) return fits && within_share(trial, kCorrectiveBucketShare);
