@@ -10,12 +10,19 @@ constexpr float kAngleStep = static_cast<float>(std::numbers::pi / 3600.0);  // 
 constexpr float kTranslationStep = 0.125f;                                   // mm
 constexpr float kLidStep = 1.0f / 128.0f;     // 0.08 mm of a 10 mm lid travel
 constexpr float kColourStep = 1.0f / 64.0f;   // about 0.25 CIELAB units at full blush
+// A corrective component at weight 1 moves the skin a few millimetres at
+// most (the physics residual it stands for: 0.4 mm RMS, 3.4 mm at worst), so
+// a step of 1/64 moves a vertex 0.05 mm at most (FORMAT.md, "Why these steps").
+constexpr float kCorrectiveStep = 1.0f / 64.0f;
 
 constexpr const char* kAuNames[kAuChannelCount] = {
     "au1_left",  "au1_right",  "au2_left",  "au2_right",  "au4_left",  "au4_right", "au5_left",  "au5_right",
     "au6_left",  "au6_right",  "au7_left",  "au7_right",  "au9",       "au10_left", "au10_right", "au12_left",
     "au12_right", "au14_left", "au14_right", "au15_left", "au15_right", "au17",     "au20_left", "au20_right",
     "au23",      "au24",       "au25",      "au26",       "au27"};
+
+constexpr const char* kCorrectiveNames[kCorrectiveCount] = {"corrective0", "corrective1", "corrective2",
+                                                            "corrective3", "corrective4", "corrective5"};
 
 std::array<ChannelInfo, kChannelCount> make_table() {
   std::array<ChannelInfo, kChannelCount> t{};
@@ -44,13 +51,18 @@ std::array<ChannelInfo, kChannelCount> make_table() {
   t[c++] = {"blush_nose", ChannelGroup::colour, kColourStep, 0, 64, -1, -1};
   t[c++] = {"blush_sides", ChannelGroup::colour, kColourStep, 0, 64, -1, -1};
   t[c++] = {"pallor", ChannelGroup::colour, kColourStep, 0, 64, -1, -1};
+  for (std::size_t k = 0; k < kCorrectiveCount; ++k)
+    t[c++] = {kCorrectiveNames[k], ChannelGroup::correctives, kCorrectiveStep, -64, 64, -1, -1};  // [-1, 1]
   return t;
 }
 
-// [level][group]: action units, head rotation, head translation, eyes, lids, colour.
+// [level][group]: action units, head rotation, head translation, eyes, lids,
+// colour, correctives. The correctives coarsen a level ahead of the rest and
+// end a level coarser (16 steps, 1/4 of a weight): they are the detail a
+// viewer misses last, so a tight budget takes their bits first.
 constexpr int kShift[kMaxQualityLevel + 1][kChannelGroupCount] = {
-    {0, 0, 0, 0, 0, 0}, {0, 0, 0, 1, 0, 0}, {0, 0, 0, 1, 1, 0}, {1, 1, 1, 2, 1, 1},
-    {1, 1, 1, 2, 2, 1}, {2, 2, 2, 2, 2, 2}, {2, 2, 2, 2, 3, 2}, {3, 3, 3, 2, 3, 3}};
+    {0, 0, 0, 0, 0, 0, 0}, {0, 0, 0, 1, 0, 0, 0}, {0, 0, 0, 1, 1, 0, 1}, {1, 1, 1, 2, 1, 1, 1},
+    {1, 1, 1, 2, 2, 1, 2}, {2, 2, 2, 2, 2, 2, 2}, {2, 2, 2, 2, 3, 2, 3}, {3, 3, 3, 2, 3, 3, 4}};
 
 }  // namespace
 
@@ -63,7 +75,8 @@ const std::array<GroupSpan, kChannelGroupCount>& group_spans() {
   static const std::array<GroupSpan, kChannelGroupCount> spans = {
       GroupSpan{0, kAuChannelCount}, GroupSpan{kAuChannelCount, 3}, GroupSpan{kAuChannelCount + 3, 3},
       GroupSpan{kAuChannelCount + 6, 4}, GroupSpan{kAuChannelCount + 10, 2},
-      GroupSpan{kAuChannelCount + 12, kColourRegionCount + 1}};
+      GroupSpan{kAuChannelCount + 12, kColourRegionCount + 1},
+      GroupSpan{kAuChannelCount + 12 + kColourRegionCount + 1, kCorrectiveCount}};
   return spans;
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// The normative numbers of FaceParams schema 1 beyond the public table:
+// The normative numbers of FaceParams schema 2 beyond the public table:
 // channel groups, the quantiser shift of each group at each quality level,
 // and the tolerances the encoder aims for (FORMAT.md, "Channels" and
 // "Quality levels").

@@ -8,7 +8,8 @@ std::string_view describe(DecodeError error) {
     case DecodeError::ok: return "no error";
     case DecodeError::empty_frame: return "the frame is empty";
     case DecodeError::unsupported_version:
-      return "the frame is from another version of the facewire codec; update the client";
+      return "the face stream is of another format version than this client decodes (version 2 since the "
+             "corrective weights): reload the page, or update the client and the server to the same release";
     case DecodeError::unknown_frame_type: return "the frame's type is not one this version knows";
     case DecodeError::wrong_frame_type: return "this kind of frame is not expected here";
     case DecodeError::bad_magic: return "the stream header does not start with FWFP: not a facewire stream";

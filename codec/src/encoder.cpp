@@ -49,6 +49,19 @@ constexpr double kPartnerShare = 0.3;
 // errors over tolerances, so 2 and more is urgent).
 constexpr double kGazePriority = 100.0;
 constexpr double kUrgentPriority = 2.0;
+// The corrective weights only spend what the budget has to spare: a frame
+// carries them while the rate control's pressure is under
+// kCorrectivePressure (the 0.75 under which it would go finer: the rest of
+// the face leaves bits over) and the bucket stays under
+// kCorrectiveBucketShare of its capacity (a second of budget); they alone
+// make a frame only then. Their bits fill the bucket but do not count in
+// the spending that sets the level (RateController::on_frame_sent), so they
+// never make the level coarser for the rest. So a tight link spends its
+// bits on gaze and action units and holds the correctives.
+constexpr double kCorrectivePressure = 0.75;
+constexpr double kCorrectiveBucketShare = 1.0 / 3.0;
+
+bool is_corrective(std::size_t c) { return channel_table()[c].group == ChannelGroup::correctives; }
 
 using Steps = std::array<double, kChannelCount>;
 using Updates = std::array<bool, kChannelCount>;
@@ -67,9 +80,10 @@ struct TickSource {
 
 // Why a predicted frame is needed, if at all.
 enum class FrameNeed {
-  none,     ///< every channel within its tolerance, no heartbeat or refresh due
-  change,   ///< the viewer would see a difference, or a heartbeat is due
-  refresh,  ///< nothing the viewer would see, but the face moved since the last frame
+  none,         ///< every channel within its tolerance, no heartbeat or refresh due
+  change,       ///< the viewer would see a difference, or a heartbeat is due
+  refresh,      ///< nothing the viewer would see, but the face moved since the last frame
+  correctives,  ///< only corrective weights beyond their tolerance: sent on spare budget
 };
 
 // A frame being tried: its bytes and the coding state after it. The state is
@@ -79,6 +93,10 @@ struct FrameTrial {
   std::optional<CodingState> next;
   std::vector<std::uint8_t> bytes;
   FrameType type = FrameType::predicted;
+  /// The share of the frame's bits that carries corrective weights (their
+  /// share of the channels it updates; none in a key frame, which every
+  /// channel needs).
+  double corrective_share = 0;
 };
 
 }  // namespace
@@ -124,7 +142,9 @@ struct Encoder::State {
       x = to_steps(channel_value(params, c), c);
       const int base = channel_table()[c].base;
       if (base >= 0) x += source.x[static_cast<std::size_t>(base)];  // bases come first in the table
-      const Motion motion = estimate_motion(c, x, tolerance(c, level));
+      // A corrective is sent without velocity: it may be held for long on a
+      // tight link, and a held one must stand still, not drift on.
+      const Motion motion = is_corrective(c) ? Motion{} : estimate_motion(c, x, tolerance(c, level));
       source.velocity[c] = motion.velocity;
       source.wanted.target[c] = round_nearest(x);
       source.wanted.velocity[c] = round_nearest(motion.velocity * kSubSteps);
@@ -190,10 +210,13 @@ struct Encoder::State {
   FrameNeed select_updates(const Steps& x, const Steps& velocity, int level, Updates& update,
                            Priorities& priority) const {
     Steps error{};
-    const bool channel_off = mark_channels_off(x, velocity, level, error, update, priority);
+    bool corrective_off = false;
+    const bool channel_off = mark_channels_off(x, velocity, level, error, update, priority, corrective_off);
     const bool eye_off = mark_eyes_off(error, level, update, priority);
     FrameNeed need = FrameNeed::change;
-    if (!heartbeat_due() && !channel_off && !eye_off) {
+    if (!heartbeat_due() && !channel_off && !eye_off && corrective_off) {
+      need = FrameNeed::correctives;
+    } else if (!heartbeat_due() && !channel_off && !eye_off) {
       // A refresh: every channel is within its tolerance of the prediction,
       // but the face moved since the last frame (some channel by half a
       // grid step or more). The frame carries the channel the prediction
@@ -211,9 +234,10 @@ struct Encoder::State {
   // frame's state extrapolated by the ticks since, read without a copy), its
   // priority, and whether a frame should update it: past a share of its
   // tolerance now, or past all of it in a few ticks. Returns whether any
-  // channel is beyond its tolerance.
+  // channel but the correctives is beyond its tolerance (`corrective_off`:
+  // whether a corrective is).
   bool mark_channels_off(const Steps& x, const Steps& velocity, int level, Steps& error, Updates& update,
-                         Priorities& priority) const {
+                         Priorities& priority, bool& corrective_off) const {
     const Reconstruction& view = coding.reconstruction;
     bool beyond = false;
     for (std::size_t c = 0; c < kChannelCount; ++c) {
@@ -221,7 +245,7 @@ struct Encoder::State {
       error[c] = x[c] - view.shown_after(c, ticks_since_frame);
       const double error_ahead =
           x[c] + velocity[c] * kLookaheadTicks - view.shown_after(c, ticks_since_frame + kLookaheadTicks);
-      beyond = beyond || std::abs(error[c]) > limit;
+      (is_corrective(c) ? corrective_off : beyond) |= std::abs(error[c]) > limit;
       priority[c] = std::abs(error[c]) / limit;
       update[c] = std::abs(error[c]) > kUpdateShare * limit || std::abs(error_ahead) > limit;
     }
@@ -305,16 +329,44 @@ struct Encoder::State {
     Priorities priority{};
     const FrameNeed need = select_updates(source.x, source.velocity, level, decision.update, priority);
     if (need == FrameNeed::none) return false;
+    // Correctives go only on spare budget; with none spare (the bucket
+    // already holds a share) no trial frame is written for them at all.
+    const bool spare = rate.pressure() < kCorrectivePressure &&
+                       rate.bucket_bits() + overhead_bits() <= kCorrectiveBucketShare * rate.capacity_bits();
+    if (need == FrameNeed::correctives && !spare) return false;
+    if (!spare) drop_correctives(decision);
+    // A refresh whose only news were correctives has nothing left to say.
+    const auto& update = decision.update;
+    if (need == FrameNeed::refresh && std::none_of(update.begin(), update.end(), [](bool u) { return u; })) return false;
     const bool fits = try_frame(decision, source.wanted, false, trial);
     if (need == FrameNeed::refresh) return fits && refresh_affordable(trial);
-    return fits || fit_over_budget(decision, priority, source.wanted, trial);
+    if (need == FrameNeed::correctives) return fits && within_share(trial, kCorrectiveBucketShare);
+    if (fits && (!updates_correctives(decision) || within_share(trial, kCorrectiveBucketShare))) return true;
+    if (updates_correctives(decision)) {
+      // The correctives would take more than the spare budget: the frame goes without them.
+      drop_correctives(decision);
+      if (try_frame(decision, source.wanted, false, trial)) return true;
+    }
+    return fit_over_budget(decision, priority, source.wanted, trial);
+  }
+
+  static bool updates_correctives(const FrameDecision& decision) {
+    for (std::size_t c = 0; c < kChannelCount; ++c)
+      if (decision.update[c] && is_corrective(c)) return true;
+    return false;
+  }
+  static void drop_correctives(FrameDecision& decision) {
+    for (std::size_t c = 0; c < kChannelCount; ++c) decision.update[c] = decision.update[c] && !is_corrective(c);
+  }
+
+  // Whether the bucket stays under `share` of its capacity with `trial` in it.
+  bool within_share(const FrameTrial& trial, double share) const {
+    return rate.bucket_bits() + 8.0 * static_cast<double>(trial.bytes.size()) + overhead_bits() <=
+           share * rate.capacity_bits();
   }
 
   // A refresh only spends what the budget has to spare (refresh_bucket_share).
-  bool refresh_affordable(const FrameTrial& trial) const {
-    return rate.bucket_bits() + 8.0 * static_cast<double>(trial.bytes.size()) + overhead_bits() <=
-           options.refresh_bucket_share * rate.capacity_bits();
-  }
+  bool refresh_affordable(const FrameTrial& trial) const { return within_share(trial, options.refresh_bucket_share); }
 
   // Over budget: keep the channels furthest beyond their tolerance, as many
   // as fit; channels far off (an eye beyond its tolerance, anything beyond
@@ -391,6 +443,14 @@ struct Encoder::State {
     trial.bytes.clear();
     write_frame(*trial.next, options.stream, sequence, decision, trial.bytes);
     trial.type = decision.type;
+    trial.corrective_share = 0;
+    if (decision.type == FrameType::key) return;
+    std::size_t updated = 0, correctives = 0;
+    for (std::size_t c = 0; c < kChannelCount; ++c) {
+      updated += decision.update[c] ? 1 : 0;
+      correctives += decision.update[c] && is_corrective(c) ? 1 : 0;
+    }
+    if (updated > 0) trial.corrective_share = static_cast<double>(correctives) / static_cast<double>(updated);
   }
 
   // What the container adds to every frame, charged to the budget.
@@ -403,7 +463,7 @@ struct Encoder::State {
     const bool key = trial.type == FrameType::key;
     coding = std::move(*trial.next);
     sent_source = x;
-    rate.on_frame_sent(bits, key);
+    rate.on_frame_sent(bits, key, bits * trial.corrective_share);
     ticks_since_frame = 0;
     if (key) {
       ticks_since_key = 0;

@@ -14,7 +14,10 @@ MessageKind classify(std::span<const std::uint8_t> message) {
                        type <= static_cast<std::uint8_t>(kLastMessageType);
     return known ? MessageKind::session : MessageKind::invalid;
   }
-  if ((first >> 4) != kFormatVersion) return MessageKind::invalid;
+  // A codec message of another format version is still classed by its type,
+  // so that its reader refuses it as unsupported_version, whose message
+  // tells the person to update, instead of as a message no server sends.
+  if ((first >> 4) == 0) return MessageKind::invalid;
   switch (static_cast<FrameType>(first & 0x0F)) {
     case FrameType::stream_header: return MessageKind::stream_header;
     case FrameType::room: return MessageKind::room_frame;

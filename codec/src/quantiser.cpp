@@ -16,7 +16,9 @@ auto tail_field(P& p, std::size_t i) -> decltype(&p.pallor) {
                            &p.eye_left.yaw_rad,       &p.eye_left.pitch_rad,     &p.eye_right.yaw_rad,
                            &p.eye_right.pitch_rad,    &p.lid_left,               &p.lid_right,
                            &p.blush[0],               &p.blush[1],               &p.blush[2],
-                           &p.blush[3],               &p.blush[4],               &p.pallor};
+                           &p.blush[3],               &p.blush[4],               &p.pallor,
+                           &p.corrective[0],          &p.corrective[1],          &p.corrective[2],
+                           &p.corrective[3],          &p.corrective[4],          &p.corrective[5]};
   static_assert(sizeof fields / sizeof fields[0] == kChannelCount - kAuChannelCount);
   return fields[i];
 }

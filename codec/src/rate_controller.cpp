@@ -40,25 +40,29 @@ void RateController::on_tick() {
   spent_this_tick_ = 0;
   bucket_bits_ = std::max(0.0, bucket_bits_ - bits_per_tick_);
   ++ticks_since_level_change_;
-  // Above 1: spending more than the budget, or eating into the burst reserve.
-  const double pressure =
-      std::max(average_bits_per_tick_ / bits_per_tick_, kCoarserPressure * bucket_bits_ / (kFullBucket * capacity_bits_));
-  if (level_ < max_level_ && ticks_since_level_change_ >= kTicksBeforeCoarser && pressure > kCoarserPressure) {
+  const double now = pressure();
+  if (level_ < max_level_ && ticks_since_level_change_ >= kTicksBeforeCoarser && now > kCoarserPressure) {
     ++level_;
     ticks_since_level_change_ = 0;
-  } else if (level_ > min_level_ && ticks_since_level_change_ >= kTicksBeforeFiner && pressure < kFinerPressure) {
+  } else if (level_ > min_level_ && ticks_since_level_change_ >= kTicksBeforeFiner && now < kFinerPressure) {
     --level_;
     ticks_since_level_change_ = 0;
   }
+}
+
+double RateController::pressure() const {
+  // Above 1: spending more than the budget, or eating into the burst reserve.
+  return std::max(average_bits_per_tick_ / bits_per_tick_,
+                  kCoarserPressure * bucket_bits_ / (kFullBucket * capacity_bits_));
 }
 
 bool RateController::allows(double bits, bool urgent) const {
   return bucket_bits_ <= 0.0 || bucket_bits_ + bits <= capacity_bits_ * (urgent ? kUrgentReserve : 1.0);
 }
 
-void RateController::on_frame_sent(double bits, bool key) {
+void RateController::on_frame_sent(double bits, bool key, double optional_bits) {
   bucket_bits_ += bits;
-  spent_this_tick_ += bits;
+  spent_this_tick_ += bits - optional_bits;
   if (key) last_key_bits_ = bits;
 }
 

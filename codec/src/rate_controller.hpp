@@ -25,9 +25,18 @@ class RateController {
   /// urgent frame (a channel far beyond its tolerance) may also use the
   /// reserve of half a bucket more; the level then goes coarser.
   bool allows(double bits, bool urgent = false) const;
-  void on_frame_sent(double bits, bool key);
+  /// A frame went out. `optional_bits` of its `bits` carried optional
+  /// channels (the correctives, sent on spare budget only): they fill the
+  /// bucket like the rest but do not count in the spending that sets the
+  /// level, so that they never make the level coarser for the others.
+  void on_frame_sent(double bits, bool key, double optional_bits = 0);
 
   int level() const { return level_; }
+  /// The spending over the last seconds for the budget (optional bits left
+  /// out), or the bucket's fill for 3/4 of its capacity, whichever is
+  /// higher: above 0.95 the level goes coarser, under 0.75 finer.
+  double pressure() const;
+
   /// Ticks between key frames in a loss-tolerant stream: key frames take
   /// about an eighth of the budget, come at most every 2 s and at least
   /// every `max_ticks`.

@@ -13,6 +13,10 @@ constexpr float kVisibleGazeRad = static_cast<float>(0.4 * std::numbers::pi / 18
 constexpr float kHeadReachMm = 126.0f;  // neck pivot to the farthest vertex: 2 units of 63 mm
 constexpr float kLidTravelMm = 10.0f;
 constexpr float kVisibleColour = 1.0f / 32.0f;
+// Largest skin motion of one corrective component at weight 1: the physics
+// residual the components stand for is 0.4 mm RMS and 3.4 mm at its worst
+// vertex, and the first component carries most of it.
+constexpr float kCorrectiveReachMm = 3.4f;
 
 // Largest displacement (mm, intensity 1) of each AU's motion, apparent
 // texture motion included, from avatar/model/EXPRESSIONS.md (0.1 unit =
@@ -52,7 +56,8 @@ std::array<float, kChannelCount> default_visible_error() {
   for (int i = 0; i < 3; ++i) e[c++] = kVisibleMm;                 // mm
   for (int i = 0; i < 4; ++i) e[c++] = kVisibleGazeRad;            // each eye's yaw and pitch together
   for (int i = 0; i < 2; ++i) e[c++] = kVisibleMm / kLidTravelMm;
-  while (c < kChannelCount) e[c++] = kVisibleColour;
+  for (std::size_t i = 0; i < kColourRegionCount + 1; ++i) e[c++] = kVisibleColour;
+  while (c < kChannelCount) e[c++] = kVisibleMm / kCorrectiveReachMm;
   return e;
 }
 

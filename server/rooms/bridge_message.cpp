@@ -95,6 +95,7 @@ void each_float(codec::FaceParams& f, Visit visit) {
   visit(f.lid_right);
   for (float& v : f.blush) visit(v);
   visit(f.pallor);
+  for (float& v : f.corrective) visit(v);
 }
 
 Bytes start(std::uint8_t kind) { return {kVersion, kind}; }

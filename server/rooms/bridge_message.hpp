@@ -24,7 +24,8 @@ using Bytes = std::vector<std::uint8_t>;
 
 /// 2: the language of a join and of a member, the speaking news.
 /// 3: unit morphs: their news, and a member's set in its record.
-inline constexpr std::uint8_t kVersion = 3;
+/// 4: the faces' corrective weights (FaceParams schema 2).
+inline constexpr std::uint8_t kVersion = 4;
 
 /// A member as its owner keeps it in Redis, so that another node can
 /// restore the room (and as the roster tells it to bridging nodes).

@@ -18,6 +18,9 @@ std::string temp_path(const std::string& name) {
   return (std::filesystem::temp_directory_path() / ("fw_scene_test_" + std::to_string(::getpid()) + "_" + name)).string();
 }
 
+// Channels of FaceParams schema 1, which scene files of versions 1 and 2 store.
+constexpr std::size_t kChannelsBeforeCorrectives = codec::kChannelCount - codec::kCorrectiveCount;
+
 Scene small_scene() {
   Scene s;
   s.fps = 25;
@@ -26,8 +29,8 @@ Scene small_scene() {
     avatar.name = a ? "idle-one" : "talker";
     avatar.idle = a == 1;
     for (int t = 0; t < 10; ++t) {
-      codec::FaceParams p;
-      for (std::size_t c = 0; c < codec::kChannelCount; ++c)
+      codec::FaceParams p;  // no corrective weights: a scene versions 1 and 2 hold
+      for (std::size_t c = 0; c < kChannelsBeforeCorrectives; ++c)
         codec::set_channel_value(p, c, static_cast<float>(t) * 0.01f + static_cast<float>(c) * 0.001f - static_cast<float>(a));
       avatar.ticks.push_back(p);
     }
@@ -180,7 +183,7 @@ constexpr std::size_t kEventsAt = 20;
 constexpr std::size_t kFirstAvatarAt = 24;
 constexpr std::size_t kAvatarBytes = 2 + 6 + 8 + 16;  // "talker"
 constexpr std::size_t kFacesAt = kFirstAvatarAt + kAvatarBytes + (2 + 8 + 8 + 16);  // then "idle-one"
-constexpr std::size_t kEventsListAt = kFacesAt + 10 * 2 * codec::kChannelCount * 4;
+constexpr std::size_t kEventsListAt = kFacesAt + 10 * 2 * kChannelsBeforeCorrectives * 4;
 
 void put_u32(std::vector<std::uint8_t>& bytes, std::size_t at, std::uint32_t value) {
   for (int i = 0; i < 4; ++i) bytes[at + static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(value >> (8 * i));
@@ -254,17 +257,73 @@ TEST(SceneFile, HugeCountsAreRefusedBeforeAnythingIsAllocated) {
 
 TEST(SceneFile, WrongMagicVersionOrSchemaIsRefused) {
   std::vector<std::uint8_t> bytes = bytes_of(small_scene());
-  bytes[7] = '3';
-  EXPECT_SAYS(refusal(bytes), "version '3'");
+  bytes[7] = '4';
+  EXPECT_SAYS(refusal(bytes), "version '4'");
   bytes[7] = 0;
   EXPECT_SAYS(refusal(bytes), "version 0x00");
   bytes[0] = 'X';
-  EXPECT_SAYS(refusal(bytes), "no FWSCENE1 or FWSCENE2 magic");
+  EXPECT_SAYS(refusal(bytes), "no FWSCENE1, FWSCENE2 or FWSCENE3 magic");
   EXPECT_SAYS(refusal({}), "magic");
   EXPECT_SAYS(refusal({'F', 'W', 'S'}), "magic");
   std::vector<std::uint8_t> schema = bytes_of(small_scene());
   schema[8] = 2;
   EXPECT_SAYS(refusal(schema), "schema 2");
+}
+
+// small_scene() with corrective weights that move.
+Scene scene_with_correctives() {
+  Scene s = small_scene();
+  for (SceneAvatar& a : s.avatars)
+    for (std::size_t t = 0; t < a.ticks.size(); ++t)
+      for (std::size_t k = 0; k < codec::kCorrectiveCount; ++k)
+        a.ticks[t].corrective[k] = 0.05f * static_cast<float>(t) - 0.1f * static_cast<float>(k);
+  return s;
+}
+
+TEST(SceneFile, Version3CarriesTheCorrectiveWeights) {
+  const Scene s = scene_with_correctives();
+  const std::vector<std::uint8_t> bytes = bytes_of(s);
+  EXPECT_EQ(bytes[7], '3');
+  EXPECT_EQ(bytes[8], codec::kFaceParamsSchema) << "schema 2";
+  EXPECT_EQ(bytes[10], codec::kChannelCount) << "53 channels";
+  Scene back;
+  std::string error;
+  ASSERT_TRUE(read_scene_bytes(bytes, back, error)) << error;
+  expect_same_faces(s, back);
+  EXPECT_TRUE(back.avatars[0].seat) << "version 3 seats every avatar, as version 2 does";
+  std::vector<std::uint8_t> again;
+  ASSERT_TRUE(write_scene_bytes(back, again, error)) << error;
+  EXPECT_EQ(again, bytes) << "one file per scene";
+}
+
+TEST(SceneFile, OlderVersionsStillReadWithTheirCorrectivesAtZero) {
+  for (const Scene& old : {small_scene(), small_v2_scene()}) {
+    const std::vector<std::uint8_t> bytes = bytes_of(old);
+    ASSERT_NE(bytes[7], '3');
+    EXPECT_EQ(bytes[8], 1) << "schema 1";
+    EXPECT_EQ(bytes[10], kChannelsBeforeCorrectives);
+    Scene back;
+    std::string error;
+    ASSERT_TRUE(read_scene_bytes(bytes, back, error)) << error;
+    for (const SceneAvatar& a : back.avatars)
+      for (const codec::FaceParams& face : a.ticks)
+        for (const float w : face.corrective) ASSERT_EQ(w, 0.0f);
+    expect_same_faces(old, back);
+  }
+}
+
+TEST(SceneFile, AVersion3FileWithoutCorrectivesOrWithTheOldTableIsRefused) {
+  // A scene without correctives is written as version 2; a version 3 file
+  // claiming none is not one the writer makes.
+  std::vector<std::uint8_t> zeroed = bytes_of(scene_with_correctives());
+  const std::size_t faces_at = zeroed.size() - 10 * 2 * codec::kChannelCount * 4;
+  for (std::size_t f = 0; f < 10 * 2; ++f)
+    for (std::size_t b = kChannelsBeforeCorrectives * 4; b < codec::kChannelCount * 4; ++b)
+      zeroed[faces_at + f * codec::kChannelCount * 4 + b] = 0;
+  EXPECT_SAYS(refusal(zeroed), "corrective weights are all 0");
+  std::vector<std::uint8_t> old_table = bytes_of(scene_with_correctives());
+  old_table[8] = 1;
+  EXPECT_SAYS(refusal(old_table), "version 3 scenes of schema 2 with 53");
 }
 
 TEST(SceneFile, TrailingGarbageIsRefused) {

@@ -13,6 +13,7 @@
 #include "codec_run.hpp"
 #include "fw/codec/codec.hpp"
 #include "photo_variants.hpp"
+#include "synthetic_correctives.hpp"
 #include "synthetic_scene.hpp"
 #include "x264_comparison.hpp"
 #include "bench_failure.hpp"
@@ -35,6 +36,7 @@ struct CodecBenchArgs {
 // The reference points the issue compares against.
 constexpr double kPaperBytesPerFrame = 8600;  // behavioral-animation paper, per face per frame
 constexpr double kGoalBps = 500, kGoalGazeDeg = 0.5, kGoalIdleBps = 50, kGoalRmsMm = 0.5;
+constexpr double kGoalCorrectiveBps = 60;  // per avatar, what the corrective channels may add
 
 double round_to(double v, double unit) { return std::round(v / unit) * unit; }
 
@@ -106,6 +108,39 @@ nlohmann::json x264_entry(const Scene& scene, int avatar, const CodecRun& run, c
           {"x264_settings", c.x264_settings}};
 }
 
+// What the corrective channels cost: the scene's stream with moving
+// corrective weights minus the same stream with none, at the bench's budget
+// and a few larger ones (they ride only on spare budget, so what they cost
+// and how closely they follow depends on what the rest of the face leaves).
+// A scene recorded without correctives gets synthetic ones, made from its
+// action units (synthetic_correctives.hpp), until the room simulation
+// records the physics face's own.
+nlohmann::json corrective_cost(const Scene& scene, const CodecRunOptions& base) {
+  const bool recorded = has_correctives(scene);
+  Scene with = scene;
+  if (!recorded) add_synthetic_correctives(with, 1);
+  Scene without = scene;
+  clear_correctives(without);
+  auto row = [&](double target) {
+    CodecRunOptions options = base;
+    options.record_avatar = -1;
+    options.target_bps_per_avatar = target;
+    const CodecRun moving = run_codec(with, options);
+    const double cost = rates(moving, false).mean - rates(run_codec(without, options), false).mean;
+    return nlohmann::json{{"target_bps", target},
+                          {"corrective_bps", round_to(cost, 0.1)},
+                          {"corrective_rms_error", round_to(moving.corrective_rms_error, 0.0001)},
+                          {"corrective_max_error", round_to(moving.corrective_max_error, 0.0001)}};
+  };
+  nlohmann::json entry = row(base.target_bps_per_avatar);
+  entry["source"] = recorded ? "recorded" : "synthetic, from the action units";
+  entry["corrective_bps_max"] = kGoalCorrectiveBps;
+  entry["corrective_bps_met"] = entry["corrective_bps"].get<double>() <= kGoalCorrectiveBps;
+  entry["by_budget"] = nlohmann::json::array();
+  for (const double factor : {1.5, 2.0, 4.0}) entry["by_budget"].push_back(row(base.target_bps_per_avatar * factor));
+  return entry;
+}
+
 nlohmann::json scene_entry(const Scene& scene, const CodecBenchArgs& args) {
   CodecRunOptions options;
   options.target_bps_per_avatar = args.target_bps;
@@ -162,6 +197,8 @@ nlohmann::json scene_entry(const Scene& scene, const CodecBenchArgs& args) {
                    {"gaze_met", run.gaze_max_deg <= kGoalGazeDeg}};
   if (idle.avatars > 0) entry["goal"]["idle_met"] = idle.mean < kGoalIdleBps;
   if (args.video && video_avatar >= 0) entry["x264"] = x264_entry(scene, video_avatar, run, args, entry);
+  entry["correctives"] = corrective_cost(scene, options);
+  entry["corrective_bps"] = entry["correctives"]["corrective_bps"];
 
   // The same scene over an unreliable transport: sequence numbers, periodic
   // key frames and heartbeats cost extra.

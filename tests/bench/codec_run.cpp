@@ -35,8 +35,8 @@ double angle_deg(const Vec3& a, const Vec3& b) {
 }
 
 struct Distortion {
-  double gaze = 0, eye = 0, au = 0, au_sq = 0, head_rot = 0, head_mm = 0, lid = 0, colour = 0;
-  std::uint64_t au_samples = 0;
+  double gaze = 0, eye = 0, au = 0, au_sq = 0, head_rot = 0, head_mm = 0, lid = 0, colour = 0, corrective = 0, corrective_sq = 0;
+  std::uint64_t au_samples = 0, corrective_samples = 0;
 
   void add(const codec::FaceParams& o, const codec::FaceParams& d) {
     const std::pair<const codec::EyeRotation*, const codec::EyeRotation*> eyes[] = {{&o.eye_left, &d.eye_left},
@@ -63,6 +63,13 @@ struct Distortion {
     for (std::size_t i = 0; i < o.blush.size(); ++i)
       colour = std::max(colour, std::abs(static_cast<double>(o.blush[i]) - d.blush[i]));
     colour = std::max(colour, std::abs(static_cast<double>(o.pallor) - d.pallor));
+    for (std::size_t i = 0; i < o.corrective.size(); ++i)
+    {
+      const double e = std::abs(static_cast<double>(o.corrective[i]) - d.corrective[i]);
+      corrective = std::max(corrective, e);
+      corrective_sq += e * e;
+      ++corrective_samples;
+    }
   }
 };
 
@@ -170,6 +177,10 @@ CodecRun run_codec(const Scene& scene, const CodecRunOptions& options) {
   run.head_translation_max_mm = distortion.head_mm;
   run.lid_max_error = distortion.lid;
   run.colour_max_error = distortion.colour;
+  run.corrective_max_error = distortion.corrective;
+  run.corrective_rms_error = distortion.corrective_samples
+                                 ? std::sqrt(distortion.corrective_sq / static_cast<double>(distortion.corrective_samples))
+                                 : 0.0;
   run.vertex_rms_mm = vertex_error.rms_mm();
   run.vertex_max_mm = vertex_error.max_mm();
   return run;

@@ -46,6 +46,8 @@ struct CodecRun {
   double head_translation_max_mm = 0;
   double lid_max_error = 0;
   double colour_max_error = 0;
+  double corrective_max_error = 0;  ///< largest error of a corrective weight
+  double corrective_rms_error = 0;
   double vertex_rms_mm = 0;        ///< skin vertices, posed, face at 63 mm inter-ocular distance
   double vertex_max_mm = 0;
   std::vector<codec::FaceParams> recorded;  ///< options.record_avatar's shown face per tick

@@ -11,12 +11,14 @@ namespace {
 
 TEST(ChannelTable, HasOneChannelPerFaceParamsFieldInFieldOrder) {
   const auto& t = channel_table();
-  static_assert(kChannelCount == 47);
+  static_assert(kChannelCount == 53);
   EXPECT_EQ(t[0].name, "au1_left");
   EXPECT_EQ(t[kAuChannelCount - 1].name, "au27");
   EXPECT_EQ(t[29].name, "head_yaw");
   EXPECT_EQ(t[35].name, "eye_left_yaw");
   EXPECT_EQ(t[46].name, "pallor");
+  EXPECT_EQ(t[47].name, "corrective0");
+  EXPECT_EQ(t[52].name, "corrective5");
   std::set<std::string_view> names;
   for (const ChannelInfo& c : t) names.insert(c.name);
   EXPECT_EQ(names.size(), kChannelCount);
@@ -38,6 +40,31 @@ TEST(ChannelTable, RangesCoverTheFaceParamsRanges) {
   for (std::size_t c = 0; c < kAuChannelCount; ++c) EXPECT_EQ(channel_table()[c].max_q * channel_table()[c].step, 1.0f);
   EXPECT_EQ(channel_table()[39].max_q * channel_table()[39].step, 1.0f);
   EXPECT_EQ(channel_table()[46].max_q * channel_table()[46].step, 1.0f);
+}
+
+TEST(ChannelTable, CorrectivesCoverMinusOneToOneAndComeLast) {
+  // FaceParams::corrective: six weights in [-1, 1], after everything schema 1 carried.
+  for (std::size_t k = 0; k < kCorrectiveCount; ++k) {
+    const ChannelInfo& info = channel_table()[kChannelCount - kCorrectiveCount + k];
+    EXPECT_EQ(info.group, ChannelGroup::correctives) << info.name;
+    EXPECT_EQ(info.max_q * info.step, 1.0f) << info.name;
+    EXPECT_EQ(info.min_q * info.step, -1.0f) << info.name;
+    EXPECT_EQ(info.partner, -1);
+    EXPECT_EQ(info.base, -1);
+  }
+  FaceParams p;
+  p.corrective = {0.5f, -0.25f, 1.0f, -1.0f, 1.0f / 64, 0.0f};
+  for (std::size_t k = 0; k < kCorrectiveCount; ++k)
+    EXPECT_EQ(channel_value(p, kChannelCount - kCorrectiveCount + k), p.corrective[k]) << "field order";
+}
+
+TEST(ChannelTable, CorrectivesCoarsenNoLaterThanAnyOtherGroup) {
+  // A tight budget takes the correctives' precision first (FORMAT.md, "Quality levels").
+  const auto correctives = group_index(ChannelGroup::correctives);
+  for (int level = 0; level <= kMaxQualityLevel; ++level)
+    for (std::size_t g = 0; g < kChannelGroupCount; ++g)
+      if (g != group_index(ChannelGroup::eyes))
+        EXPECT_GE(group_shift(level, correctives), group_shift(level, g)) << "level " << level << " group " << g;
 }
 
 TEST(ChannelTable, PartnersAreLeftSidesOfTheSameKindAndComeFirst) {

@@ -112,7 +112,7 @@ TEST(Decoder, AfterALostFrameShowsAFaceTheEncoderShowedAndRefusesPredictedFrames
     bool gap_seen = false, resynced = false;
     for (std::size_t f = 0; f < s.frames.size(); ++f) {
       if (f == lost) continue;
-      const bool key = s.frames[f][0] == 0x11;
+      const bool key = s.frames[f][0] == 0x21;
       const DecodeError e = d.decode(s.frames[f]);
       if (f == lost + 1 && !key) {
         EXPECT_EQ(e, DecodeError::sequence_gap) << "frame " << f << " seed " << seed;
@@ -132,7 +132,7 @@ TEST(Decoder, AfterALostFrameShowsAFaceTheEncoderShowedAndRefusesPredictedFrames
       }
     }
     bool key_after = false;
-    for (std::size_t f = lost + 1; f < s.frames.size(); ++f) key_after = key_after || s.frames[f][0] == 0x11;
+    for (std::size_t f = lost + 1; f < s.frames.size(); ++f) key_after = key_after || s.frames[f][0] == 0x21;
     if (key_after) {
       EXPECT_FALSE(d.needs_key_frame()) << "the periodic key frames bring it back, seed " << seed;
     }
@@ -169,11 +169,11 @@ TEST(Decoder, CorruptAndTruncatedFramesGiveTheirErrorAndFreezeTheFace) {
       {"empty", {}, DecodeError::empty_frame},
       {"version 0", with(next, 0, 0x02), DecodeError::unsupported_version},
       {"version 15", with(next, 0, 0xF2), DecodeError::unsupported_version},
-      {"type 9", with(next, 0, 0x19), DecodeError::unknown_frame_type},
-      {"a stream header", with(next, 0, 0x10), DecodeError::wrong_frame_type},
-      {"a resync request", with(next, 0, 0x14), DecodeError::wrong_frame_type},
-      {"too large", std::vector<std::uint8_t>(kMaxFrameBytes + 1, 0x12), DecodeError::frame_too_large},
-      {"a code that starts outside its interval", {0x12, 0xFF, 0xFF, 0xFF, 0xFF}, DecodeError::check_failed},
+      {"type 9", with(next, 0, 0x29), DecodeError::unknown_frame_type},
+      {"a stream header", with(next, 0, 0x20), DecodeError::wrong_frame_type},
+      {"a resync request", with(next, 0, 0x24), DecodeError::wrong_frame_type},
+      {"too large", std::vector<std::uint8_t>(kMaxFrameBytes + 1, 0x22), DecodeError::frame_too_large},
+      {"a code that starts outside its interval", {0x22, 0xFF, 0xFF, 0xFF, 0xFF}, DecodeError::check_failed},
   };
   for (const Case& c : cases) {
     Decoder d;
@@ -209,7 +209,7 @@ TEST(Decoder, AllocatesABoundedAmountWhateverTheBytes) {
   std::mt19937_64 rng(seed);
   std::vector<std::uint8_t> big(4 << 20);
   for (auto& b : big) b = static_cast<std::uint8_t>(rng());
-  big[0] = 0x12;
+  big[0] = 0x22;
   Decoder d;
   std::vector<RoomEntry> entries;
   entries.reserve(kMaxRoomAvatars);

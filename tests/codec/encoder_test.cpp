@@ -1,11 +1,14 @@
 #include "fw/codec/codec.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <random>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "synthetic_correctives.hpp"
 #include "synthetic_scene.hpp"
 #include "test_seed.hpp"
 
@@ -29,8 +32,38 @@ const bench::Scene& scene() {
     o.active_avatars = 2;
     o.idle_avatars = 1;
     o.seconds = 20;
-    return bench::make_synthetic_scene(o);
+    bench::Scene made = bench::make_synthetic_scene(o);
+    bench::add_synthetic_correctives(made, o.seed);
+    return made;
   }();
+  return s;
+}
+
+// How far what a viewer sees strays from the faces of `ticks` at `bps`:
+// the largest gaze error (rad) and the RMS error of the action units and of
+// the corrective weights.
+struct Strays {
+  double gaze_max = 0, au_rms = 0, corrective_rms = 0;
+};
+Strays strays_at(const std::vector<FaceParams>& ticks, double bps) {
+  EncoderOptions o;
+  o.target_bps = bps;
+  Encoder encoder(o);
+  std::vector<std::uint8_t> frame;
+  Strays s;
+  double au_sq = 0, corrective_sq = 0;
+  for (const FaceParams& face : ticks) {
+    encoder.encode(face, frame);
+    const FaceParams shown = dequantise(encoder.reconstruction());
+    for (std::size_t c = 0; c < kAuChannelCount; ++c) au_sq += std::pow(shown.au[c] - face.au[c], 2);
+    for (std::size_t k = 0; k < kCorrectiveCount; ++k) corrective_sq += std::pow(shown.corrective[k] - face.corrective[k], 2);
+    s.gaze_max = std::max(s.gaze_max, static_cast<double>(std::hypot(
+                                          shown.eye_left.yaw_rad + shown.head_yaw_rad - face.eye_left.yaw_rad - face.head_yaw_rad,
+                                          shown.eye_left.pitch_rad + shown.head_pitch_rad - face.eye_left.pitch_rad - face.head_pitch_rad)));
+  }
+  const auto n = static_cast<double>(ticks.size());
+  s.au_rms = std::sqrt(au_sq / (n * kAuChannelCount));
+  s.corrective_rms = std::sqrt(corrective_sq / (n * kCorrectiveCount));
   return s;
 }
 
@@ -72,18 +105,18 @@ TEST(Encoder, SendsAKeyFrameFirstThenPredictedFramesAndKeysOnDemand) {
   std::vector<std::uint8_t> frame;
   const auto& ticks = scene().avatars[0].ticks;
   ASSERT_TRUE(encoder.encode(ticks[0], frame));
-  EXPECT_EQ(frame[0], 0x11);
+  EXPECT_EQ(frame[0], 0x21);
   EXPECT_EQ(encoder.stats().last_type, FrameType::key);
   int predicted = 0;
   for (std::size_t t = 1; t < 60; ++t)
     if (encoder.encode(ticks[t], frame)) {
-      EXPECT_EQ(frame[0], 0x12);
+      EXPECT_EQ(frame[0], 0x22);
       ++predicted;
     }
   EXPECT_GT(predicted, 3);
   encoder.force_key_frame();
   ASSERT_TRUE(encoder.encode(ticks[60], frame)) << "a forced key frame goes out even when nothing changed";
-  EXPECT_EQ(frame[0], 0x11);
+  EXPECT_EQ(frame[0], 0x21);
   EXPECT_EQ(encoder.stats().key_interval_ticks, 0) << "reliable streams send keys on demand only";
 }
 
@@ -171,7 +204,7 @@ TEST(Encoder, LossTolerantStreamsSendHeartbeatsAndPeriodicKeyFrames) {
   for (int t = 0; t < 300; ++t) {
     if (encoder.encode(face, frame)) {
       sent.push_back(t);
-      if (frame[0] == 0x11) keys.push_back(t);
+      if (frame[0] == 0x21) keys.push_back(t);
       EXPECT_EQ(frame[1], static_cast<std::uint8_t>(sent.size() - 1)) << "sequence numbers count frames";
     }
   }
@@ -275,6 +308,27 @@ TEST(Encoder, KeepsEveryChannelWithinWhatAViewerSeesWhenTheBudgetAllows) {
     }
     EXPECT_LE(worst_gaze, visible[35] * 1.001) << avatar.name;
   }
+}
+
+TEST(Encoder, UnderATightBudgetTheCorrectivesGiveWayToGazeAndActionUnits) {
+  // The same talking face with and without moving corrective weights, at a
+  // budget that keeps the rate control busy: the correctives are coarsened
+  // first and sent last, so gaze and action units stay as they were.
+  const std::vector<FaceParams>& with = scene().avatars[0].ticks;
+  std::vector<FaceParams> without = with;
+  for (FaceParams& f : without) f.corrective = {};
+  for (const double bps : {250.0, 400.0}) {
+    const Strays a = strays_at(with, bps);
+    const Strays b = strays_at(without, bps);
+    std::printf("%.0f bit/s: gaze max %.4f vs %.4f rad, AU rms %.4f vs %.4f, corrective rms %.4f\n", bps, a.gaze_max,
+                b.gaze_max, a.au_rms, b.au_rms, a.corrective_rms);
+    EXPECT_LE(a.gaze_max, b.gaze_max * 1.05 + 0.001) << bps << " bit/s";
+    EXPECT_LE(a.au_rms, b.au_rms * 1.05 + 0.001) << bps << " bit/s";
+    EXPECT_GT(a.corrective_rms, 0.02) << bps << " bit/s: the correctives were coarsened or held";
+  }
+  // With bits to spare they follow the face within what a viewer sees.
+  const double visible = default_visible_error()[kChannelCount - 1];
+  EXPECT_LT(strays_at(with, 2000).corrective_rms, visible);
 }
 
 TEST(Encoder, NeverWritesAFrameOverTheLimitAndSurvivesNonsenseInput) {

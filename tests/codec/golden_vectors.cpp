@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "synthetic_correctives.hpp"
 #include "synthetic_scene.hpp"
 
 namespace fw::codec::vectors {
@@ -66,7 +67,8 @@ std::vector<VectorSpec> vector_specs() {
   scene_options.active_avatars = 3;
   scene_options.idle_avatars = 1;
   scene_options.seconds = 12;
-  const bench::Scene scene = bench::make_synthetic_scene(scene_options);
+  bench::Scene scene = bench::make_synthetic_scene(scene_options);
+  bench::add_synthetic_correctives(scene, scene_options.seed);  // format version 2: correctives that move
 
   std::vector<VectorSpec> specs;
   {
@@ -319,7 +321,8 @@ nlohmann::json error_cases() {
   scene_options.active_avatars = 1;
   scene_options.idle_avatars = 0;
   scene_options.seconds = 4;
-  const bench::Scene scene = bench::make_synthetic_scene(scene_options);
+  bench::Scene scene = bench::make_synthetic_scene(scene_options);
+  bench::add_synthetic_correctives(scene, scene_options.seed);  // format version 2: correctives that move
   auto frames_of = [&](bool loss_tolerant) {
     EncoderOptions o;
     o.target_bps = 4000;
@@ -365,15 +368,15 @@ nlohmann::json error_cases() {
              {reliable[0], reliable[1], reliable[2]}, predicted);
   frame_case("an empty frame", false, {}, {});
   frame_case("a frame of format version 2", false, {}, with(key, 0, 0x21));
-  frame_case("frame type 15", false, {}, with(key, 0, 0x1F));
-  frame_case("a room frame given to an avatar decoder", false, {}, with(key, 0, 0x13));
+  frame_case("frame type 15", false, {}, with(key, 0, 0x2F));
+  frame_case("a room frame given to an avatar decoder", false, {}, with(key, 0, 0x23));
   frame_case("a predicted frame before any key frame", false, {}, predicted);
   frame_case("a key frame without its last byte", false, {}, cut(key, 1));
   frame_case("a key frame without its last two bytes", false, {}, cut(key, 2));
   frame_case("a key frame with a bit flipped in its first coded byte", false, {}, with(key, 1, key[1] ^ 0x10));
-  frame_case("a key frame whose code starts with four 0xFF bytes", false, {}, {0x11, 0xFF, 0xFF, 0xFF, 0xFF});
-  frame_case("a frame of 1025 bytes", false, {}, std::vector<std::uint8_t>(1025, 0x11));
-  frame_case("loss-tolerant: a frame without its sequence number", true, {}, {0x11});
+  frame_case("a key frame whose code starts with four 0xFF bytes", false, {}, {0x21, 0xFF, 0xFF, 0xFF, 0xFF});
+  frame_case("a frame of 1025 bytes", false, {}, std::vector<std::uint8_t>(1025, 0x21));
+  frame_case("loss-tolerant: a frame without its sequence number", true, {}, {0x21});
   frame_case("loss-tolerant: a key frame", true, {}, lossy.at(0));
   frame_case("loss-tolerant: the next frame", true, {lossy.at(0)}, lossy.at(1));
   frame_case("loss-tolerant: a frame after a lost one", true, {lossy.at(0)}, lossy.at(2));
@@ -417,18 +420,18 @@ nlohmann::json error_cases() {
   room_case("a room frame of two avatars (ids 3 and 70)", room);
   room_case("an empty room frame", {});
   room_case("a room frame cut short", cut(room, 1 + predicted.size()));
-  room_case("a room frame whose first entry has length 0", {0x13, 0x07, 0x00, 0x11});
-  room_case("a room frame naming avatar 3 twice", {0x13, 0x07, 0x01, 0x11, 0x06, 0x11});
-  std::vector<std::uint8_t> crowded = {0x13};
+  room_case("a room frame whose first entry has length 0", {0x23, 0x07, 0x00, 0x21});
+  room_case("a room frame naming avatar 3 twice", {0x23, 0x07, 0x01, 0x21, 0x06, 0x21});
+  std::vector<std::uint8_t> crowded = {0x23};
   for (int i = 0; i < 65; ++i) {
     crowded.push_back(static_cast<std::uint8_t>((i << 1) | (i < 64 ? 1 : 0)));
     if (i < 64) crowded.push_back(1);
-    crowded.push_back(0x12);
+    crowded.push_back(0x22);
   }
   room_case("a room frame of 65 avatars", crowded);
-  room_case("a room frame whose entry is longer than 1024 bytes", {0x13, 0x03, 0x81, 0x08, 0x11});
-  room_case("a room frame with an avatar id of 2^21", {0x13, 0x80, 0x80, 0x80, 0x02, 0x11});
-  room_case("a room frame with an overlong varint", {0x13, 0x86, 0x00, 0x11});
+  room_case("a room frame whose entry is longer than 1024 bytes", {0x23, 0x03, 0x81, 0x08, 0x21});
+  room_case("a room frame with an avatar id of 2^21", {0x23, 0x80, 0x80, 0x80, 0x02, 0x21});
+  room_case("a room frame with an overlong varint", {0x23, 0x86, 0x00, 0x21});
   room_case("a key frame given as a room frame", key);
 
   auto resync_case = [&](const std::string& what, const std::vector<std::uint8_t>& bytes) {
@@ -447,7 +450,7 @@ nlohmann::json error_cases() {
     return r;
   }());
   resync_case("a resync request cut short", cut(resync, 1));
-  resync_case("a resync request for 65 avatars", {0x14, 0x41});
+  resync_case("a resync request for 65 avatars", {0x24, 0x41});
   return cases;
 }
 

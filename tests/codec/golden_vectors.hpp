@@ -46,7 +46,7 @@ struct Message {
 std::vector<Message> encode_vector(const VectorSpec& spec);
 
 /// Decodes a message list as a client would. For each tick: the errors of
-/// that tick's messages, and every avatar's 47 field integers.
+/// that tick's messages, and every avatar's 53 field integers.
 struct Decoded {
   std::vector<std::vector<std::string>> errors;   ///< [message] error names (one per avatar entry)
   std::vector<std::vector<QuantisedParams>> shown;  ///< [tick][avatar]

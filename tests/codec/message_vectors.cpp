@@ -216,7 +216,7 @@ json make_vectors() {
   v.add(Pong{1, 2, 4503599627370495ull});
   v.add(LinkStats{9600, 9100, 312, 4000000000u});
   v.add(Closing{CloseCode::room_full, "room 'x' is full (16 avatars); try another room"});
-  const std::vector<std::uint8_t> frame = {0x13, 0x01, 0x02};
+  const std::vector<std::uint8_t> frame = {0x23, 0x01, 0x02};
   v.add(TimedRoomFrame{77, 99999999, frame});
   Seats seats;
   seats.seats = {{1, {-420.0f, 0.0f, 113.0f, 0.8727f}}, {2, {420.0f, 12.0f, 113.0f, -0.8727f}}};

@@ -462,7 +462,7 @@ TEST(Messages, PackageChunksStayInsideTheirPackage) {
 }
 
 TEST(Messages, TimedRoomFrameWrapsACodecRoomFrame) {
-  const std::vector<std::uint8_t> frame = {0x11, 0xAB, 0xCD};  // not decoded here
+  const std::vector<std::uint8_t> frame = {0x21, 0xAB, 0xCD};  // not decoded here
   std::vector<std::uint8_t> room;
   const RoomEntry entry{5, frame};
   write_room_frame({&entry, 1}, room);
@@ -483,8 +483,8 @@ TEST(Messages, ClassifyTellsCodecMessagesFromSessionMessages) {
   write_resync_request({}, resync);
   EXPECT_EQ(classify(resync), MessageKind::resync_request);
   EXPECT_EQ(classify(write_stream_header({})), MessageKind::stream_header);
-  EXPECT_EQ(classify(std::vector<std::uint8_t>{0x13, 0x00, 0x01}), MessageKind::room_frame);
-  EXPECT_EQ(classify(std::vector<std::uint8_t>{0x11}), MessageKind::invalid);  // bare key frames do not travel alone
+  EXPECT_EQ(classify(std::vector<std::uint8_t>{0x23, 0x00, 0x01}), MessageKind::room_frame);
+  EXPECT_EQ(classify(std::vector<std::uint8_t>{0x21}), MessageKind::invalid);  // bare key frames do not travel alone
   EXPECT_EQ(classify(std::vector<std::uint8_t>{0x80}), MessageKind::invalid);
   EXPECT_EQ(classify(std::vector<std::uint8_t>{0xFF}), MessageKind::invalid);
   EXPECT_EQ(classify(std::vector<std::uint8_t>{}), MessageKind::invalid);
@@ -493,7 +493,7 @@ TEST(Messages, ClassifyTellsCodecMessagesFromSessionMessages) {
 TEST(Messages, BadBytesGiveTheirError) {
   Chat chat;
   EXPECT_EQ(read_message(std::vector<std::uint8_t>{}, chat), MessageError::empty);
-  EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x13}, chat), MessageError::not_session_message);
+  EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x23}, chat), MessageError::not_session_message);
   EXPECT_EQ(read_message(std::vector<std::uint8_t>{0xF0}, chat), MessageError::unknown_type);
   EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x81}, chat), MessageError::wrong_type);
   EXPECT_EQ(read_message(std::vector<std::uint8_t>{0x84, 0x01, 0x05, 'a'}, chat), MessageError::truncated);

@@ -37,6 +37,21 @@ TEST(RateController, GoesCoarserWhenSpendingTooMuchAndFinerWhenNot) {
   EXPECT_EQ(r.level(), 0);
 }
 
+TEST(RateController, OptionalBitsFillTheBucketButNeverCoarsenTheLevel) {
+  // The corrective weights go on spare budget: their bits count against the
+  // bucket (the budget holds) but not in the spending that sets the level.
+  RateController r(300, 30, 0, 7);  // 10 bits per tick
+  const int start = r.level();
+  for (int t = 0; t < 300; ++t) {
+    r.on_tick();
+    r.on_frame_sent(9, false, 6);  // 3 bits of the face's own, 6 of correctives: 90 % of the budget
+  }
+  EXPECT_LE(r.level(), start) << "the face alone spends under a third of its budget";
+  EXPECT_LT(r.pressure(), 0.75);
+  r.on_frame_sent(800, false, 800);
+  EXPECT_FALSE(r.allows(200)) << "but optional bits fill the bucket like any";
+}
+
 TEST(RateController, ABudgetChangeTakesEffect) {
   RateController r(3000, 30, 0, 7);
   for (int t = 0; t < 600; ++t) {

@@ -66,7 +66,7 @@ TEST(RoomDecoder, DecodesEveryAvatarOfARoomStreamAsItsEncoderReconstructsIt) {
 
 TEST(RoomDecoder, AsksForKeyFramesAndHoldsNoMoreThanARoomOfAvatars) {
   RoomDecoder room;
-  const std::vector<std::uint8_t> predicted = {0x12, 0x00};
+  const std::vector<std::uint8_t> predicted = {0x22, 0x00};
   for (std::uint32_t id = 0; id < kMaxRoomAvatars + 5; ++id) {
     const RoomEntry entry[] = {{id, predicted}};
     std::vector<std::uint8_t> message;
@@ -78,7 +78,7 @@ TEST(RoomDecoder, AsksForKeyFramesAndHoldsNoMoreThanARoomOfAvatars) {
   }
   EXPECT_EQ(room.size(), kMaxRoomAvatars);
   EXPECT_EQ(room.needing_key_frames().size(), kMaxRoomAvatars) << "none has had its key frame";
-  const std::vector<std::uint8_t> broken = {0x13};
+  const std::vector<std::uint8_t> broken = {0x23};
   EXPECT_EQ(room.decode(broken).error, DecodeError::truncated);
 }
 

@@ -10,7 +10,7 @@ namespace {
 TEST(StreamHeader, RoundTripsItsOptions) {
   for (const StreamOptions o : {StreamOptions{}, StreamOptions{true, 25, 0}, StreamOptions{false, 240, 255}}) {
     const auto bytes = write_stream_header(o);
-    EXPECT_EQ(bytes[0], 0x10);
+    EXPECT_EQ(bytes[0], 0x20);
     EXPECT_EQ(std::string(bytes.begin() + 1, bytes.begin() + 5), "FWFP");
     EXPECT_EQ(bytes.size(), 11u + 11u * kChannelCount);
     StreamOptions back{true, 1, 1};
@@ -31,11 +31,13 @@ TEST(StreamHeader, RefusesWhatItCannotDecodeAndSaysWhy) {
   StreamOptions o;
   const StreamOptions untouched = o;
   EXPECT_EQ(read_stream_header({}, o), DecodeError::empty_frame);
-  EXPECT_EQ(read_stream_header(changed(0, 0x20), o), DecodeError::unsupported_version);
-  EXPECT_EQ(read_stream_header(changed(0, 0x11), o), DecodeError::wrong_frame_type);
-  EXPECT_EQ(read_stream_header(changed(0, 0x1A), o), DecodeError::unknown_frame_type);
+  EXPECT_EQ(read_stream_header(changed(0, 0x10), o), DecodeError::unsupported_version) << "version 1";
+  EXPECT_EQ(read_stream_header(changed(0, 0x30), o), DecodeError::unsupported_version);
+  EXPECT_EQ(read_stream_header(changed(0, 0x21), o), DecodeError::wrong_frame_type);
+  EXPECT_EQ(read_stream_header(changed(0, 0x2A), o), DecodeError::unknown_frame_type);
   EXPECT_EQ(read_stream_header(changed(2, 'w'), o), DecodeError::bad_magic);
-  EXPECT_EQ(read_stream_header(changed(5, 2), o), DecodeError::unsupported_schema);
+  EXPECT_EQ(read_stream_header(changed(5, 1), o), DecodeError::unsupported_schema) << "schema 1: no correctives";
+  EXPECT_EQ(read_stream_header(changed(5, 3), o), DecodeError::unsupported_schema);
   EXPECT_EQ(read_stream_header(changed(7, 0x80), o), DecodeError::bad_stream_options);
   EXPECT_EQ(read_stream_header(changed(8, 0), o), DecodeError::bad_stream_options);
   EXPECT_EQ(read_stream_header(changed(10, 48), o), DecodeError::channel_table_mismatch);
@@ -44,6 +46,17 @@ TEST(StreamHeader, RefusesWhatItCannotDecodeAndSaysWhy) {
     EXPECT_EQ(read_stream_header(changed(11 + 11 * 37 + field, good[11 + 11 * 37 + field] ^ 0x04), o),
               DecodeError::channel_table_mismatch)
         << field;
+  // A corrective channel's entry (the last six): step, range, group.
+  const std::size_t corrective = 11 + 11 * (kChannelCount - 1);
+  for (std::size_t field : {0u, 1u, 3u, 5u, 9u, 10u})
+    EXPECT_EQ(read_stream_header(changed(corrective + field, good[corrective + field] ^ 0x04), o),
+              DecodeError::channel_table_mismatch)
+        << "corrective entry, field " << field;
+  // A header of the 47 channels of schema 1 under this version's number.
+  auto schema1_table = good;
+  schema1_table[10] = 47;
+  schema1_table.resize(11 + 11 * 47);
+  EXPECT_EQ(read_stream_header(schema1_table, o), DecodeError::channel_table_mismatch);
   for (std::size_t n = 1; n < good.size(); ++n)
     EXPECT_EQ(read_stream_header(std::span(good).first(n), o), DecodeError::truncated) << n;
   auto longer = good;

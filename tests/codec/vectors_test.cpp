@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "frame_reader.hpp"
+#include "fw/codec/messages.hpp"
 #include "golden_vectors.hpp"
 #include "fw/behavior/scene_file.hpp"
 #include "test_paths.hpp"
@@ -115,6 +116,24 @@ TEST(GoldenVectors, CoverEveryFrameTypeErrorAndCodingTool) {
   EXPECT_GE(dampings.size(), 3u) << "linear and damped velocities";
   EXPECT_TRUE(velocity);
   EXPECT_TRUE(partner_same);
+}
+
+TEST(GoldenVectors, AVersionOneStreamIsRefusedWithASentenceSayingWhatToDo) {
+  // The committed stream of format version 1 (before the corrective
+  // channels): its header and every frame are refused, never misread.
+  std::vector<std::vector<std::uint8_t>> messages;
+  ASSERT_TRUE(vectors::from_stream_file(read_bytes(kDir / "version1" / "avatar_basic.fwc"), messages));
+  ASSERT_GT(messages.size(), 2u);
+  StreamOptions options;
+  EXPECT_EQ(read_stream_header(messages.front(), options), DecodeError::unsupported_version);
+  EXPECT_EQ(classify(messages.front()), MessageKind::stream_header) << "refused by the codec, which says why";
+  Decoder decoder(options);
+  for (std::size_t i = 1; i < messages.size(); ++i)
+    EXPECT_EQ(decoder.decode(messages[i]), DecodeError::unsupported_version) << "message " << i;
+  EXPECT_TRUE(decoder.needs_key_frame());
+  const std::string why(describe(DecodeError::unsupported_version));
+  EXPECT_NE(why.find("reload"), std::string::npos) << why;
+  EXPECT_NE(why.find("update"), std::string::npos) << why;
 }
 
 TEST(GoldenVectors, ErrorCasesStillGiveTheirCommittedCodes) {

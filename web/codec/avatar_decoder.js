@@ -62,7 +62,7 @@ export class Decoder {
     this.framesDecoded += 1;
     return DecodeError.ok;
   }
-  /** The 47 field integers `ticksAfter` ticks after the last decoded frame. */
+  /** The 53 field integers `ticksAfter` ticks after the last decoded frame. */
   quantised(ticksAfter = 0) {
     const rec = this.state.reconstruction;
     return fieldsFromCoded(Array.from({ length: CHANNEL_COUNT }, (_, c) => rec.shown(c, ticksAfter)));

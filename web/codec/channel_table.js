@@ -1,16 +1,19 @@
-// The 47 channels in FaceParams field order, their groups, ranges, steps,
+// The 53 channels in FaceParams field order, their groups, ranges, steps,
 // partners and bases; the quantiser's shift per quality level and group;
 // velocity damping (codec/src/channel_table.cpp, FORMAT.md "Channels").
 // The stream header repeats this table, and a decoder refuses a stream
 // whose table differs, so every number here is the C++'s.
 
-export const GROUP = Object.freeze({ au: 0, headRotation: 1, headTranslation: 2, eyes: 3, lids: 4, colour: 5 });
-export const GROUP_COUNT = 6;
+export const GROUP = Object.freeze({ au: 0, headRotation: 1, headTranslation: 2, eyes: 3, lids: 4, colour: 5, correctives: 6 });
+export const GROUP_COUNT = 7;
+/** Corrective weights of the physics face, the last channels (FaceParams::corrective). */
+export const CORRECTIVE_COUNT = 6;
 const AU_STEP = Math.fround(1 / 256);
 const ANGLE_STEP = Math.fround(Math.PI / 3600);
 const TRANSLATION_STEP = Math.fround(0.125);
 const LID_STEP = Math.fround(1 / 128);
 const COLOUR_STEP = Math.fround(1 / 64);
+const CORRECTIVE_STEP = Math.fround(1 / 64);
 
 /** Values are kept in sub-steps of the grid, so that velocities can be fractional. */
 export const SUB_STEP_BITS = 8;
@@ -46,6 +49,7 @@ function makeChannels() {
   for (const region of ['forehead', 'cheek_left', 'cheek_right', 'nose', 'sides'])
     row(`blush_${region}`, GROUP.colour, COLOUR_STEP, 0, 64, region === 'cheek_right' ? 42 : -1);
   row('pallor', GROUP.colour, COLOUR_STEP, 0, 64);
+  for (let k = 0; k < CORRECTIVE_COUNT; ++k) row(`corrective${k}`, GROUP.correctives, CORRECTIVE_STEP, -64, 64);
   for (const ch of t) {
     const base = ch.base >= 0 ? t[ch.base] : null;
     ch.codedMin = base ? ch.min + base.min : ch.min;
@@ -55,15 +59,15 @@ function makeChannels() {
   return Object.freeze(t.map((c) => Object.freeze(c)));
 }
 
-/** The 47 channels in FaceParams field order. */
+/** The 53 channels in FaceParams field order. */
 export const CHANNELS = makeChannels();
 export const CHANNEL_COUNT = CHANNELS.length;
 /** [first channel, count] of each group. */
-export const GROUP_SPANS = [[0, 29], [29, 3], [32, 3], [35, 4], [39, 2], [41, 6]];
-// [level][group]: action units, head rotation, head translation, eyes, lids, colour.
+export const GROUP_SPANS = [[0, 29], [29, 3], [32, 3], [35, 4], [39, 2], [41, 6], [47, CORRECTIVE_COUNT]];
+// [level][group]: action units, head rotation, head translation, eyes, lids, colour, correctives.
 export const SHIFT = [
-  [0, 0, 0, 0, 0, 0], [0, 0, 0, 1, 0, 0], [0, 0, 0, 1, 1, 0], [1, 1, 1, 2, 1, 1],
-  [1, 1, 1, 2, 2, 1], [2, 2, 2, 2, 2, 2], [2, 2, 2, 2, 3, 2], [3, 3, 3, 2, 3, 3],
+  [0, 0, 0, 0, 0, 0, 0], [0, 0, 0, 1, 0, 0, 0], [0, 0, 0, 1, 1, 0, 1], [1, 1, 1, 2, 1, 1, 1],
+  [1, 1, 1, 2, 2, 1, 2], [2, 2, 2, 2, 2, 2, 2], [2, 2, 2, 2, 3, 2, 3], [3, 3, 3, 2, 3, 3, 4],
 ];
 export const DAMPING_CLASSES = 8;
 const DAMPING_NUMERATOR = [0, 3, 4, 6, 8, 10, 12, 16];

@@ -2,8 +2,10 @@
 // codec/FORMAT.md): version, frame types and size limits. They are part of
 // the format and never change within a version.
 
-export const FORMAT_VERSION = 1;
-export const SCHEMA = 1;
+// Version 2 (FaceParams schema 2) added the six corrective weights; a
+// version-1 message is refused (unsupportedVersion).
+export const FORMAT_VERSION = 2;
+export const SCHEMA = 2;
 
 export const FrameType = Object.freeze({ streamHeader: 0, key: 1, predicted: 2, room: 3, resyncRequest: 4 });
 

@@ -20,5 +20,6 @@ export function dequantise(q) {
     lid_right: v(40),
     blush: [v(41), v(42), v(43), v(44), v(45)],
     pallor: v(46),
+    corrective: Array.from({ length: 6 }, (_, k) => v(47 + k)),
   };
 }

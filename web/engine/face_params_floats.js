@@ -1,11 +1,12 @@
 // FaceParams (the decoder's objects: web/codec/decoder.js, field names of
-// codec/include/fw/codec/face_params.hpp) as the 47 floats the WebAssembly
+// codec/include/fw/codec/face_params.hpp) as the 53 floats the WebAssembly
 // model takes, in the codec's channel order (avatar/model/wasm/
 // face_params_floats.hpp reads them back). A field left out counts as 0, so
 // a hand-made pose such as { au: [...], lid_left: 1 } is a whole FaceParams.
 
 export const AU_CHANNEL_COUNT = 29;
-export const FACE_PARAMS_FLOATS = AU_CHANNEL_COUNT + 18;
+export const CORRECTIVE_COUNT = 6;
+export const FACE_PARAMS_FLOATS = AU_CHANNEL_COUNT + 18 + CORRECTIVE_COUNT;
 
 const number = (v) => (typeof v === 'number' && Number.isFinite(v) ? v : 0);
 
@@ -26,5 +27,6 @@ export function faceParamsFloats(params, out = new Float32Array(FACE_PARAMS_FLOA
   out[i++] = number(p.lid_right);
   for (let k = 0; k < 5; ++k) out[i++] = number(p.blush?.[k]);
   out[i++] = number(p.pallor);
+  for (let k = 0; k < CORRECTIVE_COUNT; ++k) out[i++] = number(p.corrective?.[k]);
   return out;
 }

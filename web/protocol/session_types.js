@@ -85,7 +85,9 @@ export function classify(bytes) {
     const type = first & 0x7f;
     return type >= MessageType.hello && type <= LAST_MESSAGE_TYPE ? 'session' : 'invalid';
   }
-  if (first >> 4 !== 1) return 'invalid';  // the codec's format version
+  // A codec message of any format version is classed by its type; its reader
+  // refuses another version (unsupportedVersion) with a message saying to reload.
+  if (first >> 4 === 0) return 'invalid';
   switch (first & 0x0f) {
     case 0: return 'streamHeader';
     case 3: return 'roomFrame';

@@ -6,7 +6,7 @@
 // WebGL here: the page (room_page.js) reads the state and draws it, and the
 // socket is whatever `openSocket(url)` returns (a browser WebSocket, or a
 // test's stand-in with the same few members).
-import { RoomDecoder, readStreamHeader, writeResyncRequest } from '../codec/decoder.js';
+import { DecodeError, FORMAT_VERSION, RoomDecoder, errorName, readStreamHeader, writeResyncRequest } from '../codec/decoder.js';
 import { readMessage, sessionType } from '../protocol/session_read.js';
 import { CommandKind, MessageError, MessageType, PresenceChange, classify, messageErrorName } from '../protocol/session_types.js';
 import { writeMessage } from '../protocol/session_write.js';
@@ -189,7 +189,9 @@ export class RoomClient {
     switch (classify(bytes)) {
       case 'streamHeader': {
         const header = readStreamHeader(bytes);
-        if (header.error) return this.protocolProblem('a bad stream header');
+        if (header.error === DecodeError.unsupportedVersion)
+          return this.protocolProblem(`a face stream of format version ${bytes[0] >> 4}, and this page decodes version ${FORMAT_VERSION}: reload the page`);
+        if (header.error) return this.protocolProblem(`a bad stream header (${errorName(header.error)})`);
         this.decoder = new RoomDecoder(header.options);
         return;
       }

@@ -29,13 +29,13 @@ int read_magic(codec::ByteReader& in, std::string& error) {
   const std::size_t available = std::min(in.remaining(), kMagicBytes);
   const auto magic = in.bytes(available);
   if (available < kMagicBytes || !std::equal(kMagicStem.begin(), kMagicStem.end(), magic.begin())) {
-    error = "not a scene file: no FWSCENE1 or FWSCENE2 magic at byte 0 (a face script is text: run it with "
+    error = "not a scene file: no FWSCENE1, FWSCENE2 or FWSCENE3 magic at byte 0 (a face script is text: run it with "
             "facewire-server script)";
     return 0;
   }
   const int version = magic.back() - '0';
   if (version < kOldestVersion || version > kNewestVersion) {
-    error = "a scene file of version " + describe_byte(magic.back()) + " (byte 7); this build reads versions 1 and 2: "
+    error = "a scene file of version " + describe_byte(magic.back()) + " (byte 7); this build reads versions 1 to 3: "
             "read it with the facewire that wrote it";
     return 0;
   }
@@ -87,10 +87,11 @@ class SceneParser {
     h.avatars = in_.u16_le();
     h.ticks = in_.u32_le();
     if (h.version >= 2) h.events = in_.u32_le();
-    if (schema != codec::kFaceParamsSchema || channels != codec::kChannelCount)
-      return fail("a scene of FaceParams schema " + std::to_string(schema) + " with " + std::to_string(channels) +
-                  " channels (bytes 8-11); this build reads schema " + std::to_string(codec::kFaceParamsSchema) +
-                  " with " + std::to_string(codec::kChannelCount));
+    if (schema != layout::schema_of(h.version) || channels != layout::channels_of(h.version))
+      return fail("a version " + std::to_string(h.version) + " scene of FaceParams schema " + std::to_string(schema) +
+                  " with " + std::to_string(channels) + " channels (bytes 8-11); this build reads version " +
+                  std::to_string(h.version) + " scenes of schema " + std::to_string(layout::schema_of(h.version)) +
+                  " with " + std::to_string(layout::channels_of(h.version)));
     return check_count("ticks per second", h.fps, 1, kMaxSceneFps, 12) &&
            check_count("avatars", h.avatars, 1, kMaxSceneAvatars, 14) &&
            check_count("ticks", h.ticks, 1, kMaxSceneTicks, 16) &&
@@ -128,7 +129,7 @@ class SceneParser {
     if (in_.failed()) return cut_short(what + "'s name", start + layout::kAvatarFixedBytes, name_bytes);
     avatar.name.assign(name.begin(), name.end());
     avatar.idle = (flags & layout::kFlagIdle) != 0;
-    return h.version < 2 || read_presence_and_seat(h, what, avatar);
+    return h.version < 2 || read_presence_and_seat(h, what, avatar);  // versions 2 and 3
   }
 
   // Version 2: when the avatar is in the room, and where it sits.
@@ -160,7 +161,7 @@ class SceneParser {
 
   bool read_faces(const Header& h, std::vector<SceneAvatar>& avatars) {
     const std::size_t start = in_.position();
-    const std::uint64_t faces_bytes = std::uint64_t{h.ticks} * h.avatars * layout::kFaceBytes;
+    const std::uint64_t faces_bytes = std::uint64_t{h.ticks} * h.avatars * layout::face_bytes(h.version);
     // Version 1 ends with the faces; version 2 has the events after them.
     const bool fits = h.version == 1 ? in_.remaining() == faces_bytes : in_.remaining() >= faces_bytes;
     if (!fits)
@@ -170,14 +171,25 @@ class SceneParser {
                   (h.version == 1 ? " (a version 1 file ends with its faces)" : "") +
                   ": the file is truncated or corrupt; record or copy it again");
     for (SceneAvatar& a : avatars) a.ticks.resize(h.ticks);
+    bool any_corrective = false;
     for (std::uint32_t t = 0; t < h.ticks; ++t)
-      for (std::uint32_t a = 0; a < h.avatars; ++a)
-        if (!read_face(t, a, avatars[a].ticks[t])) return false;
+      for (std::uint32_t a = 0; a < h.avatars; ++a) {
+        codec::FaceParams& face = avatars[a].ticks[t];
+        if (!read_face(layout::channels_of(h.version), t, a, face)) return false;
+        for (const float w : face.corrective) any_corrective = any_corrective || w != 0.0f;
+      }
+    // One file per scene: the writer uses version 3 only for correctives.
+    if (h.version >= layout::kFirstCorrectiveVersion && !any_corrective)
+      return fail("a version 3 scene whose corrective weights are all 0 (faces from byte " + std::to_string(start) +
+                  "): version 3 is for scenes with correctives, and this one is written as version 2; the file "
+                  "is corrupt or was not written by facewire");
     return true;
   }
 
-  bool read_face(std::uint32_t tick, std::uint32_t avatar, codec::FaceParams& face) {
-    for (std::size_t c = 0; c < codec::kChannelCount; ++c) {
+  // `channels` floats in channel order; a file of a version without the
+  // corrective channels leaves them 0.
+  bool read_face(std::size_t channels, std::uint32_t tick, std::uint32_t avatar, codec::FaceParams& face) {
+    for (std::size_t c = 0; c < channels; ++c) {
       const std::size_t at = in_.position();
       const float value = in_.f32_le();
       if (!std::isfinite(value))

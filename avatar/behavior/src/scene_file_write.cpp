@@ -19,6 +19,15 @@ bool needs_v2(const Scene& scene) {
   return false;
 }
 
+// Whether any face carries a corrective weight (version 3 stores them).
+bool needs_v3(const Scene& scene) {
+  for (const SceneAvatar& a : scene.avatars)
+    for (const codec::FaceParams& face : a.ticks)
+      for (const float w : face.corrective)
+        if (w != 0.0f) return true;
+  return false;
+}
+
 bool fail(std::string& error, std::string what) {
   error = std::move(what);
   return false;
@@ -75,8 +84,8 @@ bool check_scene(const Scene& scene, std::string& error) {
 void write_header(codec::ByteWriter& w, const Scene& scene, int version) {
   w.bytes(layout::kMagicStem);
   w.u8(static_cast<std::uint8_t>('0' + version));
-  w.u16_le(codec::kFaceParamsSchema);
-  w.u16_le(static_cast<std::uint16_t>(codec::kChannelCount));
+  w.u16_le(layout::schema_of(version));
+  w.u16_le(static_cast<std::uint16_t>(layout::channels_of(version)));
   w.u16_le(static_cast<std::uint16_t>(scene.fps));
   w.u16_le(static_cast<std::uint16_t>(scene.avatars.size()));
   w.u32_le(static_cast<std::uint32_t>(scene.tick_count()));
@@ -84,7 +93,7 @@ void write_header(codec::ByteWriter& w, const Scene& scene, int version) {
 }
 
 void write_avatars(codec::ByteWriter& w, const Scene& scene, int version) {
-  // Version 2 gives every avatar a seat: where version 1 seated it, when the scene gives none.
+  // Versions 2 and 3 give every avatar a seat: where version 1 seated it, when the scene gives none.
   for (std::size_t i = 0; i < scene.avatars.size(); ++i) {
     const SceneAvatar& a = scene.avatars[i];
     w.u8(a.idle ? layout::kFlagIdle : 0);
@@ -101,10 +110,11 @@ void write_avatars(codec::ByteWriter& w, const Scene& scene, int version) {
   }
 }
 
-void write_faces(codec::ByteWriter& w, const Scene& scene) {
+void write_faces(codec::ByteWriter& w, const Scene& scene, int version) {
+  const std::size_t channels = layout::channels_of(version);
   for (std::size_t t = 0; t < scene.tick_count(); ++t)
     for (const SceneAvatar& a : scene.avatars)
-      for (std::size_t c = 0; c < codec::kChannelCount; ++c) w.f32_le(codec::channel_value(a.ticks[t], c));
+      for (std::size_t c = 0; c < channels; ++c) w.f32_le(codec::channel_value(a.ticks[t], c));
 }
 
 void write_events(codec::ByteWriter& w, const Scene& scene) {
@@ -120,12 +130,13 @@ void write_events(codec::ByteWriter& w, const Scene& scene) {
 
 bool write_scene_bytes(const Scene& scene, std::vector<std::uint8_t>& out, std::string& error) {
   if (!check_scene(scene, error)) return false;
-  const int version = needs_v2(scene) ? 2 : 1;
-  out.reserve(out.size() + layout::kHeaderBytesV2 + scene.tick_count() * scene.avatars.size() * layout::kFaceBytes);
+  const int version = needs_v3(scene) ? 3 : needs_v2(scene) ? 2 : 1;
+  out.reserve(out.size() + layout::kHeaderBytesV2 +
+              scene.tick_count() * scene.avatars.size() * layout::face_bytes(version));
   codec::ByteWriter w(out);
   write_header(w, scene, version);
   write_avatars(w, scene, version);
-  write_faces(w, scene);
+  write_faces(w, scene, version);
   if (version >= 2) write_events(w, scene);
   return true;
 }

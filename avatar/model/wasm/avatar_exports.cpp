@@ -191,7 +191,7 @@ EMSCRIPTEN_KEEPALIVE const float* fw_avatar_morph(int handle, int channel, int f
 }
 
 /// The skin for one frame: reconstruct_face, then the normals the renderer
-/// computes from it (fw::model::vertex_normals). Takes FaceParams as 47
+/// computes from it (fw::model::vertex_normals). Takes FaceParams as 53
 /// floats (face_params_floats.hpp).
 /// @return positions (3V), uvs (2V) and normals (3V) back to back, valid
 ///         until the next frame of this avatar; null for an unknown handle

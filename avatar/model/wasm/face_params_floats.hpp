@@ -1,8 +1,9 @@
 #pragma once
-// FaceParams as JavaScript hands them over: 47 floats in the codec's channel
+// FaceParams as JavaScript hands them over: 53 floats in the codec's channel
 // order (codec/FORMAT.md, "Channels"; web/codec/quantiser.js's dequantise):
 // the 29 AU channels, head yaw, pitch, roll, translation x, y, z (mm), left
-// eye yaw, pitch, right eye yaw, pitch, lid left, right, 5 blush, pallor.
+// eye yaw, pitch, right eye yaw, pitch, lid left, right, 5 blush, pallor, and
+// the 6 corrective weights last.
 // web/engine/face_params_floats.js writes them.
 #include <cstddef>
 
@@ -10,7 +11,7 @@
 
 namespace fw::wasm {
 
-inline constexpr std::size_t kFaceParamsFloats = codec::kAuChannelCount + 18;
+inline constexpr std::size_t kFaceParamsFloats = codec::kAuChannelCount + 18 + codec::kCorrectiveCount;
 
 inline codec::FaceParams face_params_from_floats(const float* f) {
   codec::FaceParams p;
@@ -28,6 +29,7 @@ inline codec::FaceParams face_params_from_floats(const float* f) {
   p.lid_right = f[i++];
   for (float& b : p.blush) b = f[i++];
   p.pallor = f[i++];
+  for (float& w : p.corrective) w = f[i++];
   return p;
 }
 

@@ -471,7 +471,7 @@ TEST_F(RoomSessionTest, MessagesAClientDoesNotExpectDropTheConnection) {
 
 TEST_F(RoomSessionTest, ABadRoomFrameIsCountedNotFatal) {
   join();
-  send(Bytes{0x13, 0xff, 0xff});
+  send(Bytes{0x23, 0xff, 0xff});
   EXPECT_TRUE(server_.connected());
   std::lock_guard lock(state_.mutex);
   EXPECT_EQ(state_.stats.summary(std::chrono::steady_clock::now())["decode_errors"], 1);

@@ -151,7 +151,7 @@ TEST(RoomState, TheSceneHasSeatsAttentionFacesAndTheLastChatLine) {
 TEST(RoomState, UndecodableFramesAreCounted) {
   RoomState state;
   state.stream_started(codec::StreamOptions{});
-  EXPECT_FALSE(state.decode_room_frame(Bytes{0x13, 0xff}, Clock::now()));
+  EXPECT_FALSE(state.decode_room_frame(Bytes{0x23, 0xff}, Clock::now()));
   FaceStream bob;
   bob.frame(face(0.1f));
   EXPECT_FALSE(state.decode_room_frame(room_frame({{2, bob.frame(face(0.9f))}}), Clock::now()))

@@ -11,6 +11,7 @@ import {
   CHANNEL_COUNT, Decoder, DecodeError, RoomDecoder, errorName, readResyncRequest, readRoomFrame,
   readStreamHeader, writeResyncRequest,
 } from '../../../web/codec/decoder.js';
+import { classify } from '../../../web/protocol/session_types.js';
 
 const here = dirname(fileURLToPath(import.meta.url));
 const vectorsDir = join(here, '..', '..', 'vectors', 'codec');
@@ -81,15 +82,27 @@ for (const file of vectorFiles) {
           const flat = face
             ? [...face.au, face.head_yaw_rad, face.head_pitch_rad, face.head_roll_rad, ...face.head_translation_mm,
               face.eye_left.yaw_rad, face.eye_left.pitch_rad, face.eye_right.yaw_rad, face.eye_right.pitch_rad,
-              face.lid_left, face.lid_right, ...face.blush, face.pallor]
+              face.lid_left, face.lid_right, ...face.blush, face.pallor, ...face.corrective]
             : new Array(CHANNEL_COUNT).fill(0);
           assert.deepEqual(flat, v.final_faces[a].map(Math.fround), `avatar ${a} final float32 face`);
         }
       }
     }
     assert.equal(m, messages.length, 'every message delivered');
+    // Format version 2: the corrective channels move in every vector.
+    const correctives = new Set(v.shown.flatMap((tick) => tick.map((face) => face.slice(CHANNEL_COUNT - 6).join())));
+    assert.ok(correctives.size > 3, `${file}: the corrective weights should move`);
   });
 }
+
+test('refuses a stream of format version 1 and says to reload', () => {
+  // The committed version-1 stream (before the corrective channels).
+  const messages = splitStream(new Uint8Array(readFileSync(join(vectorsDir, 'version1', 'avatar_basic.fwc'))));
+  assert.equal(readStreamHeader(messages[0]).error, DecodeError.unsupportedVersion);
+  const d = new Decoder({ lossTolerant: false, tickRateHz: 30, maxExtrapolationTicks: 32 });
+  for (const frame of messages.slice(1)) assert.equal(d.decode(frame), DecodeError.unsupportedVersion);
+  assert.equal(classify(messages[0]), 'streamHeader', 'classed as a stream header, so that its reader says why');
+});
 
 test('gives the documented error code for every corrupt message of errors.json', () => {
   const cases = JSON.parse(readFileSync(join(vectorsDir, 'errors.json'), 'utf8'));

@@ -64,7 +64,8 @@ json face_params_json(const codec::FaceParams& p) {
           {"head_roll_rad", p.head_roll_rad}, {"head_translation_mm", p.head_translation_mm},
           {"eye_left", {{"yaw_rad", p.eye_left.yaw_rad}, {"pitch_rad", p.eye_left.pitch_rad}}},
           {"eye_right", {{"yaw_rad", p.eye_right.yaw_rad}, {"pitch_rad", p.eye_right.pitch_rad}}},
-          {"lid_left", p.lid_left}, {"lid_right", p.lid_right}, {"blush", p.blush}, {"pallor", p.pallor}};
+          {"lid_left", p.lid_left}, {"lid_right", p.lid_right}, {"blush", p.blush}, {"pallor", p.pallor},
+          {"corrective", p.corrective}};
 }
 
 // Neutral, an expression, everything at once, and values out of range
@@ -86,6 +87,7 @@ std::vector<std::pair<std::string, codec::FaceParams>> frames() {
   all.lid_left = 0.6f, all.lid_right = 1.0f;
   all.blush = {0.2f, 0.9f, 0.8f, 0.1f, 0.5f};
   all.pallor = 0.3f;
+  all.corrective = {0.5f, -0.25f, 0.125f, -0.5f, 0.0625f, -0.0625f};  // the last six floats of the hand-over
   out.emplace_back("everything", all);
   codec::FaceParams over;
   over.au.fill(1.4f);

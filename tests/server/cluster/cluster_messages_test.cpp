@@ -65,6 +65,7 @@ TEST(BridgeMessage, FacesGoDownExactly) {
   face.eye_right.pitch_rad = -0.3f;
   face.pallor = 0.5f;
   face.blush[1] = 0.25f;
+  face.corrective = {0.5f, -0.25f, 0.0f, 1.0f, -1.0f, 0.015625f};  // the physics face's, to every node's encoders
   down.faces = {{5, face}, {9, codec::FaceParams{}}};
   const auto bytes = bridge::encode(down);
   const auto back = bridge::decode_down(bytes.data(), bytes.size());
@@ -74,6 +75,7 @@ TEST(BridgeMessage, FacesGoDownExactly) {
   EXPECT_EQ(back->faces[0].face.au[3], face.au[3]);
   EXPECT_EQ(back->faces[0].face.eye_right.pitch_rad, -0.3f);
   EXPECT_EQ(back->faces[0].face.blush[1], 0.25f);
+  EXPECT_EQ(back->faces[0].face.corrective, face.corrective);
   EXPECT_EQ(back->faces[1].id, 9u);
 }
 

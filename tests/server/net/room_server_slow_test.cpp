@@ -122,7 +122,7 @@ TEST(RoomServerLimits, ASlowClientsStreamStaysUnderItsBudgetAndShowsEveryFaceSoo
     std::cout << " " << id << ":" << static_cast<double>(count - frames_at_20s[id]) / 20;
   std::cout << "\nall previews after " << previews_done_at << " s; room frame bytes " << slow->room_frame_bytes
             << ", package chunk bytes " << slow->package_bytes << " of " << slow->socket_bytes - bytes_at_start << "\n";
-  // The first seconds carry the welcome and the codec's 528-byte stream header.
+  // The first seconds carry the welcome and the codec's 594-byte stream header.
   EXPECT_LE(mean_bps, 9600);
   for (std::size_t s = 2; s < bits_per_second.size(); ++s)
     EXPECT_LE(bits_per_second[s], 9600 * 1.15) << "second " << s;

@@ -193,3 +193,18 @@ test('without a language, hello asks for the server\'s default', (t) => {
   t.after(() => c.stop());
   assert.equal(readMessage(sockets[0].sent[0], MessageType.hello).message.language, '');
 });
+
+test('a stream header of format version 1 closes with a reason that says to reload', (t) => {
+  // The first bytes of a stream header of the previous release (format
+  // version 1, before the corrective channels): refused, and the error says
+  // what to do, not that the server sent something no server sends.
+  const { c, sockets } = client();
+  t.after(() => c.stop());
+  sockets[0].deliver(MessageType.welcome, welcome);
+  const old = new Uint8Array(11 + 47 * 11);
+  old.set([0x10, 0x46, 0x57, 0x46, 0x50, 1, 0, 0, 30, 32, 47]);
+  sockets[0].onmessage({ data: old.buffer });
+  assert.equal(sockets[0].closedWith, 1002);
+  assert.match(c.error, /format version 1.*decodes version 2: reload the page/);
+  assert.equal(c.decoder ?? null, null);
+});

@@ -22,7 +22,9 @@ namespace fw::codec {
 
 /// Bitstream version carried in the high nibble of every frame's first byte.
 /// A change to any golden vector (tests/vectors/codec) is a change of version.
-inline constexpr std::uint8_t kFormatVersion = 1;
+/// Version 2 added the corrective channels (FaceParams schema 2); a decoder
+/// refuses version-1 messages (unsupported_version) rather than guess.
+inline constexpr std::uint8_t kFormatVersion = 2;
 
 /// The low nibble of every frame's first byte.
 enum class FrameType : std::uint8_t {
@@ -67,15 +69,26 @@ inline constexpr std::size_t kMaxRoomFrameBytes = 64 * 1024;
 inline constexpr std::uint32_t kMaxAvatarId = (1u << 21) - 1;  ///< ids 0 .. 63 take one byte in a room frame
 
 // ---------------------------------------------------------------------------
-// Channels: FaceParams as 47 integers on a fixed grid.
+// Channels: FaceParams as 53 integers on a fixed grid.
 
 /// Number of coded channels: 29 AUs, 3 head rotations, 3 head translations,
-/// 4 eye rotations, 2 lids, 5 blush regions, pallor (in FaceParams order).
-inline constexpr std::size_t kChannelCount = kAuChannelCount + 3 + 3 + 4 + 2 + kColourRegionCount + 1;
+/// 4 eye rotations, 2 lids, 5 blush regions, pallor, 6 corrective weights
+/// (in FaceParams order).
+inline constexpr std::size_t kChannelCount =
+    kAuChannelCount + 3 + 3 + 4 + 2 + kColourRegionCount + 1 + kCorrectiveCount;
 
 /// Channel groups: each has one "unchanged" flag per predicted frame and one
 /// quantiser shift per quality level.
-enum class ChannelGroup : std::uint8_t { action_units, head_rotation, head_translation, eyes, lids, colour, count };
+enum class ChannelGroup : std::uint8_t {
+  action_units,
+  head_rotation,
+  head_translation,
+  eyes,
+  lids,
+  colour,
+  correctives,
+  count
+};
 inline constexpr std::size_t kChannelGroupCount = static_cast<std::size_t>(ChannelGroup::count);
 
 struct ChannelInfo {
@@ -91,7 +104,7 @@ struct ChannelInfo {
   std::int8_t base;
 };
 
-/// The channel table of FaceParams schema 1, in FaceParams field order.
+/// The channel table of FaceParams schema 2, in FaceParams field order.
 /// min_q/max_q are the field's range; a channel with a base is coded over
 /// the sum of both ranges (FORMAT.md, "Channels").
 const std::array<ChannelInfo, kChannelCount>& channel_table();

@@ -1,5 +1,5 @@
 #pragma once
-// FaceParams v1: everything a client needs to rebuild one face for one frame.
+// FaceParams v2: everything a client needs to rebuild one face for one frame.
 // Plain data: the bitstream (codec/FORMAT.md) quantises exactly these fields,
 // and the web decoder mirrors them. Changing a field changes the schema id.
 #include <array>
@@ -9,7 +9,8 @@
 
 namespace fw::codec {
 
-inline constexpr std::uint16_t kFaceParamsSchema = 1;
+/// Schema 2 added the corrective weights (the bitstream's format version 2).
+inline constexpr std::uint16_t kFaceParamsSchema = 2;
 
 /// The FACS action units a face can show.
 inline constexpr std::array<std::uint8_t, 18> kActionUnits = {

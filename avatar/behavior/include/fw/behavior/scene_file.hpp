@@ -4,8 +4,9 @@
 // simulation (`facewire-server simulate`) records them, the codec benchmark
 // measures on them, `facewire-server render-scene` turns them into video.
 // Format: codec/FORMAT.md, "Appendix A. Scene files". Version 2 adds seats,
-// presence and events; version 1 files (faces only) are still read, and a
-// scene with nothing version 2 adds is still written as version 1. A version
+// presence and events, version 3 the faces' corrective weights; version 1
+// files (faces only) and version 2 files are still read (their correctives
+// are 0), and a scene is written in the oldest version that holds it. A version
 // 1 file was recorded before seats were stored, when every room sat on
 // centre_facing_arc_layout: an avatar without a seat sits there (scene_seat),
 // so an old recording keeps the seats its gazes were aimed from.
@@ -64,14 +65,15 @@ Seat scene_seat(const Scene& scene, std::size_t index);
 
 /// Writes `scene` to `path`; false (with `error` saying why) on failure.
 bool write_scene(const Scene& scene, const std::string& path, std::string& error);
-/// Reads a scene of version 1 or 2; its name is the file name without the
+/// Reads a scene of version 1, 2 or 3; its name is the file name without the
 /// extension. Every count is checked against the limits and the file size
 /// before anything is allocated; `error` names the file and says what was
 /// wrong at which byte.
 bool read_scene(const std::string& path, Scene& scene, std::string& error);
 
-/// The bytes of the scene file for `scene` (version 1 when it carries
-/// nothing of version 2), appended to `out`; false (with `error`) when the
+/// The bytes of the scene file for `scene` (version 3 when a face carries a
+/// corrective weight, else version 1 when it carries nothing of version 2),
+/// appended to `out`; false (with `error`) when the
 /// scene is outside the limits or does not add up.
 bool write_scene_bytes(const Scene& scene, std::vector<std::uint8_t>& out, std::string& error);
 /// Parses the whole of a scene file (`scene.name` is left empty). On
