@@ -228,7 +228,7 @@ std::vector<glm::vec3> FaceSimulation::surface() const {
 
 double FaceSimulation::kinetic_energy() const {
   const TissueModel& m = *model_;
-  const auto& inverse_mass = options_.solver == Solver::mass_spring ? m.explicit_inverse_mass : m.inverse_mass;
+  const auto& inverse_mass = m.inverse_mass;
   double sum = 0.0;
   for (std::size_t i = 0; i < m.moving_node_count; ++i) {
     if (inverse_mass[i] == 0.0f) continue;  // held: moves only with the bone
