@@ -1,7 +1,6 @@
 #include "fw/physics/tissue_model.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -133,7 +132,6 @@ TEST(TissueModel, TheStatedStableSubStepIsWhatThePlainMassesAllow) {
   const auto stiff_model = build_tissue_model(model::generic_face(), model::generic_face().action_units, stiff);
   for (const TissueModel* m : {test::generic_tissue().get(), stiff_model.get()}) {
     const double omega = std::sqrt(largest_omega2(*m));
-    std::printf("omega %f h %f 1/h %f\n", omega, m->stable_substep_s, 1.0/m->stable_substep_s);
     EXPECT_LE(m->stable_substep_s * omega, 2.0) << "omega_max " << omega << "/s, sub-step " << m->stable_substep_s << " s";
     EXPECT_GE(m->stable_substep_s * omega, 0.5) << "omega_max " << omega << "/s, sub-step " << m->stable_substep_s << " s";
   }

@@ -44,7 +44,7 @@ XpbdScratch& scratch() {
 
 }  // namespace
 
-void FaceSimulation::pbd_substep(float h) {
+void FaceSimulation::pbd_substep(float h, const std::array<float, kMuscleCount>& activation) {
   const TissueModel& m = *model_;
   const MuscleParticles& mp = m.muscle_particles;
   const std::size_t moving = m.moving_node_count;
@@ -97,7 +97,7 @@ void FaceSimulation::pbd_substep(float h) {
     // The face's own muscle strength (individual variation).
     const std::size_t muscle = mp.muscle[a];
     const float stiffness =
-        activation_[muscle] * tie_stiffness(m, s.move, t) * strength_[muscle] / m.muscles[muscle].strength;
+        activation[muscle] * tie_stiffness(m, s.move, t) * strength_[muscle] / m.muscles[muscle].strength;
     s.tie_compliance[t] = stiffness > 0.0f ? 1.0f / (stiffness * h * h) : 0.0f;  // 0: no tie
   }
 
@@ -159,8 +159,11 @@ void FaceSimulation::pbd_substep(float h) {
   // Velocities from the positions, then the bond to the bone of each
   // column (relative speed, implicit), as in the mass-spring solver.
   const float inv_h = 1.0f / h;
-  const float hc = h * m.material.bone_damping;
-  const float keep = 1.0f / (1.0f + hc);
+  // Exact decay of the relative speed over the step, exp(-h c), written
+  // as the implicit update v = (v_free + hc v_bone) / (1 + hc) with hc
+  // chosen to match it, so that long and short steps damp alike.
+  const float keep = std::exp(-h * m.material.bone_damping);
+  const float hc = 1.0f / keep - 1.0f;
   const std::size_t nv = m.vertex_count;
   float max_speed2 = 0.0f;
   for (std::size_t i = 0; i < moving; ++i) {

@@ -136,7 +136,7 @@ class FaceSimulation {
   void place_bone(float h);
   void move_node_with_jaw(std::size_t i, float share, float h);
   void mass_spring_substep(float h);
-  void pbd_substep(float h);  // XPBD (xpbd_step.cpp)
+  void pbd_substep(float h, const std::array<float, kMuscleCount>& activation);  // XPBD (xpbd_step.cpp)
   void resolve_skull();
   glm::vec3 jaw_turned(const glm::vec3& p, float share) const;
 
