@@ -28,7 +28,7 @@ constexpr std::array<int, 4> kSnapshotFrames = {2, 3, 6, 9};
 std::vector<std::vector<glm::vec3>> track(int au, int substeps) {
   SimulationOptions options;
   options.solver = Solver::pbd;
-  options.max_substep_s = kXpbdFrame / substeps;
+  options.xpbd_substep_s = kXpbdFrame / substeps;
   FaceSimulation sim(test::generic_tissue(), options);
   sim.set_action_units(alone(au));
   std::vector<std::vector<glm::vec3>> out;

@@ -81,6 +81,7 @@ void FaceSimulation::set_muscle_activations(const std::array<float, kMuscleCount
 int FaceSimulation::substeps_for(double dt_seconds) const {
   double h = options_.max_substep_s > 0.0 ? options_.max_substep_s : 1.0 / 120.0;
   if (options_.solver == Solver::mass_spring) h = std::min(h, double(model_->stable_substep_s));
+  if (options_.solver == Solver::pbd) h = options_.xpbd_substep_s > 0.0 ? options_.xpbd_substep_s : 1.0 / 60.0;
   if (options_.solver == Solver::projective) h = ProjectiveStepper::kLongestStepS;
   return std::max(1, static_cast<int>(std::ceil(std::clamp(dt_seconds, 0.0, kMaxStepS) / h - 1e-9)));
 }
