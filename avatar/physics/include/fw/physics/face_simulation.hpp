@@ -157,7 +157,7 @@ class FaceSimulation {
   bool at_rest_ = true;
   float max_speed2_ = 0;
   // One array per quantity, #nodes each (bone nodes included, so springs
-  // index them directly); f doubles as the previous positions in PBD.
+  // index them directly); f doubles as the previous positions in XPBD.
   std::vector<float> x_, y_, z_, vx_, vy_, vz_, fx_, fy_, fz_;
   std::vector<glm::vec3> skull_normal_;  ///< #V, turned with the jaw
   std::array<float, codec::kAuChannelCount> last_weights_{};
