@@ -138,12 +138,12 @@ void full_contraction(const TissueModel& m, std::vector<glm::vec3>& move) {
   }
 }
 
-float tie_stiffness(const TissueModel& m, const std::vector<glm::vec3>& move, std::size_t tie) {
+float tie_stiffness_per_strength(const TissueModel& m, const std::vector<glm::vec3>& move, std::size_t tie) {
   const MuscleParticles& mp = m.muscle_particles;
   const std::size_t a = mp.tie_first[tie];
   const float share = mp.tie_share[tie] * (1.0f / 255.0f);
   const glm::vec3 at_tie = share > 0.0f ? (1.0f - share) * move[a] + share * move[a + 1] : move[a];
-  return m.muscles[mp.muscle[a]].strength * m.attach_weight[tie] / std::max(glm::length(at_tie), kLeastShortening);
+  return m.attach_weight[tie] / std::max(glm::length(at_tie), kLeastShortening);
 }
 
 std::size_t MuscleParticles::memory_bytes() const {

@@ -96,8 +96,7 @@ void FaceSimulation::pbd_substep(float h, const std::array<float, kMuscleCount>&
     s.tie_target[t] = glm::vec3(m.rest_x[n], m.rest_y[n], m.rest_z[n]) + shift;
     // The face's own muscle strength (individual variation).
     const std::size_t muscle = mp.muscle[a];
-    const float stiffness =
-        activation[muscle] * tie_stiffness(m, s.move, t) * strength_[muscle] / m.muscles[muscle].strength;
+    const float stiffness = activation[muscle] * strength_[muscle] * tie_stiffness_per_strength(m, s.move, t);
     s.tie_compliance[t] = stiffness > 0.0f ? 1.0f / (stiffness * h * h) : 0.0f;  // 0: no tie
   }
 

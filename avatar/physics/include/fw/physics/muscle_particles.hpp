@@ -49,10 +49,11 @@ struct MuscleParticles {
 /// axis (sphincter), along the skull under it. #particles.
 void full_contraction(const TissueModel& model, std::vector<glm::vec3>& move);
 
-/// Each tie's stiffness (force per model unit, at the model's strengths):
-/// it pulls with strength x attachment weight, the mass-spring solver's
-/// force, while the node has not moved. #attachments.
-float tie_stiffness(const TissueModel& model, const std::vector<glm::vec3>& move, std::size_t tie);
+/// Each tie's stiffness per unit of its muscle's strength (times the
+/// strength and the activation, force per model unit): it pulls with
+/// strength x attachment weight, the mass-spring solver's force, while the
+/// node has not moved. `move` is full_contraction's; #attachments.
+float tie_stiffness_per_strength(const TissueModel& model, const std::vector<glm::vec3>& move, std::size_t tie);
 
 /// Lays the particles and ties of every muscle of `model` (its muscles,
 /// attachments and rest shape must be built).
