@@ -70,7 +70,7 @@ class Layout {
     }
     const glm::vec3 o = muscle.origin;
     const glm::vec3 dir = glm::normalize(centre / total - o);
-    float length = 0.0f;
+    float length = kLeastShortening;  // never 0, even were every attachment behind the origin
     for (std::uint32_t t = muscle.first; t < muscle.last; ++t)
       length = std::max(length, glm::dot(rest(m_.attach_node[t]) - o, dir));
     constexpr float kLast = static_cast<float>(kLineParticles - 1);
