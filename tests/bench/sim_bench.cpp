@@ -223,7 +223,8 @@ void run(const SimBenchArgs& args) {
             << " threads (goal " << kGoalFaceFramesPerS << " face-frames/s)\n";
   for (const SolverRun& r : runs)
     std::cout << "  " << r.name << ": " << std::round(r.face_frames_per_s) << " face-frames/s ("
-              << rounded(1e6 / r.face_frames_per_s, 0.01) << " us each, " << r.substeps_per_frame
+              << rounded(1e6 / r.face_frames_per_s, 0.01) << " us each, " << rounded(r.cpu_us_per_face_frame, 0.01)
+              << " us of a core, " << r.substeps_per_frame
               << " sub-steps per frame), residual " << rounded(r.residual_mean, 0.001) << " mm RMS (max "
               << rounded(r.residual_worst, 0.001) << ")\n";
   if (out.contains("physics_vs_kinematic_mm"))

@@ -64,8 +64,8 @@ TEST(ProjectiveDynamics, SettledActionUnitsHaveTheMassSpringShapes) {
 // full strength has settled. No solver meets it with this material: the
 // volume stiffness (1500) is of the order of the units' slopes, so a prism
 // gives volume where a muscle squeezes it. Measured worst changes, units
-// other than the jaw's / AU 26-27: mass-spring 65 % (AU 9) / 68 %, PBD 67 %
-// (AU 5) / 207 %, projective 56 % (AU 9) / 138 %; 20-140 prisms of 1628
+// other than the jaw's / AU 26-27: mass-spring 65 % (AU 9) / 68 %, XPBD 44 %
+// (PBD, before it was XPBD, 67 % / 207 %), projective 56 % (AU 9) / 138 %; 20-140 prisms of 1628
 // beyond 5 % per unit. (With the projective volume weight a hundred times
 // higher, single units keep 3.4 %, but the shapes leave the mass-spring
 // ones by 0.8 mm RMS of 1.7 mm: another material; README "Accuracy".) The
@@ -82,7 +82,7 @@ TEST_P(SettledVolumes, EachPrismKeepsItsMeasuredShareOfItsVolume) {
     float single, jaw;
   };
   const Levels measured = GetParam() == Solver::mass_spring ? Levels{0.70f, 0.75f}
-                          : GetParam() == Solver::pbd       ? Levels{0.72f, 2.2f}
+                          : GetParam() == Solver::pbd       ? Levels{0.5f, 2.2f}
                                                             : Levels{0.62f, 1.5f};
   float worst_single = 0.0f;
   for (int au : codec::kActionUnits) {

@@ -75,6 +75,7 @@ void FaceSimulation::set_muscle_activations(const std::array<float, kMuscleCount
 int FaceSimulation::substeps_for(double dt_seconds) const {
   double h = options_.max_substep_s > 0.0 ? options_.max_substep_s : 1.0 / 120.0;
   if (options_.solver == Solver::mass_spring) h = std::min(h, double(model_->stable_substep_s));
+  if (options_.solver == Solver::pbd) h = options_.xpbd_substep_s > 0.0 ? options_.xpbd_substep_s : 1.0 / 60.0;
   if (options_.solver == Solver::projective) h = ProjectiveStepper::kLongestStepS;
   return std::max(1, static_cast<int>(std::ceil(std::clamp(dt_seconds, 0.0, kMaxStepS) / h - 1e-9)));
 }
@@ -108,10 +109,19 @@ void FaceSimulation::substep(float h) {
     ProjectiveStepper::substep(std::span<FaceSimulation* const>(&self, 1), h);
     return;
   }
+  const std::array<float, kMuscleCount> before = activation_;
   update_muscles_and_jaw(h);
   place_bone(h);
-  if (options_.solver == Solver::mass_spring) mass_spring_substep(h);
-  else pbd_substep(h);
+  if (options_.solver == Solver::mass_spring) {
+    mass_spring_substep(h);
+    return;
+  }
+  // XPBD's ties act over the whole sub-step: they take the activation's
+  // mean over it (the trapezoid), not its end, so that a long sub-step does
+  // not pull ahead of short ones.
+  std::array<float, kMuscleCount> mean;
+  for (std::size_t i = 0; i < kMuscleCount; ++i) mean[i] = 0.5f * (before[i] + activation_[i]);
+  pbd_substep(h, mean);
 }
 
 void FaceSimulation::update_muscles_and_jaw(float h) {
@@ -121,9 +131,15 @@ void FaceSimulation::update_muscles_and_jaw(float h) {
     const float gap = target_[i] - activation_[i];
     activation_[i] += gap * (gap > 0.0f ? rise : fall);
   }
-  // Semi-implicit: the speed first, then the angle with the new speed.
-  jaw_speed_ += h * (kJawOmega * kJawOmega * (jaw_target_ - jaw_angle_) - 2.0f * kJawOmega * jaw_speed_);
-  jaw_angle_ = std::clamp(jaw_angle_ + h * jaw_speed_, model_->jaw_min_rad, model_->jaw_max_rad);
+  // Semi-implicit: the speed first, then the angle with the new speed; in
+  // pieces of at most 35 ms (h omega 0.7), since the update diverges once
+  // h omega > 2 (a 0.1 s step) and rings well before.
+  const int pieces = std::max(1, static_cast<int>(std::ceil(h * kJawOmega / 0.7f - 1e-4f)));
+  const float piece = h / static_cast<float>(pieces);
+  for (int k = 0; k < pieces; ++k) {
+    jaw_speed_ += piece * (kJawOmega * kJawOmega * (jaw_target_ - jaw_angle_) - 2.0f * kJawOmega * jaw_speed_);
+    jaw_angle_ = std::clamp(jaw_angle_ + piece * jaw_speed_, model_->jaw_min_rad, model_->jaw_max_rad);
+  }
   jaw_cos_ = std::cos(jaw_angle_);
   jaw_sin_ = std::sin(jaw_angle_);
 }
@@ -223,7 +239,7 @@ std::vector<glm::vec3> FaceSimulation::surface() const {
 
 double FaceSimulation::kinetic_energy() const {
   const TissueModel& m = *model_;
-  const auto& inverse_mass = options_.solver == Solver::mass_spring ? m.explicit_inverse_mass : m.inverse_mass;
+  const auto& inverse_mass = m.inverse_mass;
   double sum = 0.0;
   for (std::size_t i = 0; i < m.moving_node_count; ++i) {
     if (inverse_mass[i] == 0.0f) continue;  // held: moves only with the bone

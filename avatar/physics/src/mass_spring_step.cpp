@@ -1,8 +1,10 @@
 // The mass-spring sub-step (Lee, Terzopoulos & Waters 1995; the behavioral-
 // animation paper sec. 3.2): forces from the viscoelastic units, the volume
 // preservation of every prism and the muscles, then one semi-implicit Euler
-// step (velocity first, the medium's drag implicit so it can never
-// overshoot), then the skull. Every pass walks flat arrays in order.
+// step (velocity first, the tissue's viscous bond to the bone under it
+// implicit so it can never overshoot), then the skull. The sub-step is the
+// plain masses' stable bound (no mass scaling) and nothing limits a node's
+// speed. Every pass walks flat arrays in order.
 #include <algorithm>
 #include <cmath>
 
@@ -12,14 +14,6 @@
 #include "tissue_forces.hpp"
 
 namespace fw::physics {
-namespace {
-
-// A safety net, far above anything a face does (1.3 m/s): a node pushed
-// faster than this by a bad input is slowed instead of blowing up.
-constexpr float kMaxSpeed = 20.0f;
-
-}  // namespace
-
 void FaceSimulation::mass_spring_substep(float h) {
   const TissueModel& m = *model_;
   const std::size_t node_count = m.node_count, moving = m.moving_node_count;
@@ -46,21 +40,27 @@ void FaceSimulation::mass_spring_substep(float h) {
 
   detail::add_muscle_forces(m, {activation_, strength_, muscle_origins(), skull_normal_.data()}, nodes);
 
-  // Semi-implicit Euler; the drag of the medium taken implicitly.
-  // Pinned nodes (inverse mass 0) keep the speed place_bone gave them.
-  const float* inverse_mass = m.explicit_inverse_mass.data();
-  const float drag = 1.0f / (1.0f + h * m.material.node_damping);
-  for (std::size_t i = 0; i < moving; ++i) {
-    if (inverse_mass[i] == 0.0f) continue;
-    const float step = h * inverse_mass[i];
-    float ux = (vx[i] + step * fx[i]) * drag, uy = (vy[i] + step * fy[i]) * drag, uz = (vz[i] + step * fz[i]) * drag;
-    const float speed2 = ux * ux + uy * uy + uz * uz;
-    if (speed2 > kMaxSpeed * kMaxSpeed) {
-      const float s = kMaxSpeed / std::sqrt(speed2);
-      ux *= s, uy *= s, uz *= s;
+  // Semi-implicit Euler. Each node is damped against the bone of its own
+  // column (relative speed, implicit): the tissue's viscous bond to the
+  // skull and mandible, not a drag of the world frame, so tissue carried by
+  // the turning jaw keeps up with it. Pinned nodes (inverse mass 0) keep the
+  // speed place_bone gave them.
+  const float* inverse_mass = m.inverse_mass.data();
+  const float hc = h * m.material.bone_damping;
+  const float keep = 1.0f / (1.0f + hc);
+  const std::size_t nv = m.vertex_count;
+  for (std::size_t layer = 0; layer < kMovingLayerCount; ++layer) {
+    const std::size_t first = layer * nv;
+    for (std::size_t v = 0; v < nv; ++v) {
+      const std::size_t i = first + v, b = moving + v;
+      if (inverse_mass[i] == 0.0f) continue;
+      const float step = h * inverse_mass[i];
+      const float ux = (vx[i] + step * fx[i] + hc * vx[b]) * keep;
+      const float uy = (vy[i] + step * fy[i] + hc * vy[b]) * keep;
+      const float uz = (vz[i] + step * fz[i] + hc * vz[b]) * keep;
+      vx[i] = ux, vy[i] = uy, vz[i] = uz;
+      x[i] += h * ux, y[i] += h * uy, z[i] += h * uz;
     }
-    vx[i] = ux, vy[i] = uy, vz[i] = uz;
-    x[i] += h * ux, y[i] += h * uy, z[i] += h * uz;
   }
   resolve_skull();
   // Measured after the skull took away what pressed into it: a node resting

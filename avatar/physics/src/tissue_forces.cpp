@@ -50,11 +50,7 @@ void add_spring_forces(const TissueModel& model, const SpringKindTable& table, c
       const float inv = 1.0f / std::sqrt(length2);
       const float length = length2 * inv;
       const float speed = ((n.vx[b] - n.vx[a]) * dx + (n.vy[b] - n.vy[a]) * dy + (n.vz[b] - n.vz[a]) * dz) * inv;
-      const float from_natural = length - rest[s] * table.slack[kind];
-      const float force = table.k1[kind] * (std::max(0.0f, from_natural) +
-                                            table.compression_share[kind] * std::min(0.0f, from_natural)) +
-                          table.k2_extra[kind] * std::max(0.0f, length - rest[s] * table.knee[kind]) +
-                          table.damping[kind] * speed;
+      const float force = elastic_force(table, kind, length, rest[s]) + table.damping[kind] * speed;
       const float scale = force * inv;
       gx[j] = scale * dx;
       gy[j] = scale * dy;

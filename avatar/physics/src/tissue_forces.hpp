@@ -45,6 +45,14 @@ struct SpringKindTable {
 };
 SpringKindTable spring_kind_table(const TissueMaterial& material);
 
+/// A unit's elastic force (tension positive) at `length`, rest length `rest`.
+inline float elastic_force(const SpringKindTable& t, std::size_t kind, float length, float rest) {
+  const float from_natural = length - rest * t.slack[kind];
+  return t.k1[kind] * (from_natural > 0.0f ? from_natural : 0.0f) +
+         t.k1[kind] * t.compression_share[kind] * (from_natural < 0.0f ? from_natural : 0.0f) +
+         t.k2_extra[kind] * (length > rest * t.knee[kind] ? length - rest * t.knee[kind] : 0.0f);
+}
+
 void add_spring_forces(const TissueModel& model, const SpringKindTable& table, const NodeArrays& nodes);
 void add_volume_forces(const TissueModel& model, const NodeArrays& nodes);
 

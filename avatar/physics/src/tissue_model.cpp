@@ -384,7 +384,7 @@ class Builder {
   }
 
   void shrink() {
-    for (auto* v : {&m_.rest_x, &m_.rest_y, &m_.rest_z, &m_.column_thickness, &m_.jaw_share, &m_.inverse_mass, &m_.explicit_inverse_mass,
+    for (auto* v : {&m_.rest_x, &m_.rest_y, &m_.rest_z, &m_.column_thickness, &m_.jaw_share, &m_.inverse_mass,
                     &m_.spring_rest, &m_.element_rest_volume, &m_.element_force_scale, &m_.skin_rest_area,
                     &m_.attach_weight})
       v->shrink_to_fit();
@@ -424,24 +424,13 @@ class Builder {
         sum[nodes[k]] +=
             0.5f * m_.material.volume_stiffness * m_.element_force_scale[e] * glm::length(gradient[k]) * total;
     }
-    // Mass scaling: a node whose units are so stiff that it alone would
-    // need a shorter sub-step than six per 30 Hz frame is made
-    // heavier until it does not (statics are unchanged; only the fastest,
-    // invisible vibrations slow down). PBD keeps the plain masses.
-    constexpr float kDesignSubstepS = 1.0f / 180.0f;
-    const float omega_design = 1.8f / (1.02f * kDesignSubstepS);  // a margin against rounding
-    m_.explicit_inverse_mass.assign(m_.moving_node_count, 0.0f);
-    double total_mass = 0.0, plain_mass = 0.0;
+    // The true bound of the plain masses: no node is made heavier to buy a
+    // longer sub-step (mass scaling would change the dynamics the face shows
+    // and hide a too-stiff material), so the solver takes as many sub-steps
+    // as the stiffest node needs.
     float worst = 0.0f;
-    for (std::size_t i = 0; i < m_.moving_node_count; ++i) {
-      if (m_.inverse_mass[i] == 0.0f) continue;
-      const float mass = std::max(m_.material.node_mass, 2.0f * sum[i] / (omega_design * omega_design));
-      m_.explicit_inverse_mass[i] = 1.0f / mass;
-      worst = std::max(worst, sum[i] / mass);
-      total_mass += mass;
-      plain_mass += m_.material.node_mass;
-    }
-    m_.added_mass_share = plain_mass > 0.0 ? static_cast<float>(total_mass / plain_mass - 1.0) : 0.0f;
+    for (std::size_t i = 0; i < m_.moving_node_count; ++i)
+      if (m_.inverse_mass[i] != 0.0f) worst = std::max(worst, sum[i] * m_.inverse_mass[i]);
     m_.stable_substep_s = 1.8f / std::sqrt(2.0f * worst);
   }
 
@@ -460,7 +449,8 @@ TissueMaterial TissueMaterial::normal() {
   };
   // Slopes chosen so that the tissue over the bone has its slowest modes
   // near 5 Hz (expressions take 50-300 ms to appear) and the fastest below
-  // what four sub-steps per 30 Hz frame integrate stably.
+  // what seven explicit sub-steps per 30 Hz frame integrate stably (1/188 s
+  // on the generic face, the plain masses' Gershgorin bound).
   set(SpringKind::epidermis, 375.0f, 0.15f, 1.0f);
   set(SpringKind::dermis, 300.0f, 0.15f, 1.0f);
   set(SpringKind::fat, 100.0f, 0.3f, 1.0f);
@@ -471,7 +461,10 @@ TissueMaterial TissueMaterial::normal() {
   set(SpringKind::shear_muscle, 700.0f, 0.4f, 1.0f);
   set(SpringKind::bending, 40.0f, 0.2f, 0.5f);
   m.volume_stiffness = 1500.0f;
-  m.node_damping = 30.0f;
+  // Damps the 5 Hz modes at about half of critical (30 / (2 x 2 pi 5)), so
+  // an expression settles without ringing; on relative speeds, so it takes
+  // nothing from tissue that moves with its bone.
+  m.bone_damping = 30.0f;
   m.node_mass = 1.0f;
   m.thickness_mm = 12.0f;
   return m;
@@ -492,10 +485,11 @@ TissueMaterial TissueMaterial::loose() {
 std::size_t TissueModel::memory_bytes() const {
   auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
   return sizeof(*this) + bytes(rest_x) + bytes(rest_y) + bytes(rest_z) + bytes(skull_normal) +
-         bytes(column_thickness) + bytes(column_on_bone) + bytes(jaw_share) + bytes(jaw_columns) + bytes(inverse_mass) + bytes(explicit_inverse_mass) + bytes(pinned_nodes) + bytes(spring_a) + bytes(spring_b) +
+         bytes(column_thickness) + bytes(column_on_bone) + bytes(jaw_share) + bytes(jaw_columns) + bytes(inverse_mass) + bytes(pinned_nodes) + bytes(spring_a) + bytes(spring_b) +
          bytes(spring_rest) + bytes(spring_kind) + 6 * bytes(element_node[0]) + bytes(element_rest_volume) +
          bytes(element_force_scale) + bytes(skin_triangles) + bytes(skin_rest_area) + bytes(muscles) +
-         bytes(attach_node) + bytes(attach_weight) + bytes(attach_column) + basis.memory_bytes();
+         bytes(attach_node) + bytes(attach_weight) + bytes(attach_column) + muscle_particles.memory_bytes() +
+         basis.memory_bytes();
 }
 
 std::shared_ptr<const TissueModel> build_tissue_model(
@@ -504,6 +498,7 @@ std::shared_ptr<const TissueModel> build_tissue_model(
   assert(face.skin.positions.size() * kTissueLayerCount < 65536 && "node indices are 16-bit");
   auto m = std::make_shared<TissueModel>();
   Builder(face, options, *m).build(basis);
+  m->muscle_particles = build_muscle_particles(*m);
   return m;
 }
 

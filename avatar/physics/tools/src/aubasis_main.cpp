@@ -64,9 +64,8 @@ void print_muscle_table(const fw::model::GenericFace& face) {
     std::printf("%-38s %5u  %6.2f  (%.3f, %.3f, %.3f)\n", fw::physics::muscle_name(i).c_str(), m.last - m.first,
                 weight, m.origin.x, m.origin.y, m.origin.z);
   }
-  std::printf("nodes %u, springs %zu, elements %zu, stable sub-step %.4f s (mass scaling adds %.0f %%)\n",
-              tissue->node_count, tissue->spring_count(), tissue->element_count(), tissue->stable_substep_s,
-              100.0 * tissue->added_mass_share);
+  std::printf("nodes %u, springs %zu, elements %zu, stable mass-spring sub-step %.5f s\n", tissue->node_count,
+              tissue->spring_count(), tissue->element_count(), tissue->stable_substep_s);
 }
 
 }  // namespace

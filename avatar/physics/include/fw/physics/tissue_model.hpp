@@ -24,6 +24,7 @@
 #include "fw/model/generic_face.hpp"
 #include "fw/physics/au_projection.hpp"
 #include "fw/physics/facial_muscles.hpp"
+#include "fw/physics/muscle_particles.hpp"
 #include "fw/physics/projective_system_cache.hpp"
 #include "fw/physics/stress_strain.hpp"
 
@@ -52,7 +53,10 @@ struct TissueMaterial {
   std::array<StressStrainCurve, kSpringKindCount> curves{};
   std::array<float, kSpringKindCount> damping{};  ///< force per unit of stretching speed
   float volume_stiffness = 0;   ///< force per model unit of thickness lost or gained
-  float node_damping = 0;       ///< 1/s, the surrounding medium's drag
+  /// 1/s per node mass: each moving node's viscous bond to the bone of its
+  /// column, on their relative speed (the mass-spring solver's damping
+  /// beside the units' own; not a drag of the world frame).
+  float bone_damping = 0;
   float node_mass = 1;
   float thickness_mm = 12;      ///< skin surface to bone, where the face allows
   /// Normal adult skin (the paper's Fig. 2a).
@@ -107,11 +111,6 @@ struct TissueModel {
   /// held to the bone (and the jaw) instead of left as a free edge.
   std::vector<float> inverse_mass;
   std::vector<std::uint16_t> pinned_nodes;
-  /// The mass-spring solver's inverse masses: inverse_mass, with the
-  /// stiffest nodes made heavier so that the stable sub-step is at least
-  /// 1/180 s (mass scaling); added_mass_share is how much mass that adds.
-  std::vector<float> explicit_inverse_mass;
-  float added_mass_share = 0;
 
   std::vector<std::uint16_t> spring_a, spring_b;  ///< node indices
   std::vector<float> spring_rest;                 ///< rest length, model units
@@ -135,13 +134,15 @@ struct TissueModel {
   std::vector<std::uint16_t> attach_node;
   std::vector<float> attach_weight;
   std::vector<std::uint16_t> attach_column;   ///< the attached node's column (skin vertex)
+  /// The muscles as particles along their action lines, for the XPBD solver.
+  MuscleParticles muscle_particles;
 
   /// The AU basis the surface is measured against: kAuChannelCount rows of
   /// 3 #V values (x, y, z per vertex), model units at intensity 1.
   AuBasis basis;
 
   /// Longest explicit sub-step that the stiffest node allows (a Gershgorin
-  /// bound on the mass-scaled stiffness matrix), seconds.
+  /// bound on the stiffness matrix over the plain masses), seconds.
   float stable_substep_s = 0;
 
   /// The projective-dynamics solver's factorisations, made when a face of
