@@ -76,6 +76,7 @@ class ServerCore {
   const std::vector<StoredAvatar>& own_faces() const { return own_faces_; }
   ServerState& state() { return state_; }
   boost::asio::thread_pool& workers() { return workers_; }
+  FaceStepper& face_stepper() { return face_stepper_; }
   SpeechWorker& speech() { return speech_; }
   /// The bus every room holds (room_bus_relay.hpp): a cluster node attaches itself to it.
   RoomBusRelay& room_bus() { return bus_; }
@@ -103,6 +104,7 @@ class ServerCore {
   const std::vector<StoredAvatar> own_faces_;
   ServerState state_;
   boost::asio::thread_pool workers_;  ///< room ticks, encoding
+  FaceStepper face_stepper_;          ///< the rooms' physics faces, stepped together on workers_
   SpeechWorker speech_;               ///< chat lines' lip-sync tracks (speech_worker.hpp)
   RoomBusRelay bus_;
   SessionRegistry sessions_;

@@ -29,7 +29,8 @@ RoomServices with_bus(const RoomServices& services, RoomBus& bus) {
                       .procedural_faces = services.procedural_faces,
                       .bus = bus,
                       .draining = services.draining,
-                      .speech = services.speech};
+                      .speech = services.speech,
+                      .face_stepper = services.face_stepper};
 }
 
 RoomShareLimits room_shares_of(const ServerConfig& config) {

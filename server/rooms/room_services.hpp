@@ -10,6 +10,7 @@
 
 #include "abuse_log.hpp"
 #include "avatar_store.hpp"
+#include "face_stepper.hpp"
 #include "metrics.hpp"
 #include "physics_governor.hpp"
 #include "room_bus.hpp"
@@ -30,6 +31,7 @@ struct RoomServices {
   RoomBus& bus;                  ///< the other nodes (LocalRoomBus alone)
   const std::atomic<bool>& draining;  ///< SIGTERM: no new joins
   SpeechWorker& speech;          ///< makes chat lines' lip-sync tracks off the rooms' strands
+  FaceStepper& face_stepper;     ///< steps the physics faces of the rooms' ticks together on `workers`
 };
 
 }  // namespace fw::server

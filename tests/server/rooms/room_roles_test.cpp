@@ -135,7 +135,7 @@ class RoomsOver {
   explicit RoomsOver(RoomBus& bus)
       : services_{core().config(), core().metrics(),      core().physics_lod(), core().abuse(),
                   core().workers(), core().store(), core().demo_avatars(), bus, core().state().draining,
-                  core().speech()},
+                  core().speech(), core().face_stepper()},
         registry_(services_, core().addresses()) {}
   ~RoomsOver() {
     // The rooms hold the registry and the bus: they go first.
