@@ -1,7 +1,5 @@
 #include "server_core.hpp"
 
-#include <boost/asio/post.hpp>
-
 #include "demo_room.hpp"
 #include "server_keys.hpp"
 
@@ -49,8 +47,7 @@ ServerCore::ServerCore(const ServerConfig& config, std::unique_ptr<Metrics> metr
       residents_(std::move(residents)),
       own_faces_(both(demo_avatars_, residents_)),
       workers_(static_cast<std::size_t>(config_.workers)),
-      face_stepper_([this](std::function<void()> job) { boost::asio::post(workers_, std::move(job)); },
-                    [this](double seconds) { physics_lod_.observe_physics_work(seconds); }),
+      face_stepper_([this](double seconds) { physics_lod_.observe_physics_work(seconds); }),
       speech_(static_cast<std::size_t>(config_.speech_threads), config_.speech_queue),
       rooms_(RoomServices{config_, *metrics_, physics_lod_, abuse_, workers_, *store_, demo_avatars_, bus_,
                           state_.draining, speech_, face_stepper_},

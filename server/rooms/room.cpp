@@ -1,5 +1,6 @@
 #include "room.hpp"
 
+#include <boost/asio/dispatch.hpp>
 #include <boost/asio/post.hpp>
 
 #include "bridged_room.hpp"
@@ -237,8 +238,10 @@ void Room::run_tick() {
   ticking_ = true;
   RoomSimulation::TickFaces faces = role_->begin_tick(next_tick_);
   if (faces.faces.empty()) return end_tick();
+  // Dispatched: when this worker stepped the faces itself (FaceStepper), the
+  // tick ends at once, still on the strand; else it is queued there.
   services_.face_stepper.step(std::move(faces.faces), faces.dt_s, [self = shared_from_this()] {
-    net::post(self->strand_, [self] { self->end_tick(); });
+    net::dispatch(self->strand_, [self] { self->end_tick(); });
   });
 }
 

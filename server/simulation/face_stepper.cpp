@@ -6,11 +6,11 @@
 
 #include "fw/physics/face_pool.hpp"
 #include "fw/physics/face_simulation.hpp"
+#include "fw/physics/tissue_model.hpp"
 
 namespace fw::server {
 
-FaceStepper::FaceStepper(Post post, std::function<void(double seconds)> stepped)
-    : post_(std::move(post)), stepped_(std::move(stepped)) {}
+FaceStepper::FaceStepper(std::function<void(double seconds)> stepped) : stepped_(std::move(stepped)) {}
 
 void FaceStepper::step(std::vector<physics::FaceSimulation*> faces, double dt_s, std::function<void()> done) {
   if (faces.empty()) return done();
@@ -19,58 +19,45 @@ void FaceStepper::step(std::vector<physics::FaceSimulation*> faces, double dt_s,
   hand_over->faces = std::move(faces);
   hand_over->dt_s = dt_s;
   hand_over->done = std::move(done);
-  bool post_flush = false;
-  {
-    const std::lock_guard lock(mutex_);
-    waiting_.push_back(std::move(hand_over));
-    post_flush = !std::exchange(flush_posted_, true);
+  std::unique_lock lock(mutex_);
+  for (physics::FaceSimulation* face : hand_over->faces) waiting_.push_back({face, hand_over});
+  // This worker steps while nobody else does, or while a full batch waits
+  // (then the workers share the tissue's work).
+  while (!waiting_.empty() && (stepping_ == 0 || waiting_.size() >= physics::max_batch_faces())) {
+    ++stepping_;
+    const std::vector<Entry> batch = take_batch();
+    lock.unlock();
+    const auto finished = run_batch(batch);
+    for (const auto& done_with : finished) done_with->done();
+    lock.lock();
+    --stepping_;
   }
-  // Posted behind what the pool already holds: the ticks of the rooms due
-  // about now run first and hand their faces over too.
-  if (post_flush) post_([this] { flush(); });
 }
 
-void FaceStepper::flush() {
-  std::vector<std::shared_ptr<HandOver>> taken;
-  {
-    const std::lock_guard lock(mutex_);
-    taken.swap(waiting_);
-    flush_posted_ = false;
+std::vector<FaceStepper::Entry> FaceStepper::take_batch() {
+  // The oldest waiting face leads; the faces of its model and step length
+  // behind it join, up to what one solve takes.
+  std::vector<Entry> batch;
+  const physics::TissueModel* model = &waiting_.front().face->model();
+  const double dt_s = waiting_.front().from->dt_s;
+  for (auto it = waiting_.begin(); it != waiting_.end() && batch.size() < physics::max_batch_faces();) {
+    if (&it->face->model() == model && it->from->dt_s == dt_s) {
+      batch.push_back(std::move(*it));
+      it = waiting_.erase(it);
+    } else {
+      ++it;
+    }
   }
-  std::vector<Entry> entries;
-  for (const auto& hand_over : taken)
-    for (physics::FaceSimulation* face : hand_over->faces) entries.push_back({face, hand_over});
-  // Faces of one step length and one model side by side (hand-over order
-  // kept within them), then cut into batches of what one solve takes.
-  std::stable_sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
-    if (a.from->dt_s != b.from->dt_s) return a.from->dt_s < b.from->dt_s;
-    return &a.face->model() < &b.face->model();
-  });
-  std::vector<std::vector<Entry>> batches;
-  for (std::size_t begin = 0; begin < entries.size();) {
-    std::size_t end = begin + 1;
-    while (end < entries.size() && end - begin < physics::max_batch_faces() &&
-           entries[end].from->dt_s == entries[begin].from->dt_s &&
-           &entries[end].face->model() == &entries[begin].face->model())
-      ++end;
-    batches.emplace_back(entries.begin() + static_cast<std::ptrdiff_t>(begin),
-                         entries.begin() + static_cast<std::ptrdiff_t>(end));
-    begin = end;
-  }
-  faces_.fetch_add(entries.size(), std::memory_order_relaxed);
-  batches_.fetch_add(batches.size(), std::memory_order_relaxed);
-  // Every batch but the last to the pool, so that the other workers take
-  // some; the last on this thread, which is one of them.
-  for (std::size_t b = 0; b + 1 < batches.size(); ++b)
-    post_([this, batch = std::move(batches[b])] { run_batch(batch); });
-  if (!batches.empty()) run_batch(batches.back());
+  faces_.fetch_add(batch.size(), std::memory_order_relaxed);
+  batches_.fetch_add(1, std::memory_order_relaxed);
+  return batch;
 }
 
 void FaceStepper::step_here(const std::vector<physics::FaceSimulation*>& faces, double dt_s) {
   physics::step_together(faces, dt_s);
 }
 
-void FaceStepper::run_batch(const std::vector<Entry>& batch) {
+std::vector<std::shared_ptr<FaceStepper::HandOver>> FaceStepper::run_batch(const std::vector<Entry>& batch) {
   std::vector<physics::FaceSimulation*> faces;
   faces.reserve(batch.size());
   for (const Entry& entry : batch) faces.push_back(entry.face);
@@ -78,8 +65,10 @@ void FaceStepper::run_batch(const std::vector<Entry>& batch) {
   physics::step_together(faces, batch.front().from->dt_s);
   if (stepped_) stepped_(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   // A hand-over is done with its last face, whichever batch stepped it.
+  std::vector<std::shared_ptr<HandOver>> finished;
   for (const Entry& entry : batch)
-    if (entry.from->left.fetch_sub(1, std::memory_order_acq_rel) == 1) entry.from->done();
+    if (entry.from->left.fetch_sub(1, std::memory_order_acq_rel) == 1) finished.push_back(entry.from);
+  return finished;
 }
 
 }  // namespace fw::server
