@@ -507,7 +507,6 @@ void RoomSimulation::tick() {
 RoomSimulation::TickFaces RoomSimulation::begin_tick() {
   State& s = *state_;
   assert(!s.mid_tick);
-  s.mid_tick = true;
   say_waiting_lines();
   s.room.tick();
   s.physics_faces = s.kinematic_faces = 0;
@@ -544,6 +543,9 @@ RoomSimulation::TickFaces RoomSimulation::begin_tick() {
     if (a.phase.stepped) out.faces.push_back(a.physics.simulation.get());
     ++(a.phase.allowed ? s.physics_faces : s.kinematic_faces);
   }
+  // From here to finish_tick a line whose track comes back waits (a line
+  // made at once above starts in this tick's frame).
+  s.mid_tick = true;
   return out;
 }
 
