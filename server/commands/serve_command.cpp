@@ -1,7 +1,7 @@
 #include "serve_command.hpp"
 
+#include <algorithm>
 #include <cctype>
-
 #include <cstdlib>
 #include <memory>
 #include <string>
@@ -159,10 +159,17 @@ void add_cluster_flags(CLI::App& cmd, ServerConfig& config) {
 }
 
 /// A rate flag in events a minute (or an hour), kept as a token bucket's
-/// rate a second; the burst stays the default's.
+/// rate a second; the burst stays the default's, or one second of the rate
+/// when that is more: events that come together (a thousand clients of one
+/// address joining within a few seconds, their hellos read in bunches while
+/// the server is busy) could never use a rate above its burst a second.
 void add_rate_flag(CLI::App& cmd, const std::string& flag, BucketRate& rate, double per, const std::string& what) {
   cmd.add_option_function<double>(
-         flag, [&rate, per](double n) { rate.per_second = n / per; },
+         flag,
+         [&rate, per, default_burst = rate.burst](double n) {
+           rate.per_second = n / per;
+           rate.burst = std::max(default_burst, rate.per_second);
+         },
          what + " (default " + std::to_string(static_cast<int>(rate.per_second * per + 0.5)) + ", burst " +
              std::to_string(static_cast<int>(rate.burst)) + ")")
       ->check(CLI::Range(0.01, 1e7));

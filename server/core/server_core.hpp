@@ -77,6 +77,7 @@ class ServerCore {
   ServerState& state() { return state_; }
   boost::asio::thread_pool& workers() { return workers_; }
   FaceModels& face_models() { return face_models_; }
+  FaceStepper& face_stepper() { return face_stepper_; }
   SpeechWorker& speech() { return speech_; }
   /// The bus every room holds (room_bus_relay.hpp): a cluster node attaches itself to it.
   RoomBusRelay& room_bus() { return bus_; }
@@ -107,6 +108,7 @@ class ServerCore {
   /// the workers, which build into it until they are joined.
   FaceModels face_models_;
   boost::asio::thread_pool workers_;  ///< room ticks, encoding
+  FaceStepper face_stepper_;          ///< the rooms' physics faces, stepped together on workers_
   SpeechWorker speech_;               ///< chat lines' lip-sync tracks (speech_worker.hpp)
   RoomBusRelay bus_;
   SessionRegistry sessions_;

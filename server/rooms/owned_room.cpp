@@ -6,6 +6,7 @@
 #include <boost/asio/post.hpp>
 #include <spdlog/spdlog.h>
 
+#include "face_stepper.hpp"
 #include "monotonic_clock.hpp"
 #include "peer_address.hpp"
 #include "server_keys.hpp"
@@ -382,13 +383,26 @@ void OwnedRoom::send_preview_surface() {
 }
 
 void OwnedRoom::tick(std::chrono::steady_clock::time_point due) {
+  const RoomSimulation::TickFaces faces = begin_tick(due);
+  FaceStepper::step_here(faces.faces, faces.dt_s);
+  finish_tick();
+}
+
+RoomSimulation::TickFaces OwnedRoom::begin_tick(std::chrono::steady_clock::time_point due) {
   const auto start = std::chrono::steady_clock::now();
   const auto period = std::chrono::microseconds(1'000'000 / services_.config.tick_hz);
   // How late this tick starts tells the governor whether the pool keeps up;
   // its answer is how many of this room's faces run physics (level of detail).
   services_.physics_lod.observe_tick(due, start, period);
   simulation_.set_physics_share(services_.physics_lod.share());
-  simulation_.tick();
+  RoomSimulation::TickFaces faces = simulation_.begin_tick();
+  tick_work_ = std::chrono::steady_clock::now() - start;
+  return faces;
+}
+
+void OwnedRoom::finish_tick() {
+  const auto start = std::chrono::steady_clock::now();
+  simulation_.finish_tick();
   const std::size_t kinematic = simulation_.kinematic_faces();
   services_.metrics.kinematic_faces.fetch_add(static_cast<std::int64_t>(kinematic) -
                                               static_cast<std::int64_t>(counts_.kinematic_faces));
@@ -420,7 +434,10 @@ void OwnedRoom::tick(std::chrono::steady_clock::time_point due) {
     let_away_go();
     room_.close_if_unpeopled();
   }
-  services_.metrics.observe_tick(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  // The room's own work, both halves, not the wait for its faces' step.
+  tick_work_ += std::chrono::steady_clock::now() - start;
+  services_.metrics.observe_tick(std::chrono::duration<double>(tick_work_).count());
+  services_.physics_lod.observe_room_work(std::chrono::duration<double>(tick_work_).count());
 }
 
 }  // namespace fw::server

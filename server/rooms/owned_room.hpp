@@ -46,7 +46,10 @@ class OwnedRoom : public RoomRole {
   void resync(std::uint32_t avatar, const std::vector<std::uint32_t>& avatars) override;
   void set_rate(std::uint32_t avatar, std::uint32_t bps) override;
   void replace_deleted_avatar(const std::string& asset) override;
+  /// begin_tick, the faces stepped here, finish_tick.
   void tick(std::chrono::steady_clock::time_point due) override;
+  RoomSimulation::TickFaces begin_tick(std::chrono::steady_clock::time_point due) override;
+  void finish_tick() override;
   bool unpeopled() const override { return counts_.persons.load() == 0; }
   void close() override;
   RoomHandover hand_over() override;
@@ -128,7 +131,9 @@ class OwnedRoom : public RoomRole {
   std::uint64_t next_order_ = 1;
   TokenBucket chat_rate_;  ///< chat lines into this room, from everyone (AbuseLimits::room_chat)
   TokenBucket join_rate_;  ///< joins into this room, from everyone (AbuseLimits::room_joins)
-  std::uint32_t ticks_since_check_ = 0;  ///< for close_if_unpeopled once a second
+  std::uint32_t ticks_since_check_ = 0;
+  /// The work of the tick under way so far (its first half), for Metrics::observe_tick.
+  std::chrono::steady_clock::duration tick_work_{};  ///< for close_if_unpeopled once a second
   /// A preview's surface residual last sent to its page, per avatar (none: empty).
   std::map<std::uint32_t, std::vector<codec::UnitMorphs::Move>> preview_surface_sent_;
   /// The residual changes with every tick while the face moves: ten a

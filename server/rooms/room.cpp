@@ -1,5 +1,6 @@
 #include "room.hpp"
 
+#include <boost/asio/dispatch.hpp>
 #include <boost/asio/post.hpp>
 
 #include "bridged_room.hpp"
@@ -11,6 +12,18 @@ namespace fw::server {
 namespace net = boost::asio;
 
 namespace {
+
+// Ticks start on a grid of kTickPhases a period, shared by every room: the
+// rooms of one phase tick together and hand their faces to the stepper
+// together (fuller batches), while the phases spread the rooms' work over
+// the period. The first point of the grid at or after `t`.
+constexpr int kTickPhases = 8;
+std::chrono::steady_clock::time_point on_phase_grid(std::chrono::steady_clock::time_point t,
+                                                    std::chrono::microseconds period) {
+  const std::chrono::nanoseconds phase = period / kTickPhases;
+  const std::chrono::nanoseconds since = t.time_since_epoch();
+  return std::chrono::steady_clock::time_point((since + phase - std::chrono::nanoseconds(1)) / phase * phase);
+}
 
 RoomSimulationOptions simulation_options(const ServerConfig& config, std::uint64_t seed,
                                          std::shared_ptr<TrackMaker> track_maker, bool preview) {
@@ -53,8 +66,18 @@ Room::~Room() {
 }
 
 template <class Work>
+void Room::on_strand(Work work) {
+  // Shared, so that a request held while a tick's faces are out can wait
+  // in a std::function whatever it captured.
+  net::post(strand_, [self = shared_from_this(), work = std::make_shared<Work>(std::move(work))] {
+    if (self->ticking_) self->held_.push_back([work] { (*work)(); });
+    else (*work)();
+  });
+}
+
+template <class Work>
 void Room::post_open(Work work) {
-  net::post(strand_, [self = shared_from_this(), work = std::move(work)]() mutable {
+  on_strand([self = shared_from_this(), work = std::move(work)]() mutable {
     if (!self->closed_) work(*self->role_);
   });
 }
@@ -63,13 +86,13 @@ void Room::start() {
   // Tracks handed back after the room is gone are dropped (speech_worker.hpp).
   track_maker_->bind(weak_from_this());
   net::post(strand_, [self = shared_from_this()] {
-    self->next_tick_ = std::chrono::steady_clock::now();
+    self->next_tick_ = on_phase_grid(std::chrono::steady_clock::now(), self->tick_period());
     self->schedule_tick();
   });
 }
 
 void Room::close() {
-  net::post(strand_, [self = shared_from_this()] {
+  on_strand([self = shared_from_this()] {
     self->closed_ = true;
     self->timer_.cancel();
     self->role_->close();
@@ -79,7 +102,7 @@ void Room::close() {
 bool Room::unpeopled() const { return role_->unpeopled(); }
 
 void Room::then(std::function<void()> done) {
-  net::post(strand_, [self = shared_from_this(), done = std::move(done)] { done(); });
+  on_strand([done = std::move(done)] { done(); });
 }
 
 void Room::wear_face(std::uint32_t avatar, std::string version, std::shared_ptr<const FaceModel> face) {
@@ -90,7 +113,7 @@ void Room::wear_face(std::uint32_t avatar, std::string version, std::shared_ptr<
 
 void Room::join(JoinRequest request) {
   counts_.pending_joins.fetch_add(1);
-  net::post(strand_, [self = shared_from_this(), request = std::move(request)]() mutable {
+  on_strand([self = shared_from_this(), request = std::move(request)]() mutable {
     self->do_join(std::move(request));
   });
 }
@@ -164,8 +187,8 @@ void Room::ask_roster() {
 
 void Room::take_over(std::vector<bridge::MemberRecord> members, std::optional<bridge::RoomState> state,
                      std::set<std::string> live_nodes) {
-  net::post(strand_, [self = shared_from_this(), members = std::move(members), state = std::move(state),
-                      live_nodes = std::move(live_nodes)]() mutable {
+  on_strand([self = shared_from_this(), members = std::move(members), state = std::move(state),
+             live_nodes = std::move(live_nodes)]() mutable {
     if (self->closed_) return;
     RoomHandover handover = self->role_->hand_over();
     auto owner = std::make_unique<OwnedRoom>(*self);
@@ -182,7 +205,7 @@ void Room::take_over(std::vector<bridge::MemberRecord> members, std::optional<br
 }
 
 void Room::step_down() {
-  net::post(strand_, [self = shared_from_this()] {
+  on_strand([self = shared_from_this()] {
     if (self->closed_ || self->kind_ != RoomRoleKind::owner) return;
     self->role_->step_down();
     self->role_ = std::make_unique<BridgedRoom>(*self);
@@ -208,14 +231,32 @@ void Room::schedule_tick() {
     // More than a tick behind (an overloaded pool): keep the pace from now
     // instead of running a burst of ticks to catch up.
     services_.metrics.late_ticks.fetch_add(1, std::memory_order_relaxed);
-    next_tick_ = now;
+    next_tick_ = on_phase_grid(now, period);
   }
   timer_.expires_at(next_tick_);
   timer_.async_wait([self = shared_from_this()](const boost::system::error_code& ec) {
     if (ec || self->closed_) return;
-    self->role_->tick(self->next_tick_);
-    self->schedule_tick();
+    self->run_tick();
   });
+}
+
+void Room::run_tick() {
+  ticking_ = true;
+  RoomSimulation::TickFaces faces = role_->begin_tick(next_tick_);
+  if (faces.faces.empty()) return end_tick();
+  // Dispatched: when this worker stepped the faces itself (FaceStepper), the
+  // tick ends at once, still on the strand; else it is queued there.
+  services_.face_stepper.step(std::move(faces.faces), faces.dt_s, [self = shared_from_this()] {
+    net::dispatch(self->strand_, [self] { self->end_tick(); });
+  });
+}
+
+void Room::end_tick() {
+  role_->finish_tick();
+  ticking_ = false;
+  // What came meanwhile, in the order it came (a close among it stops the ticks).
+  for (auto& work : std::exchange(held_, {})) work();
+  if (!closed_) schedule_tick();
 }
 
 }  // namespace fw::server

@@ -127,11 +127,19 @@ class Room : public std::enable_shared_from_this<Room> {
   /// The room emptied and closed while this hello was on its way: the
   /// joiner is seated in its successor.
   void join_successor(JoinRequest request);
-  /// Runs `work` on the strand while the room is open.
+  /// Runs `work` on the strand, after the tick under way if its faces are
+  /// out on the worker pool (held_).
+  template <class Work>
+  void on_strand(Work work);
+  /// Runs `work` on the strand while the room is open (after the tick under way).
   template <class Work>
   void post_open(Work work);
   std::chrono::microseconds tick_period() const;
   void schedule_tick();
+  /// A tick: the role's first half, its faces stepped with the other rooms'
+  /// (FaceStepper), then end_tick on the strand.
+  void run_tick();
+  void end_tick();
 
   RoomServices services_;
   RoomRegistry& registry_;
@@ -149,6 +157,11 @@ class Room : public std::enable_shared_from_this<Room> {
   std::atomic<RoomRoleKind> kind_;
   std::chrono::steady_clock::time_point next_tick_;
   bool closed_ = false;
+  /// A tick's faces are out on the worker pool (FaceStepper): the role and
+  /// the simulation are the stepper's to finish first, so what comes to
+  /// the strand meanwhile waits in held_, in order, until end_tick.
+  bool ticking_ = false;
+  std::vector<std::function<void()>> held_;
 };
 
 }  // namespace fw::server

@@ -30,6 +30,7 @@ RoomServices with_bus(const RoomServices& services, RoomBus& bus) {
                       .bus = bus,
                       .draining = services.draining,
                       .speech = services.speech,
+                      .face_stepper = services.face_stepper,
                       .face_models = services.face_models};
 }
 

@@ -21,6 +21,7 @@
 #include "room_bus.hpp"
 #include "room_members.hpp"
 #include "room_services.hpp"
+#include "room_simulation.hpp"
 
 namespace fw::server {
 
@@ -49,6 +50,16 @@ class RoomRole {
   virtual void replace_deleted_avatar(const std::string& asset) = 0;
   /// One tick of the room's timer, due at `due`.
   virtual void tick(std::chrono::steady_clock::time_point due) = 0;
+  /// A tick in two halves around its faces' step, for the role that
+  /// simulates the room: begin_tick hands out the faces whose tissue needs
+  /// stepping (Room steps them with the other rooms', face_stepper.hpp),
+  /// finish_tick runs on the strand once they are stepped. A role that
+  /// simulates nothing ticks at once and hands out none.
+  virtual RoomSimulation::TickFaces begin_tick(std::chrono::steady_clock::time_point due) {
+    tick(due);
+    return {};
+  }
+  virtual void finish_tick() {}
   /// Nobody keeps the room open here.
   virtual bool unpeopled() const = 0;
   /// Joins wait for an answer from elsewhere: the room stays open for them.

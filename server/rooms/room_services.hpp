@@ -11,6 +11,7 @@
 #include "abuse_log.hpp"
 #include "avatar_store.hpp"
 #include "face_models.hpp"
+#include "face_stepper.hpp"
 #include "metrics.hpp"
 #include "physics_governor.hpp"
 #include "room_bus.hpp"
@@ -31,6 +32,7 @@ struct RoomServices {
   RoomBus& bus;                  ///< the other nodes (LocalRoomBus alone)
   const std::atomic<bool>& draining;  ///< SIGTERM: no new joins
   SpeechWorker& speech;          ///< makes chat lines' lip-sync tracks off the rooms' strands
+  FaceStepper& face_stepper;     ///< steps the physics faces of the rooms' ticks together on `workers`
   /// Every avatar's own face, built once per package version on `workers`
   /// (face_models.hpp); null: every avatar simulates the generic face.
   FaceModels* face_models = nullptr;

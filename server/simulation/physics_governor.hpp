@@ -8,6 +8,15 @@
 // as congestion control does. Faces beyond the share follow their targets
 // kinematically (RoomSimulation::set_physics_share).
 //
+// Shedding physics only helps while physics is what fills the pool: the
+// rooms' other work (encoders for every subscriber, fan-out) and other
+// processes on the cores make ticks late too, and shedding every face then
+// would cost the whole physics face for nothing. So the governor also
+// weighs what the rooms' ticks cost (observe_work: their own work, and
+// their faces' tissue step on the pool, FaceStepper) and backs off only in
+// a window where the tissue took at least kPhysicsPartToShed of it; while
+// ticks are late and the tissue takes less, the share holds.
+//
 // Thread-safe: every room's strand reports, anyone reads.
 #include <atomic>
 #include <chrono>
@@ -29,6 +38,11 @@ class PhysicsGovernor {
   /// A room tick due at `due` started at `started`; `period` is the tick
   /// period. A tick more than half a period late counts as late.
   void observe_tick(Clock::time_point due, Clock::time_point started, Clock::duration period);
+  /// Seconds of work of the rooms' ticks besides their faces' tissue
+  /// (behaviour, measure, encoders), and seconds of the tissue's steps.
+  /// Without any, every late window backs off.
+  void observe_room_work(double seconds);
+  void observe_physics_work(double seconds);
 
   /// Share of faces that may run physics now, 0 .. 1.
   double share() const { return share_.load(std::memory_order_relaxed); }
@@ -36,6 +50,10 @@ class PhysicsGovernor {
   static constexpr double kLateFraction = 0.05;  ///< over this share of late ticks in a window: back off
   static constexpr double kBackOff = 0.7;
   static constexpr double kRecovery = 0.05;
+  /// A late window backs off only if the tissue took this share of the
+  /// rooms' work or more: a third, so that shedding it all could win back
+  /// a third of the work, a tick of 33 ms late by 11.
+  static constexpr double kPhysicsPartToShed = 1.0 / 3.0;
 
  private:
   std::atomic<double> share_{1.0};
@@ -45,6 +63,7 @@ class PhysicsGovernor {
   Clock::time_point window_start_{};
   std::uint64_t ticks_ = 0;
   std::uint64_t late_ = 0;
+  double room_seconds_ = 0, physics_seconds_ = 0;  ///< in the window
 };
 
 }  // namespace fw::server

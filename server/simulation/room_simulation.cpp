@@ -16,6 +16,7 @@
 #include "spoken_lines.hpp"
 #include "fw/model/generic_face.hpp"
 #include "fw/physics/avatar_tissue.hpp"
+#include "fw/physics/face_pool.hpp"
 #include "fw/physics/face_simulation.hpp"
 #include "fw/physics/muscle_variation.hpp"
 #include "fw/physics/tissue_model.hpp"
@@ -146,20 +147,33 @@ physics::FaceSimulation& simulation_of(PhysicsFace& face, std::uint64_t seed) {
   return *face.simulation;
 }
 
-AuTargets step_physics(PhysicsFace& face, const AuTargets& targets, double dt_s, std::uint64_t seed, bool sleeps,
-                       const RedefinedUnits& units) {
+// A face's tick comes in two halves around the tissue's step, so that a
+// server may step the faces of many rooms together (RoomSimulation::begin_tick).
+//
+// The first half: the kinematic track follows the targets, and a face on
+// physics takes them as muscle targets (a redefined unit through its own
+// track). Returns whether its tissue needs a step.
+bool prepare_step(PhysicsFace& face, const AuTargets& targets, double dt_s, std::uint64_t seed, bool sleeps,
+                  bool physics_allowed, const RedefinedUnits& units) {
+  follow_kinematically(face, targets, dt_s);
+  if (!physics_allowed) return false;
   physics::FaceSimulation& sim = simulation_of(face, seed);
+  sim.set_action_units(units.any() ? units.physics_targets(targets) : targets);
+  return !sleeps || !sim.at_rest();
+}
+
+// The physics face's output after its step (`stepped`: it had one): its
+// measurement, or the last one while it sleeps.
+AuTargets measure_physics(PhysicsFace& face, const AuTargets& targets, bool sleeps, bool stepped,
+                          const RedefinedUnits& units) {
+  physics::FaceSimulation& sim = *face.simulation;
   if (units.any()) {
-    sim.set_action_units(units.physics_targets(targets));
-    if (!sleeps || !sim.at_rest()) sim.step(dt_s);
     units.measure(sim, face.kinematic, face.shown);
     face.corrective = {};
     face.resting = sleeps && sim.at_rest() && redefined_at_rest(face, targets, units);
     return face.shown;
   }
-  sim.set_action_units(targets);
-  if (!sleeps || !sim.at_rest()) {
-    sim.step(dt_s);
+  if (stepped) {
     const physics::FaceMeasurement m = sim.measure();
     face.shown = m.action_units;
     face.corrective = m.corrective;
@@ -168,21 +182,22 @@ AuTargets step_physics(PhysicsFace& face, const AuTargets& targets, double dt_s,
   return face.shown;
 }
 
-AuTargets step_physics_or_kinematic(PhysicsFace& face, const AuTargets& targets, double dt_s, std::uint64_t seed,
-                                    bool sleeps, bool physics_allowed, const RedefinedUnits& units,
-                                    Correctives& corrective);
+AuTargets physics_or_kinematic(PhysicsFace& face, const AuTargets& targets, double dt_s, bool sleeps,
+                               bool physics_allowed, bool stepped, const RedefinedUnits& units,
+                               Correctives& corrective);
 
-// One tick of a face's action units, and after it took its own face
-// (wear_face) what it showed going over to them in kOwnFaceBlendS: the
+// The second half of a face's action units, and after it took its own
+// face (wear_face) what it showed going over to them in kOwnFaceBlendS: the
 // same surface measured against other morphs gives other weights, and its
 // muscles, laid on its own landmarks, hold it a little elsewhere (a smile
 // on a face 10 % wider measures 0.2 to 0.4 less of AU 12); the tissue gets
 // there within a few hundred milliseconds, which a second of blending
 // spreads below a few hundredths of a unit a tick.
 // `corrective` takes the corrective weights, blended the same ways.
-AuTargets step_action_units(PhysicsFace& face, const AuTargets& targets, double dt_s, std::uint64_t seed, bool sleeps,
-                            bool physics_allowed, const RedefinedUnits& units, Correctives& corrective) {
-  AuTargets out = step_physics_or_kinematic(face, targets, dt_s, seed, sleeps, physics_allowed, units, corrective);
+AuTargets finish_action_units(PhysicsFace& face, const AuTargets& targets, double dt_s, bool sleeps,
+                              bool physics_allowed, bool stepped, const RedefinedUnits& units,
+                              Correctives& corrective) {
+  AuTargets out = physics_or_kinematic(face, targets, dt_s, sleeps, physics_allowed, stepped, units, corrective);
   if (face.own_blend < 1) {
     face.own_blend = std::min(1.0, face.own_blend + dt_s / RoomSimulation::kOwnFaceBlendS);
     const auto mix = [w = face.own_blend](float now, float before) { return static_cast<float>(w * now + (1.0 - w) * before); };
@@ -199,10 +214,9 @@ AuTargets step_action_units(PhysicsFace& face, const AuTargets& targets, double 
 // kinematic to physics. `corrective` takes the corrective weights: the
 // physics face's, blended like the AUs (a kinematic face has none, so they
 // fade in from 0).
-AuTargets step_physics_or_kinematic(PhysicsFace& face, const AuTargets& targets, double dt_s, std::uint64_t seed,
-                                    bool sleeps, bool physics_allowed, const RedefinedUnits& units,
-                                    Correctives& corrective) {
-  follow_kinematically(face, targets, dt_s);
+AuTargets physics_or_kinematic(PhysicsFace& face, const AuTargets& targets, double dt_s, bool sleeps,
+                               bool physics_allowed, bool stepped, const RedefinedUnits& units,
+                               Correctives& corrective) {
   corrective = {};
   if (!physics_allowed) {
     face.blend = 0;
@@ -214,7 +228,7 @@ AuTargets step_physics_or_kinematic(PhysicsFace& face, const AuTargets& targets,
       face.resting = face.resting && std::abs(targets[c] - face.kinematic[c]) < kKinematicRestGap;
     return face.kinematic;
   }
-  const AuTargets physical = step_physics(face, targets, dt_s, seed, sleeps, units);
+  const AuTargets physical = measure_physics(face, targets, sleeps, stepped, units);
   if (face.blend >= 1) {
     corrective = face.corrective;
     return physical;
@@ -285,6 +299,11 @@ struct RoomSimulation::State {
     /// speech and plateau motion), and the skin (age, looseness) its tissue
     /// model was built with.
     AuTargets measured{};
+    /// Between begin_tick and finish_tick: whether the face runs physics
+    /// this tick, may sleep, and was handed out for its tissue's step.
+    struct TickPhase {
+      bool allowed = false, sleeps = false, stepped = false;
+    } phase;
     std::pair<float, float> skin{0.0f, 0.0f};
     double skin_built_s = -1e9;  ///< room time its tissue model was last built
   };
@@ -307,6 +326,10 @@ struct RoomSimulation::State {
   /// pooled maker, after the room moved or closed) checks it first.
   std::shared_ptr<bool> alive = std::make_shared<bool>(true);
   double physics_share = 1;
+  bool mid_tick = false;  ///< begin_tick handed faces out; finish_tick not yet called
+  /// Lines whose tracks came back mid-tick: they start after finish_tick,
+  /// as if they had come just after the tick.
+  std::vector<std::pair<LineJob, LineToSay>> held_lines;
   std::size_t physics_faces = 0, kinematic_faces = 0;
   RedefinitionBudget redefinitions;  ///< the bytes of unit morphs its people may send everyone
 
@@ -553,7 +576,9 @@ void RoomSimulation::say_waiting_lines() {
     // where the simulation's state is checked to be there still (alive).
     const bool taken = s.track_maker->make(
         std::move(*job), [state = &s, alive = std::weak_ptr<bool>(s.alive)](LineJob made, LineToSay line) {
-          if (!alive.expired()) state->say_line(made, std::move(line));
+          if (alive.expired()) return;
+          if (state->mid_tick) state->held_lines.emplace_back(std::move(made), std::move(line));
+          else state->say_line(made, std::move(line));
         });
     if (taken) continue;
     s.lines.made(avatar, ticket);
@@ -567,11 +592,21 @@ bool RoomSimulation::speaking(AvatarId avatar) const {
 }
 
 void RoomSimulation::tick() {
+  TickFaces out = begin_tick();
+  // A room alone steps its own faces together (batched as the pool would).
+  physics::step_together(out.faces, out.dt_s);
+  finish_tick();
+}
+
+RoomSimulation::TickFaces RoomSimulation::begin_tick() {
   State& s = *state_;
+  assert(!s.mid_tick);
   say_waiting_lines();
   s.room.tick();
   s.physics_faces = s.kinematic_faces = 0;
   const double now_s = s.room.tick_index() * s.room.dt_s();
+  TickFaces out;
+  out.dt_s = s.room.dt_s();
   for (auto& [id, a] : s.avatars) {
     a.face = s.room.face(id);
     if (s.options.preview) {
@@ -586,27 +621,45 @@ void RoomSimulation::tick() {
       }
       apply_overrides(a.overrides, a.face, played ? &*played : nullptr, now_s < a.scripted_colour_until_s);
     }
+    a.phase = {};
+    if (!s.options.physics) continue;
+    const std::uint64_t seed = s.options.seed ^ id;
+    // A preview's page shows the physics face itself (its muscles, its
+    // skin): it keeps physics under load, and never sleeps while a
+    // muscle is driven from its page.
+    a.phase.allowed = s.options.preview || s.physics_share >= 1.0 || physics_rank(seed) < s.physics_share;
+    a.phase.sleeps = s.options.physics_sleeps;
+    if (s.options.preview) {
+      apply_physics_level(a.physics, simulation_of(a.physics, seed), a.overrides, a.skin, now_s, a.skin_built_s);
+      a.phase.sleeps = a.phase.sleeps && !a.overrides.any_muscle();
+    }
+    a.phase.stepped = prepare_step(a.physics, a.face.au, s.room.dt_s(), seed, a.phase.sleeps, a.phase.allowed, a.units);
+    if (a.phase.stepped) out.faces.push_back(a.physics.simulation.get());
+    ++(a.phase.allowed ? s.physics_faces : s.kinematic_faces);
+  }
+  // From here to finish_tick a line whose track comes back waits (a line
+  // made at once above starts in this tick's frame).
+  s.mid_tick = true;
+  return out;
+}
+
+void RoomSimulation::finish_tick() {
+  State& s = *state_;
+  assert(s.mid_tick);
+  s.mid_tick = false;
+  const double now_s = s.room.tick_index() * s.room.dt_s();
+  for (auto& [id, a] : s.avatars) {
     const std::uint64_t seed = s.options.seed ^ id;
     if (!s.options.physics) {
       a.physics.resting = true;  // no physics face to step
     } else {
-      // A preview's page shows the physics face itself (its muscles, its
-      // skin): it keeps physics under load, and never sleeps while a
-      // muscle is driven from its page.
-      const bool allowed = s.options.preview || s.physics_share >= 1.0 || physics_rank(seed) < s.physics_share;
-      bool sleeps = s.options.physics_sleeps;
-      if (s.options.preview) {
-        apply_physics_level(a.physics, simulation_of(a.physics, seed), a.overrides, a.skin, now_s, a.skin_built_s);
-        sleeps = sleeps && !a.overrides.any_muscle();
-      }
-      a.face.au = step_action_units(a.physics, a.face.au, s.room.dt_s(), seed, sleeps, allowed, a.units,
-                                    a.face.corrective);
+      a.face.au = finish_action_units(a.physics, a.face.au, s.room.dt_s(), a.phase.sleeps, a.phase.allowed,
+                                      a.phase.stepped, a.units, a.face.corrective);
       a.measured = a.face.au;
       // A preview's frames carry its whole residual in its preview surface
       // (preview_surface.hpp, what the AUs do not rebuild): corrective
       // weights on top would count it twice.
       if (s.options.preview) a.face.corrective = {};
-      ++(allowed ? s.physics_faces : s.kinematic_faces);
     }
     // Speech moves jaw and lips at syllable rate (4-5 a second); the
     // tissue's response would smooth that to half, so the track's
@@ -617,6 +670,7 @@ void RoomSimulation::tick() {
     behavior::add_plateau_motion(a.face.au, now_s, static_cast<std::uint32_t>(seed));
   }
   s.collect_events(true);
+  for (auto& [job, line] : std::exchange(s.held_lines, {})) s.say_line(job, std::move(line));
 }
 
 void RoomSimulation::set_physics_share(double share) { state_->physics_share = std::clamp(share, 0.0, 1.0); }

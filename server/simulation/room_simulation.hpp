@@ -20,6 +20,10 @@
 #include "fw/codec/messages.hpp"
 #include "track_maker.hpp"
 
+namespace fw::physics {
+class FaceSimulation;
+}
+
 namespace fw::server {
 
 using AvatarId = std::uint32_t;
@@ -200,8 +204,24 @@ class RoomSimulation {
   std::size_t kinematic_faces() const;
   static constexpr double kPhysicsBlendS = 0.3;
 
-  /// Advances every avatar by one tick.
+  /// Advances every avatar by one tick: begin_tick, the faces' tissue
+  /// stepped together on this thread, finish_tick.
   void tick();
+
+  /// A tick in two halves, for a server that steps the faces of many rooms
+  /// together (face_stepper.hpp). begin_tick runs behaviour and hands out
+  /// the physics faces whose tissue needs a step of dt_s; whoever steps
+  /// them (on any thread, with physics::step_together or a FacePool) must
+  /// be done before finish_tick, which measures them and makes the faces.
+  /// Between the two nothing else may be called on this simulation: the
+  /// faces belong to the stepper until then. The faces come out the same
+  /// as tick()'s, whatever else they are stepped with.
+  struct TickFaces {
+    std::vector<physics::FaceSimulation*> faces;
+    double dt_s = 0;
+  };
+  TickFaces begin_tick();
+  void finish_tick();
  private:
   /// Has the track of the waiting line of every avatar that is not
   /// speaking made; each line starts when its track is back.

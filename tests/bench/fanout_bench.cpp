@@ -295,6 +295,7 @@ nlohmann::json run_once(const FanoutArgs& args, int node_count) {
       {"latency_samples", latencies.size()},
       {"kbps_down_per_client", round2(static_cast<double>(totals.bytes) * 8.0 / 1000.0 / window / std::max(1, held))},
       {"decode_errors", totals.decode_errors.load()},
+      {"close_reasons", totals.close_reasons()},
       {"server_cpu_pct", round2(100.0 * server_cpu / window)},
       {"redis_cpu_pct", round2(100.0 * redis_cpu / window)},
       {"cpu_us_per_avatar_frame", cpu_per_frame},

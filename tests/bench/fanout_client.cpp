@@ -14,6 +14,16 @@ namespace beast = boost::beast;
 namespace websocket = beast::websocket;
 using tcp = asio::ip::tcp;
 
+void Totals::note_close(const std::string& why) {
+  const std::lock_guard lock(reasons_mutex_);
+  ++reasons_[why];
+}
+
+std::map<std::string, int> Totals::close_reasons() const {
+  const std::lock_guard lock(reasons_mutex_);
+  return reasons_;
+}
+
 std::uint64_t steady_now_us() {
   return static_cast<std::uint64_t>(std::chrono::duration_cast<std::chrono::microseconds>(
                                         std::chrono::steady_clock::now().time_since_epoch())
@@ -27,13 +37,13 @@ BenchClient::BenchClient(asio::io_context& io, Totals& totals, std::string room,
 void BenchClient::start(const tcp::endpoint& server) {
   beast::get_lowest_layer(ws_).expires_after(std::chrono::seconds(30));
   beast::get_lowest_layer(ws_).async_connect(server, [self = shared_from_this()](beast::error_code ec) {
-    if (ec) return self->close();
+    if (ec) return self->close("connect: " + ec.message());
     beast::get_lowest_layer(self->ws_).expires_never();
     self->ws_.set_option(websocket::stream_base::timeout::suggested(beast::role_type::client));
     self->ws_.read_message_max(codec::kMaxDownstreamMessageBytes);
     self->ws_.binary(true);
     self->ws_.async_handshake("127.0.0.1", "/", [self](beast::error_code handshake_ec) {
-      if (handshake_ec) return self->close();
+      if (handshake_ec) return self->close("handshake: " + handshake_ec.message());
       codec::Hello hello;
       hello.room = self->room_;
       hello.name = self->name_;
@@ -68,7 +78,7 @@ void BenchClient::send_bytes(std::shared_ptr<std::vector<std::uint8_t>> bytes) {
 void BenchClient::write_next() {
   if (outbox_.empty() || closed_) return;
   ws_.async_write(asio::buffer(*outbox_.front()), [self = shared_from_this()](beast::error_code ec, std::size_t) {
-    if (ec) return self->close();
+    if (ec) return self->close("write: " + ec.message());
     self->outbox_.erase(self->outbox_.begin());
     self->write_next();
   });
@@ -86,7 +96,9 @@ void BenchClient::ping() {
 void BenchClient::read() {
   buffer_.clear();
   ws_.async_read(buffer_, [self = shared_from_this()](beast::error_code ec, std::size_t n) {
-    if (ec) return self->close();
+    if (ec == websocket::error::closed)
+      return self->close("server closed: " + std::string(self->ws_.reason().reason.c_str()));
+    if (ec) return self->close("read: " + ec.message());
     const auto data = self->buffer_.cdata();
     self->on_message({static_cast<const std::uint8_t*>(data.data()), data.size()}, n);
     self->read();
@@ -111,8 +123,11 @@ void BenchClient::on_message(std::span<const std::uint8_t> message, std::size_t 
     case codec::MessageType::welcome:
       ++totals_.joined;
       return;
-    case codec::MessageType::closing:
-      return close();
+    case codec::MessageType::closing: {
+      codec::Closing closing;
+      if (codec::read_message(message, closing) != codec::MessageError::ok) return close("an unreadable closing message");
+      return close("server: " + closing.reason);
+    }
     case codec::MessageType::timed_room_frame: {
       codec::TimedRoomFrame timed;
       if (codec::read_message(message, timed) != codec::MessageError::ok) return;
@@ -146,10 +161,11 @@ void BenchClient::on_message(std::span<const std::uint8_t> message, std::size_t 
   }
 }
 
-void BenchClient::close() {
+void BenchClient::close(const std::string& why) {
   if (closed_) return;
   closed_ = true;
   ++totals_.closed;
+  totals_.note_close(why);
   ping_timer_.cancel();
   beast::error_code ignored;
   beast::get_lowest_layer(ws_).socket().close(ignored);

@@ -4,7 +4,9 @@
 // what it received to the run's totals while the window is open.
 #include <atomic>
 #include <cstdint>
+#include <map>
 #include <memory>
+#include <mutex>
 #include <span>
 #include <string>
 #include <vector>
@@ -24,6 +26,16 @@ struct Totals {
   std::atomic<bool> measuring{false};
   std::atomic<std::uint64_t> avatar_frames{0}, room_frames{0}, bytes{0}, decode_errors{0};
   std::atomic<int> joined{0}, closed{0};
+
+  /// Why clients closed: the server's closing reason, or the step that
+  /// failed (connect, handshake, read, write) with its error. A run that
+  /// seats fewer clients than it asked for says why in its JSON.
+  void note_close(const std::string& why);
+  std::map<std::string, int> close_reasons() const;
+
+ private:
+  mutable std::mutex reasons_mutex_;
+  std::map<std::string, int> reasons_;
 };
 
 /// Microseconds of the steady clock: the server stamps ticks with the same
@@ -61,7 +73,8 @@ class BenchClient : public std::enable_shared_from_this<BenchClient> {
   void ping();
   void read();
   void on_message(std::span<const std::uint8_t> message, std::size_t n);
-  void close();
+  /// Closes the client, counting `why` (Totals::note_close).
+  void close(const std::string& why);
 
   static constexpr std::size_t kMaxSamples = 4000;
   boost::beast::websocket::stream<boost::beast::tcp_stream> ws_;

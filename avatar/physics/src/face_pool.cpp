@@ -84,12 +84,14 @@ void FacePool::step_all(std::span<FaceSimulation> faces, double dt_seconds) {
   step_all(std::span<FaceSimulation* const>(pointers), dt_seconds);
 }
 
-void FacePool::step_all(std::span<FaceSimulation* const> faces, double dt_seconds) {
-  // Projective faces that share a factorisation (one model, or fitted faces
-  // of the generic one's topology) go in batches that share each solve
-  // (projective_dynamics.hpp); every other face is a job of its own. A face
-  // at rest only advances its clock.
-  std::vector<FaceSimulation*> projective;
+namespace {
+
+// Projective faces that share a factorisation (one model, or fitted faces
+// of the generic one's topology) go in batches that share each solve
+// (projective_dynamics.hpp); every other face is a job of its own. The
+// projective faces are gathered in `projective`, which the jobs view.
+std::vector<std::span<FaceSimulation* const>> step_jobs(std::span<FaceSimulation* const> faces,
+                                                        std::vector<FaceSimulation*>& projective) {
   std::vector<std::span<FaceSimulation* const>> jobs;
   for (std::size_t i = 0; i < faces.size(); ++i) {
     if (faces[i]->options().solver == Solver::projective && !faces[i]->at_rest()) projective.push_back(faces[i]);
@@ -105,11 +107,29 @@ void FacePool::step_all(std::span<FaceSimulation* const> faces, double dt_second
     jobs.push_back(std::span<FaceSimulation* const>(projective).subspan(begin, end - begin));
     begin = end;
   }
-  // A batch is a big job: one per grab, so that both threads get some.
-  run(jobs.size(), 1, [&](std::size_t j) {
-    if (jobs[j].size() == 1 && jobs[j][0]->options().solver != Solver::projective) jobs[j][0]->step(dt_seconds);
-    else ProjectiveStepper::step(jobs[j], dt_seconds);
-  });
+  return jobs;
 }
+
+void step_job(std::span<FaceSimulation* const> job, double dt_seconds) {
+  if (job.size() == 1 && job[0]->options().solver != Solver::projective) job[0]->step(dt_seconds);
+  else ProjectiveStepper::step(job, dt_seconds);
+}
+
+}  // namespace
+
+void FacePool::step_all(std::span<FaceSimulation* const> faces, double dt_seconds) {
+  // A face at rest only advances its clock.
+  std::vector<FaceSimulation*> projective;
+  const auto jobs = step_jobs(faces, projective);
+  // A batch is a big job: one per grab, so that both threads get some.
+  run(jobs.size(), 1, [&](std::size_t j) { step_job(jobs[j], dt_seconds); });
+}
+
+void step_together(std::span<FaceSimulation* const> faces, double dt_seconds) {
+  std::vector<FaceSimulation*> projective;
+  for (const auto job : step_jobs(faces, projective)) step_job(job, dt_seconds);
+}
+
+std::size_t max_batch_faces() { return detail::kMaxBatchFaces; }
 
 }  // namespace fw::physics

@@ -3,8 +3,12 @@
 // (BridgedRoom) relays its people to an owner elsewhere and becomes the
 // owner when that one dies, its people keeping their seats. The bus is a
 // recording one; the local bus and the relay rooms hold are checked too.
+#include <chrono>
+#include <condition_variable>
+#include <functional>
 #include <memory>
 #include <mutex>
+#include <thread>
 #include <string>
 #include <vector>
 
@@ -129,13 +133,15 @@ class RecordingConnection : public RoomConnection {
   std::vector<codec::UnitMorphs> unit_morphs_;
 };
 
-/// Rooms made by a registry of their own, over `bus`, with the services of an in-memory server.
+/// Rooms made by a registry of their own, over `bus`, with the services of
+/// an in-memory server (its face stepper and worker pool, or `stepper` and `workers`).
 class RoomsOver {
  public:
-  explicit RoomsOver(RoomBus& bus)
+  explicit RoomsOver(RoomBus& bus, FaceStepper* stepper = nullptr, boost::asio::thread_pool* workers = nullptr)
       : services_{core().config(), core().metrics(),      core().physics_lod(), core().abuse(),
-                  core().workers(), core().store(), core().demo_avatars(), bus, core().state().draining,
-                  core().speech()},
+                  workers ? *workers : core().workers(), core().store(), core().demo_avatars(), bus,
+                  core().state().draining,
+                  core().speech(), stepper ? *stepper : core().face_stepper()},
         registry_(services_, core().addresses()) {}
   ~RoomsOver() {
     // The rooms hold the registry and the bus: they go first.
@@ -344,6 +350,101 @@ TEST(RoomRoles, AnOwnerThatStepsDownAsksItsPeopleBackAndBridges) {
   EXPECT_TRUE(eventually([&] { return ann->closed(); }));
   EXPECT_TRUE(eventually([&] { return room->role() == RoomRoleKind::bridge; }));
   EXPECT_EQ(room->person_count(), 0u);
+}
+
+/// A gate the stepper's batches pass, closed by a test: the worker that
+/// steps waits there, and the rooms that hand their faces over meanwhile
+/// wait for it with their ticks under way.
+class StepGate {
+ public:
+  void close() {
+    const std::lock_guard lock(mutex_);
+    open_ = false;
+  }
+  void open() {
+    {
+      const std::lock_guard lock(mutex_);
+      open_ = true;
+    }
+    opened_.notify_all();
+  }
+  void pass() {
+    std::unique_lock lock(mutex_);
+    opened_.wait_for(lock, std::chrono::seconds(30), [this] { return open_; });
+  }
+
+ private:
+  std::mutex mutex_;
+  std::condition_variable opened_;
+  bool open_ = true;
+};
+
+codec::Command joy() {
+  codec::Command command;
+  command.emotion = "joy";
+  return command;
+}
+
+TEST(RoomTick, RoomsThatCloseWhileTheirFacesAreOnThePoolEndTheirTicksFirstAndThenGo) {
+  RecordingBus bus(RoomRoleKind::owner);
+  StepGate gate;
+  FaceStepper stepper([&gate](double) { gate.pass(); });
+  boost::asio::thread_pool workers(2);  // one waits at the gate, the other runs the other room
+  RoomsOver rooms(bus, &stepper, &workers);
+  std::vector<std::weak_ptr<Room>> gone;
+  {
+    auto a = rooms.open("a"), b = rooms.open("b");
+    ASSERT_TRUE(a && b);
+    gone = {a, b};
+    auto ann = rooms.seated(*a, "Ann"), bob = rooms.seated(*b, "Bob");
+    a->command(ann->avatar(), joy());
+    b->command(bob->avatar(), joy());
+    // One room's worker steps and waits at the gate; the other room hands
+    // its faces over meanwhile and waits for them, its strand free.
+    gate.close();
+    ASSERT_TRUE(eventually([&] { return stepper.waiting() > 0; }));
+    a->leave(ann->avatar());  // the last people: each room closes, once its tick has ended
+    b->leave(bob->avatar());
+    a->chat(ann->avatar(), "still here?");
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  EXPECT_TRUE(bus.forgotten().empty()) << "the leaves wait for the ticks";
+  EXPECT_FALSE(gone[0].expired() || gone[1].expired()) << "the ticks under way hold the rooms";
+  gate.open();
+  EXPECT_TRUE(eventually([&] { return bus.forgotten().size() == 2; })) << "the leaves ran after the ticks";
+  EXPECT_TRUE(eventually([&] { return gone[0].expired() && gone[1].expired(); }))
+      << "the rooms went, their simulations with them";
+  workers.join();
+}
+
+TEST(RoomTick, AnOwnerThatStepsDownMidTickFinishesTheTickAsOwnerFirst) {
+  RecordingBus bus(RoomRoleKind::owner);
+  StepGate gate;
+  FaceStepper stepper([&gate](double) { gate.pass(); });
+  boost::asio::thread_pool workers(2);
+  RoomsOver rooms(bus, &stepper, &workers);
+  auto a = rooms.open("a"), b = rooms.open("b");
+  ASSERT_TRUE(a && b);
+  auto ann = rooms.seated(*a, "Ann"), bob = rooms.seated(*b, "Bob");
+  a->command(ann->avatar(), joy());
+  b->command(bob->avatar(), joy());
+  gate.close();
+  ASSERT_TRUE(eventually([&] { return stepper.waiting() > 0; }));
+  a->step_down();
+  b->step_down();
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  EXPECT_EQ(a->role(), RoomRoleKind::owner) << "the role stays while its tick is under way";
+  EXPECT_EQ(b->role(), RoomRoleKind::owner);
+  gate.open();
+  EXPECT_TRUE(eventually([&] { return a->role() == RoomRoleKind::bridge && b->role() == RoomRoleKind::bridge; }));
+  // A bridge simulates nothing: its ticks hand nothing over.
+  const std::uint64_t stepped = stepper.faces_stepped();
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  EXPECT_EQ(stepper.faces_stepped(), stepped);
+  rooms.registry().close_all_rooms();
+  a.reset();
+  b.reset();
+  workers.join();
 }
 
 TEST(RoomBuses, ARoomAloneIsOwnedHereAndTheRelayForwardsToAnAttachedCluster) {

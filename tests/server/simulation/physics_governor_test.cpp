@@ -1,5 +1,7 @@
 #include "physics_governor.hpp"
 
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 namespace fw::server {
@@ -42,6 +44,60 @@ TEST(PhysicsGovernor, AFewLateTicksChangeNothing) {
   t += milliseconds(5);
   for (int w = 0; w < 5; ++w) t = run_window(governor, t, 300, 9);  // 3 %
   EXPECT_EQ(governor.share(), 1.0);
+}
+
+// A window as run_window, the rooms reporting `room_s` of their own work and
+// `physics_s` of their faces' tissue over it.
+Clock::time_point run_costed_window(PhysicsGovernor& governor, Clock::time_point t, int late, double room_s,
+                                    double physics_s) {
+  governor.observe_room_work(room_s);
+  governor.observe_physics_work(physics_s);
+  return run_window(governor, t, 300, late);
+}
+
+TEST(PhysicsGovernor, LateTicksShedPhysicsOnlyWhilePhysicsFillsThePool) {
+  PhysicsGovernor governor(true, milliseconds(1000));
+  Clock::time_point t{};
+  t += milliseconds(5);
+  // Late, the tissue a tenth of the work: encoders or other processes fill
+  // the cores, and shedding physics would not bring the ticks back.
+  for (int w = 0; w < 10; ++w) t = run_costed_window(governor, t, 300, 1.8, 0.2);
+  EXPECT_EQ(governor.share(), 1.0) << "physics is kept while it is not what makes the ticks late";
+  // Late, the tissue half of the work: shed, window after window.
+  for (int w = 0; w < 4; ++w) t = run_costed_window(governor, t, 300, 1.0, 1.0);
+  EXPECT_LT(governor.share(), 0.5);
+  // Still late, but with less physics the tissue is under a third: held there.
+  const double held = (t = run_costed_window(governor, t, 300, 1.8, 0.5), governor.share());
+  for (int w = 0; w < 10; ++w) t = run_costed_window(governor, t, 300, 1.8, 0.5);
+  EXPECT_EQ(governor.share(), held) << "held where the tissue no longer fills the pool";
+  EXPECT_GT(governor.share(), 0.2);
+  // On time again: back, slowly.
+  for (int w = 0; w < 3; ++w) t = run_costed_window(governor, t, 0, 1.0, 0.5);
+  EXPECT_GT(governor.share(), held);
+}
+
+TEST(PhysicsGovernor, TheShareSettlesWhereTheTissueTakesAThirdOfTheWork) {
+  // A pool that keeps its ticks while the rooms' work is at most 1.6 s a
+  // second, the tissue costing 2 s a second with every face on physics and
+  // the rest 1 s: the share settles around (1.6 - 1) / 2 = 0.3, shedding
+  // while late and the tissue at least a third of the work (always so here
+  // above a share of 0.25).
+  PhysicsGovernor governor(true, milliseconds(1000));
+  Clock::time_point t{};
+  t += milliseconds(5);
+  double low = 1, high = 0;
+  for (int w = 0; w < 200; ++w) {
+    const double share = governor.share();
+    const double physics_s = 2.0 * share;
+    const bool late = 1.0 + physics_s > 1.6;
+    t = run_costed_window(governor, t, late ? 300 : 0, 1.0, physics_s);
+    if (w >= 100) {
+      low = std::min(low, governor.share());
+      high = std::max(high, governor.share());
+    }
+  }
+  EXPECT_GT(low, 0.18) << "never shed far below what the pool can carry";
+  EXPECT_LT(high, 0.40);
 }
 
 TEST(PhysicsGovernor, WhenDisabledEveryFaceKeepsPhysics) {

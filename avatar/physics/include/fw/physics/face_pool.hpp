@@ -17,6 +17,16 @@
 
 namespace fw::physics {
 
+/// Steps `faces` on the caller's thread as FacePool::step_all does: the
+/// projective faces of one model in batches of up to max_batch_faces() that
+/// share each solve, every other face on its own; a face at rest only
+/// advances its clock. A face ends the same whichever faces it is batched
+/// with (the solve runs lane by lane across them), so a server may gather
+/// the faces of many rooms into one call.
+void step_together(std::span<FaceSimulation* const> faces, double dt_seconds);
+/// The most faces one projective solve takes at once.
+std::size_t max_batch_faces();
+
 class FacePool {
  public:
   /// @param[in] threads  threads in all, the caller's included; 0 = one per hardware thread
