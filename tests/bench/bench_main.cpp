@@ -6,6 +6,7 @@
 
 #include "codec_bench.hpp"
 #include "fanout_bench.hpp"
+#include "physics_renders.hpp"
 #include "prep_bench.hpp"
 #include "render_bench.hpp"
 #include "sim_bench.hpp"
@@ -18,6 +19,7 @@ int main(int argc, char** argv) {
   fw::bench::add_codec_bench(app);
   fw::bench::add_fanout_bench(app);
   fw::bench::add_sim_bench(app);
+  fw::bench::add_physics_renders(app);
   CLI11_PARSE(app, argc, argv);
   return 0;
 }
