@@ -56,6 +56,11 @@ struct MuscleDefinition {
   /// Jaw muscles: the jaw angle this muscle alone holds at activation 1
   /// (positive opens).
   float jaw_angle_rad = 0.0f;
+  /// How much thicker the muscle's belly (between origin and insertion,
+  /// `width` to either side) is at activation 1, mm: a contracting muscle
+  /// keeps its volume, so it bulges as it shortens. The belly lies in the
+  /// muscle layer, under the fascia: the tissue over it is pushed outward.
+  float bulge_mm = 0.0f;
 };
 
 inline constexpr std::size_t kMusclesPerSide = 21;

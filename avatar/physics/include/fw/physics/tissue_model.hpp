@@ -54,7 +54,6 @@ struct TissueMaterial {
   float volume_stiffness = 0;   ///< force per model unit of thickness lost or gained
   float node_damping = 0;       ///< 1/s, the surrounding medium's drag
   float node_mass = 1;
-  float thickness_mm = 12;      ///< skin surface to bone, where the face allows
   /// Normal adult skin (the paper's Fig. 2a).
   static TissueMaterial normal();
   /// Looser, aged skin (Fig. 2b): softer skin layers with a negative
@@ -88,7 +87,9 @@ struct TissueModel {
 
   std::vector<float> rest_x, rest_y, rest_z;  ///< #nodes, model units
   std::vector<glm::vec3> skull_normal;        ///< #V, unit, out of the bone, at rest
-  std::vector<float> column_thickness;        ///< #V, model units, skin to bone
+  /// #V, model units, skin to bone: the region's depth
+  /// (regional_thickness.hpp), thinner where columns converge.
+  std::vector<float> column_thickness;
   /// #V: 1 where the tissue is tied to the bone under it; 0 under the lips
   /// and mouth corners, which only slide over the teeth.
   std::vector<std::uint8_t> column_on_bone;
@@ -97,10 +98,21 @@ struct TissueModel {
 
   // The articulated jaw: bone nodes follow its turn about the hinge (an axis
   // along x) by their column's share, the lower lip fully, the upper not.
+  // Past jaw_glide_onset_rad the condyles also glide forward and down the
+  // articular eminence, in proportion to the opening, by jaw_glide at
+  // jaw_max_rad: rotation first, then rotation and translation.
   glm::vec3 jaw_hinge{0.0f};
+  glm::vec3 jaw_glide{0.0f};                  ///< model units, at jaw_max_rad
+  float jaw_glide_onset_rad = 0;
   std::vector<float> jaw_share;               ///< #V
-  std::vector<std::uint16_t> jaw_columns;     ///< columns with a share > 0
   float jaw_min_rad = -0.03f, jaw_max_rad = 0.45f;
+  /// A bulging muscle's belly under the fascia (the masseter's): per column,
+  /// how far its bone node is pushed out along the skull normal at the
+  /// muscle's activation 1 (model units, 0: no belly) and which muscle.
+  std::vector<float> bulge_depth;             ///< #V
+  std::vector<std::uint8_t> bulge_muscle;     ///< #V, a muscle index
+  /// Columns whose bone node moves: a jaw share > 0 or a belly under it.
+  std::vector<std::uint16_t> moving_bone_columns;
 
   /// Per moving node: 1 / mass, or 0 for the columns on the mesh's outer
   /// boundary, where the face's tissue goes on into scalp and neck: they are
