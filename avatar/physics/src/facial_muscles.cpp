@@ -31,6 +31,11 @@ MuscleDefinition linear(std::string_view name, float strength, FaceAnchor origin
   return m;
 }
 
+MuscleDefinition of_the_nose(MuscleDefinition m) {
+  m.moves_nose = true;
+  return m;
+}
+
 MuscleDefinition sphincter(std::string_view name, float strength, FaceAnchor centre, glm::vec2 semi_axes, float ring,
                            glm::vec3 pull_scale, float upper_share, bool half) {
   MuscleDefinition m;
@@ -67,7 +72,7 @@ std::array<MuscleDefinition, kMusclesPerSide> make_definitions() {
       // pulls the brow down and in (AU 4).
       linear("corrugator", 199.0f, at(0.07f, 0.12f), on(23, 0.05f, 0.0f), 0.16f, 0.14f, 0.05f),
       // From the nasal bone up to the skin between the brows.
-      linear("procerus", 195.0f, at(0.03f, -0.3f), on(22, -0.1f, 0.03f), 0.13f, 0.12f),
+      of_the_nose(linear("procerus", 195.0f, at(0.03f, -0.3f), on(22, -0.1f, 0.03f), 0.13f, 0.12f)),
       // Lifts the upper lid from the roof of the orbit (AU 5).
       linear("levator_palpebrae", 155.0f, at(0.5f, 0.45f), between(43, 44, 0.0f, 0.0f), 0.16f, 0.05f),
       // Orbicularis oculi: the orbital part gathers cheek and brow toward the
@@ -77,7 +82,7 @@ std::array<MuscleDefinition, kMusclesPerSide> make_definitions() {
       sphincter("orbicularis_oculi_palpebral", 265.0f, between(42, 45), {0.24f, 0.1f}, 0.6f, {0.1f, 1.0f, 0.0f},
                 0.45f, false),
       // Nose and upper lip.
-      linear("levator_labii_alaeque_nasi", 287.0f, at(0.11f, -0.05f), on(35, 0.04f, -0.1f), 0.15f, 0.12f),
+      of_the_nose(linear("levator_labii_alaeque_nasi", 287.0f, at(0.11f, -0.05f), on(35, 0.04f, -0.1f), 0.15f, 0.12f)),
       // The nasalis' transverse part runs from the maxilla beside the nose
       // up over its side into an aponeurosis across the dorsum, which the
       // procerus ties to the nasal bones. In AU 9 it gathers the side of
@@ -86,7 +91,7 @@ std::array<MuscleDefinition, kMusclesPerSide> make_definitions() {
       // its fixed end here is the dorsum, its pull on the side and ala (laid
       // from the maxilla below, it drew the side of the nose down, against
       // the lift).
-      linear("nasalis", 113.0f, at(0.03f, -0.28f), at(0.2f, -0.62f), 0.15f, 0.1f),
+      of_the_nose(linear("nasalis", 113.0f, at(0.03f, -0.28f), at(0.2f, -0.62f), 0.15f, 0.1f)),
       linear("levator_labii_superioris", 194.0f, at(0.3f, -0.33f), on(52, 0.05f, 0.0f), 0.15f, 0.1f),
       linear("zygomatic_minor", 213.0f, at(0.56f, -0.42f), on(53, 0.02f, 0.0f), 0.13f, 0.1f),
       // The mouth corner's muscles meet at the modiolus beside the corner.

@@ -373,6 +373,11 @@ class Builder {
     // (the mimetic muscles insert into the skin).
     constexpr std::array<std::pair<TissueLayer, float>, 3> kAttachedLayers = {
         {{TissueLayer::dermis, 0.3f}, {TissueLayer::fat, 0.6f}, {TissueLayer::fascia, 1.0f}}};
+    // The nose's columns: every triangle around them is the nose's.
+    std::vector<int> nose(m_.vertex_count, 1);
+    for (std::size_t f = 0; f < face_.skin.triangles.size(); ++f)
+      if (face_.triangle_regions[f] != FaceRegion::nose)
+        for (int k = 0; k < 3; ++k) nose[face_.skin.triangles[f][k]] = 0;
     for (std::size_t index = 0; index < kMuscleCount; ++index) {
       const MuscleDefinition& def = facial_muscle_definitions()[index / 2];
       const bool left = index % 2 == 0;
@@ -398,6 +403,7 @@ class Builder {
             // Columns whose fascia is held (nose, outline) take no muscle
             // pull: it would only fold their skin over the fixed frame.
             if (m_.inverse_mass[node(3, v)] == 0.0f) continue;
+            if (nose[v] && !def.moves_nose) continue;
             const std::uint16_t i = node(static_cast<std::size_t>(layer), v);
             const glm::vec3 p = rest(i);
             float w = 0.0f;

@@ -61,6 +61,10 @@ struct MuscleDefinition {
   /// keeps its volume, so it bulges as it shortens. The belly lies in the
   /// muscle layer, under the fascia: the tissue over it is pushed outward.
   float bulge_mm = 0.0f;
+  /// The nose's own muscles insert into its skin; the others (the
+  /// orbicularis oculi, the lip elevators) end at its border and leave its
+  /// columns alone.
+  bool moves_nose = false;
 };
 
 inline constexpr std::size_t kMusclesPerSide = 21;
