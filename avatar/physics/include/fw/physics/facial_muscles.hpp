@@ -17,7 +17,7 @@ namespace fw::physics {
 enum class MuscleKind : std::uint8_t {
   linear,     ///< pulls tissue toward a bony origin (Waters' vector muscle)
   sphincter,  ///< pulls tissue toward the centre of an ellipse
-  jaw,        ///< turns the jaw only (no skin attachment)
+  jaw,        ///< turns the jaw; no skin attachment (its belly may bulge: bulge_mm)
 };
 
 /// A point on the face: a landmark (or the midpoint of two) plus an offset in

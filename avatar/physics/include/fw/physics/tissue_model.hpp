@@ -7,7 +7,9 @@
 // four triangular prism elements, and the nodes are joined by viscoelastic
 // units: the triangle edges in every layer, the columns between layers and
 // two crossing diagonals on every prism side. The bone layer is fixed to the
-// skull, its lower part to the mandible, which turns about its hinge.
+// skull, its lower part to the mandible, which turns about its hinge and
+// glides forward as it opens wide; over the masseter's belly it rises as the
+// muscle contracts.
 //
 // Storage is one array per quantity (structure of arrays, 16-bit node
 // indices), so a simulation step is a few linear passes the compiler can
