@@ -318,7 +318,8 @@ class Builder {
     // The nose's tissue is free like the rest: its muscles (the levator
     // labii superioris alaeque nasi and the nasalis) lie in it, between skin
     // and cartilage, and wrinkle and lift it in AU 9. Its columns are thin
-    // (3 mm), held from folding by the skull contact and the prisms' volume.
+    // (the dorsum's 3 mm), held from folding by the skull contact and the
+    // prisms' volume.
     for (const auto& loop : model::boundary_loops(face_.skin)) {
       if (holes.contains(loop.front())) continue;
       for (std::uint32_t v : loop)
@@ -400,7 +401,7 @@ class Builder {
       if (def.kind != MuscleKind::jaw) {
         for (const auto& [layer, layer_weight] : kAttachedLayers) {
           for (std::uint32_t v = 0; v < m_.vertex_count; ++v) {
-            // Columns whose fascia is held (nose, outline) take no muscle
+            // Columns whose fascia is held (the outline) take no muscle
             // pull: it would only fold their skin over the fixed frame.
             if (m_.inverse_mass[node(3, v)] == 0.0f) continue;
             if (nose[v] && !def.moves_nose) continue;
