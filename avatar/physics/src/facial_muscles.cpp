@@ -65,9 +65,11 @@ MuscleDefinition jaw(std::string_view name, float angle_rad, FaceAnchor origin, 
 std::array<MuscleDefinition, kMusclesPerSide> make_definitions() {
   return {{
       // Brows and forehead: the frontalis, in a medial and a lateral belly,
-      // from the galea aponeurotica above the hairline down to the brow.
+      // from the galea aponeurotica above the hairline down to the brow (the
+      // lateral one toward its outer third, so that over the thin forehead
+      // tissue the brow's tail rises with the rest).
       linear("frontalis_inner", 135.0f, at(0.22f, 1.3f), on(22, 0.05f, 0.03f), 0.3f, 0.14f),
-      linear("frontalis_outer", 128.0f, at(0.75f, 1.25f), on(25, 0.0f, 0.04f), 0.3f, 0.14f),
+      linear("frontalis_outer", 104.0f, at(0.75f, 1.25f), on(25, 0.05f, 0.03f), 0.3f, 0.14f),
       // From the nasal part of the frontal bone to the middle of the brow:
       // pulls the brow down and in (AU 4).
       linear("corrugator", 199.0f, at(0.07f, 0.12f), on(23, 0.05f, 0.0f), 0.16f, 0.14f, 0.05f),
