@@ -23,7 +23,6 @@ void expect_same(const TissueMaterial& a, const TissueMaterial& b) {
     EXPECT_FLOAT_EQ(a.damping[k], b.damping[k]) << "kind " << k;
   }
   EXPECT_FLOAT_EQ(a.volume_stiffness, b.volume_stiffness);
-  EXPECT_FLOAT_EQ(a.thickness_mm, b.thickness_mm);
 }
 
 TEST(AgedSkin, RunsFromNormalToLooseAndEachControlChangesItsOwnParameter) {

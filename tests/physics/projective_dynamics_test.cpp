@@ -39,9 +39,9 @@ FaceSimulation settled(Solver solver, int au) {
 
 // Both solvers settle where the same forces balance: PD's springs follow the
 // biphasic curve through the projection, its prisms the volume gradient.
-// Measured RMS differences over the skin: at most 0.12 mm (AU 9, 15 % of
-// its 0.74 mm travel), and 0.92 mm of the 18.7 mm of AU 27's open jaw, whose
-// stretched lips are where the two volume treatments part most.
+// Measured RMS differences over the skin: at most 0.031 mm (AU 9 and 15,
+// under 4 % of their travel), and 0.52 mm of the 17.1 mm of AU 27's open
+// jaw, whose stretched lips are where the two volume treatments part most.
 TEST(ProjectiveDynamics, SettledActionUnitsHaveTheMassSpringShapes) {
   const auto& rest = model::generic_face().skin.positions;
   for (int au : codec::kActionUnits) {
@@ -55,21 +55,27 @@ TEST(ProjectiveDynamics, SettledActionUnitsHaveTheMassSpringShapes) {
     }
     const double rms_mm = std::sqrt(difference2 / double(a.size())) * kPdMm;
     const double travel_mm = std::sqrt(travel2 / double(a.size())) * kPdMm;
-    EXPECT_LT(rms_mm, moves_the_jaw(au) ? 1.2 : 0.15) << "AU " << au << " of " << travel_mm << " mm";
-    EXPECT_LT(rms_mm, (moves_the_jaw(au) ? 0.07 : 0.2) * travel_mm) << "AU " << au;
+    EXPECT_LT(rms_mm, moves_the_jaw(au) ? 0.8 : 0.06) << "AU " << au << " of " << travel_mm << " mm";
+    EXPECT_LT(rms_mm, (moves_the_jaw(au) ? 0.05 : 0.08) * travel_mm) << "AU " << au;
   }
 }
 
-// The requirement: each prism within 5 % of its volume once a single unit at
-// full strength has settled. No solver meets it with this material: the
-// volume stiffness (1500) is of the order of the units' slopes, so a prism
-// gives volume where a muscle squeezes it. Measured worst changes, units
-// other than the jaw's / AU 26-27: mass-spring 65 % (AU 9) / 68 %, XPBD 44 %
-// (PBD, before it was XPBD, 67 % / 207 %), projective 56 % (AU 9) / 138 %; 20-140 prisms of 1628
-// beyond 5 % per unit. (With the projective volume weight a hundred times
-// higher, single units keep 3.4 %, but the shapes leave the mass-spring
-// ones by 0.8 mm RMS of 1.7 mm: another material; README "Accuracy".) The
-// test holds each solver to its measured level.
+// The volume bound: each prism within 5 % of its volume once a single unit
+// at full strength has settled. It holds for most prisms, not all, in every
+// solver: the volume stiffness (1500) is of the order of the units' slopes,
+// so a prism gives volume where a muscle shears or squeezes it (the muscle
+// layer over the bone, the thin lid and nose columns); the jaw's units
+// stretch the bone layer itself between mandible and maxilla. A stiffer
+// volume keeps it (100 times: 3.4 % projective) but projective dynamics'
+// one iteration per step then takes tens of seconds to settle, and the
+// explicit step shortens with its square root (README "Where it loses
+// accuracy"). Asserted: the real 5 % bound for the share of prisms it holds
+// for (measured: at least 90.4 % of the 1628 under every unit but the
+// jaw's, mass-spring and projective; PBD 87.4 %), and each solver's
+// measured worst, so that a change that folds more tissue fails. Measured
+// worst change, single units / AU 26-27: projective 56 % (AU 6) / 108 %,
+// mass-spring 56 % (AU 6) / 79 %, PBD 88 % (AU 10) / 174 % (before
+// it was XPBD).
 class SettledVolumes : public ::testing::TestWithParam<Solver> {};
 std::string settled_solver_name(const ::testing::TestParamInfo<Solver>& info) {
   return info.param == Solver::mass_spring ? "MassSpring" : info.param == Solver::pbd ? "Pbd" : "Projective";
@@ -77,29 +83,33 @@ std::string settled_solver_name(const ::testing::TestParamInfo<Solver>& info) {
 INSTANTIATE_TEST_SUITE_P(Solvers, SettledVolumes, ::testing::Values(Solver::mass_spring, Solver::pbd, Solver::projective),
                          settled_solver_name);
 
-TEST_P(SettledVolumes, EachPrismKeepsItsMeasuredShareOfItsVolume) {
+TEST_P(SettledVolumes, TheVolumeBoundHoldsForMostPrisms) {
   struct Levels {
-    float single, jaw;
+    float within, single, jaw;
   };
-  const Levels measured = GetParam() == Solver::mass_spring ? Levels{0.70f, 0.75f}
-                          : GetParam() == Solver::pbd       ? Levels{0.5f, 2.2f}
-                                                            : Levels{0.62f, 1.5f};
+  const Levels measured = GetParam() == Solver::mass_spring ? Levels{0.89f, 0.60f, 0.85f}
+                          : GetParam() == Solver::pbd       ? Levels{0.86f, 0.92f, 1.8f}
+                                                            : Levels{0.89f, 0.60f, 1.15f};
   float worst_single = 0.0f;
   for (int au : codec::kActionUnits) {
     const FaceSimulation sim = settled(GetParam(), au);
     const TissueModel& m = sim.model();
     float worst = 0.0f;
-    std::size_t beyond = 0;
+    std::size_t within = 0;
     for (std::size_t e = 0; e < m.element_count(); ++e) {
       const float change = std::abs(sim.element_volume(e) / m.element_rest_volume[e] - 1.0f);
       worst = std::max(worst, change);
-      beyond += change > 0.05f;
+      within += change <= 0.05f;
     }
-    if (!moves_the_jaw(au)) worst_single = std::max(worst_single, worst);
-    EXPECT_LT(worst, moves_the_jaw(au) ? measured.jaw : measured.single) << "AU " << au;
-    EXPECT_LT(beyond, moves_the_jaw(au) ? 650u : 160u) << "AU " << au << ": prisms beyond 5 %";
+    if (moves_the_jaw(au)) {
+      EXPECT_LT(worst, measured.jaw) << "AU " << au;
+      continue;
+    }
+    worst_single = std::max(worst_single, worst);
+    EXPECT_LT(worst, measured.single) << "AU " << au;
+    EXPECT_GE(float(within), measured.within * float(m.element_count())) << "AU " << au << ": prisms within 5 %";
   }
-  EXPECT_GT(worst_single, 0.05f) << "the 5 % requirement now holds: tighten this test to it";
+  EXPECT_GT(worst_single, 0.05f) << "the 5 % requirement now holds for every prism: tighten this test to it";
 }
 
 // One factorisation per model and step length (on a 2 % grid), made on

@@ -142,13 +142,17 @@ void FaceSimulation::update_muscles_and_jaw(float h) {
   }
   jaw_cos_ = std::cos(jaw_angle_);
   jaw_sin_ = std::sin(jaw_angle_);
+  const TissueModel& m = *model_;
+  const float glide_range = m.jaw_max_rad - m.jaw_glide_onset_rad;
+  jaw_glide_ = glide_range > 0.0f ? std::max(0.0f, (jaw_angle_ - m.jaw_glide_onset_rad) / glide_range) * m.jaw_glide
+                                  : glm::vec3(0.0f);
 }
 
 glm::vec3 FaceSimulation::jaw_turned(const glm::vec3& p, float share) const {
   const TissueModel& m = *model_;
   const float qy = p.y - m.jaw_hinge.y, qz = p.z - m.jaw_hinge.z;
   const glm::vec3 turned(p.x, m.jaw_hinge.y + jaw_cos_ * qy - jaw_sin_ * qz, m.jaw_hinge.z + jaw_sin_ * qy + jaw_cos_ * qz);
-  return p + share * (turned - p);
+  return p + share * (turned + jaw_glide_ - p);
 }
 
 std::array<glm::vec3, kMuscleCount> FaceSimulation::muscle_origins() const {
@@ -160,11 +164,12 @@ std::array<glm::vec3, kMuscleCount> FaceSimulation::muscle_origins() const {
   return origin;
 }
 
-// Moves node i to its rest place turned by `share` of the jaw, keeping the
-// speed of that move so that the dampers joined to it see the motion.
-void FaceSimulation::move_node_with_jaw(std::size_t i, float share, float h) {
+// Moves node i to its rest place moved by `share` of the jaw and pushed
+// `lift` along `normal`, keeping the speed of that move so that the dampers
+// joined to it see the motion.
+void FaceSimulation::move_node_with_jaw(std::size_t i, float share, float h, const glm::vec3& normal, float lift) {
   const TissueModel& m = *model_;
-  const glm::vec3 p = jaw_turned({m.rest_x[i], m.rest_y[i], m.rest_z[i]}, share);
+  const glm::vec3 p = jaw_turned({m.rest_x[i], m.rest_y[i], m.rest_z[i]}, share) + lift * normal;
   vx_[i] = (p.x - x_[i]) / h;
   vy_[i] = (p.y - y_[i]) / h;
   vz_[i] = (p.z - z_[i]) / h;
@@ -173,23 +178,25 @@ void FaceSimulation::move_node_with_jaw(std::size_t i, float share, float h) {
   z_[i] = p.z;
 }
 
-// The bone layer follows the mandible by each column's share.
+// The bone layer follows the mandible by each column's share, and rises
+// over a contracting muscle's belly.
 void FaceSimulation::place_bone(float h) {
   const TissueModel& m = *model_;
   const std::size_t base = m.moving_node_count;
-  for (std::uint16_t v : m.jaw_columns) {
-    const std::size_t i = base + v;
+  for (std::uint16_t v : m.moving_bone_columns) {
     const float share = m.jaw_share[v];
-    move_node_with_jaw(i, share, h);
     const glm::vec3 n = m.skull_normal[v];
     const glm::vec3 turned = glm::vec3(n.x, jaw_cos_ * n.y - jaw_sin_ * n.z, jaw_sin_ * n.y + jaw_cos_ * n.z);
     skull_normal_[v] = glm::normalize(n + share * (turned - n));
+    const float lift = m.bulge_depth[v] * activation_[m.bulge_muscle[v]];
+    move_node_with_jaw(base + v, share, h, skull_normal_[v], lift);
   }
   // The pinned outline follows its bone.
   for (std::uint16_t i : m.pinned_nodes) {
-    const float share = m.jaw_share[i % m.vertex_count];
+    const std::size_t v = i % m.vertex_count;
+    const float share = m.jaw_share[v];
     if (share <= 0.0f) continue;
-    move_node_with_jaw(i, share, h);
+    move_node_with_jaw(i, share, h, skull_normal_[v], 0.0f);
   }
 }
 

@@ -14,6 +14,7 @@
 #include "fw/model/mesh.hpp"
 #include "fw/physics/muscle_profile.hpp"
 #include "fw/physics/prism_volume.hpp"
+#include "fw/physics/regional_thickness.hpp"
 
 namespace fw::physics {
 namespace {
@@ -31,6 +32,19 @@ constexpr std::array<float, kTissueLayerCount> kLayerMinHeight = {0.3f, 0.25f, 0
 // hinge and heights as the face's geometric jaw units).
 constexpr glm::vec3 kJawHinge{0.0f, -0.25f, 0.3f};
 constexpr float kJawFullBelowY = -1.2f, kJawNoneAboveY = -1.03f;
+
+// Opening the mouth wide, the condyles first turn in their sockets and then
+// glide forward and down the articular eminence, 15-20 mm at full opening;
+// the first 20-25 mm of incisal opening (about half of it) are rotation
+// alone (Okeson, Management of Temporomandibular Disorders and Occlusion,
+// ch. 1; the eminence slopes about 30 degrees below the horizontal). Here:
+// 15 mm along a 30-degree slope at the jaw's widest, from half of it on.
+constexpr float kCondyleGlideMm = 15.0f;
+constexpr float kEminenceSlopeRad = 0.5236f;
+constexpr float kGlideOnsetShare = 0.5f;
+
+// A vertex on no triangle (none on a sound face) gets the face's mean depth.
+constexpr float kFallbackThicknessMm = 10.0f;
 
 struct EdgeInfo {
   std::uint32_t a, b;
@@ -113,6 +127,7 @@ class Builder {
     add_jaw();
     pin_outline();
     add_muscles();
+    add_bellies();
     copy_basis(basis);
     estimate_stable_substep();
     shrink();
@@ -148,12 +163,21 @@ class Builder {
     return prism_volume(p);
   }
 
-  // Full thickness where the face allows; where columns converge (nose,
-  // lips, the rim turning back) the tissue is made thinner until every prism
-  // keeps a healthy share of its nominal volume.
+  // Each column starts at its region's depth (regional_thickness.cpp), the
+  // mean over the triangles around it, so that depths blend across region
+  // borders; where columns converge (nose, lips, the rim turning back) the
+  // tissue is made thinner until every prism keeps a healthy share of its
+  // nominal volume.
   void place_nodes() {
-    const float nominal = m_.material.thickness_mm / model::kMillimetresPerUnit;
-    m_.column_thickness.assign(m_.vertex_count, nominal);
+    std::vector<float> sum(m_.vertex_count, 0.0f), count(m_.vertex_count, 0.0f);
+    for (std::size_t f = 0; f < face_.skin.triangles.size(); ++f)
+      for (int k = 0; k < 3; ++k) {
+        sum[face_.skin.triangles[f][k]] += regional_thickness_mm(face_.triangle_regions[f]);
+        count[face_.skin.triangles[f][k]] += 1.0f;
+      }
+    m_.column_thickness.assign(m_.vertex_count, 0.0f);
+    for (std::uint32_t v = 0; v < m_.vertex_count; ++v)
+      m_.column_thickness[v] = (count[v] > 0.0f ? sum[v] / count[v] : kFallbackThicknessMm) / model::kMillimetresPerUnit;
     for (int pass = 0; pass < 40; ++pass) {
       set_positions();
       std::set<std::uint32_t> thin;
@@ -191,6 +215,14 @@ class Builder {
     }
     m_.column_on_bone.assign(m_.vertex_count, 1);
     for (std::uint32_t v = 0; v < m_.vertex_count; ++v) m_.column_on_bone[v] = lip[v] && corner[v] ? 0 : 1;
+    // Nor do the alae and nostril sills: their frame is the alar cartilage,
+    // which the levator labii superioris alaeque nasi lifts with them in AU 9
+    // (tied to the bone, the ala's tissue sheared over a fixed frame until
+    // its prisms turned inside out). The tip and the columella stay on the
+    // septum.
+    for (int l : {model::landmarks::kNoseBaseBegin, model::landmarks::kNoseBaseBegin + 1,
+                  model::landmarks::kNoseBaseEnd - 2, model::landmarks::kNoseBaseEnd - 1})
+      m_.column_on_bone[face_.landmark_vertices[static_cast<std::size_t>(l)]] = 0;
   }
   bool on_bone(std::uint32_t v) const { return m_.column_on_bone[v] != 0; }
 
@@ -250,26 +282,44 @@ class Builder {
 
   void add_jaw() {
     m_.jaw_share = column_jaw_shares(face_);
+    const float glide = kCondyleGlideMm / model::kMillimetresPerUnit;
+    m_.jaw_glide = glide * glm::vec3(0.0f, -std::sin(kEminenceSlopeRad), std::cos(kEminenceSlopeRad));
+    m_.jaw_glide_onset_rad = kGlideOnsetShare * m_.jaw_max_rad;
+  }
+
+  // The bellies of the muscles that bulge (the masseter): the bone node
+  // under each column of the belly is pushed out as the muscle contracts,
+  // thickening the muscle layer between bone and fascia.
+  void add_bellies() {
+    m_.bulge_depth.assign(m_.vertex_count, 0.0f);
+    m_.bulge_muscle.assign(m_.vertex_count, 0);
+    for (std::size_t index = 0; index < kMuscleCount; ++index) {
+      const MuscleDefinition& def = facial_muscle_definitions()[index / 2];
+      if (def.bulge_mm <= 0.0f) continue;
+      const bool left = index % 2 == 0;
+      const glm::vec3 origin = point_below(anchor_xy(def.origin, left), 1.0f, 0.0f);
+      const glm::vec3 insertion = point_below(anchor_xy(def.insertion, left), 1.0f, 0.0f);
+      for (std::uint32_t v = 0; v < m_.vertex_count; ++v) {
+        const float w = muscle_belly_weight(rest(node(4, v)), origin, insertion, def.width);
+        if (w * def.bulge_mm <= m_.bulge_depth[v] * model::kMillimetresPerUnit) continue;
+        m_.bulge_depth[v] = w * def.bulge_mm / model::kMillimetresPerUnit;
+        m_.bulge_muscle[v] = static_cast<std::uint8_t>(index);
+      }
+    }
     for (std::uint32_t v = 0; v < m_.vertex_count; ++v)
-      if (m_.jaw_share[v] > 0.0f) m_.jaw_columns.push_back(static_cast<std::uint16_t>(v));
+      if (m_.jaw_share[v] > 0.0f || m_.bulge_depth[v] > 0.0f)
+        m_.moving_bone_columns.push_back(static_cast<std::uint16_t>(v));
   }
 
   void pin_outline() {
     std::set<std::uint32_t> holes(face_.mouth_slit.begin(), face_.mouth_slit.end());
     for (const auto& eye : face_.eye_holes) holes.insert(eye.begin(), eye.end());
     m_.inverse_mass.assign(m_.moving_node_count, 1.0f / m_.material.node_mass);
-    // Over the nasal bones and cartilage the fascia is the perichondrium,
-    // fixed to what it covers: the skin of the nose moves, its frame does not
-    // (and the thin columns of the nose tip cannot fold over).
-    std::vector<int> nose(m_.vertex_count, 0);
-    for (std::size_t f = 0; f < face_.skin.triangles.size(); ++f)
-      if (face_.triangle_regions[f] == FaceRegion::nose)
-        for (int k = 0; k < 3; ++k) nose[face_.skin.triangles[f][k]] = 1;
-    for (std::uint32_t v = 0; v < m_.vertex_count; ++v)
-      if (nose[v]) {
-        m_.inverse_mass[node(3, v)] = 0.0f;
-        m_.pinned_nodes.push_back(node(3, v));
-      }
+    // The nose's tissue is free like the rest: its muscles (the levator
+    // labii superioris alaeque nasi and the nasalis) lie in it, between skin
+    // and cartilage, and wrinkle and lift it in AU 9. Its columns are thin
+    // (the dorsum's 3 mm), held from folding by the skull contact and the
+    // prisms' volume.
     for (const auto& loop : model::boundary_loops(face_.skin)) {
       if (holes.contains(loop.front())) continue;
       for (std::uint32_t v : loop)
@@ -324,6 +374,11 @@ class Builder {
     // (the mimetic muscles insert into the skin).
     constexpr std::array<std::pair<TissueLayer, float>, 3> kAttachedLayers = {
         {{TissueLayer::dermis, 0.3f}, {TissueLayer::fat, 0.6f}, {TissueLayer::fascia, 1.0f}}};
+    // The nose's columns: every triangle around them is the nose's.
+    std::vector<int> nose(m_.vertex_count, 1);
+    for (std::size_t f = 0; f < face_.skin.triangles.size(); ++f)
+      if (face_.triangle_regions[f] != FaceRegion::nose)
+        for (int k = 0; k < 3; ++k) nose[face_.skin.triangles[f][k]] = 0;
     for (std::size_t index = 0; index < kMuscleCount; ++index) {
       const MuscleDefinition& def = facial_muscle_definitions()[index / 2];
       const bool left = index % 2 == 0;
@@ -346,9 +401,10 @@ class Builder {
       if (def.kind != MuscleKind::jaw) {
         for (const auto& [layer, layer_weight] : kAttachedLayers) {
           for (std::uint32_t v = 0; v < m_.vertex_count; ++v) {
-            // Columns whose fascia is held (nose, outline) take no muscle
+            // Columns whose fascia is held (the outline) take no muscle
             // pull: it would only fold their skin over the fixed frame.
             if (m_.inverse_mass[node(3, v)] == 0.0f) continue;
+            if (nose[v] && !def.moves_nose) continue;
             const std::uint16_t i = node(static_cast<std::size_t>(layer), v);
             const glm::vec3 p = rest(i);
             float w = 0.0f;
@@ -384,12 +440,13 @@ class Builder {
   }
 
   void shrink() {
-    for (auto* v : {&m_.rest_x, &m_.rest_y, &m_.rest_z, &m_.column_thickness, &m_.jaw_share, &m_.inverse_mass,
+    for (auto* v : {&m_.rest_x, &m_.rest_y, &m_.rest_z, &m_.column_thickness, &m_.jaw_share, &m_.bulge_depth, &m_.inverse_mass,
                     &m_.spring_rest, &m_.element_rest_volume, &m_.element_force_scale, &m_.skin_rest_area,
                     &m_.attach_weight})
       v->shrink_to_fit();
     m_.column_on_bone.shrink_to_fit();
-    for (auto* v : {&m_.jaw_columns, &m_.pinned_nodes, &m_.spring_a, &m_.spring_b, &m_.attach_node, &m_.attach_column})
+    m_.bulge_muscle.shrink_to_fit();
+    for (auto* v : {&m_.moving_bone_columns, &m_.pinned_nodes, &m_.spring_a, &m_.spring_b, &m_.attach_node, &m_.attach_column})
       v->shrink_to_fit();
     m_.skull_normal.shrink_to_fit();
     m_.spring_kind.shrink_to_fit();
@@ -466,7 +523,6 @@ TissueMaterial TissueMaterial::normal() {
   // nothing from tissue that moves with its bone.
   m.bone_damping = 30.0f;
   m.node_mass = 1.0f;
-  m.thickness_mm = 12.0f;
   return m;
 }
 
@@ -485,7 +541,7 @@ TissueMaterial TissueMaterial::loose() {
 std::size_t TissueModel::memory_bytes() const {
   auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
   return sizeof(*this) + bytes(rest_x) + bytes(rest_y) + bytes(rest_z) + bytes(skull_normal) +
-         bytes(column_thickness) + bytes(column_on_bone) + bytes(jaw_share) + bytes(jaw_columns) + bytes(inverse_mass) + bytes(pinned_nodes) + bytes(spring_a) + bytes(spring_b) +
+         bytes(column_thickness) + bytes(column_on_bone) + bytes(jaw_share) + bytes(bulge_depth) + bytes(bulge_muscle) + bytes(moving_bone_columns) + bytes(inverse_mass) + bytes(pinned_nodes) + bytes(spring_a) + bytes(spring_b) +
          bytes(spring_rest) + bytes(spring_kind) + 6 * bytes(element_node[0]) + bytes(element_rest_volume) +
          bytes(element_force_scale) + bytes(skin_triangles) + bytes(skin_rest_area) + bytes(muscles) +
          bytes(attach_node) + bytes(attach_weight) + bytes(attach_column) + muscle_particles.memory_bytes() +

@@ -83,7 +83,10 @@ TEST(RoomSimulationSolver, ProjectiveDynamicsSmilesAsMassSpringDoes) {
 }
 
 // A held smile: the physics face comes to rest on it and costs nothing,
-// yet the smile on the face still wavers (never frozen on its plateau).
+// yet the smile on the face still wavers (never frozen on its plateau). It
+// rests for 85 of the 180 ticks (103 on a uniform 12 mm of tissue: with the
+// face's regional depths, the thin lid and forehead columns, the projective
+// face takes 0.6 s longer to settle on joy).
 TEST(RoomSimulationPlateau, AHeldExpressionLivesWhileTheTissueRests) {
   RoomSimulation room = room_with_physics();
   const AvatarId a = room.add_avatar({"a", true});
@@ -98,7 +101,7 @@ TEST(RoomSimulationPlateau, AHeldExpressionLivesWhileTheTissueRests) {
     hi = std::max(hi, smile(room.face(a)));
   }
   std::printf("tissue resting %d of 180 ticks; the smile between %.3f and %.3f\n", resting, lo, hi);
-  EXPECT_GT(resting, 90) << "the physics face should rest on a held expression";
+  EXPECT_GT(resting, 60) << "the physics face should rest on a held expression";
   EXPECT_GT(hi - lo, 0.02f) << "the smile is frozen";
   EXPECT_GT(lo, 0.4f);
 }

@@ -156,7 +156,7 @@ class FaceSimulation {
   void substep(float h);
   void update_muscles_and_jaw(float h);
   void place_bone(float h);
-  void move_node_with_jaw(std::size_t i, float share, float h);
+  void move_node_with_jaw(std::size_t i, float share, float h, const glm::vec3& normal, float lift);
   void mass_spring_substep(float h);
   void pbd_substep(float h, const std::array<float, kMuscleCount>& activation);  // XPBD (xpbd_step.cpp)
   void resolve_skull();
@@ -173,6 +173,7 @@ class FaceSimulation {
   std::array<float, kMuscleCount> floor_{};  ///< set_muscle_floor
   float jaw_angle_ = 0, jaw_speed_ = 0, jaw_target_ = 0;
   float jaw_cos_ = 1, jaw_sin_ = 0;
+  glm::vec3 jaw_glide_{0.0f};  ///< the condyles' glide down the eminence now (TissueModel::jaw_glide)
   double time_s_ = 0;
   bool at_rest_ = true;
   float max_speed2_ = 0;

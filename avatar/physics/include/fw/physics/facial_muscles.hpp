@@ -17,7 +17,7 @@ namespace fw::physics {
 enum class MuscleKind : std::uint8_t {
   linear,     ///< pulls tissue toward a bony origin (Waters' vector muscle)
   sphincter,  ///< pulls tissue toward the centre of an ellipse
-  jaw,        ///< turns the jaw only (no skin attachment)
+  jaw,        ///< turns the jaw; no skin attachment (its belly may bulge: bulge_mm)
 };
 
 /// A point on the face: a landmark (or the midpoint of two) plus an offset in
@@ -56,6 +56,15 @@ struct MuscleDefinition {
   /// Jaw muscles: the jaw angle this muscle alone holds at activation 1
   /// (positive opens).
   float jaw_angle_rad = 0.0f;
+  /// How much thicker the muscle's belly (between origin and insertion,
+  /// `width` to either side) is at activation 1, mm: a contracting muscle
+  /// keeps its volume, so it bulges as it shortens. The belly lies in the
+  /// muscle layer, under the fascia: the tissue over it is pushed outward.
+  float bulge_mm = 0.0f;
+  /// The nose's own muscles insert into its skin; the others (the
+  /// orbicularis oculi, the lip elevators) end at its border and leave its
+  /// columns alone.
+  bool moves_nose = false;
 };
 
 inline constexpr std::size_t kMusclesPerSide = 21;

@@ -45,6 +45,23 @@ inline float linear_muscle_weight(const glm::vec3& p, const glm::vec3& origin, c
   return longitudinal * std::cos(kHalfPi * lateral / width);
 }
 
+/// Weight of a muscle's belly at `p`, in [0,1]: how much of the muscle's
+/// thickening lies under p. t = (p - O).u / L along the muscle from origin O
+/// to insertion I, w = sin(pi t) cos(pi/2 d / width) between them (a belly
+/// thickest half-way, thinning to its tendons), 0 elsewhere.
+inline float muscle_belly_weight(const glm::vec3& p, const glm::vec3& origin, const glm::vec3& insertion, float width) {
+  constexpr float kPi = 3.14159265f;
+  const glm::vec3 axis = insertion - origin;
+  const float length = glm::length(axis);
+  const glm::vec3 u = axis / length;
+  const glm::vec3 r = p - origin;
+  const float along = glm::dot(r, u);
+  const float t = along / length;
+  const float lateral = glm::length(r - along * u);
+  if (t <= 0.0f || t >= 1.0f || lateral >= width) return 0.0f;
+  return std::sin(kPi * t) * std::cos(0.5f * kPi * lateral / width);
+}
+
 /// Weight of a sphincter at `p`, in [0,1]: with the elliptical radius
 ///   rho = sqrt((dx/a)^2 + (dy/b)^2)  (dx, dy from the centre, in the face plane),
 /// w = cos(pi/2 |rho - 1| / ring) inside the ring, 0 outside.

@@ -7,7 +7,9 @@
 // four triangular prism elements, and the nodes are joined by viscoelastic
 // units: the triangle edges in every layer, the columns between layers and
 // two crossing diagonals on every prism side. The bone layer is fixed to the
-// skull, its lower part to the mandible, which turns about its hinge.
+// skull, its lower part to the mandible, which turns about its hinge and
+// glides forward as it opens wide; over the masseter's belly it rises as the
+// muscle contracts.
 //
 // Storage is one array per quantity (structure of arrays, 16-bit node
 // indices), so a simulation step is a few linear passes the compiler can
@@ -58,7 +60,6 @@ struct TissueMaterial {
   /// beside the units' own; not a drag of the world frame).
   float bone_damping = 0;
   float node_mass = 1;
-  float thickness_mm = 12;      ///< skin surface to bone, where the face allows
   /// Normal adult skin (the paper's Fig. 2a).
   static TissueMaterial normal();
   /// Looser, aged skin (Fig. 2b): softer skin layers with a negative
@@ -92,7 +93,9 @@ struct TissueModel {
 
   std::vector<float> rest_x, rest_y, rest_z;  ///< #nodes, model units
   std::vector<glm::vec3> skull_normal;        ///< #V, unit, out of the bone, at rest
-  std::vector<float> column_thickness;        ///< #V, model units, skin to bone
+  /// #V, model units, skin to bone: the region's depth
+  /// (regional_thickness.hpp), thinner where columns converge.
+  std::vector<float> column_thickness;
   /// #V: 1 where the tissue is tied to the bone under it; 0 under the lips
   /// and mouth corners, which only slide over the teeth.
   std::vector<std::uint8_t> column_on_bone;
@@ -101,10 +104,21 @@ struct TissueModel {
 
   // The articulated jaw: bone nodes follow its turn about the hinge (an axis
   // along x) by their column's share, the lower lip fully, the upper not.
+  // Past jaw_glide_onset_rad the condyles also glide forward and down the
+  // articular eminence, in proportion to the opening, by jaw_glide at
+  // jaw_max_rad: rotation first, then rotation and translation.
   glm::vec3 jaw_hinge{0.0f};
+  glm::vec3 jaw_glide{0.0f};                  ///< model units, at jaw_max_rad
+  float jaw_glide_onset_rad = 0;
   std::vector<float> jaw_share;               ///< #V
-  std::vector<std::uint16_t> jaw_columns;     ///< columns with a share > 0
   float jaw_min_rad = -0.03f, jaw_max_rad = 0.45f;
+  /// A bulging muscle's belly under the fascia (the masseter's): per column,
+  /// how far its bone node is pushed out along the skull normal at the
+  /// muscle's activation 1 (model units, 0: no belly) and which muscle.
+  std::vector<float> bulge_depth;             ///< #V
+  std::vector<std::uint8_t> bulge_muscle;     ///< #V, a muscle index
+  /// Columns whose bone node moves: a jaw share > 0 or a belly under it.
+  std::vector<std::uint16_t> moving_bone_columns;
 
   /// Per moving node: 1 / mass, or 0 for the columns on the mesh's outer
   /// boundary, where the face's tissue goes on into scalp and neck: they are
