@@ -39,7 +39,7 @@ std::vector<Scenario> scenarios() {
   Scenario disgust{"disgust", {}};
   model::apply_expression(model::Expression::disgust, 1.0f, disgust.targets);
   Scenario jaw{"wide_jaw", {}};
-  for (const int au : {25, 26, 27}) jaw.targets.set_au(au, 1.0f);
+  for (const int au : {25, 27}) jaw.targets.set_au(au, 1.0f);  // lips apart, mouth stretch (AU 26 is the lesser drop)
   return {disgust, jaw};
 }
 
