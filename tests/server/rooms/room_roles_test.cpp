@@ -19,6 +19,7 @@
 #include "room_bus_relay.hpp"
 #include "room_registry.hpp"
 #include "sample_messages.hpp"
+#include "step_gate.hpp"
 
 namespace fw::server {
 namespace {
@@ -352,32 +353,6 @@ TEST(RoomRoles, AnOwnerThatStepsDownAsksItsPeopleBackAndBridges) {
   EXPECT_EQ(room->person_count(), 0u);
 }
 
-/// A gate the stepper's batches pass, closed by a test: the worker that
-/// steps waits there, and the rooms that hand their faces over meanwhile
-/// wait for it with their ticks under way.
-class StepGate {
- public:
-  void close() {
-    const std::lock_guard lock(mutex_);
-    open_ = false;
-  }
-  void open() {
-    {
-      const std::lock_guard lock(mutex_);
-      open_ = true;
-    }
-    opened_.notify_all();
-  }
-  void pass() {
-    std::unique_lock lock(mutex_);
-    opened_.wait_for(lock, std::chrono::seconds(30), [this] { return open_; });
-  }
-
- private:
-  std::mutex mutex_;
-  std::condition_variable opened_;
-  bool open_ = true;
-};
 
 codec::Command joy() {
   codec::Command command;

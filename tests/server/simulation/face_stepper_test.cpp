@@ -16,35 +16,11 @@
 #include <gtest/gtest.h>
 
 #include "room_simulation.hpp"
+#include "step_gate.hpp"
 
 namespace fw::server {
 namespace {
 
-// A gate the stepper's first batch of a tick waits at, so that the other
-// rooms hand their faces over meanwhile (as they do on a busy pool).
-class Gate {
- public:
-  void close() {
-    const std::lock_guard lock(mutex_);
-    open_ = false;
-  }
-  void open() {
-    {
-      const std::lock_guard lock(mutex_);
-      open_ = true;
-    }
-    opened_.notify_all();
-  }
-  void pass() {
-    std::unique_lock lock(mutex_);
-    opened_.wait_for(lock, std::chrono::seconds(30), [this] { return open_; });
-  }
-
- private:
-  std::mutex mutex_;
-  std::condition_variable opened_;
-  bool open_ = true;
-};
 
 constexpr int kRooms = 3;
 constexpr int kFaces = 7;  // 21 faces: a batch of 16 and one of 5, across rooms
@@ -111,7 +87,7 @@ TEST(FaceStepper, RoomsSteppedTogetherOnThePoolGiveTheFacesEachGivesAlone) {
 
   // The first room's faces stepped on a worker of their own while the
   // others hand theirs over: those join one batch across the rooms.
-  Gate gate;
+  StepGate gate;
   FaceStepper stepper([&gate](double) { gate.pass(); });
   std::vector<RoomSimulation> pooled = rooms();
   Record by_pool;
