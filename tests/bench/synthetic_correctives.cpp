@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include "splitmix_random.hpp"
+
 namespace fw::bench {
 namespace {
 
@@ -21,22 +23,7 @@ constexpr int kProducts = 3;
 // enough to give the weights the bandwidth of the AU motion, not more.
 constexpr double kLagSeconds = 0.06;
 
-// splitmix64: the same numbers on every platform (the golden vectors depend on them).
-class Numbers {
- public:
-  explicit Numbers(std::uint64_t seed) : state_(seed) {}
-  std::uint64_t next() {
-    std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-  double uniform(double lo, double hi) { return lo + (hi - lo) * static_cast<double>(next() >> 11) * 0x1.0p-53; }
-  std::size_t index(std::size_t n) { return static_cast<std::size_t>(next() % n); }
-
- private:
-  std::uint64_t state_;
-};
+using Numbers = SplitMixRandom;
 
 struct Product {
   std::size_t a, b;

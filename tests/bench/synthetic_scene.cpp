@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "splitmix_random.hpp"
+
 namespace fw::bench {
 namespace {
 
@@ -15,25 +17,7 @@ using codec::FaceParams;
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
-// splitmix64: the same numbers on every platform (the standard library's
-// distributions are not specified bit for bit).
-class Random {
- public:
-  explicit Random(std::uint64_t seed) : state_(seed) {}
-  std::uint64_t next() {
-    std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-  double uniform(double lo, double hi) { return lo + (hi - lo) * static_cast<double>(next() >> 11) * 0x1.0p-53; }
-  double exponential(double mean) { return -mean * std::log(1.0 - uniform(0.0, 1.0)); }
-  bool chance(double p) { return uniform(0.0, 1.0) < p; }
-  int pick(int n) { return static_cast<int>(next() % static_cast<std::uint64_t>(n)); }
-
- private:
-  std::uint64_t state_;
-};
+using Random = SplitMixRandom;
 
 double smoothstep(double x) {
   x = std::clamp(x, 0.0, 1.0);

@@ -14,6 +14,21 @@
 
 namespace fw::physics {
 
+/// Where `p` lies against a muscle's axis from `origin` to `insertion`
+/// (O != I): its distance along the axis from O, the axis length, and its
+/// distance from the axis.
+struct MusclePlace {
+  float along, length, lateral;
+};
+inline MusclePlace place_along_muscle(const glm::vec3& p, const glm::vec3& origin, const glm::vec3& insertion) {
+  const glm::vec3 axis = insertion - origin;
+  const float length = glm::length(axis);
+  const glm::vec3 u = axis / length;
+  const glm::vec3 r = p - origin;
+  const float along = glm::dot(r, u);
+  return {along, length, glm::length(r - along * u)};
+}
+
 /// Weight of a linear muscle at `p`, in [0,1]:
 ///   t = (p - O).u / L,  longitudinal: 0 before t0, sin ramp to 1 at t = 1,
 ///   cos fade to 0 at t = 1 + reach / L;  lateral: cos(pi/2 d / width).
@@ -26,13 +41,8 @@ namespace fw::physics {
 inline float linear_muscle_weight(const glm::vec3& p, const glm::vec3& origin, const glm::vec3& insertion, float width,
                                   float reach, float onset) {
   constexpr float kHalfPi = 1.57079633f;
-  const glm::vec3 axis = insertion - origin;
-  const float length = glm::length(axis);
-  const glm::vec3 u = axis / length;
-  const glm::vec3 r = p - origin;
-  const float along = glm::dot(r, u);
+  const auto [along, length, lateral] = place_along_muscle(p, origin, insertion);
   const float t = along / length;
-  const float lateral = glm::length(r - along * u);
   if (t <= onset || lateral >= width) return 0.0f;
   float longitudinal = 1.0f;
   if (t < 1.0f) {
@@ -51,13 +61,8 @@ inline float linear_muscle_weight(const glm::vec3& p, const glm::vec3& origin, c
 /// thickest half-way, thinning to its tendons), 0 elsewhere.
 inline float muscle_belly_weight(const glm::vec3& p, const glm::vec3& origin, const glm::vec3& insertion, float width) {
   constexpr float kPi = 3.14159265f;
-  const glm::vec3 axis = insertion - origin;
-  const float length = glm::length(axis);
-  const glm::vec3 u = axis / length;
-  const glm::vec3 r = p - origin;
-  const float along = glm::dot(r, u);
+  const auto [along, length, lateral] = place_along_muscle(p, origin, insertion);
   const float t = along / length;
-  const float lateral = glm::length(r - along * u);
   if (t <= 0.0f || t >= 1.0f || lateral >= width) return 0.0f;
   return std::sin(kPi * t) * std::cos(0.5f * kPi * lateral / width);
 }
