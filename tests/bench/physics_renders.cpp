@@ -20,15 +20,13 @@
 #include "fw/render/face_renderer.hpp"
 #include "fw/render/png.hpp"
 #include "bench_failure.hpp"
+#include "kinematic_track.hpp"
 
 namespace fw::bench {
 namespace {
 
 using AuTargets = std::array<float, codec::kAuChannelCount>;
 
-// The room's kinematic fallback (server/simulation room_simulation.cpp):
-// each AU approaches its target with the muscles' activation time constants.
-constexpr double kRiseS = 0.08, kFallS = 0.12;
 constexpr double kFrameS = 1.0 / 30.0;
 constexpr float kMmPerUnit = 63.0f;
 
@@ -116,17 +114,14 @@ void run(const std::filesystem::path& out_dir, double onset_s, double settle_s) 
     o.solver = physics::Solver::projective;
     physics::FaceSimulation sim(face, o);
     sim.set_action_units(scenario.targets.au);
-    AuTargets kinematic{};
+    KinematicTrack kinematic;
     double t = 0;
     for (const auto& [moment, until_s] : {std::pair{"onset", onset_s}, std::pair{"settled", settle_s}}) {
       for (; t + 1e-9 < until_s; t += kFrameS) {
         sim.step(kFrameS);
-        for (std::size_t c = 0; c < kinematic.size(); ++c) {
-          const double tau = scenario.targets.au[c] > kinematic[c] ? kRiseS : kFallS;
-          kinematic[c] += static_cast<float>((1.0 - std::exp(-kFrameS / tau)) * (scenario.targets.au[c] - kinematic[c]));
-        }
+        kinematic.follow(scenario.targets.au, kFrameS);
       }
-      const Panels p = panels_now(sim, kinematic, appearance.avatar);
+      const Panels p = panels_now(sim, kinematic.weights(), appearance.avatar);
       const std::string stem = scenario.name + "_" + moment;
       write_row(*renderer, id, p, 0.0f, out_dir / (stem + "_front.png"));
       write_row(*renderer, id, p, 0.7f, out_dir / (stem + "_side.png"));

@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 
 #include "bench_failure.hpp"
+#include "kinematic_track.hpp"
 #include "fw/model/avatar_model.hpp"
 #include "fw/model/face_reconstruction.hpp"
 #include "fw/model/landmark_template.hpp"
@@ -15,24 +16,6 @@ namespace fw::bench {
 namespace {
 
 double rounded(double v) { return std::round(v * 1000.0) / 1000.0; }
-
-// The kinematic fallback of a room's face (server/simulation
-// room_simulation.cpp, follow_kinematically): each AU approaches its target
-// with the muscles' activation time constants, avatar/physics' defaults.
-class KinematicTrack {
- public:
-  void follow(const physics::AuFrame& targets, double dt_s) {
-    const physics::SimulationOptions muscles;
-    for (std::size_t c = 0; c < targets.size(); ++c) {
-      const double tau = targets[c] > weights_[c] ? muscles.activation_time_s : muscles.deactivation_time_s;
-      weights_[c] += static_cast<float>((1.0 - std::exp(-dt_s / tau)) * (targets[c] - weights_[c]));
-    }
-  }
-  const physics::AuFrame& weights() const { return weights_; }
-
- private:
-  physics::AuFrame weights_{};
-};
 
 double squared_distance(const model::FaceShape& a, const model::FaceShape& b) {
   double sum = 0.0;
