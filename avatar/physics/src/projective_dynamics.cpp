@@ -22,6 +22,7 @@ struct Scratch {
   std::vector<float> constant[kMaxBatchFaces][3];              // per face, per axis, #nodes
   std::vector<float> u[kMaxBatchFaces][3];                     // per face, per axis, #nodes
   std::vector<float> sum[3];                                   // #nodes
+  std::vector<detail::NodeSum4> projected;                     // #nodes: constant plus the projections
 };
 
 Scratch& scratch_for(std::size_t nodes, std::size_t rows, std::size_t faces) {
@@ -32,6 +33,7 @@ Scratch& scratch_for(std::size_t nodes, std::size_t rows, std::size_t faces) {
     for (auto& v : s.u[f]) v.resize(nodes);
   }
   for (auto& v : s.sum) v.resize(nodes);
+  s.projected.resize(nodes);
   return s;
 }
 
@@ -145,14 +147,14 @@ void ProjectiveStepper::substep(std::span<FaceSimulation* const> faces, float h)
     // Local: every constraint projects this face's positions.
     for (std::size_t f = 0; f < faces.size(); ++f) {
       FaceSimulation& face = *faces[f];
-      for (std::size_t axis = 0; axis < 3; ++axis) std::copy(s.constant[f][axis].begin(), s.constant[f][axis].end(), s.sum[axis].begin());
+      const auto& c = s.constant[f];
+      for (std::size_t i = 0; i < nodes; ++i) s.projected[i] = detail::NodeSum4{c[0][i], c[1][i], c[2][i], 0.0f};
       detail::add_projections(*systems[f], {face.x_.data(), face.y_.data(), face.z_.data()},
-                              {s.u[f][0].data(), s.u[f][1].data(), s.u[f][2].data()},
-                              {s.sum[0].data(), s.sum[1].data(), s.sum[2].data()});
+                              {s.u[f][0].data(), s.u[f][1].data(), s.u[f][2].data()}, s.projected.data());
       for (std::size_t r = 0; r < free_nodes.size(); ++r) {
         float* row = s.rows.data() + r * lanes + f;
-        const std::size_t i = free_nodes[r];
-        row[0] = s.sum[0][i], row[width] = s.sum[1][i], row[2 * width] = s.sum[2][i];
+        const detail::NodeSum4& sum = s.projected[free_nodes[r]];
+        row[0] = sum[0], row[width] = sum[1], row[2 * width] = sum[2];
       }
     }
     // Global: one solve for all faces and axes.

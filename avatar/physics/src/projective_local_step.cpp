@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "hot_clones.hpp"
 #include "wedge_volume.hpp"
@@ -15,7 +16,7 @@ constexpr std::size_t kBlock = 128;
 // Springs in blocks: every projection of a block first (no writes to shared
 // nodes, so the loop vectorises), then the block added onto its nodes.
 FW_HOT_CLONES
-void add_spring_projections(const ProjectiveSystem& s, const NodeVectors& q, const NodeVectors& u, const NodeSums& out) {
+void add_spring_projections(const ProjectiveSystem& s, const NodeVectors& q, const NodeVectors& u, NodeSum4* out) {
   const std::uint16_t* sa = s.spring_a.data();
   const std::uint16_t* sb = s.spring_b.data();
   const float* length = s.spring_length.data();
@@ -24,7 +25,7 @@ void add_spring_projections(const ProjectiveSystem& s, const NodeVectors& q, con
   const float* soft = s.spring_soft_share.data();
   const float* compression = s.spring_compression.data();
   const std::size_t count = s.spring_a.size();
-  float gx[kBlock], gy[kBlock], gz[kBlock];
+  float g[kBlock][4];  // per spring x, y, z and 0, as a node's sum is laid out
   for (std::size_t begin = 0; begin < count; begin += kBlock) {
     const std::size_t size = std::min(kBlock, count - begin);
     for (std::size_t j = 0; j < size; ++j) {
@@ -39,14 +40,16 @@ void add_spring_projections(const ProjectiveSystem& s, const NodeVectors& q, con
       const float stretch = soft[i] * linear + (1.0f - soft[i]) * std::max(0.0f, now - knee[i]);
       const float scale = (now - stretch) * inverse;
       // w (p + A u): the projection and the spring's share of L u.
-      gx[j] = weight[i] * (scale * dx + u.x[b] - u.x[a]);
-      gy[j] = weight[i] * (scale * dy + u.y[b] - u.y[a]);
-      gz[j] = weight[i] * (scale * dz + u.z[b] - u.z[a]);
+      g[j][0] = weight[i] * (scale * dx + u.x[b] - u.x[a]);
+      g[j][1] = weight[i] * (scale * dy + u.y[b] - u.y[a]);
+      g[j][2] = weight[i] * (scale * dz + u.z[b] - u.z[a]);
+      g[j][3] = 0.0f;
     }
     for (std::size_t j = 0; j < size; ++j) {
-      const std::size_t a = sa[begin + j], b = sb[begin + j];
-      out.x[a] -= gx[j], out.y[a] -= gy[j], out.z[a] -= gz[j];
-      out.x[b] += gx[j], out.y[b] += gy[j], out.z[b] += gz[j];
+      NodeSum4 pull;
+      std::memcpy(&pull, g[j], sizeof pull);
+      out[sa[begin + j]] -= pull;
+      out[sb[begin + j]] += pull;
     }
   }
 }
@@ -57,7 +60,7 @@ void add_spring_projections(const ProjectiveSystem& s, const NodeVectors& q, con
 // Newton step onto the rest volume. The gradient sums to zero (moving a
 // prism keeps its volume), so the target stays about the centroid.
 FW_HOT_CLONES
-void add_volume_projections(const ProjectiveSystem& s, const NodeVectors& q, const NodeVectors& u, const NodeSums& out) {
+void add_volume_projections(const ProjectiveSystem& s, const NodeVectors& q, const NodeVectors& u, NodeSum4* out) {
   const std::size_t count = s.element_weight.size();
   const std::uint16_t* corner[6];
   for (std::size_t k = 0; k < 6; ++k) corner[k] = s.element_node[k].data();
@@ -98,16 +101,14 @@ void add_volume_projections(const ProjectiveSystem& s, const NodeVectors& q, con
     for (std::size_t j = 0; j < size; ++j)
       for (std::size_t k = 0; k < 6; ++k) {
         const std::size_t node = corner[k][begin + j];
-        out.x[node] += g[k * 3 + 0][j];
-        out.y[node] += g[k * 3 + 1][j];
-        out.z[node] += g[k * 3 + 2][j];
+        out[node] += NodeSum4{g[k * 3 + 0][j], g[k * 3 + 1][j], g[k * 3 + 2][j], 0.0f};
       }
   }
 }
 
 }  // namespace
 
-void add_projections(const ProjectiveSystem& system, const NodeVectors& q, const NodeVectors& u, const NodeSums& out) {
+void add_projections(const ProjectiveSystem& system, const NodeVectors& q, const NodeVectors& u, NodeSum4* out) {
   add_spring_projections(system, q, u, out);
   add_volume_projections(system, q, u, out);
 }
