@@ -22,7 +22,9 @@ struct Scratch {
   std::vector<float> constant[kMaxBatchFaces][3];              // per face, per axis, #nodes
   std::vector<float> u[kMaxBatchFaces][3];                     // per face, per axis, #nodes
   std::vector<float> sum[3];                                   // #nodes
-  std::vector<detail::NodeSum4> projected;                     // #nodes: constant plus the projections
+  std::vector<detail::NodeSum4> projected;                     // #nodes: constant plus the projections (one face)
+  // A batch's faces interleaved as the rows are, [(node * 3 + axis) * W + face]:
+  std::vector<float> q_lanes, u_lanes, constant_lanes, sum_lanes;  // #nodes x lanes
 };
 
 Scratch& scratch_for(std::size_t nodes, std::size_t rows, std::size_t faces) {
@@ -33,7 +35,12 @@ Scratch& scratch_for(std::size_t nodes, std::size_t rows, std::size_t faces) {
     for (auto& v : s.u[f]) v.resize(nodes);
   }
   for (auto& v : s.sum) v.resize(nodes);
-  s.projected.resize(nodes);
+  if (faces == 1) {
+    s.projected.resize(nodes);
+  } else {
+    const std::size_t lanes = detail::lanes_for(faces);
+    for (auto* v : {&s.q_lanes, &s.u_lanes, &s.constant_lanes, &s.sum_lanes}) v->resize(nodes * lanes);
+  }
   return s;
 }
 
@@ -143,18 +150,53 @@ void ProjectiveStepper::substep(std::span<FaceSimulation* const> faces, float h)
     }
   }
 
+  // A batch's local steps run across its faces: each node's values of every
+  // face side by side, as the solve's rows hold them (padding lanes repeat
+  // the first face).
+  std::array<const detail::ProjectiveSystem*, kMaxBatchFaces> lane_systems{};
+  std::array<detail::NodeVectors, kMaxBatchFaces> face_q{}, face_u{};
+  auto interleave = [&](float* lanes_out, auto&& source) {
+    for (std::size_t lane = 0; lane < width; ++lane) {
+      const std::size_t f = lane < faces.size() ? lane : 0;
+      for (std::size_t axis = 0; axis < 3; ++axis) {
+        const float* from = source(f, axis);
+        for (std::size_t i = 0; i < nodes; ++i) lanes_out[(i * 3 + axis) * width + lane] = from[i];
+      }
+    }
+  };
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    face_q[f] = {faces[f]->x_.data(), faces[f]->y_.data(), faces[f]->z_.data()};
+    face_u[f] = {s.u[f][0].data(), s.u[f][1].data(), s.u[f][2].data()};
+  }
+  if (faces.size() > 1) {
+    for (std::size_t lane = 0; lane < width; ++lane) lane_systems[lane] = systems[lane < faces.size() ? lane : 0].get();
+    interleave(s.u_lanes.data(), [&](std::size_t f, std::size_t axis) { return s.u[f][axis].data(); });
+    interleave(s.constant_lanes.data(), [&](std::size_t f, std::size_t axis) { return s.constant[f][axis].data(); });
+  }
+
   for (int iteration = 0; iteration < kIterations; ++iteration) {
-    // Local: every constraint projects this face's positions.
-    for (std::size_t f = 0; f < faces.size(); ++f) {
-      FaceSimulation& face = *faces[f];
-      const auto& c = s.constant[f];
+    // Local: every constraint projects each face's positions.
+    if (faces.size() == 1) {
+      const auto& c = s.constant[0];
       for (std::size_t i = 0; i < nodes; ++i) s.projected[i] = detail::NodeSum4{c[0][i], c[1][i], c[2][i], 0.0f};
-      detail::add_projections(*systems[f], {face.x_.data(), face.y_.data(), face.z_.data()},
-                              {s.u[f][0].data(), s.u[f][1].data(), s.u[f][2].data()}, s.projected.data());
+      detail::add_projections(system, face_q[0], face_u[0], s.projected.data());
       for (std::size_t r = 0; r < free_nodes.size(); ++r) {
-        float* row = s.rows.data() + r * lanes + f;
+        float* row = s.rows.data() + r * lanes;
         const detail::NodeSum4& sum = s.projected[free_nodes[r]];
-        row[0] = sum[0], row[width] = sum[1], row[2 * width] = sum[2];
+        row[0] = sum[0], row[1] = sum[1], row[2] = sum[2];
+      }
+    } else {
+      interleave(s.q_lanes.data(), [&](std::size_t f, std::size_t axis) {
+        return axis == 0 ? face_q[f].x : axis == 1 ? face_q[f].y : face_q[f].z;
+      });
+      std::copy(s.constant_lanes.begin(), s.constant_lanes.end(), s.sum_lanes.begin());
+      detail::add_projections_across(std::span(lane_systems.data(), width), s.q_lanes.data(), s.u_lanes.data(),
+                                     std::span(face_q.data(), faces.size()), std::span(face_u.data(), faces.size()),
+                                     s.sum_lanes.data());
+      // A free node's sums are its row, as they are laid out.
+      for (std::size_t r = 0; r < free_nodes.size(); ++r) {
+        const float* sum = s.sum_lanes.data() + std::size_t(free_nodes[r]) * lanes;
+        std::copy(sum, sum + lanes, s.rows.data() + r * lanes);
       }
     }
     // Global: one solve for all faces and axes.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
 
 #include "hot_clones.hpp"
 #include "wedge_volume.hpp"
@@ -12,6 +13,31 @@ namespace {
 
 constexpr std::size_t kBlock = 128;
 
+
+// One spring's weighted pull w (p + A u) from b's side, d = q_b - q_a, ub
+// and ua the ends' u: the projection's direction now at the length the
+// curve asks, plus the spring's share of L u. One expression for the
+// per-face kernel and the one across faces, so a face gets the same bits in
+// both.
+struct SpringPull {
+  float x, y, z;
+};
+struct SpringEnds {
+  float dx, dy, dz, ubx, uby, ubz, uax, uay, uaz;
+};
+FW_PHYSICS_ALWAYS_INLINE SpringPull spring_pull(const SpringEnds& e, float length, float knee, float weight, float soft,
+                                                float compression) {
+  const float dx = e.dx, dy = e.dy, dz = e.dz;
+  const float length2 = std::max(dx * dx + dy * dy + dz * dz, 1e-18f);
+  const float inverse = 1.0f / std::sqrt(length2), now = length2 * inverse;
+  // k2 (now - target) = k1 (max(0, d) + c min(0, d)) + (k2 - k1) max(0, now - knee), d = now - L0:
+  // a slack unit (c = 0) shorter than its natural length targets its own length.
+  const float from_natural = now - length;
+  const float linear = std::max(0.0f, from_natural) + compression * std::min(0.0f, from_natural);
+  const float stretch = soft * linear + (1.0f - soft) * std::max(0.0f, now - knee);
+  const float scale = (now - stretch) * inverse;
+  return {weight * (scale * dx + e.ubx - e.uax), weight * (scale * dy + e.uby - e.uay), weight * (scale * dz + e.ubz - e.uaz)};
+}
 
 // Springs in blocks: every projection of a block first (no writes to shared
 // nodes, so the loop vectorises), then the block added onto its nodes.
@@ -30,20 +56,9 @@ void add_spring_projections(const ProjectiveSystem& s, const NodeVectors& q, con
     const std::size_t size = std::min(kBlock, count - begin);
     for (std::size_t j = 0; j < size; ++j) {
       const std::size_t i = begin + j, a = sa[i], b = sb[i];
-      const float dx = q.x[b] - q.x[a], dy = q.y[b] - q.y[a], dz = q.z[b] - q.z[a];
-      const float length2 = std::max(dx * dx + dy * dy + dz * dz, 1e-18f);
-      const float inverse = 1.0f / std::sqrt(length2), now = length2 * inverse;
-      // k2 (now - target) = k1 (max(0, d) + c min(0, d)) + (k2 - k1) max(0, now - knee), d = now - L0:
-      // a slack unit (c = 0) shorter than its natural length targets its own length.
-      const float from_natural = now - length[i];
-      const float linear = std::max(0.0f, from_natural) + compression[i] * std::min(0.0f, from_natural);
-      const float stretch = soft[i] * linear + (1.0f - soft[i]) * std::max(0.0f, now - knee[i]);
-      const float scale = (now - stretch) * inverse;
-      // w (p + A u): the projection and the spring's share of L u.
-      g[j][0] = weight[i] * (scale * dx + u.x[b] - u.x[a]);
-      g[j][1] = weight[i] * (scale * dy + u.y[b] - u.y[a]);
-      g[j][2] = weight[i] * (scale * dz + u.z[b] - u.z[a]);
-      g[j][3] = 0.0f;
+      const SpringEnds ends{q.x[b] - q.x[a], q.y[b] - q.y[a], q.z[b] - q.z[a], u.x[b], u.y[b], u.z[b], u.x[a], u.y[a], u.z[a]};
+      const SpringPull pull = spring_pull(ends, length[i], knee[i], weight[i], soft[i], compression[i]);
+      g[j][0] = pull.x, g[j][1] = pull.y, g[j][2] = pull.z, g[j][3] = 0.0f;
     }
     for (std::size_t j = 0; j < size; ++j) {
       NodeSum4 pull;
@@ -54,13 +69,58 @@ void add_spring_projections(const ProjectiveSystem& s, const NodeVectors& q, con
   }
 }
 
+// The springs of W faces at once, each face a lane of the interleaved
+// arrays: a spring's ends are two runs of 3 W floats, loaded and added to
+// as vectors, where one face at a time gathers twelve scattered floats per
+// spring (the local step's largest cost). The material is the batch's
+// (ProjectiveSystem checks it); each face has its own rest lengths.
+template <std::size_t W>
+FW_PHYSICS_ALWAYS_INLINE void add_spring_projections_across(const ProjectiveSystem* const* systems, const float* __restrict q,
+                                                            const float* __restrict u, float* __restrict out) {
+  const ProjectiveSystem& s = *systems[0];
+  const std::uint16_t* sa = s.spring_a.data();
+  const std::uint16_t* sb = s.spring_b.data();
+  const float* weight = s.spring_weight.data();
+  const float* soft = s.spring_soft_share.data();
+  const float* compression = s.spring_compression.data();
+  const float* lengths[W];
+  const float* knees[W];
+  for (std::size_t k = 0; k < W; ++k) lengths[k] = systems[k]->spring_length.data(), knees[k] = systems[k]->spring_knee_length.data();
+  const std::size_t count = s.spring_a.size();
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::size_t a = sa[i] * 3 * W, b = sb[i] * 3 * W;
+    float length[W], knee[W], gx[W], gy[W], gz[W];
+    for (std::size_t k = 0; k < W; ++k) length[k] = lengths[k][i], knee[k] = knees[k][i];
+    for (std::size_t k = 0; k < W; ++k) {
+      const SpringEnds ends{q[b + k] - q[a + k], q[b + W + k] - q[a + W + k], q[b + 2 * W + k] - q[a + 2 * W + k],
+                            u[b + k],            u[b + W + k],               u[b + 2 * W + k],
+                            u[a + k],            u[a + W + k],               u[a + 2 * W + k]};
+      const SpringPull pull = spring_pull(ends, length[k], knee[k], weight[i], soft[i], compression[i]);
+      gx[k] = pull.x, gy[k] = pull.y, gz[k] = pull.z;
+    }
+    for (std::size_t k = 0; k < W; ++k) out[a + k] -= gx[k], out[a + W + k] -= gy[k], out[a + 2 * W + k] -= gz[k];
+    for (std::size_t k = 0; k < W; ++k) out[b + k] += gx[k], out[b + W + k] += gy[k], out[b + 2 * W + k] += gz[k];
+  }
+}
+
+#define FW_SPRINGS_ACROSS(W)                                                                                     \
+  FW_HOT_CLONES void add_spring_projections_across_##W(const ProjectiveSystem* const* systems, const float* q, \
+                                                       const float* u, float* out) {                          \
+    add_spring_projections_across<W>(systems, q, u, out);                                                     \
+  }
+FW_SPRINGS_ACROSS(2)
+FW_SPRINGS_ACROSS(4)
+FW_SPRINGS_ACROSS(8)
+FW_SPRINGS_ACROSS(16)
+#undef FW_SPRINGS_ACROSS
+
 // Prisms in blocks likewise. A prism's constraint is on its six corners
 // about their centroid (A = I - 1 1^T / 6, so A^T A = A): the target moves
 // them along the volume gradient by lambda = (V0 - V) / |grad V|^2, one
 // Newton step onto the rest volume. The gradient sums to zero (moving a
 // prism keeps its volume), so the target stays about the centroid.
 FW_HOT_CLONES
-void add_volume_projections(const ProjectiveSystem& s, const NodeVectors& q, const NodeVectors& u, NodeSum4* out) {
+void add_volume_projections(const ProjectiveSystem& s, const NodeVectors& q, const NodeVectors& u, const SumLayout& out) {
   const std::size_t count = s.element_weight.size();
   const std::uint16_t* corner[6];
   for (std::size_t k = 0; k < 6; ++k) corner[k] = s.element_node[k].data();
@@ -101,7 +161,10 @@ void add_volume_projections(const ProjectiveSystem& s, const NodeVectors& q, con
     for (std::size_t j = 0; j < size; ++j)
       for (std::size_t k = 0; k < 6; ++k) {
         const std::size_t node = corner[k][begin + j];
-        out[node] += NodeSum4{g[k * 3 + 0][j], g[k * 3 + 1][j], g[k * 3 + 2][j], 0.0f};
+        float* sum = out.base + node * out.node_stride;
+        sum[0] += g[k * 3 + 0][j];
+        sum[out.axis_stride] += g[k * 3 + 1][j];
+        sum[2 * out.axis_stride] += g[k * 3 + 2][j];
       }
   }
 }
@@ -110,7 +173,21 @@ void add_volume_projections(const ProjectiveSystem& s, const NodeVectors& q, con
 
 void add_projections(const ProjectiveSystem& system, const NodeVectors& q, const NodeVectors& u, NodeSum4* out) {
   add_spring_projections(system, q, u, out);
-  add_volume_projections(system, q, u, out);
+  add_volume_projections(system, q, u, {reinterpret_cast<float*>(out), 4, 1});
+}
+
+void add_projections_across(std::span<const ProjectiveSystem* const> systems, const float* q, const float* u,
+                            std::span<const NodeVectors> face_q, std::span<const NodeVectors> face_u, float* out) {
+  const std::size_t width = systems.size();
+  switch (width) {
+    case 2: add_spring_projections_across_2(systems.data(), q, u, out); break;
+    case 4: add_spring_projections_across_4(systems.data(), q, u, out); break;
+    case 8: add_spring_projections_across_8(systems.data(), q, u, out); break;
+    case 16: add_spring_projections_across_16(systems.data(), q, u, out); break;
+    default: throw std::invalid_argument("projective dynamics: a batch is 2, 4, 8 or 16 faces wide");
+  }
+  for (std::size_t f = 0; f < face_q.size(); ++f)  // the padding lanes' prisms would be thrown away
+    add_volume_projections(*systems[f], face_q[f], face_u[f], {out + f, 3 * width, width});
 }
 
 }  // namespace fw::physics::detail

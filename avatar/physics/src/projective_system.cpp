@@ -97,9 +97,11 @@ ProjectiveSystem::ProjectiveSystem(const TissueModel& m, const ProjectiveSystem&
     : step_s_(reference.step_s_), damping_s_(reference.damping_s_), factor_(reference.factor_), owns_factor_(false) {
   gather_constraints(m);
   // The same topology and material (TissueModel::projective_reference):
-  // the same constraints in the same order, the springs' weights the same.
+  // the same constraints in the same order, the springs' weights and curves
+  // the same (a batch's local step takes them from its first face).
   if (spring_a != reference.spring_a || spring_b != reference.spring_b || element_node != reference.element_node ||
-      spring_weight != reference.spring_weight)
+      spring_weight != reference.spring_weight || spring_soft_share != reference.spring_soft_share ||
+      spring_compression != reference.spring_compression)
     throw std::invalid_argument("projective dynamics: a model shares the factorisation of one with another topology or material");
   // The prisms' weights are the reference's: they are what the factor holds.
   // Each face keeps its own rest volumes, so its rest shape is still the
