@@ -114,11 +114,39 @@ FW_SPRINGS_ACROSS(8)
 FW_SPRINGS_ACROSS(16)
 #undef FW_SPRINGS_ACROSS
 
-// Prisms in blocks likewise. A prism's constraint is on its six corners
-// about their centroid (A = I - 1 1^T / 6, so A^T A = A): the target moves
-// them along the volume gradient by lambda = (V0 - V) / |grad V|^2, one
-// Newton step onto the rest volume. The gradient sums to zero (moving a
-// prism keeps its volume), so the target stays about the centroid.
+// A prism's constraint is on its six corners about their centroid
+// (A = I - 1 1^T / 6, so A^T A = A): the target moves them along the volume
+// gradient by lambda = (V0 - V) / |grad V|^2, one Newton step onto the rest
+// volume. The gradient sums to zero (moving a prism keeps its volume), so
+// the target stays about the centroid. One expression for the per-face
+// kernel and the one across faces, as for the springs.
+struct PrismCorners {
+  float px[6], py[6], pz[6], ux[6], uy[6], uz[6];  ///< positions q and u of corners 0..2 outer, 3..5 inner
+};
+FW_PHYSICS_ALWAYS_INLINE void prism_pull(const PrismCorners& c, float rest_volume, float w, float (&pull)[6][3]) {
+  float gradient[6][3];
+  const float volume = wedge_volume_gradient(c.px, c.py, c.pz, gradient);
+  float g2 = 0.0f;
+#pragma GCC unroll 6
+  for (int k = 0; k < 6; ++k)
+    g2 += gradient[k][0] * gradient[k][0] + gradient[k][1] * gradient[k][1] + gradient[k][2] * gradient[k][2];
+  const float lambda = (rest_volume - volume) / std::max(g2, 1e-30f);
+  // The projection about the centroid and the prism's share of L u,
+  // both about their centroids: w (q - centroid(q) + lambda grad V +
+  // u - centroid(u)).
+  float cx = 0.0f, cy = 0.0f, cz = 0.0f;
+#pragma GCC unroll 6
+  for (int k = 0; k < 6; ++k) cx += c.px[k] + c.ux[k], cy += c.py[k] + c.uy[k], cz += c.pz[k] + c.uz[k];
+  cx *= 1.0f / 6.0f, cy *= 1.0f / 6.0f, cz *= 1.0f / 6.0f;
+#pragma GCC unroll 6
+  for (int k = 0; k < 6; ++k) {
+    pull[k][0] = w * (c.px[k] + c.ux[k] - cx + lambda * gradient[k][0]);
+    pull[k][1] = w * (c.py[k] + c.uy[k] - cy + lambda * gradient[k][1]);
+    pull[k][2] = w * (c.pz[k] + c.uz[k] - cz + lambda * gradient[k][2]);
+  }
+}
+
+// Prisms in blocks likewise.
 FW_HOT_CLONES
 void add_volume_projections(const ProjectiveSystem& s, const NodeVectors& q, const NodeVectors& u, const SumLayout& out) {
   const std::size_t count = s.element_weight.size();
@@ -129,34 +157,19 @@ void add_volume_projections(const ProjectiveSystem& s, const NodeVectors& q, con
     const std::size_t size = std::min(kBlock, count - begin);
     for (std::size_t j = 0; j < size; ++j) {
       const std::size_t e = begin + j;
-      float px[6], py[6], pz[6], ux[6], uy[6], uz[6];
+      PrismCorners c;
 #pragma GCC unroll 6
       for (int k = 0; k < 6; ++k) {
         const std::size_t node = corner[k][e];
-        px[k] = q.x[node], py[k] = q.y[node], pz[k] = q.z[node];
-        ux[k] = u.x[node], uy[k] = u.y[node], uz[k] = u.z[node];
+        c.px[k] = q.x[node], c.py[k] = q.y[node], c.pz[k] = q.z[node];
+        c.ux[k] = u.x[node], c.uy[k] = u.y[node], c.uz[k] = u.z[node];
       }
-      float gradient[6][3];
-      const float volume = wedge_volume_gradient(px, py, pz, gradient);
-      float g2 = 0.0f;
+      float pull[6][3];
+      prism_pull(c, s.element_rest_volume[e], s.element_weight[e], pull);
 #pragma GCC unroll 6
       for (int k = 0; k < 6; ++k)
-        g2 += gradient[k][0] * gradient[k][0] + gradient[k][1] * gradient[k][1] + gradient[k][2] * gradient[k][2];
-      const float w = s.element_weight[e];
-      const float lambda = (s.element_rest_volume[e] - volume) / std::max(g2, 1e-30f);
-      // The projection about the centroid and the prism's share of L u,
-      // both about their centroids: w (q - centroid(q) + lambda grad V +
-      // u - centroid(u)).
-      float cx = 0.0f, cy = 0.0f, cz = 0.0f;
-#pragma GCC unroll 6
-      for (int k = 0; k < 6; ++k) cx += px[k] + ux[k], cy += py[k] + uy[k], cz += pz[k] + uz[k];
-      cx *= 1.0f / 6.0f, cy *= 1.0f / 6.0f, cz *= 1.0f / 6.0f;
-#pragma GCC unroll 6
-      for (int k = 0; k < 6; ++k) {
-        g[k * 3 + 0][j] = w * (px[k] + ux[k] - cx + lambda * gradient[k][0]);
-        g[k * 3 + 1][j] = w * (py[k] + uy[k] - cy + lambda * gradient[k][1]);
-        g[k * 3 + 2][j] = w * (pz[k] + uz[k] - cz + lambda * gradient[k][2]);
-      }
+#pragma GCC unroll 3
+        for (int axis = 0; axis < 3; ++axis) g[k * 3 + axis][j] = pull[k][axis];
     }
     for (std::size_t j = 0; j < size; ++j)
       for (std::size_t k = 0; k < 6; ++k) {
