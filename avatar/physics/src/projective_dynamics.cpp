@@ -190,9 +190,7 @@ void ProjectiveStepper::substep(std::span<FaceSimulation* const> faces, float h)
         return axis == 0 ? face_q[f].x : axis == 1 ? face_q[f].y : face_q[f].z;
       });
       std::copy(s.constant_lanes.begin(), s.constant_lanes.end(), s.sum_lanes.begin());
-      detail::add_projections_across(std::span(lane_systems.data(), width), s.q_lanes.data(), s.u_lanes.data(),
-                                     std::span(face_q.data(), faces.size()), std::span(face_u.data(), faces.size()),
-                                     s.sum_lanes.data());
+      detail::add_projections_across(std::span(lane_systems.data(), width), s.q_lanes.data(), s.u_lanes.data(), s.sum_lanes.data());
       // A free node's sums are its row, as they are laid out.
       for (std::size_t r = 0; r < free_nodes.size(); ++r) {
         const float* sum = s.sum_lanes.data() + std::size_t(free_nodes[r]) * lanes;

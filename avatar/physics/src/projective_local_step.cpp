@@ -103,16 +103,6 @@ FW_PHYSICS_ALWAYS_INLINE void add_spring_projections_across(const ProjectiveSyst
   }
 }
 
-#define FW_SPRINGS_ACROSS(W)                                                                                     \
-  FW_HOT_CLONES void add_spring_projections_across_##W(const ProjectiveSystem* const* systems, const float* q, \
-                                                       const float* u, float* out) {                          \
-    add_spring_projections_across<W>(systems, q, u, out);                                                     \
-  }
-FW_SPRINGS_ACROSS(2)
-FW_SPRINGS_ACROSS(4)
-FW_SPRINGS_ACROSS(8)
-FW_SPRINGS_ACROSS(16)
-#undef FW_SPRINGS_ACROSS
 
 // A prism's constraint is on its six corners about their centroid
 // (A = I - 1 1^T / 6, so A^T A = A): the target moves them along the volume
@@ -148,7 +138,7 @@ FW_PHYSICS_ALWAYS_INLINE void prism_pull(const PrismCorners& c, float rest_volum
 
 // Prisms in blocks likewise.
 FW_HOT_CLONES
-void add_volume_projections(const ProjectiveSystem& s, const NodeVectors& q, const NodeVectors& u, const SumLayout& out) {
+void add_volume_projections(const ProjectiveSystem& s, const NodeVectors& q, const NodeVectors& u, NodeSum4* out) {
   const std::size_t count = s.element_weight.size();
   const std::uint16_t* corner[6];
   for (std::size_t k = 0; k < 6; ++k) corner[k] = s.element_node[k].data();
@@ -174,33 +164,78 @@ void add_volume_projections(const ProjectiveSystem& s, const NodeVectors& q, con
     for (std::size_t j = 0; j < size; ++j)
       for (std::size_t k = 0; k < 6; ++k) {
         const std::size_t node = corner[k][begin + j];
-        float* sum = out.base + node * out.node_stride;
-        sum[0] += g[k * 3 + 0][j];
-        sum[out.axis_stride] += g[k * 3 + 1][j];
-        sum[2 * out.axis_stride] += g[k * 3 + 2][j];
+        out[node] += NodeSum4{g[k * 3 + 0][j], g[k * 3 + 1][j], g[k * 3 + 2][j], 0.0f};
       }
   }
 }
+
+// The prisms of W faces at once, as the springs: each face has its own rest
+// volumes; the weights are the batch's (ProjectiveSystem keeps the
+// reference's).
+template <std::size_t W>
+FW_PHYSICS_ALWAYS_INLINE void add_volume_projections_across(const ProjectiveSystem* const* systems, const float* __restrict q,
+                                                            const float* __restrict u, float* __restrict out) {
+  const ProjectiveSystem& s = *systems[0];
+  const std::size_t count = s.element_weight.size();
+  const std::uint16_t* corner[6];
+  for (std::size_t k = 0; k < 6; ++k) corner[k] = s.element_node[k].data();
+  const float* rest_volumes[W];
+  for (std::size_t lane = 0; lane < W; ++lane) rest_volumes[lane] = systems[lane]->element_rest_volume.data();
+  for (std::size_t e = 0; e < count; ++e) {
+    std::size_t at[6];  // each corner's run of 3 W values
+    for (std::size_t k = 0; k < 6; ++k) at[k] = corner[k][e] * 3 * W;
+    float rest[W], g[18][W];
+    for (std::size_t lane = 0; lane < W; ++lane) rest[lane] = rest_volumes[lane][e];
+    const float w = s.element_weight[e];
+    for (std::size_t lane = 0; lane < W; ++lane) {
+      PrismCorners c;
+#pragma GCC unroll 6
+      for (int k = 0; k < 6; ++k) {
+        const float* qk = q + at[k] + lane;
+        const float* uk = u + at[k] + lane;
+        c.px[k] = qk[0], c.py[k] = qk[W], c.pz[k] = qk[2 * W];
+        c.ux[k] = uk[0], c.uy[k] = uk[W], c.uz[k] = uk[2 * W];
+      }
+      float pull[6][3];
+      prism_pull(c, rest[lane], w, pull);
+#pragma GCC unroll 6
+      for (int k = 0; k < 6; ++k)
+#pragma GCC unroll 3
+        for (int axis = 0; axis < 3; ++axis) g[k * 3 + axis][lane] = pull[k][axis];
+    }
+    for (std::size_t k = 0; k < 6; ++k)
+      for (std::size_t axis = 0; axis < 3; ++axis)
+        for (std::size_t lane = 0; lane < W; ++lane) out[at[k] + axis * W + lane] += g[k * 3 + axis][lane];
+  }
+}
+
+#define FW_ACROSS(W)                                                                                                 \
+  FW_HOT_CLONES void add_projections_across_##W(const ProjectiveSystem* const* systems, const float* q, const float* u, \
+                                                float* out) {                                                          \
+    add_spring_projections_across<W>(systems, q, u, out);                                                            \
+    add_volume_projections_across<W>(systems, q, u, out);                                                            \
+  }
+FW_ACROSS(2)
+FW_ACROSS(4)
+FW_ACROSS(8)
+FW_ACROSS(16)
+#undef FW_ACROSS
 
 }  // namespace
 
 void add_projections(const ProjectiveSystem& system, const NodeVectors& q, const NodeVectors& u, NodeSum4* out) {
   add_spring_projections(system, q, u, out);
-  add_volume_projections(system, q, u, {reinterpret_cast<float*>(out), 4, 1});
+  add_volume_projections(system, q, u, out);
 }
 
-void add_projections_across(std::span<const ProjectiveSystem* const> systems, const float* q, const float* u,
-                            std::span<const NodeVectors> face_q, std::span<const NodeVectors> face_u, float* out) {
-  const std::size_t width = systems.size();
-  switch (width) {
-    case 2: add_spring_projections_across_2(systems.data(), q, u, out); break;
-    case 4: add_spring_projections_across_4(systems.data(), q, u, out); break;
-    case 8: add_spring_projections_across_8(systems.data(), q, u, out); break;
-    case 16: add_spring_projections_across_16(systems.data(), q, u, out); break;
+void add_projections_across(std::span<const ProjectiveSystem* const> systems, const float* q, const float* u, float* out) {
+  switch (systems.size()) {
+    case 2: return add_projections_across_2(systems.data(), q, u, out);
+    case 4: return add_projections_across_4(systems.data(), q, u, out);
+    case 8: return add_projections_across_8(systems.data(), q, u, out);
+    case 16: return add_projections_across_16(systems.data(), q, u, out);
     default: throw std::invalid_argument("projective dynamics: a batch is 2, 4, 8 or 16 faces wide");
   }
-  for (std::size_t f = 0; f < face_q.size(); ++f)  // the padding lanes' prisms would be thrown away
-    add_volume_projections(*systems[f], face_q[f], face_u[f], {out + f, 3 * width, width});
 }
 
 }  // namespace fw::physics::detail

@@ -27,20 +27,11 @@ using NodeSum4 = float __attribute__((vector_size(16)));
 /// projective_dynamics.cpp).
 void add_projections(const ProjectiveSystem& system, const NodeVectors& q, const NodeVectors& u, NodeSum4* out);
 
-/// Where a constraint adds its pull: base[node * node_stride + axis * axis_stride].
-struct SumLayout {
-  float* base;
-  std::size_t node_stride, axis_stride;
-};
-
 /// The same for a batch of W = #systems faces (2, 4, 8 or 16; a padding
-/// face repeats a real one), each a lane of node-major arrays laid out as
-/// the solve's rows are: value [(node * 3 + axis) * W + face]. q, u and out
-/// are so interleaved; face_q and face_u are each real face's own arrays,
-/// the same values (the prisms take them one face at a time; a padding
-/// lane gets its springs only). Each face's lane gets the bits
-/// add_projections gives that face alone.
-void add_projections_across(std::span<const ProjectiveSystem* const> systems, const float* q, const float* u,
-                            std::span<const NodeVectors> face_q, std::span<const NodeVectors> face_u, float* out);
+/// lane repeats a real face), each a lane of node-major arrays laid out as
+/// the solve's rows are: value [(node * 3 + axis) * W + face], for q, u and
+/// out alike. Each face's lane gets the bits add_projections gives that
+/// face alone.
+void add_projections_across(std::span<const ProjectiveSystem* const> systems, const float* q, const float* u, float* out);
 
 }  // namespace fw::physics::detail
