@@ -155,14 +155,14 @@ void ProjectiveStepper::substep(std::span<FaceSimulation* const> faces, float h)
   // the first face).
   std::array<const detail::ProjectiveSystem*, kMaxBatchFaces> lane_systems{};
   std::array<detail::NodeVectors, kMaxBatchFaces> face_q{}, face_u{};
+  // Written in order, a run of `width` values at a time (one face after
+  // another wrote a value per cache line).
   auto interleave = [&](float* lanes_out, auto&& source) {
-    for (std::size_t lane = 0; lane < width; ++lane) {
-      const std::size_t f = lane < faces.size() ? lane : 0;
-      for (std::size_t axis = 0; axis < 3; ++axis) {
-        const float* from = source(f, axis);
-        for (std::size_t i = 0; i < nodes; ++i) lanes_out[(i * 3 + axis) * width + lane] = from[i];
-      }
-    }
+    std::array<const float*, 3 * kMaxBatchFaces> from;
+    for (std::size_t axis = 0; axis < 3; ++axis)
+      for (std::size_t lane = 0; lane < width; ++lane) from[axis * width + lane] = source(lane < faces.size() ? lane : 0, axis);
+    for (std::size_t i = 0; i < nodes; ++i)
+      for (std::size_t k = 0; k < lanes; ++k) lanes_out[i * lanes + k] = from[k][i];
   };
   for (std::size_t f = 0; f < faces.size(); ++f) {
     face_q[f] = {faces[f]->x_.data(), faces[f]->y_.data(), faces[f]->z_.data()};
@@ -199,13 +199,15 @@ void ProjectiveStepper::substep(std::span<FaceSimulation* const> faces, float h)
     }
     // Global: one solve for all faces and axes.
     system.solve(s.rows.data(), lanes);
-    for (std::size_t f = 0; f < faces.size(); ++f) {
-      FaceSimulation& face = *faces[f];
-      for (std::size_t r = 0; r < free_nodes.size(); ++r) {
-        const float* row = s.rows.data() + r * lanes + f;
-        const std::size_t i = free_nodes[r];
-        face.x_[i] = row[0], face.y_[i] = row[width], face.z_[i] = row[2 * width];
-      }
+    // Read in order, a row at a time, as interleave writes.
+    std::array<float*, 3 * kMaxBatchFaces> to;
+    for (std::size_t f = 0; f < faces.size(); ++f)
+      to[f] = faces[f]->x_.data(), to[width + f] = faces[f]->y_.data(), to[2 * width + f] = faces[f]->z_.data();
+    for (std::size_t r = 0; r < free_nodes.size(); ++r) {
+      const float* row = s.rows.data() + r * lanes;
+      const std::size_t i = free_nodes[r];
+      for (std::size_t axis = 0; axis < 3; ++axis)
+        for (std::size_t f = 0; f < faces.size(); ++f) to[axis * width + f][i] = row[axis * width + f];
     }
   }
 
