@@ -4,6 +4,8 @@
 #include <cassert>
 #include <cmath>
 
+#include "hot_clones.hpp"
+
 namespace fw::physics {
 
 namespace {
@@ -44,6 +46,7 @@ AuBasis AuBasis::from_rows(std::span<const float> rows, std::size_t length) {
   return b;
 }
 
+FW_HOT_CLONES
 double project_onto_basis(const AuBasis& basis, std::span<const float> displacement,
                           std::array<float, kC>& weights, int sweeps) {
   const std::size_t n = displacement.size();
