@@ -97,6 +97,7 @@ void ProjectiveStepper::substep(std::span<FaceSimulation* const> faces, float h)
   const std::size_t lanes = detail::lanes_for(faces.size()), width = lanes / 3;
   const std::vector<std::int32_t>& row_of = system.row_of_node();
   const std::vector<std::uint16_t>& free_nodes = system.free_nodes();
+  const std::vector<std::uint16_t>& free_in_order = system.free_nodes_in_order();
   Scratch& s = scratch_for(nodes, system.free_count() * lanes, faces.size());
   const float mass = m.material.node_mass, beta = system.damping_s();
   // The tissue steps by the system's h, the muscles and the bone by the
@@ -139,7 +140,7 @@ void ProjectiveStepper::substep(std::span<FaceSimulation* const> faces, float h)
     std::fill(s.sum[2].begin(), s.sum[2].end(), 0.0f);
     detail::add_muscle_forces(face.model(), {face.activation_, face.strength_, face.muscle_origins(), face.skull_normal_.data()},
                               {x, y, z, vx, vy, vz, s.sum[0].data(), s.sum[1].data(), s.sum[2].data()});
-    for (const std::uint16_t i : free_nodes) {
+    for (const std::uint16_t i : free_in_order) {
       // M s / h^2 with s = x + h v + h^2 f / m. The first guess is x + h v,
       // not s: a face held still by its muscles then starts every step from
       // where it is, so the few iterations end at the exact equilibrium
@@ -214,7 +215,7 @@ void ProjectiveStepper::substep(std::span<FaceSimulation* const> faces, float h)
   // Velocities from the positions (implicit Euler), then the skull.
   const float inv_h = 1.0f / ht;
   for (FaceSimulation* face : faces) {
-    for (const std::uint16_t i : free_nodes) {
+    for (const std::uint16_t i : free_in_order) {
       face->vx_[i] = (face->x_[i] - face->fx_[i]) * inv_h;
       face->vy_[i] = (face->y_[i] - face->fy_[i]) * inv_h;
       face->vz_[i] = (face->z_[i] - face->fz_[i]) * inv_h;

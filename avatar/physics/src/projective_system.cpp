@@ -158,6 +158,7 @@ ProjectiveFactor::ProjectiveFactor(const TissueModel& m, const ProjectiveSystem&
       free_by_index.push_back(static_cast<std::uint16_t>(i));
     }
   const std::size_t n = free_by_index.size();
+  free_in_order_ = free_by_index;
   if (n == 0 || n > 65535) throw std::invalid_argument("projective dynamics: the model needs 1..65535 free nodes");
 
   // S over the free nodes, in node order.
@@ -209,7 +210,7 @@ ProjectiveFactor::ProjectiveFactor(const TissueModel& m, const ProjectiveSystem&
 
 std::size_t ProjectiveFactor::memory_bytes() const {
   auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
-  return sizeof(*this) + bytes(row_of_node_) + bytes(free_nodes_) + bytes(column_start_) + bytes(row_) + bytes(value_) +
+  return sizeof(*this) + bytes(row_of_node_) + bytes(free_nodes_) + bytes(free_in_order_) + bytes(column_start_) + bytes(row_) + bytes(value_) +
          bytes(inverse_diagonal_);
 }
 
