@@ -29,7 +29,7 @@ struct Scratch {
 
 Scratch& scratch_for(std::size_t nodes, std::size_t rows, std::size_t faces) {
   thread_local Scratch s;
-  s.rows.assign(rows, 0.0f);  // padding lanes stay 0 through the solve
+  s.rows.resize(rows);  // every lane of every row is written before the solve (a padding lane repeats a face)
   for (std::size_t f = 0; f < faces; ++f) {
     for (auto& v : s.constant[f]) v.resize(nodes);
     for (auto& v : s.u[f]) v.resize(nodes);
