@@ -44,9 +44,23 @@ function(fw_write_unity_files out_var name binary_dir batch)
   set(${out_var} ${unity_files} PARENT_SCOPE)
 endfunction()
 
+# Sets `out_var` to TRUE if `source` (absolute) in `source_dir` has compile
+# options, flags or definitions of its own, which a unity file would drop.
+function(fw_has_own_options out_var source source_dir)
+  set(own FALSE)
+  foreach(property COMPILE_OPTIONS COMPILE_FLAGS COMPILE_DEFINITIONS)
+    get_source_file_property(value ${source} DIRECTORY ${source_dir} ${property})
+    if(value)
+      set(own TRUE)
+    endif()
+  endforeach()
+  set(${out_var} ${own} PARENT_SCOPE)
+endfunction()
+
 # fw_unity_sources(OUT_VAR NAME sources...): for a target about to be
 # defined in the current directory, OUT_VAR receives the unity files to
-# give it instead of the sources. (The sources are not marked
+# give it instead of the sources (those with options of their own stay
+# apart, as in fw_unity_target below). (The sources are not marked
 # HEADER_FILE_ONLY: that mark holds for the whole directory, and another
 # target there may compile the same file on its own.)
 function(fw_unity_sources out_var name)
@@ -56,19 +70,32 @@ function(fw_unity_sources out_var name)
     return()
   endif()
   set(absolutes)
+  set(kept)
   foreach(source ${sources})
     get_filename_component(absolute ${source} ABSOLUTE)
-    list(APPEND absolutes ${absolute})
+    fw_has_own_options(own_options ${absolute} ${CMAKE_CURRENT_SOURCE_DIR})
+    if(own_options)
+      list(APPEND kept ${source})
+    else()
+      list(APPEND absolutes ${absolute})
+    endif()
   endforeach()
-  fw_write_unity_files(unity_files ${name} ${CMAKE_CURRENT_BINARY_DIR} ${FW_UNITY_BATCH} ${absolutes})
-  set(${out_var} ${unity_files} PARENT_SCOPE)
+  set(unity_files)
+  if(absolutes)
+    fw_write_unity_files(unity_files ${name} ${CMAKE_CURRENT_BINARY_DIR} ${FW_UNITY_BATCH} ${absolutes})
+  endif()
+  set(${out_var} ${kept} ${unity_files} PARENT_SCOPE)
 endfunction()
 
 # fw_unity_target(TARGET): groups the C++ sources of a target defined
 # anywhere. Generated sources, such as embedded files, stay on their own
 # (the unity file would not wait for them to be generated), and so do those
 # with the source property FW_OWN_UNIT (a system header that defines macros
-# the other files' names collide with, such as X11's Status).
+# the other files' names collide with, such as X11's Status) and those with
+# options of their own (COMPILE_OPTIONS, COMPILE_FLAGS, COMPILE_DEFINITIONS):
+# the unity file is compiled with the target's options only, so a source
+# grouped into it would silently lose its own (such as -fno-math-errno,
+# without which sqrt does not vectorise).
 function(fw_unity_target target)
   if(FW_UNITY_BATCH LESS_EQUAL 1)
     return()
@@ -90,7 +117,8 @@ function(fw_unity_target target)
     endif()
     get_source_file_property(generated ${absolute} DIRECTORY ${source_dir} GENERATED)
     get_source_file_property(own_unit ${absolute} DIRECTORY ${source_dir} FW_OWN_UNIT)
-    if(generated OR own_unit)
+    fw_has_own_options(own_options ${absolute} ${source_dir})
+    if(generated OR own_unit OR own_options)
       list(APPEND kept ${source})
     else()
       list(APPEND grouped ${absolute})

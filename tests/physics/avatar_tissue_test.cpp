@@ -176,6 +176,38 @@ TEST(AvatarTissue, FacesOfDifferentAvatarsBatchTogether) {
   EXPECT_EQ(generic->projective_systems.size(), 1u);
 }
 
+// A batch's local step runs across its faces, a lane each, padded to 2, 4,
+// 8 or 16 lanes: whatever its width, and whichever models share it, each
+// face gets the bits it gets stepped alone.
+TEST(AvatarTissue, EveryBatchWidthGivesEachFaceItsOwnBits) {
+  const auto generic = generic_tissue_model();
+  const auto wide = build_avatar_tissue_model(wide_face(), generic);
+  const auto lean = build_avatar_tissue_model(long_face(), generic);
+  FacePool pool(1);
+  for (std::size_t width : {2u, 3u, 5u, 8u, 9u, 16u}) {
+    std::vector<FaceSimulation> batch, alone;
+    for (std::size_t i = 0; i < width; ++i) {
+      SimulationOptions o = projective();
+      o.seed = i;
+      o.individual_variation = 1.0f;
+      const auto& model = i % 3 == 0 ? lean : i % 3 == 1 ? generic : wide;
+      batch.emplace_back(model, o);
+      alone.emplace_back(model, o);
+    }
+    for (int f = 0; f < 6; ++f) {
+      for (std::size_t i = 0; i < width; ++i) {
+        batch[i].set_action_units(smile_and_open());
+        alone[i].set_action_units(smile_and_open());
+        alone[i].step(kFrame);
+      }
+      pool.step_all(batch, kFrame);
+    }
+    for (std::size_t i = 0; i < width; ++i)
+      for (std::size_t n = 0; n < batch[i].model().node_count; ++n)
+        ASSERT_EQ(batch[i].node_position(n), alone[i].node_position(n)) << width << " faces, face " << i << " node " << n;
+  }
+}
+
 // The room's switch: a face that began as the generic face takes its own
 // model while it smiles, and what it shows does not jump.
 TEST(AvatarTissue, ReplacingTheGenericFaceWithTheAvatarsOwnDoesNotJump) {

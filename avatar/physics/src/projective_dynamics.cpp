@@ -22,16 +22,25 @@ struct Scratch {
   std::vector<float> constant[kMaxBatchFaces][3];              // per face, per axis, #nodes
   std::vector<float> u[kMaxBatchFaces][3];                     // per face, per axis, #nodes
   std::vector<float> sum[3];                                   // #nodes
+  std::vector<detail::NodeSum4> projected;                     // #nodes: constant plus the projections (one face)
+  // A batch's faces interleaved as the rows are, [(node * 3 + axis) * W + face]:
+  std::vector<float> q_lanes, u_lanes, constant_lanes, sum_lanes;  // #nodes x lanes
 };
 
 Scratch& scratch_for(std::size_t nodes, std::size_t rows, std::size_t faces) {
   thread_local Scratch s;
-  s.rows.assign(rows, 0.0f);  // padding lanes stay 0 through the solve
+  s.rows.resize(rows);  // every lane of every row is written before the solve (a padding lane repeats a face)
   for (std::size_t f = 0; f < faces; ++f) {
     for (auto& v : s.constant[f]) v.resize(nodes);
     for (auto& v : s.u[f]) v.resize(nodes);
   }
   for (auto& v : s.sum) v.resize(nodes);
+  if (faces == 1) {
+    s.projected.resize(nodes);
+  } else {
+    const std::size_t lanes = detail::lanes_for(faces);
+    for (auto* v : {&s.q_lanes, &s.u_lanes, &s.constant_lanes, &s.sum_lanes}) v->resize(nodes * lanes);
+  }
   return s;
 }
 
@@ -88,6 +97,7 @@ void ProjectiveStepper::substep(std::span<FaceSimulation* const> faces, float h)
   const std::size_t lanes = detail::lanes_for(faces.size()), width = lanes / 3;
   const std::vector<std::int32_t>& row_of = system.row_of_node();
   const std::vector<std::uint16_t>& free_nodes = system.free_nodes();
+  const std::vector<std::uint16_t>& free_in_order = system.free_nodes_in_order();
   Scratch& s = scratch_for(nodes, system.free_count() * lanes, faces.size());
   const float mass = m.material.node_mass, beta = system.damping_s();
   // The tissue steps by the system's h, the muscles and the bone by the
@@ -130,7 +140,7 @@ void ProjectiveStepper::substep(std::span<FaceSimulation* const> faces, float h)
     std::fill(s.sum[2].begin(), s.sum[2].end(), 0.0f);
     detail::add_muscle_forces(face.model(), {face.activation_, face.strength_, face.muscle_origins(), face.skull_normal_.data()},
                               {x, y, z, vx, vy, vz, s.sum[0].data(), s.sum[1].data(), s.sum[2].data()});
-    for (const std::uint16_t i : free_nodes) {
+    for (const std::uint16_t i : free_in_order) {
       // M s / h^2 with s = x + h v + h^2 f / m. The first guess is x + h v,
       // not s: a face held still by its muscles then starts every step from
       // where it is, so the few iterations end at the exact equilibrium
@@ -141,36 +151,71 @@ void ProjectiveStepper::substep(std::span<FaceSimulation* const> faces, float h)
     }
   }
 
+  // A batch's local steps run across its faces: each node's values of every
+  // face side by side, as the solve's rows hold them (padding lanes repeat
+  // the first face).
+  std::array<const detail::ProjectiveSystem*, kMaxBatchFaces> lane_systems{};
+  std::array<detail::NodeVectors, kMaxBatchFaces> face_q{}, face_u{};
+  // Written in order, a run of `width` values at a time (one face after
+  // another wrote a value per cache line).
+  auto interleave = [&](float* lanes_out, auto&& source) {
+    std::array<const float*, 3 * kMaxBatchFaces> from;
+    for (std::size_t axis = 0; axis < 3; ++axis)
+      for (std::size_t lane = 0; lane < width; ++lane) from[axis * width + lane] = source(lane < faces.size() ? lane : 0, axis);
+    for (std::size_t i = 0; i < nodes; ++i)
+      for (std::size_t k = 0; k < lanes; ++k) lanes_out[i * lanes + k] = from[k][i];
+  };
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    face_q[f] = {faces[f]->x_.data(), faces[f]->y_.data(), faces[f]->z_.data()};
+    face_u[f] = {s.u[f][0].data(), s.u[f][1].data(), s.u[f][2].data()};
+  }
+  if (faces.size() > 1) {
+    for (std::size_t lane = 0; lane < width; ++lane) lane_systems[lane] = systems[lane < faces.size() ? lane : 0].get();
+    interleave(s.u_lanes.data(), [&](std::size_t f, std::size_t axis) { return s.u[f][axis].data(); });
+    interleave(s.constant_lanes.data(), [&](std::size_t f, std::size_t axis) { return s.constant[f][axis].data(); });
+  }
+
   for (int iteration = 0; iteration < kIterations; ++iteration) {
-    // Local: every constraint projects this face's positions.
-    for (std::size_t f = 0; f < faces.size(); ++f) {
-      FaceSimulation& face = *faces[f];
-      for (std::size_t axis = 0; axis < 3; ++axis) std::copy(s.constant[f][axis].begin(), s.constant[f][axis].end(), s.sum[axis].begin());
-      detail::add_projections(*systems[f], {face.x_.data(), face.y_.data(), face.z_.data()},
-                              {s.u[f][0].data(), s.u[f][1].data(), s.u[f][2].data()},
-                              {s.sum[0].data(), s.sum[1].data(), s.sum[2].data()});
+    // Local: every constraint projects each face's positions.
+    if (faces.size() == 1) {
+      const auto& c = s.constant[0];
+      for (std::size_t i = 0; i < nodes; ++i) s.projected[i] = detail::NodeSum4{c[0][i], c[1][i], c[2][i], 0.0f};
+      detail::add_projections(system, face_q[0], face_u[0], s.projected.data());
       for (std::size_t r = 0; r < free_nodes.size(); ++r) {
-        float* row = s.rows.data() + r * lanes + f;
-        const std::size_t i = free_nodes[r];
-        row[0] = s.sum[0][i], row[width] = s.sum[1][i], row[2 * width] = s.sum[2][i];
+        float* row = s.rows.data() + r * lanes;
+        const detail::NodeSum4& sum = s.projected[free_nodes[r]];
+        row[0] = sum[0], row[1] = sum[1], row[2] = sum[2];
+      }
+    } else {
+      interleave(s.q_lanes.data(), [&](std::size_t f, std::size_t axis) {
+        return axis == 0 ? face_q[f].x : axis == 1 ? face_q[f].y : face_q[f].z;
+      });
+      std::copy(s.constant_lanes.begin(), s.constant_lanes.end(), s.sum_lanes.begin());
+      detail::add_projections_across(std::span(lane_systems.data(), width), s.q_lanes.data(), s.u_lanes.data(), s.sum_lanes.data());
+      // A free node's sums are its row, as they are laid out.
+      for (std::size_t r = 0; r < free_nodes.size(); ++r) {
+        const float* sum = s.sum_lanes.data() + std::size_t(free_nodes[r]) * lanes;
+        std::copy(sum, sum + lanes, s.rows.data() + r * lanes);
       }
     }
     // Global: one solve for all faces and axes.
     system.solve(s.rows.data(), lanes);
-    for (std::size_t f = 0; f < faces.size(); ++f) {
-      FaceSimulation& face = *faces[f];
-      for (std::size_t r = 0; r < free_nodes.size(); ++r) {
-        const float* row = s.rows.data() + r * lanes + f;
-        const std::size_t i = free_nodes[r];
-        face.x_[i] = row[0], face.y_[i] = row[width], face.z_[i] = row[2 * width];
-      }
+    // Read in order, a row at a time, as interleave writes.
+    std::array<float*, 3 * kMaxBatchFaces> to;
+    for (std::size_t f = 0; f < faces.size(); ++f)
+      to[f] = faces[f]->x_.data(), to[width + f] = faces[f]->y_.data(), to[2 * width + f] = faces[f]->z_.data();
+    for (std::size_t r = 0; r < free_nodes.size(); ++r) {
+      const float* row = s.rows.data() + r * lanes;
+      const std::size_t i = free_nodes[r];
+      for (std::size_t axis = 0; axis < 3; ++axis)
+        for (std::size_t f = 0; f < faces.size(); ++f) to[axis * width + f][i] = row[axis * width + f];
     }
   }
 
   // Velocities from the positions (implicit Euler), then the skull.
   const float inv_h = 1.0f / ht;
   for (FaceSimulation* face : faces) {
-    for (const std::uint16_t i : free_nodes) {
+    for (const std::uint16_t i : free_in_order) {
       face->vx_[i] = (face->x_[i] - face->fx_[i]) * inv_h;
       face->vy_[i] = (face->y_[i] - face->fy_[i]) * inv_h;
       face->vz_[i] = (face->z_[i] - face->fz_[i]) * inv_h;

@@ -36,7 +36,7 @@ class ProjectiveStepper {
   /// Local/global alternations per sub-step. One: each step starts from
   /// where the face is going (x + h v), so a face held by its muscles ends
   /// at the exact equilibrium however few there are, and a moving face lags
-  /// it by a little (README "Accuracy"). Two cost 1.7 times as much.
+  /// it by a little (README "Accuracy"). Two cost 1.6 times as much.
   static constexpr int kIterations = 1;
 
   /// Steps `faces` by `dt_seconds` as FaceSimulation::step does, those of one

@@ -45,16 +45,17 @@ inline __attribute__((always_inline)) void substitute(const std::uint32_t* start
     const float d = inverse_diagonal[j];
     for (std::size_t k = 0; k < W; ++k) y[j * W + k] *= d;
   }
-  // L^T x = z, last row first: row j of L^T is column j of L.
+  // L^T x = z, last row first: row j of L^T is column j of L. Written as
+  // the forward pass is, straight into the row (the rows below it, which it
+  // reads, are distinct): summed in a local array, GCC left this pass
+  // scalar, three quarters of the solve.
   for (std::size_t j = n; j-- > 0;) {
-    float sum[W];
-    for (std::size_t k = 0; k < W; ++k) sum[k] = y[j * W + k];
+    float* __restrict xj = y + j * W;
     for (std::uint32_t p = start[j]; p < start[j + 1]; ++p) {
       const float* __restrict xi = y + std::size_t(row[p]) * W;
       const float l = value[p];
-      for (std::size_t k = 0; k < W; ++k) sum[k] -= l * xi[k];
+      for (std::size_t k = 0; k < W; ++k) xj[k] -= l * xi[k];
     }
-    for (std::size_t k = 0; k < W; ++k) y[j * W + k] = sum[k];
   }
 }
 
@@ -96,9 +97,11 @@ ProjectiveSystem::ProjectiveSystem(const TissueModel& m, const ProjectiveSystem&
     : step_s_(reference.step_s_), damping_s_(reference.damping_s_), factor_(reference.factor_), owns_factor_(false) {
   gather_constraints(m);
   // The same topology and material (TissueModel::projective_reference):
-  // the same constraints in the same order, the springs' weights the same.
+  // the same constraints in the same order, the springs' weights and curves
+  // the same (a batch's local step takes them from its first face).
   if (spring_a != reference.spring_a || spring_b != reference.spring_b || element_node != reference.element_node ||
-      spring_weight != reference.spring_weight)
+      spring_weight != reference.spring_weight || spring_soft_share != reference.spring_soft_share ||
+      spring_compression != reference.spring_compression)
     throw std::invalid_argument("projective dynamics: a model shares the factorisation of one with another topology or material");
   // The prisms' weights are the reference's: they are what the factor holds.
   // Each face keeps its own rest volumes, so its rest shape is still the
@@ -155,6 +158,7 @@ ProjectiveFactor::ProjectiveFactor(const TissueModel& m, const ProjectiveSystem&
       free_by_index.push_back(static_cast<std::uint16_t>(i));
     }
   const std::size_t n = free_by_index.size();
+  free_in_order_ = free_by_index;
   if (n == 0 || n > 65535) throw std::invalid_argument("projective dynamics: the model needs 1..65535 free nodes");
 
   // S over the free nodes, in node order.
@@ -206,7 +210,7 @@ ProjectiveFactor::ProjectiveFactor(const TissueModel& m, const ProjectiveSystem&
 
 std::size_t ProjectiveFactor::memory_bytes() const {
   auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
-  return sizeof(*this) + bytes(row_of_node_) + bytes(free_nodes_) + bytes(column_start_) + bytes(row_) + bytes(value_) +
+  return sizeof(*this) + bytes(row_of_node_) + bytes(free_nodes_) + bytes(free_in_order_) + bytes(column_start_) + bytes(row_) + bytes(value_) +
          bytes(inverse_diagonal_);
 }
 

@@ -44,6 +44,9 @@ class ProjectiveFactor {
   /// node is prescribed (bone, held outline).
   const std::vector<std::int32_t>& row_of_node() const { return row_of_node_; }
   const std::vector<std::uint16_t>& free_nodes() const { return free_nodes_; }
+  /// The free nodes in node order: a loop over them walks the node arrays
+  /// forward (by row, it jumps about them).
+  const std::vector<std::uint16_t>& free_nodes_in_order() const { return free_in_order_; }
   std::size_t factor_nonzeros() const { return row_.size(); }
   std::size_t memory_bytes() const;
   void solve(float* y, std::size_t lanes) const;
@@ -51,6 +54,7 @@ class ProjectiveFactor {
  private:
   std::vector<std::int32_t> row_of_node_;
   std::vector<std::uint16_t> free_nodes_;  ///< by row
+  std::vector<std::uint16_t> free_in_order_;
   // L, unit lower triangular, by columns (compressed sparse column), and D^-1.
   std::vector<std::uint32_t> column_start_;
   std::vector<std::uint16_t> row_;
@@ -92,6 +96,7 @@ class ProjectiveSystem {
   const std::vector<std::int32_t>& row_of_node() const { return factor_->row_of_node(); }
   std::size_t free_count() const { return factor_->free_nodes().size(); }
   const std::vector<std::uint16_t>& free_nodes() const { return factor_->free_nodes(); }
+  const std::vector<std::uint16_t>& free_nodes_in_order() const { return factor_->free_nodes_in_order(); }
   /// Nonzeros below the diagonal of L.
   std::size_t factor_nonzeros() const { return factor_->factor_nonzeros(); }
   /// Bytes of the constraints, and of the factor when this system owns it
