@@ -21,6 +21,21 @@ namespace {
 // than 0.006 mm/s and every muscle is within 0.01 % of its target.
 constexpr float kRestSpeed = 1e-4f;
 constexpr float kRestActivation = 1e-4f;
+// A resting face wakes for a change of its head's load that it would show:
+// the skin settles about 0.5 mm (RMS) further per model unit per s^2 of
+// load, so 0.1 is 0.05 mm, a tenth of what a viewer could notice. Heads
+// sway a little all the time (eye_head.cpp's noise, 2 degrees of pitch:
+// 0.08): waking for every sway would keep every face awake.
+constexpr float kRestLoad = 0.1f;
+
+// How far apart two loads are, units/s^2: the uniform parts', plus the
+// linear parts' at the face's 2-unit reach from the neck pivot.
+float load_gap(const HeadLoad& a, const HeadLoad& b) {
+  const glm::mat3 d = a.linear - b.linear;
+  float linear = 0.0f;
+  for (int c = 0; c < 3; ++c) linear = std::max(linear, glm::length(d[c]));
+  return glm::length(a.uniform - b.uniform) + 2.0f * linear;
+}
 constexpr double kMaxStepS = 1.0;
 // The jaw: a critically damped turn toward the angle its muscles hold.
 constexpr float kJawOmega = 20.0f;
@@ -47,8 +62,9 @@ FaceSimulation::FaceSimulation(std::shared_ptr<const TissueModel> model, const S
   z_ = m.rest_z;
   for (auto* v : {&vx_, &vy_, &vz_, &fx_, &fy_, &fz_}) v->assign(m.node_count, 0.0f);
   skull_normal_ = m.skull_normal;
-  // The neutral mesh is the shape at rest without gravity; with it, the
-  // tissue has somewhere to go.
+  // The neutral mesh is the shape at rest with the head upright; an extra
+  // pull gives the tissue somewhere to go.
+  load_.uniform.y = -options_.gravity;
   at_rest_ = options_.gravity == 0.0f;
   strength_factor_ = muscle_strength_factors(options_.seed, options_.individual_variation);
   for (std::size_t i = 0; i < kMuscleCount; ++i) strength_[i] = m.muscles[i].strength * strength_factor_[i];
@@ -80,10 +96,20 @@ int FaceSimulation::substeps_for(double dt_seconds) const {
   return std::max(1, static_cast<int>(std::ceil(std::clamp(dt_seconds, 0.0, kMaxStepS) / h - 1e-9)));
 }
 
+void FaceSimulation::set_head_pose(const HeadPose& pose) { head_.set_pose(pose); }
+
 int FaceSimulation::begin_step(double& dt_seconds) {
   if (!std::isfinite(dt_seconds) || dt_seconds <= 0.0) return 0;
   dt_seconds = std::min(dt_seconds, kMaxStepS);
   time_s_ += dt_seconds;
+  // Every frame, at rest or not, so that the head's speed is always that
+  // of its last frame.
+  HeadLoad load = head_.advance(dt_seconds, model_->material.load_scale);
+  load.uniform.y -= options_.gravity;
+  if (!at_rest_ || load_gap(load, load_) > kRestLoad) {
+    at_rest_ = false;
+    load_ = load;
+  }
   return at_rest_ ? 0 : substeps_for(dt_seconds);
 }
 

@@ -124,10 +124,9 @@ void ProjectiveStepper::substep(std::span<FaceSimulation* const> faces, float h)
       s.u[f][2][i] = damp * pz[i] - (held ? hold * z[i] : 0.0f);
     }
     auto& c = s.constant[f];  // read in the free rows only
-    // Muscles and gravity, external forces at the start of the step.
-    std::fill(s.sum[0].begin(), s.sum[0].end(), 0.0f);
-    std::fill(s.sum[1].begin(), s.sum[1].end(), -face.options_.gravity * mass);
-    std::fill(s.sum[2].begin(), s.sum[2].end(), 0.0f);
+    // External forces at the start of the step: the head's load (and any
+    // extra gravity, head_loads.hpp), then the muscles.
+    fill_load_forces(face.load_, mass, nodes, x, y, z, s.sum[0].data(), s.sum[1].data(), s.sum[2].data());
     detail::add_muscle_forces(face.model(), {face.activation_, face.strength_, face.muscle_origins(), face.skull_normal_.data()},
                               {x, y, z, vx, vy, vz, s.sum[0].data(), s.sum[1].data(), s.sum[2].data()});
     for (const std::uint16_t i : free_nodes) {

@@ -60,6 +60,13 @@ struct TissueMaterial {
   /// beside the units' own; not a drag of the world frame).
   float bone_damping = 0;
   float node_mass = 1;
+  /// The share of a real acceleration (gravity off upright, a turning head)
+  /// that loads the lattice. Its node mass is a numerical one, chosen with
+  /// the slopes for how fast expressions develop; the tissue's real weight
+  /// against those slopes is measured: this scale makes lying down (gravity
+  /// from the back of the head instead of from above) move the lower face's
+  /// skin as far as it moves in people (tissue_model.cpp).
+  float load_scale = 0;
   /// Normal adult skin (the paper's Fig. 2a).
   static TissueMaterial normal();
   /// Looser, aged skin (Fig. 2b): softer skin layers with a negative
