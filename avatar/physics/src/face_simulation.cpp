@@ -21,20 +21,33 @@ namespace {
 // than 0.006 mm/s and every muscle is within 0.01 % of its target.
 constexpr float kRestSpeed = 1e-4f;
 constexpr float kRestActivation = 1e-4f;
-// A resting face wakes for a change of its head's load that it would show:
-// the skin settles about 0.5 mm (RMS) further per model unit per s^2 of
-// load, so 0.1 is 0.05 mm, a tenth of what a viewer could notice. Heads
-// sway a little all the time (eye_head.cpp's noise, 2 degrees of pitch:
-// 0.08): waking for every sway would keep every face awake.
-constexpr float kRestLoad = 0.1f;
+// The tissue takes a new load from its head only when it differs from the
+// one it has by more than kRestLoad: the skin settles about 0.5 mm (RMS)
+// further per model unit per s^2 of load, so 0.25 is 0.12 mm, a quarter of
+// what a viewer could notice. Heads sway a little all the time
+// (eye_head.cpp's noise: 2 degrees of pitch and 1.5 of roll move the load by
+// up to 0.19); a load that followed every sway would keep the tissue
+// creeping and every face awake. A tilt of more than 6 degrees is followed.
+constexpr float kRestLoad = 0.25f;
+// A turn's own load (its speeding up and its centripetal pull) is taken
+// only from this size on (0.5 mm settled): a gaze shift's turn (up to 30
+// rad/s^2 in the rooms' behaviour, 0.85 here) moves the skin by under 0.2
+// mm for a tenth of a second and would wake every face at every glance; a
+// shake of the head (some hundred rad/s^2) is shown.
+constexpr float kVisibleTurnLoad = 1.0f;
+
+// The size of a turn's load: its linear part at the face's 2-unit reach
+// from the neck pivot.
+float turn_load(const glm::mat3& linear) {
+  float size = 0.0f;
+  for (int c = 0; c < 3; ++c) size = std::max(size, glm::length(linear[c]));
+  return 2.0f * size;
+}
 
 // How far apart two loads are, units/s^2: the uniform parts', plus the
 // linear parts' at the face's 2-unit reach from the neck pivot.
 float load_gap(const HeadLoad& a, const HeadLoad& b) {
-  const glm::mat3 d = a.linear - b.linear;
-  float linear = 0.0f;
-  for (int c = 0; c < 3; ++c) linear = std::max(linear, glm::length(d[c]));
-  return glm::length(a.uniform - b.uniform) + 2.0f * linear;
+  return glm::length(a.uniform - b.uniform) + turn_load(a.linear - b.linear);
 }
 constexpr double kMaxStepS = 1.0;
 // The jaw: a critically damped turn toward the angle its muscles hold.
@@ -106,7 +119,10 @@ int FaceSimulation::begin_step(double& dt_seconds) {
   // of its last frame.
   HeadLoad load = head_.advance(dt_seconds, model_->material.load_scale);
   load.uniform.y -= options_.gravity;
-  if (!at_rest_ || load_gap(load, load_) > kRestLoad) {
+  if (turn_load(load.linear) < kVisibleTurnLoad) load.linear = glm::mat3(0.0f);
+  // A turn that ends lets go at once, so that its pull does not linger.
+  const bool turn_ended = load.linear == glm::mat3(0.0f) && load_.linear != glm::mat3(0.0f);
+  if (turn_ended || load_gap(load, load_) > kRestLoad) {
     at_rest_ = false;
     load_ = load;
   }

@@ -98,8 +98,9 @@ class FaceSimulation {
   void set_muscle_activations(const std::array<float, kMuscleCount>& targets);
   /// The head's pose at the end of the next step (head_loads.hpp): its
   /// turn away from upright and its motion load the tissue, which sags and
-  /// lags. A resting face wakes when the load changes by more than it
-  /// would show (face_simulation.cpp's kRestLoad).
+  /// lags. The tissue takes the load when it moves by more than the skin
+  /// would show (face_simulation.cpp's kRestLoad): a swaying head lets its
+  /// face rest, a turning or tilting one wakes it.
   void set_head_pose(const HeadPose& pose);
 
   // The face lab's physics level (face_simulation_lab.cpp).
