@@ -9,6 +9,7 @@
 #include "fw/model/landmark_template.hpp"
 #include "fw/physics/au_muscle_map.hpp"
 #include "fw/physics/au_projection.hpp"
+#include "fw/physics/lip_contact.hpp"
 #include "fw/physics/muscle_variation.hpp"
 #include "fw/physics/prism_volume.hpp"
 #include "fw/physics/skull_contact.hpp"
@@ -257,6 +258,12 @@ void FaceSimulation::resolve_skull() {
       vx_[i] = vel.x, vy_[i] = vel.y, vz_[i] = vel.z;
     }
   }
+}
+
+void FaceSimulation::resolve_lips() {
+  const TissueModel& m = *model_;
+  for (const auto& [upper, lower] : m.lip_pairs)
+    resolve_lip_contact(y_[upper], y_[lower], vy_[upper], vy_[lower], m.inverse_mass[upper], m.inverse_mass[lower]);
 }
 
 FaceMeasurement FaceSimulation::measure() {

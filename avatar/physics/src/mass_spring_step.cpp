@@ -60,7 +60,7 @@ void FaceSimulation::mass_spring_substep(float h) {
       x[i] += h * ux, y[i] += h * uy, z[i] += h * uz;
     }
   }
-  resolve_skull();
+  resolve_contacts();
   // Measured after the skull took away what pressed into it: a node resting
   // on the bone is not moving.
   float max_speed2 = 0.0f;

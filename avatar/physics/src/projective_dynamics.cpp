@@ -166,7 +166,8 @@ void ProjectiveStepper::substep(std::span<FaceSimulation* const> faces, float h)
     }
   }
 
-  // Velocities from the positions (implicit Euler), then the skull.
+  // Velocities from the positions (implicit Euler), then the skull and the
+  // lips.
   const float inv_h = 1.0f / ht;
   for (FaceSimulation* face : faces) {
     for (const std::uint16_t i : free_nodes) {
@@ -174,7 +175,7 @@ void ProjectiveStepper::substep(std::span<FaceSimulation* const> faces, float h)
       face->vy_[i] = (face->y_[i] - face->fy_[i]) * inv_h;
       face->vz_[i] = (face->z_[i] - face->fz_[i]) * inv_h;
     }
-    face->resolve_skull();
+    face->resolve_contacts();
     float max_speed2 = 0.0f;
     for (std::size_t i = 0; i < moving; ++i)
       max_speed2 = std::max(max_speed2, face->vx_[i] * face->vx_[i] + face->vy_[i] * face->vy_[i] + face->vz_[i] * face->vz_[i]);

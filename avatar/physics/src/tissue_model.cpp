@@ -118,6 +118,18 @@ class Builder {
     m_.jaw_hinge = kJawHinge;
     m_.skull_normal = smooth_normals(face.skin, edges_);
     find_lip_columns();
+    pair_inner_lips();
+  }
+
+  // The inner lip contour's landmarks (dlib's 60-67: the corners 60 and 64,
+  // the upper edge 61-63, the lower 67-65 under them).
+  void pair_inner_lips() {
+    namespace lm = model::landmarks;
+    for (int k = 1; k < 4; ++k) {
+      const std::uint32_t upper = face_.landmark_vertices[lm::kInnerLipBegin + k];
+      const std::uint32_t lower = face_.landmark_vertices[lm::kInnerLipEnd - k];
+      m_.lip_pairs.push_back({static_cast<std::uint16_t>(upper), static_cast<std::uint16_t>(lower)});
+    }
   }
 
   void build(const std::array<model::Morph, codec::kAuChannelCount>& basis) {

@@ -155,7 +155,7 @@ void FaceSimulation::pbd_substep(float h, const std::array<float, kMuscleCount>&
       for (std::size_t k = 0; k < 6; ++k) move(nodes[k], dl * inverse_mass(nodes[k]) * gradient[k]);
     }
   }
-  resolve_skull();
+  resolve_contacts();
   // Velocities from the positions, then the bond to the bone of each
   // column (relative speed, implicit), as in the mass-spring solver.
   const float inv_h = 1.0f / h;

@@ -172,6 +172,9 @@ class FaceSimulation {
   void mass_spring_substep(float h);
   void pbd_substep(float h, const std::array<float, kMuscleCount>& activation);  // XPBD (xpbd_step.cpp)
   void resolve_skull();
+  void resolve_lips();
+  /// The contacts after a step: the skull, then the lips.
+  void resolve_contacts() { resolve_skull(), resolve_lips(); }
   glm::vec3 jaw_turned(const glm::vec3& p, float share) const;
 
   std::shared_ptr<const TissueModel> model_;

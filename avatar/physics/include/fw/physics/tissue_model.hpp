@@ -106,6 +106,9 @@ struct TissueModel {
   /// #V: 1 where the tissue is tied to the bone under it; 0 under the lips
   /// and mouth corners, which only slide over the teeth.
   std::vector<std::uint8_t> column_on_bone;
+  /// The lips' contacts (lip_contact.hpp): opposite skin vertices on the
+  /// inner edges of the lips, upper then lower.
+  std::vector<std::array<std::uint16_t, 2>> lip_pairs;
   std::array<float, kTissueLayerCount> layer_depth{};       ///< share of the thickness at each layer
   std::array<float, kTissueLayerCount> layer_min_height{};  ///< share of the thickness a node keeps above the skull
 
