@@ -152,13 +152,15 @@ physics::FaceSimulation& simulation_of(PhysicsFace& face, std::uint64_t seed) {
 //
 // The first half: the kinematic track follows the targets, and a face on
 // physics takes them as muscle targets (a redefined unit through its own
-// track). Returns whether its tissue needs a step.
-bool prepare_step(PhysicsFace& face, const AuTargets& targets, double dt_s, std::uint64_t seed, bool sleeps,
-                  bool physics_allowed, const RedefinedUnits& units) {
+// track), and the head's pose, whose tilt and turns load its tissue.
+// Returns whether its tissue needs a step.
+bool prepare_step(PhysicsFace& face, const AuTargets& targets, const physics::HeadPose& head, double dt_s,
+                  std::uint64_t seed, bool sleeps, bool physics_allowed, const RedefinedUnits& units) {
   follow_kinematically(face, targets, dt_s);
   if (!physics_allowed) return false;
   physics::FaceSimulation& sim = simulation_of(face, seed);
   sim.set_action_units(units.any() ? units.physics_targets(targets) : targets);
+  sim.set_head_pose(head);
   return !sleeps || !sim.at_rest();
 }
 
@@ -633,7 +635,8 @@ RoomSimulation::TickFaces RoomSimulation::begin_tick() {
       apply_physics_level(a.physics, simulation_of(a.physics, seed), a.overrides, a.skin, now_s, a.skin_built_s);
       a.phase.sleeps = a.phase.sleeps && !a.overrides.any_muscle();
     }
-    a.phase.stepped = prepare_step(a.physics, a.face.au, s.room.dt_s(), seed, a.phase.sleeps, a.phase.allowed, a.units);
+    a.phase.stepped = prepare_step(a.physics, a.face.au, physics::head_pose(a.face), s.room.dt_s(), seed, a.phase.sleeps,
+                                   a.phase.allowed, a.units);
     if (a.phase.stepped) out.faces.push_back(a.physics.simulation.get());
     ++(a.phase.allowed ? s.physics_faces : s.kinematic_faces);
   }

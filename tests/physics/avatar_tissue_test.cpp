@@ -223,11 +223,12 @@ TEST(AvatarTissue, ReplacingTheGenericFaceWithTheAvatarsOwnDoesNotJump) {
     if (sim.model().inverse_mass[v] != 0.0f) EXPECT_LT(glm::length(now[v] - moved[v]), 1e-6f) << "vertex " << v;
   EXPECT_LT(rms_mm(now, moved), 0.5);
   // The weights are measured against other morphs now (the avatar's own):
-  // they move by up to a quarter, which the room blends over
-  // RoomSimulation::kPhysicsBlendS.
+  // they move by up to 0.36 (AU 17's, which on the open jaw shares the
+  // lower lip's travel with AU 27 and, since the lips meet, stops at their
+  // contact), which the room blends over RoomSimulation::kOwnFaceBlendS.
   const FaceMeasurement after = sim.measure();
   for (std::size_t c = 0; c < before.action_units.size(); ++c)
-    EXPECT_NEAR(after.action_units[c], before.action_units[c], 0.3f) << "channel " << c;
+    EXPECT_NEAR(after.action_units[c], before.action_units[c], 0.4f) << "channel " << c;
   run(sim, smile_and_open(), 30);
   const FaceMeasurement later = sim.measure();
   EXPECT_NEAR(later.action_units[codec::au_channel(12, codec::AuSide::left)],

@@ -159,10 +159,10 @@ TEST(CorrectiveProjection, RecoversKnownWeightsAndClamps) {
 
 TEST(BehaviourCorpus, RoundTripsAndRefusesWhatItCannotRead) {
   BehaviourCorpus corpus;
-  corpus.sequences.push_back({"a-1", {AuFrame{}, AuFrame{}}});
+  corpus.sequences.push_back({"a-1", {AuFrame{}, AuFrame{}}, {HeadPose{}, HeadPose{0.25f, -0.5f, 0.125f, {}}}});
   corpus.sequences[0].frames[1][5] = 0.25f;
   corpus.sequences[0].frames[1][28] = 1.0f;
-  corpus.sequences.push_back({"b_2", {AuFrame{}}});
+  corpus.sequences.push_back({"b_2", {AuFrame{}}, {}});
   corpus.sequences[1].frames[0][0] = 0.5f;
   const std::string text = write_behaviour_corpus(corpus);
   BehaviourCorpus read;
@@ -171,7 +171,10 @@ TEST(BehaviourCorpus, RoundTripsAndRefusesWhatItCannotRead) {
   ASSERT_EQ(read.sequences.size(), 2u);
   EXPECT_EQ(read.sequences[0].frames, corpus.sequences[0].frames);
   EXPECT_EQ(read.sequences[1].frames, corpus.sequences[1].frames) << "a new sequence starts from 0";
+  EXPECT_EQ(read.sequences[0].heads, corpus.sequences[0].heads);
+  EXPECT_TRUE(read.sequences[1].heads.empty()) << "a sequence that names no head keeps it upright";
   EXPECT_EQ(write_behaviour_corpus(read), text);
+  EXPECT_NE(text.find("5:250 28:1000 yaw:250 pitch:-500 roll:125\n"), std::string::npos) << text;
 
   const auto refusal = [](const std::string& bad) {
     BehaviourCorpus c;
@@ -182,7 +185,11 @@ TEST(BehaviourCorpus, RoundTripsAndRefusesWhatItCannotRead) {
   EXPECT_EQ(refusal("3:100\n"), "corpus line 1: a frame before the first \"sequence NAME\" line");
   EXPECT_EQ(refusal("sequence x\n29:100\n"), "corpus line 2: \"29:100\": channels are 0..28, values 0..1000");
   EXPECT_EQ(refusal("sequence x\n3:1001\n"), "corpus line 2: \"3:1001\": channels are 0..28, values 0..1000");
-  EXPECT_EQ(refusal("# c\nsequence x\n.\n3-100\n"), "corpus line 4: \"3-100\" is not channel:thousandths");
+  EXPECT_EQ(refusal("# c\nsequence x\n.\n3-100\n"),
+            "corpus line 4: \"3-100\" is not channel:thousandths (or yaw:, pitch:, roll: milliradians)");
+  EXPECT_EQ(refusal("sequence x\npitch:1201\n"),
+            "corpus line 2: \"pitch:1201\": the head's pitch is milliradians, -1200..1200");
+  EXPECT_EQ(refusal("sequence x\nyaw:0.5\n"), "corpus line 2: \"yaw:0.5\": the head's yaw is milliradians, -1200..1200");
   EXPECT_EQ(refusal("sequence bad name\n.\n"), "corpus line 1: a sequence's name is 1 to 64 letters, digits, '-' or '_'");
   EXPECT_EQ(refusal("sequence x\n.\nsequence y\n"), "corpus sequence y has no frames");
 }

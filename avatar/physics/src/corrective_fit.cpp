@@ -55,8 +55,10 @@ CorpusRecording record_corpus(const model::GenericFace& face, const BehaviourCor
     SimulationOptions options;
     options.solver = solver;
     FaceSimulation sim(tissue, options, correctives);
+    const CorpusSequence& sequence = corpus.sequences[i];
     for (std::size_t f = r.sequence_start[i]; f < r.sequence_start[i + 1]; ++f) {
       sim.set_action_units(r.targets[f]);
+      sim.set_head_pose(sequence.head(f - r.sequence_start[i]));
       sim.step(kCorpusFrameS);
       r.measured[f] = sim.measure();
       for (std::size_t v = 0; v < n; ++v) {

@@ -9,6 +9,7 @@
 #include "fw/model/landmark_template.hpp"
 #include "fw/physics/au_muscle_map.hpp"
 #include "fw/physics/au_projection.hpp"
+#include "fw/physics/lip_contact.hpp"
 #include "fw/physics/muscle_variation.hpp"
 #include "fw/physics/prism_volume.hpp"
 #include "fw/physics/skull_contact.hpp"
@@ -21,6 +22,34 @@ namespace {
 // than 0.006 mm/s and every muscle is within 0.01 % of its target.
 constexpr float kRestSpeed = 1e-4f;
 constexpr float kRestActivation = 1e-4f;
+// The tissue takes a new load from its head only when it differs from the
+// one it has by more than kRestLoad: the skin settles about 0.5 mm (RMS)
+// further per model unit per s^2 of load, so 0.25 is 0.12 mm, a quarter of
+// what a viewer could notice. Heads sway a little all the time
+// (eye_head.cpp's noise: 2 degrees of pitch and 1.5 of roll move the load by
+// up to 0.19); a load that followed every sway would keep the tissue
+// creeping and every face awake. A tilt of more than 6 degrees is followed.
+constexpr float kRestLoad = 0.25f;
+// A turn's own load (its speeding up and its centripetal pull) is taken
+// only from this size on (0.5 mm settled): a gaze shift's turn (up to 30
+// rad/s^2 in the rooms' behaviour, 0.85 here) moves the skin by under 0.2
+// mm for a tenth of a second and would wake every face at every glance; a
+// shake of the head (some hundred rad/s^2) is shown.
+constexpr float kVisibleTurnLoad = 1.0f;
+
+// The size of a turn's load: its linear part at the face's 2-unit reach
+// from the neck pivot.
+float turn_load(const glm::mat3& linear) {
+  float size = 0.0f;
+  for (int c = 0; c < 3; ++c) size = std::max(size, glm::length(linear[c]));
+  return 2.0f * size;
+}
+
+// How far apart two loads are, units/s^2: the uniform parts', plus the
+// linear parts' at the face's 2-unit reach from the neck pivot.
+float load_gap(const HeadLoad& a, const HeadLoad& b) {
+  return glm::length(a.uniform - b.uniform) + turn_load(a.linear - b.linear);
+}
 constexpr double kMaxStepS = 1.0;
 // The jaw: a critically damped turn toward the angle its muscles hold.
 constexpr float kJawOmega = 20.0f;
@@ -47,8 +76,9 @@ FaceSimulation::FaceSimulation(std::shared_ptr<const TissueModel> model, const S
   z_ = m.rest_z;
   for (auto* v : {&vx_, &vy_, &vz_, &fx_, &fy_, &fz_}) v->assign(m.node_count, 0.0f);
   skull_normal_ = m.skull_normal;
-  // The neutral mesh is the shape at rest without gravity; with it, the
-  // tissue has somewhere to go.
+  // The neutral mesh is the shape at rest with the head upright; an extra
+  // pull gives the tissue somewhere to go.
+  load_.uniform.y = -options_.gravity;
   at_rest_ = options_.gravity == 0.0f;
   strength_factor_ = muscle_strength_factors(options_.seed, options_.individual_variation);
   for (std::size_t i = 0; i < kMuscleCount; ++i) strength_[i] = m.muscles[i].strength * strength_factor_[i];
@@ -80,10 +110,23 @@ int FaceSimulation::substeps_for(double dt_seconds) const {
   return std::max(1, static_cast<int>(std::ceil(std::clamp(dt_seconds, 0.0, kMaxStepS) / h - 1e-9)));
 }
 
+void FaceSimulation::set_head_pose(const HeadPose& pose) { head_.set_pose(pose); }
+
 int FaceSimulation::begin_step(double& dt_seconds) {
   if (!std::isfinite(dt_seconds) || dt_seconds <= 0.0) return 0;
   dt_seconds = std::min(dt_seconds, kMaxStepS);
   time_s_ += dt_seconds;
+  // Every frame, at rest or not, so that the head's speed is always that
+  // of its last frame.
+  HeadLoad load = head_.advance(dt_seconds, model_->material.load_scale);
+  load.uniform.y -= options_.gravity;
+  if (turn_load(load.linear) < kVisibleTurnLoad) load.linear = glm::mat3(0.0f);
+  // A turn that ends lets go at once, so that its pull does not linger.
+  const bool turn_ended = load.linear == glm::mat3(0.0f) && load_.linear != glm::mat3(0.0f);
+  if (turn_ended || load_gap(load, load_) > kRestLoad) {
+    at_rest_ = false;
+    load_ = load;
+  }
   return at_rest_ ? 0 : substeps_for(dt_seconds);
 }
 
@@ -215,6 +258,12 @@ void FaceSimulation::resolve_skull() {
       vx_[i] = vel.x, vy_[i] = vel.y, vz_[i] = vel.z;
     }
   }
+}
+
+void FaceSimulation::resolve_lips() {
+  const TissueModel& m = *model_;
+  for (const auto& [upper, lower] : m.lip_pairs)
+    resolve_lip_contact(y_[upper], y_[lower], vy_[upper], vy_[lower], m.inverse_mass[upper], m.inverse_mass[lower]);
 }
 
 FaceMeasurement FaceSimulation::measure() {

@@ -26,10 +26,8 @@ void FaceSimulation::mass_spring_substep(float h) {
   float* __restrict fx = fx_.data();
   float* __restrict fy = fy_.data();
   float* __restrict fz = fz_.data();
-  const float weight = -options_.gravity * m.material.node_mass;
-  std::fill(fx, fx + node_count, 0.0f);
-  std::fill(fy, fy + node_count, weight);
-  std::fill(fz, fz + node_count, 0.0f);
+  // The head's load and any extra gravity (head_loads.hpp).
+  fill_load_forces(load_, m.material.node_mass, node_count, x, y, z, fx, fy, fz);
 
   // Viscoelastic units (stress_strain.hpp) and the volume preservation of
   // every prism (Lee et al. 1995, eq. 6: a push along the volume gradient in
@@ -62,7 +60,7 @@ void FaceSimulation::mass_spring_substep(float h) {
       x[i] += h * ux, y[i] += h * uy, z[i] += h * uz;
     }
   }
-  resolve_skull();
+  resolve_contacts();
   // Measured after the skull took away what pressed into it: a node resting
   // on the bone is not moving.
   float max_speed2 = 0.0f;

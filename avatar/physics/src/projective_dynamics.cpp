@@ -134,10 +134,9 @@ void ProjectiveStepper::substep(std::span<FaceSimulation* const> faces, float h)
       s.u[f][2][i] = damp * pz[i] - (held ? hold * z[i] : 0.0f);
     }
     auto& c = s.constant[f];  // read in the free rows only
-    // Muscles and gravity, external forces at the start of the step.
-    std::fill(s.sum[0].begin(), s.sum[0].end(), 0.0f);
-    std::fill(s.sum[1].begin(), s.sum[1].end(), -face.options_.gravity * mass);
-    std::fill(s.sum[2].begin(), s.sum[2].end(), 0.0f);
+    // External forces at the start of the step: the head's load (and any
+    // extra gravity, head_loads.hpp), then the muscles.
+    fill_load_forces(face.load_, mass, nodes, x, y, z, s.sum[0].data(), s.sum[1].data(), s.sum[2].data());
     detail::add_muscle_forces(face.model(), {face.activation_, face.strength_, face.muscle_origins(), face.skull_normal_.data()},
                               {x, y, z, vx, vy, vz, s.sum[0].data(), s.sum[1].data(), s.sum[2].data()});
     for (const std::uint16_t i : free_in_order) {
@@ -212,7 +211,8 @@ void ProjectiveStepper::substep(std::span<FaceSimulation* const> faces, float h)
     }
   }
 
-  // Velocities from the positions (implicit Euler), then the skull.
+  // Velocities from the positions (implicit Euler), then the skull and the
+  // lips.
   const float inv_h = 1.0f / ht;
   for (FaceSimulation* face : faces) {
     for (const std::uint16_t i : free_in_order) {
@@ -220,7 +220,7 @@ void ProjectiveStepper::substep(std::span<FaceSimulation* const> faces, float h)
       face->vy_[i] = (face->y_[i] - face->fy_[i]) * inv_h;
       face->vz_[i] = (face->z_[i] - face->fz_[i]) * inv_h;
     }
-    face->resolve_skull();
+    face->resolve_contacts();
     float max_speed2 = 0.0f;
     for (std::size_t i = 0; i < moving; ++i)
       max_speed2 = std::max(max_speed2, face->vx_[i] * face->vx_[i] + face->vy_[i] * face->vy_[i] + face->vz_[i] * face->vz_[i]);

@@ -58,7 +58,8 @@ void FaceSimulation::pbd_substep(float h, const std::array<float, kMuscleCount>&
   for (std::size_t i = 0; i < m.node_count; ++i) px[i] = x[i], py[i] = y[i], pz[i] = z[i];
   for (std::size_t i = 0; i < moving; ++i) {
     if (inverse_masses[i] == 0.0f) continue;  // pinned: placed by place_bone
-    vy_[i] -= h * options_.gravity;
+    const glm::vec3 a = load_.at({x[i], y[i], z[i]});  // the head's load and any extra gravity
+    vx_[i] += h * a.x, vy_[i] += h * a.y, vz_[i] += h * a.z;
     x[i] += h * vx_[i], y[i] += h * vy_[i], z[i] += h * vz_[i];
   }
   auto inverse_mass = [&](std::size_t node) { return node < moving ? inverse_masses[node] : 0.0f; };
@@ -154,7 +155,7 @@ void FaceSimulation::pbd_substep(float h, const std::array<float, kMuscleCount>&
       for (std::size_t k = 0; k < 6; ++k) move(nodes[k], dl * inverse_mass(nodes[k]) * gradient[k]);
     }
   }
-  resolve_skull();
+  resolve_contacts();
   // Velocities from the positions, then the bond to the bone of each
   // column (relative speed, implicit), as in the mass-spring solver.
   const float inv_h = 1.0f / h;

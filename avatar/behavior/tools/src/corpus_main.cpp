@@ -1,6 +1,7 @@
 // facewire-corpus: records the behaviour corpus of avatar/physics/corpus/,
-// the action-unit targets a room's behaviour gives the physics face, on
-// which facewire-correctives fits the corrective basis. Two parts, made
+// the action-unit targets and head turns a room's behaviour gives the
+// physics face, on which facewire-correctives fits the corrective basis.
+// Two parts, made
 // from different seeds, expressions and lines, so that one can be fitted
 // on and the other held out:
 //   - each primary expression a person asks for (BehaviorRoom::express) at
@@ -30,7 +31,13 @@ using fw::physics::CorpusSequence;
 constexpr int kTickHz = 30;
 constexpr const char* kPrimaries[] = {"joy", "sadness", "anger", "fear", "surprise", "disgust"};
 
-fw::physics::AuFrame targets(const BehaviorRoom& room, fw::behavior::FaceId id) { return room.face(id).au; }
+// What the room gives a face's physics this tick: its targets, and its
+// head's turn, which loads its tissue (speech's articulation is shown as the
+// track has it, not through the tissue: articulation.hpp).
+void record(const BehaviorRoom& room, fw::behavior::FaceId id, CorpusSequence& s) {
+  s.frames.push_back(room.face(id).au);
+  s.heads.push_back(fw::physics::head_pose(room.face(id)));
+}
 
 BehaviorRoom room_of(int faces, std::uint64_t seed) {
   fw::behavior::BehaviorRoomOptions options;
@@ -45,12 +52,12 @@ BehaviorRoom room_of(int faces, std::uint64_t seed) {
 // behaviour, held `hold_s`, recorded until two seconds after it ends.
 CorpusSequence expression(std::string_view emotion, float intensity, double hold_s, std::uint64_t seed) {
   BehaviorRoom room = room_of(2, seed);
-  CorpusSequence s{std::string(emotion) + "-" + std::to_string(static_cast<int>(intensity * 100)), {}};
+  CorpusSequence s{std::string(emotion) + "-" + std::to_string(static_cast<int>(intensity * 100)), {}, {}};
   const int ticks = static_cast<int>((1.0 + hold_s + 2.0) * kTickHz);
   for (int t = 0; t < ticks; ++t) {
     if (t == kTickHz) room.express(1, emotion, intensity, hold_s);
     room.tick();
-    s.frames.push_back(targets(room, 1));
+    record(room, 1, s);
   }
   return s;
 }
@@ -70,7 +77,7 @@ std::vector<CorpusSequence> conversation(const std::vector<std::string>& lines, 
       ++said;
     }
     room.tick();
-    for (int f = 0; f < kFaces; ++f) out[static_cast<std::size_t>(f)].frames.push_back(targets(room, static_cast<fw::behavior::FaceId>(f + 1)));
+    for (int f = 0; f < kFaces; ++f) record(room, static_cast<fw::behavior::FaceId>(f + 1), out[static_cast<std::size_t>(f)]);
   }
   return out;
 }

@@ -9,9 +9,14 @@
 //   # comment
 //   sequence NAME            a new sequence; every channel starts at 0
 //   3:250 12:1000            a frame: the channels that changed, channel:thousandths
+//   3:250 pitch:-35          ... and the head's turn, if it changed: yaw:, pitch:
+//                            and roll: in milliradians (HeadPose's signs)
 //   .                        a frame where nothing changed
 //
 // Channels are FaceParams' action-unit channels (codec::kAuChannels order).
+// The head's turn loads the tissue (head_loads.hpp); its slow sway of a
+// few millimetres is not recorded (it loads the tissue by under 0.1 % of
+// gravity).
 #include <array>
 #include <cstddef>
 #include <string>
@@ -19,6 +24,7 @@
 #include <vector>
 
 #include "fw/codec/face_params.hpp"
+#include "fw/physics/head_loads.hpp"
 
 namespace fw::physics {
 
@@ -30,9 +36,17 @@ inline constexpr std::size_t kMaxCorpusBytes = 16u << 20;
 
 using AuFrame = std::array<float, codec::kAuChannelCount>;
 
+/// The most a corpus head turns, radians, each way (codec::FaceParams' yaw
+/// range; its pitch and roll ranges are narrower).
+inline constexpr float kMaxCorpusHeadRad = 1.2f;
+
 struct CorpusSequence {
   std::string name;             ///< letters, digits, '-' and '_', at most 64
   std::vector<AuFrame> frames;  ///< each channel in [0,1], steps of 1/1000
+  /// The head's turn at each frame (as many as frames, or none: upright),
+  /// steps of 1/1000 rad; no translation.
+  std::vector<HeadPose> heads;
+  HeadPose head(std::size_t frame) const { return frame < heads.size() ? heads[frame] : HeadPose{}; }
 };
 
 struct BehaviourCorpus {

@@ -36,7 +36,8 @@ struct CorpusRecording {
 };
 
 /// Simulates every sequence of `corpus` on `face` (a fresh face each, at
-/// rest), one step of kCorpusFrameS a frame, measured against the face's
+/// rest), one step of kCorpusFrameS a frame with the head turning as the
+/// sequence says, measured against the face's
 /// action units and its corrective components (if it has any).
 /// @param[in] pool  threads to spread the sequences over (null: this thread)
 CorpusRecording record_corpus(const model::GenericFace& face, const BehaviourCorpus& corpus,

@@ -25,6 +25,7 @@
 #include "fw/model/generic_face.hpp"
 #include "fw/physics/corrective_projection.hpp"
 #include "fw/physics/facial_muscles.hpp"
+#include "fw/physics/head_loads.hpp"
 #include "fw/physics/tissue_model.hpp"
 
 namespace fw::physics {
@@ -52,8 +53,10 @@ struct SimulationOptions {
   /// Muscle excitation-contraction lag: first-order time constants, seconds.
   float activation_time_s = 0.08f;
   float deactivation_time_s = 0.12f;
-  /// Acceleration pulling the tissue down (-y), model units per s^2; 0 takes
-  /// the neutral mesh as the shape already balanced under gravity.
+  /// An extra acceleration pulling the tissue down (-y), model units per
+  /// s^2, on top of what the head's pose and motion put on it
+  /// (set_head_pose): for tests and the paper's sag figure. 0: the neutral
+  /// mesh is the shape balanced under gravity with the head upright.
   float gravity = 0.0f;
   /// Longest XPBD sub-step, seconds: two per 30 Hz frame. XPBD is stable at
   /// any step and its material does not depend on it (xpbd_test.cpp).
@@ -93,6 +96,12 @@ class FaceSimulation {
   void set_action_units(const std::array<float, codec::kAuChannelCount>& targets);
   /// Drives the muscles directly (each clamped to [0,1]), bypassing the AU table.
   void set_muscle_activations(const std::array<float, kMuscleCount>& targets);
+  /// The head's pose at the end of the next step (head_loads.hpp): its
+  /// turn away from upright and its motion load the tissue, which sags and
+  /// lags. The tissue takes the load when it moves by more than the skin
+  /// would show (face_simulation.cpp's kRestLoad): a swaying head lets its
+  /// face rest, a turning or tilting one wakes it.
+  void set_head_pose(const HeadPose& pose);
 
   // The face lab's physics level (face_simulation_lab.cpp).
   /// The least activation of each muscle (each clamped to [0,1], NaN = 0):
@@ -135,6 +144,9 @@ class FaceSimulation {
   /// The skin vertices (epidermis nodes), model units.
   std::vector<glm::vec3> surface() const;
   float jaw_angle_rad() const { return jaw_angle_; }
+  /// The acceleration field on the tissue over the last step (the head's
+  /// load, scaled, plus SimulationOptions::gravity).
+  const HeadLoad& load() const { return load_; }
   const std::array<float, kMuscleCount>& muscle_activations() const { return activation_; }
   /// Sum of 1/2 m v^2 over the moving nodes.
   double kinetic_energy() const;
@@ -160,6 +172,9 @@ class FaceSimulation {
   void mass_spring_substep(float h);
   void pbd_substep(float h, const std::array<float, kMuscleCount>& activation);  // XPBD (xpbd_step.cpp)
   void resolve_skull();
+  void resolve_lips();
+  /// The contacts after a step: the skull, then the lips.
+  void resolve_contacts() { resolve_skull(), resolve_lips(); }
   glm::vec3 jaw_turned(const glm::vec3& p, float share) const;
 
   std::shared_ptr<const TissueModel> model_;
@@ -173,6 +188,8 @@ class FaceSimulation {
   std::array<float, kMuscleCount> floor_{};  ///< set_muscle_floor
   float jaw_angle_ = 0, jaw_speed_ = 0, jaw_target_ = 0;
   float jaw_cos_ = 1, jaw_sin_ = 0;
+  HeadMotion head_;
+  HeadLoad load_;  ///< over this step: the head's, plus options_.gravity
   glm::vec3 jaw_glide_{0.0f};  ///< the condyles' glide down the eminence now (TissueModel::jaw_glide)
   double time_s_ = 0;
   bool at_rest_ = true;

@@ -60,6 +60,13 @@ struct TissueMaterial {
   /// beside the units' own; not a drag of the world frame).
   float bone_damping = 0;
   float node_mass = 1;
+  /// The share of a real acceleration (gravity off upright, a turning head)
+  /// that loads the lattice. Its node mass is a numerical one, chosen with
+  /// the slopes for how fast expressions develop; the tissue's real weight
+  /// against those slopes is measured: this scale makes lying down (gravity
+  /// from the back of the head instead of from above) move the lower face's
+  /// skin as far as it moves in people (tissue_model.cpp).
+  float load_scale = 0;
   /// Normal adult skin (the paper's Fig. 2a).
   static TissueMaterial normal();
   /// Looser, aged skin (Fig. 2b): softer skin layers with a negative
@@ -99,6 +106,9 @@ struct TissueModel {
   /// #V: 1 where the tissue is tied to the bone under it; 0 under the lips
   /// and mouth corners, which only slide over the teeth.
   std::vector<std::uint8_t> column_on_bone;
+  /// The lips' contacts (lip_contact.hpp): opposite skin vertices on the
+  /// inner edges of the lips, upper then lower.
+  std::vector<std::array<std::uint16_t, 2>> lip_pairs;
   std::array<float, kTissueLayerCount> layer_depth{};       ///< share of the thickness at each layer
   std::array<float, kTissueLayerCount> layer_min_height{};  ///< share of the thickness a node keeps above the skull
 

@@ -4,6 +4,8 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "fw/model/neck_pivot.hpp"
+
 namespace fw::render {
 
 struct Camera {
@@ -23,9 +25,8 @@ struct Camera {
   static Camera group(int count, float aspect);
 };
 
-/// The point heads turn about: the top of the neck, below the ears, level
-/// with them in depth (the face surface reaches about z = 2.2 at the nose).
-inline constexpr glm::vec3 kNeckPivot{0.0f, -1.5f, 0.2f};
+/// The point heads turn about (model/neck_pivot.hpp).
+inline constexpr glm::vec3 kNeckPivot = model::kNeckPivot;
 
 /// A head's rotation (radians) and translation (model units). Signs follow
 /// codec::FaceParams: yaw turns toward the person's left (the nose moves to
