@@ -3,6 +3,7 @@
 // keeps, and one factorisation per tissue model.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include <glm/geometric.hpp>
@@ -66,51 +67,65 @@ TEST(ProjectiveDynamics, SettledActionUnitsHaveTheMassSpringShapes) {
 // The volume bound: each prism within 5 % of its volume once a single unit
 // at full strength has settled. It holds for most prisms, not all, in every
 // solver: the volume stiffness (1500) is of the order of the units' slopes,
-// so a prism gives volume where a muscle shears or squeezes it (the muscle
-// layer over the bone, the thin lid and nose columns); the jaw's units
-// stretch the bone layer itself between mandible and maxilla. A stiffer
-// volume keeps it (100 times: 3.4 % projective) but projective dynamics'
-// one iteration per step then takes tens of seconds to settle, and the
-// explicit step shortens with its square root (README "Where it loses
-// accuracy"). Asserted: the real 5 % bound for the share of prisms it holds
-// for (measured: at least 90.4 % of the 1628 under every unit but the
-// jaw's, mass-spring and projective; PBD 87.4 %), and each solver's
-// measured worst, so that a change that folds more tissue fails. Measured
-// worst change, single units / AU 26-27: projective 56 % (AU 6) / 108 %,
-// mass-spring 56 % (AU 6) / 79 %, PBD 88 % (AU 10) / 174 % (before
-// it was XPBD).
+// so a prism gives volume where a muscle shears or squeezes it (the fat and
+// muscle layers under the pulled tissue, the thin lid and nose columns),
+// and the jaw stretches the lips and cheeks in every layer. What it takes
+// (README "Where it loses accuracy"): mass-spring reaches 9 % at 30 times
+// the stiffness and 4 % at 100 times, with 25 and 45 sub-steps a frame
+// instead of 7, never coming to rest in 30 s; projective dynamics' one
+// iteration per step slows with it (3 times: AU 12's onset past 300 ms).
+// Asserted: the real 5 % bound for the share of prisms it holds for and
+// each solver's measured worst, so that a change that folds more tissue
+// fails. Measured, single units (worst unit) / AU 26-27:
+//   mass-spring  worst 55.7 % (AU 6), 157 of 1610 outside (AU 6) / 79 %
+//   projective   worst 56.1 % (AU 6), 149 of 1610 outside (AU 6) / 108 %
+//   XPBD         worst 54.1 % (AU 6), 110 of 1610 outside (AU 6) / 78 %
+// (PBD, before it was XPBD: 88 % (AU 10) / 174 %). The table the test
+// prints gives every unit's worst prism and the prisms outside the band.
 class SettledVolumes : public ::testing::TestWithParam<Solver> {};
 std::string settled_solver_name(const ::testing::TestParamInfo<Solver>& info) {
-  return info.param == Solver::mass_spring ? "MassSpring" : info.param == Solver::pbd ? "Pbd" : "Projective";
+  return info.param == Solver::mass_spring ? "MassSpring" : info.param == Solver::pbd ? "Xpbd" : "Projective";
 }
 INSTANTIATE_TEST_SUITE_P(Solvers, SettledVolumes, ::testing::Values(Solver::mass_spring, Solver::pbd, Solver::projective),
                          settled_solver_name);
+
+// A settled face's prisms against their rest volumes.
+struct VolumeBand {
+  float worst = 0.0f;       ///< the largest |V / V0 - 1|
+  std::size_t outside = 0;  ///< prisms beyond 5 %
+};
+VolumeBand volume_band(const FaceSimulation& sim) {
+  const TissueModel& m = sim.model();
+  VolumeBand band;
+  for (std::size_t e = 0; e < m.element_count(); ++e) {
+    const float change = std::abs(sim.element_volume(e) / m.element_rest_volume[e] - 1.0f);
+    band.worst = std::max(band.worst, change);
+    band.outside += change > 0.05f;
+  }
+  return band;
+}
 
 TEST_P(SettledVolumes, TheVolumeBoundHoldsForMostPrisms) {
   struct Levels {
     float within, single, jaw;
   };
   const Levels measured = GetParam() == Solver::mass_spring ? Levels{0.89f, 0.60f, 0.85f}
-                          : GetParam() == Solver::pbd       ? Levels{0.86f, 0.92f, 1.8f}
+                          : GetParam() == Solver::pbd       ? Levels{0.92f, 0.58f, 0.85f}
                                                             : Levels{0.89f, 0.60f, 1.15f};
   float worst_single = 0.0f;
   for (int au : codec::kActionUnits) {
     const FaceSimulation sim = settled(GetParam(), au);
-    const TissueModel& m = sim.model();
-    float worst = 0.0f;
-    std::size_t within = 0;
-    for (std::size_t e = 0; e < m.element_count(); ++e) {
-      const float change = std::abs(sim.element_volume(e) / m.element_rest_volume[e] - 1.0f);
-      worst = std::max(worst, change);
-      within += change <= 0.05f;
-    }
+    const std::size_t prisms = sim.model().element_count();
+    const VolumeBand band = volume_band(sim);
+    std::printf("AU %2d: worst prism %5.1f %%, %3zu of %zu prisms beyond 5 %%%s\n", au, 100.0f * band.worst, band.outside,
+                prisms, sim.at_rest() ? "" : " (still moving)");
     if (moves_the_jaw(au)) {
-      EXPECT_LT(worst, measured.jaw) << "AU " << au;
+      EXPECT_LT(band.worst, measured.jaw) << "AU " << au;
       continue;
     }
-    worst_single = std::max(worst_single, worst);
-    EXPECT_LT(worst, measured.single) << "AU " << au;
-    EXPECT_GE(float(within), measured.within * float(m.element_count())) << "AU " << au << ": prisms within 5 %";
+    worst_single = std::max(worst_single, band.worst);
+    EXPECT_LT(band.worst, measured.single) << "AU " << au;
+    EXPECT_GE(float(prisms - band.outside), measured.within * float(prisms)) << "AU " << au << ": prisms within 5 %";
   }
   EXPECT_GT(worst_single, 0.05f) << "the 5 % requirement now holds for every prism: tighten this test to it";
 }
