@@ -83,13 +83,16 @@ const AuTargets& viseme_targets(Viseme viseme) {
   // tongue consonants 2-3 (the jaw nearly closed), near a speaker's lips at
   // a conversational level (10-15 mm for /a/); the resting face has a 1 mm
   // slit. AU 25 and 26 open the mouth; 24 presses the lips (bilabial
-  // closure: they overlap); 23 and a little 17 narrow and push them forward
+  // closure; its morph, made by the physics face, brings them just into
+  // contact, so 23 and 17 press on past it: the lips' linear sum overlaps
+  // by 0.85 mm, which holds the closure against the jaw a neighbouring
+  // vowel leaves open); 23 and a little 17 narrow and push them forward
   // (rounding: the face has no AU 18 pucker); 20 and lightly 12 spread them
   // for /i/; 10 raises the upper lip off the teeth for f and v, 17 lifts the
   // lower one to them. tests/speech measures these gaps on the face.
   static const std::array<AuTargets, kVisemeCount> table = {
       targets({}),                                                  // rest
-      targets({{24, 0.8f}, {23, 0.2f}}),                            // bilabial
+      targets({{24, 1.0f}, {23, 0.6f}, {17, 0.3f}}),                // bilabial
       targets({{10, 0.3f}, {17, 0.35f}}),                           // labiodental
       targets({{25, 0.35f}, {26, 0.06f}}),                          // dental
       targets({{25, 0.3f}, {26, 0.04f}, {20, 0.1f}}),               // alveolar
