@@ -14,6 +14,8 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <memory>
+#include <mutex>
 #include <optional>
 
 #include "channel_table.hpp"
@@ -95,6 +97,45 @@ enum class FrameNeed {
   correctives,  ///< only corrective weights beyond their tolerance: sent on spare budget
 };
 
+}  // namespace
+
+// What each channel may be off by at each quality level, in grid steps,
+// for one set of options. Every tick asks for every channel's, up to three
+// times; encoders with the same visible errors (a server's, all of them)
+// share one table, which stays in the cache, instead of each holding its own.
+struct EncoderTolerances {
+  std::array<float, kChannelCount> visible_error{};
+  float max_gaze_error_rad = 0;
+  std::array<std::array<double, kChannelCount>, kMaxQualityLevel + 1> steps{};
+
+  explicit EncoderTolerances(const EncoderOptions& o) : visible_error(o.visible_error), max_gaze_error_rad(o.max_gaze_error_rad) {
+    for (std::size_t level = 0; level <= kMaxQualityLevel; ++level)
+      for (std::size_t c = 0; c < kChannelCount; ++c) {
+        double error = visible_error[c] * kLevelFactor[level];
+        if (channel_table()[c].group == ChannelGroup::eyes) error = std::min<double>(error, max_gaze_error_rad);
+        steps[level][c] = error / channel_table()[c].step;
+      }
+  }
+  bool made_for(const EncoderOptions& o) const {
+    return visible_error == o.visible_error && max_gaze_error_rad == o.max_gaze_error_rad;
+  }
+};
+
+// The table for `options`: one already in use by an encoder, or a new one.
+std::shared_ptr<const EncoderTolerances> shared_tolerances(const EncoderOptions& options) {
+  static std::mutex mutex;
+  static std::vector<std::weak_ptr<const EncoderTolerances>> tables;
+  const std::lock_guard lock(mutex);
+  std::erase_if(tables, [](const auto& weak) { return weak.expired(); });
+  for (const auto& weak : tables)
+    if (auto table = weak.lock(); table && table->made_for(options)) return table;
+  auto table = std::make_shared<const EncoderTolerances>(options);
+  tables.push_back(table);
+  return table;
+}
+
+namespace {
+
 // The face as coded channels, grid steps, unrounded (all a held tick needs).
 void observe_steps(const FaceParams& params, Steps& x) {
   const auto& table = channel_table();
@@ -151,15 +192,12 @@ struct Encoder::State {
 
   explicit State(const EncoderOptions& o)
       : options(o), rate(o.target_bps, o.stream.tick_rate_hz, o.min_level, o.max_level),
-        coding(o.stream.max_extrapolation_ticks) {}
+        coding(o.stream.max_extrapolation_ticks), tolerances(shared_tolerances(o)) {}
 
   EncoderOptions options;
   RateController rate;
   CodingState coding;  ///< what the decoder holds after the last frame sent
-  /// The tolerances of the level last asked for: every tick asks for every
-  /// channel's, at most three times, and the level seldom changes.
-  std::array<double, kChannelCount> level_tolerance{};
-  int tolerance_level = -1;
+  std::shared_ptr<const EncoderTolerances> tolerances;
   bool started = false;
   bool key_requested = true;
   std::uint64_t offered = 0;  ///< faces offered so far
@@ -217,19 +255,7 @@ struct Encoder::State {
   }
 
   // The error channel `c` may show at `level`, in grid steps.
-  double tolerance(std::size_t c, int level) const {
-    return level == tolerance_level ? level_tolerance[c] : tolerance_of(c, level);
-  }
-  void prepare_tolerances(int level) {
-    if (level == tolerance_level) return;
-    for (std::size_t c = 0; c < kChannelCount; ++c) level_tolerance[c] = tolerance_of(c, level);
-    tolerance_level = level;
-  }
-  double tolerance_of(std::size_t c, int level) const {
-    double error = options.visible_error[c] * kLevelFactor[static_cast<std::size_t>(level)];
-    if (channel_table()[c].group == ChannelGroup::eyes) error = std::min<double>(error, options.max_gaze_error_rad);
-    return error / channel_table()[c].step;
-  }
+  double tolerance(std::size_t c, int level) const { return tolerances->steps[static_cast<std::size_t>(level)][c]; }
 
   // The motion to send for channel `c` (source now at `x` grid steps): a
   // velocity in grid steps per tick and a damping class. Two steps in the
@@ -643,7 +669,6 @@ bool Encoder::encode_tick(const std::array<double, kChannelCount>& x, const Face
   s.past = source != nullptr ? &source->previous_ : &s.previous;
   s.past2 = source != nullptr ? &source->before_previous_ : &s.before_previous;
   const int level = s.rate.level();
-  s.prepare_tolerances(level);
   const TickSource tick_source = s.observe(x, level);
   s.remember_source(x, source == nullptr);
   State::FrameTrial& trial = State::trial_scratch().trial;
