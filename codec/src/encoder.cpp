@@ -204,15 +204,16 @@ struct Encoder::State {
   std::uint32_t ticks_since_frame = 0;
   std::uint32_t ticks_since_key = 0;
   std::uint8_t sequence = 0;
-  Steps previous{};         ///< the source one tick ago, grid steps (faces offered as FaceParams)
-  Steps before_previous{};  ///< two ticks ago
-  /// The history this tick's motion estimate reads: previous and
-  /// before_previous, or a FaceSource's own.
-  const Steps* past = &previous;
-  const Steps* past2 = &before_previous;
-  Steps sent_source{};      ///< the source when the last frame went out
   int history = 0;          ///< ticks of source history held (0 .. 2)
   EncoderStats stats;
+  /// The history this tick's motion estimate reads: previous and
+  /// before_previous, or a FaceSource's own.
+  const Steps* past = nullptr;
+  const Steps* past2 = nullptr;
+  // (Above: what every tick reads, kept together.)
+  Steps sent_source{};      ///< the source when the last frame went out
+  Steps previous{};         ///< the source one tick ago, grid steps (faces offered as FaceParams)
+  Steps before_previous{};  ///< two ticks ago
 
   // ---- The tick's source -------------------------------------------------
 
