@@ -64,15 +64,11 @@ constexpr double kUrgentPriority = 2.0;
 constexpr double kCorrectivePressure = 0.75;
 constexpr double kCorrectiveBucketShare = 1.0 / 3.0;
 
-bool is_corrective(std::size_t c) {
-  // Asked for every channel every tick: looked up once.
-  static const std::array<bool, kChannelCount> corrective = [] {
-    std::array<bool, kChannelCount> table{};
-    for (std::size_t i = 0; i < kChannelCount; ++i) table[i] = channel_table()[i].group == ChannelGroup::correctives;
-    return table;
-  }();
-  return corrective[c];
-}
+// The correctives are the table's last channels (channel_table.cpp; held by
+// ChannelTable.CorrectivesCoverMinusOneToOneAndComeLast): asked for every
+// channel every tick, a comparison.
+constexpr std::size_t kFirstCorrective = kChannelCount - kCorrectiveCount;
+bool is_corrective(std::size_t c) { return c >= kFirstCorrective; }
 
 using Steps = std::array<double, kChannelCount>;
 using Updates = std::array<bool, kChannelCount>;
