@@ -494,6 +494,7 @@ struct Encoder::State {
   // The channels to update, most urgent first (ties keep channel order).
   static std::vector<std::size_t> updates_by_priority(const Updates& update, const Priorities& priority) {
     std::vector<std::size_t> order;
+    order.reserve(kChannelCount);
     for (std::size_t c = 0; c < kChannelCount; ++c)
       if (update[c]) order.push_back(c);
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return priority[a] > priority[b]; });

@@ -352,6 +352,11 @@ void SubscriberStream::tick(std::uint32_t tick, std::uint64_t now_us, std::span<
 void SubscriberStream::send_room_frames(std::uint32_t tick, std::uint64_t now_us,
                                         std::span<const codec::RoomEntry> entries) {
   std::vector<std::uint8_t> message;
+  // Its whole size up front: grown byte by byte it would be copied a few
+  // times per message, for every subscriber every tick.
+  std::size_t bytes = 32;
+  for (const codec::RoomEntry& entry : entries) bytes += entry.frame.size() + 8;
+  message.reserve(bytes);
   if (settings_.timestamps) {
     frame_.clear();
     codec::write_room_frame(entries, frame_);
