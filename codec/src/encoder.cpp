@@ -3,13 +3,16 @@
 // writes are normative), within the rate controller's budget.
 //
 // One tick, step by step (Encoder::encode_tick):
+//   observe_steps     the face as coded channels (done once for all the
+//                     face's encoders when it comes as a FaceSource)
 //   start_tick        the clocks and the rate controller move on
-//   observe           the face as coded channels, each channel's motion,
-//                     and the frame that would carry all of it
+//   observe           each channel's motion, and the frame that would carry all of it
 //   remember_source   the source history the next motion estimates use
 //   choose_frame      a key frame if one is forced or due, else
 //     choose_predicted_frame   which channels the viewer needs (select_updates);
-//                     over budget, fit_over_budget keeps the most urgent
+//                     over budget, fit_over_budget keeps the most urgent;
+//                     each frame tried is written into the coding state
+//                     (write_trial) and a refused one taken back (undo_trial)
 //   commit_frame      the frame goes out: the coding state, clocks and stats follow
 #include <algorithm>
 #include <cassert>
