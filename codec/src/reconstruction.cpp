@@ -11,7 +11,7 @@ void Reconstruction::reset() { channels_ = {}; }
 void Reconstruction::advance(std::uint32_t ticks) {
   // Only min(age, limit) matters, so ages stop there (and never overflow).
   for (Channel& ch : channels_)
-    ch.age = static_cast<std::uint32_t>(std::min<std::uint64_t>(std::uint64_t{ch.age} + ticks, max_extrapolation_ticks_));
+    ch.age = static_cast<std::uint8_t>(std::min<std::uint64_t>(std::uint64_t{ch.age} + ticks, max_extrapolation_ticks_));
 }
 
 std::int64_t Reconstruction::glide(const Channel& ch, std::int64_t ticks) {
