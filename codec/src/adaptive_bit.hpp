@@ -18,7 +18,9 @@ inline constexpr std::uint32_t kProbabilityMin = 32;
 /// settles: the adaptation shift grows with the number of bits seen, which
 /// approximates a running frequency count (Krichevsky-Trofimov) early and an
 /// exponential forgetting window of about 64 bits later.
-struct AdaptiveBit {
+/// Packed in 3 bytes, not padded to 4: a frame's models are kilobytes of
+/// them, held per avatar per viewer on a server, and read from memory.
+struct __attribute__((packed)) AdaptiveBit {
   std::uint16_t p0 = kProbabilityOne / 2;
   std::uint8_t seen = 0;  ///< bits seen, saturating at kAdaptationSteps
 

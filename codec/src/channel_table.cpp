@@ -84,7 +84,9 @@ int group_shift(int level, std::size_t group) {
   return kShift[static_cast<std::size_t>(level)][group];
 }
 
-CodedRange coded_range(std::size_t channel) {
+CodedRange coded_range(std::size_t channel) { return coded_ranges()[channel]; }
+
+const std::array<CodedRange, kChannelCount>& coded_ranges() {
   // Worked out once: the reconstruction asks for every channel every tick.
   static const std::array<CodedRange, kChannelCount> ranges = [] {
     std::array<CodedRange, kChannelCount> r{};
@@ -98,7 +100,7 @@ CodedRange coded_range(std::size_t channel) {
     }
     return r;
   }();
-  return ranges[channel];
+  return ranges;
 }
 
 std::int32_t max_velocity(std::size_t channel) {

@@ -59,6 +59,8 @@ struct CodedRange {
   std::int32_t max;
 };
 CodedRange coded_range(std::size_t channel);
+/// Every channel's coded range (what coded_range() reads).
+const std::array<CodedRange, kChannelCount>& coded_ranges();
 
 /// One value per channel as coded (an eye plus its base, the head).
 using ChannelValues = std::array<std::int32_t, kChannelCount>;

@@ -3,21 +3,27 @@
 // writes are normative), within the rate controller's budget.
 //
 // One tick, step by step (Encoder::encode_tick):
+//   observe_steps     the face as coded channels (done once for all the
+//                     face's encoders when it comes as a FaceSource)
 //   start_tick        the clocks and the rate controller move on
-//   observe           the face as coded channels, each channel's motion,
-//                     and the frame that would carry all of it
+//   observe           each channel's motion, and the frame that would carry all of it
 //   remember_source   the source history the next motion estimates use
 //   choose_frame      a key frame if one is forced or due, else
 //     choose_predicted_frame   which channels the viewer needs (select_updates);
-//                     over budget, fit_over_budget keeps the most urgent
+//                     over budget, fit_over_budget keeps the most urgent;
+//                     each frame tried is written into the coding state
+//                     (write_trial) and a refused one taken back (undo_trial)
 //   commit_frame      the frame goes out: the coding state, clocks and stats follow
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <memory>
+#include <mutex>
 #include <optional>
 
 #include "channel_table.hpp"
 #include "coding_state.hpp"
+#include "model_journal.hpp"
 #include "frame_writer.hpp"
 #include "fw/codec/codec.hpp"
 #include "quantiser.hpp"
@@ -61,7 +67,11 @@ constexpr double kUrgentPriority = 2.0;
 constexpr double kCorrectivePressure = 0.75;
 constexpr double kCorrectiveBucketShare = 1.0 / 3.0;
 
-bool is_corrective(std::size_t c) { return channel_table()[c].group == ChannelGroup::correctives; }
+// The correctives are the table's last channels (channel_table.cpp; held by
+// ChannelTable.CorrectivesCoverMinusOneToOneAndComeLast): asked for every
+// channel every tick, a comparison.
+constexpr std::size_t kFirstCorrective = kChannelCount - kCorrectiveCount;
+bool is_corrective(std::size_t c) { return c >= kFirstCorrective; }
 
 using Steps = std::array<double, kChannelCount>;
 using Updates = std::array<bool, kChannelCount>;
@@ -86,40 +96,123 @@ enum class FrameNeed {
   correctives,  ///< only corrective weights beyond their tolerance: sent on spare budget
 };
 
-// A frame being tried: its bytes and the coding state after it. The state is
-// copied only when a frame is tried (most ticks send none, and the adaptive
-// models take kilobytes).
-struct FrameTrial {
-  std::optional<CodingState> next;
-  std::vector<std::uint8_t> bytes;
-  FrameType type = FrameType::predicted;
-  /// The share of the frame's bits that carries corrective weights (their
-  /// share of the channels it updates; none in a key frame, which every
-  /// channel needs).
-  double corrective_share = 0;
+}  // namespace
+
+// What each channel may be off by at each quality level, in grid steps,
+// for one set of options. Every tick asks for every channel's, up to three
+// times; encoders with the same visible errors (a server's, all of them)
+// share one table, which stays in the cache, instead of each holding its own.
+struct EncoderTolerances {
+  std::array<float, kChannelCount> visible_error{};
+  float max_gaze_error_rad = 0;
+  std::array<std::array<double, kChannelCount>, kMaxQualityLevel + 1> steps{};
+
+  explicit EncoderTolerances(const EncoderOptions& o) : visible_error(o.visible_error), max_gaze_error_rad(o.max_gaze_error_rad) {
+    for (std::size_t level = 0; level <= kMaxQualityLevel; ++level)
+      for (std::size_t c = 0; c < kChannelCount; ++c) {
+        double error = visible_error[c] * kLevelFactor[level];
+        if (channel_table()[c].group == ChannelGroup::eyes) error = std::min<double>(error, max_gaze_error_rad);
+        steps[level][c] = error / channel_table()[c].step;
+      }
+  }
+  bool made_for(const EncoderOptions& o) const {
+    return visible_error == o.visible_error && max_gaze_error_rad == o.max_gaze_error_rad;
+  }
 };
+
+// The table for `options`: one already in use by an encoder, or a new one.
+std::shared_ptr<const EncoderTolerances> shared_tolerances(const EncoderOptions& options) {
+  static std::mutex mutex;
+  static std::vector<std::weak_ptr<const EncoderTolerances>> tables;
+  const std::lock_guard lock(mutex);
+  std::erase_if(tables, [](const auto& weak) { return weak.expired(); });
+  for (const auto& weak : tables)
+    if (auto table = weak.lock(); table && table->made_for(options)) return table;
+  auto table = std::make_shared<const EncoderTolerances>(options);
+  tables.push_back(table);
+  return table;
+}
+
+namespace {
+
+// The face as coded channels, grid steps, unrounded (all a held tick needs).
+void observe_steps(const FaceParams& params, Steps& x) {
+  const auto& table = channel_table();
+  for (std::size_t c = 0; c < kChannelCount; ++c) {
+    x[c] = to_steps(channel_value(params, c), c);
+    const int base = table[c].base;
+    if (base >= 0) x[c] += x[static_cast<std::size_t>(base)];  // bases come first in the table
+  }
+}
 
 }  // namespace
 
 struct Encoder::State {
+  // A frame being tried: its bytes. The trial writes into the encoder's coding
+  // state itself, and a trial the budget refuses is taken back (TrialUndo): a
+  // copy of the state before every trial (the adaptive models take kilobytes)
+  // cost the server more than the frames did.
+  struct FrameTrial {
+    std::vector<std::uint8_t> bytes;
+    FrameType type = FrameType::predicted;
+    /// The share of the frame's bits that carries corrective weights (their
+    /// share of the channels it updates; none in a key frame, which every
+    /// channel needs).
+    double corrective_share = 0;
+  };
+
+  // What a trial frame changed in the coding state, kept to take it back: the
+  // reconstruction (a few hundred bytes), the level and the models' history
+  // whole, the adaptive models through the journal of those the frame touched
+  // (a few dozen), except in a key frame, which resets them all (rare: a
+  // stream's first frame, a resync). A trial lives within one encode() call,
+  // so one per thread serves every encoder (trial_scratch): a server holds
+  // an encoder per avatar per viewer, and what each one holds is memory the
+  // cache has to bring in.
+  struct TrialUndo {
+    bool pending = false;
+    bool key = false;
+    Reconstruction reconstruction;
+    int level = 0;
+    std::array<bool, kChannelCount> updated_last{};
+    std::array<bool, kChannelGroupCount> group_updated_last{};
+    ModelJournal journal;
+    std::optional<FrameModels> models;  ///< key frames only
+  };
+
+  struct Scratch {
+    TrialUndo undo;
+    FrameTrial trial;  ///< its buffer kept from tick to tick
+  };
+  static Scratch& trial_scratch() {
+    thread_local Scratch scratch;
+    return scratch;
+  }
+
   explicit State(const EncoderOptions& o)
       : options(o), rate(o.target_bps, o.stream.tick_rate_hz, o.min_level, o.max_level),
-        coding(o.stream.max_extrapolation_ticks) {}
+        coding(o.stream.max_extrapolation_ticks), tolerances(shared_tolerances(o)) {}
 
   EncoderOptions options;
   RateController rate;
   CodingState coding;  ///< what the decoder holds after the last frame sent
+  std::shared_ptr<const EncoderTolerances> tolerances;
   bool started = false;
   bool key_requested = true;
   std::uint64_t offered = 0;  ///< faces offered so far
   std::uint32_t ticks_since_frame = 0;
   std::uint32_t ticks_since_key = 0;
   std::uint8_t sequence = 0;
-  Steps previous{};         ///< the source one tick ago, grid steps
-  Steps before_previous{};  ///< two ticks ago
-  Steps sent_source{};      ///< the source when the last frame went out
   int history = 0;          ///< ticks of source history held (0 .. 2)
   EncoderStats stats;
+  /// The history this tick's motion estimate reads: previous and
+  /// before_previous, or a FaceSource's own.
+  const Steps* past = nullptr;
+  const Steps* past2 = nullptr;
+  // (Above: what every tick reads, kept together.)
+  Steps sent_source{};      ///< the source when the last frame went out
+  Steps previous{};         ///< the source one tick ago, grid steps (faces offered as FaceParams)
+  Steps before_previous{};  ///< two ticks ago
 
   // ---- The tick's source -------------------------------------------------
 
@@ -133,15 +226,13 @@ struct Encoder::State {
     rate.on_tick();
   }
 
-  TickSource observe(const FaceParams& params, int level) const {
+  TickSource observe(const Steps& steps, int level) const {
     TickSource source;
+    source.x = steps;
     source.wanted.tick_delta = ticks_since_frame;
     source.wanted.level = level;
     for (std::size_t c = 0; c < kChannelCount; ++c) {
-      double& x = source.x[c];
-      x = to_steps(channel_value(params, c), c);
-      const int base = channel_table()[c].base;
-      if (base >= 0) x += source.x[static_cast<std::size_t>(base)];  // bases come first in the table
+      const double x = source.x[c];
       // A corrective is sent without velocity: it may be held for long on a
       // tight link, and a held one must stand still, not drift on.
       const Motion motion = is_corrective(c) ? Motion{} : estimate_motion(c, x, tolerance(c, level));
@@ -153,19 +244,18 @@ struct Encoder::State {
     return source;
   }
 
-  // Every offered tick enters the history, sent or not.
-  void remember_source(const Steps& x) {
-    before_previous = previous;
-    previous = x;
+  // Every offered tick enters the history, sent or not (a FaceSource keeps
+  // its own: only the count is the encoder's).
+  void remember_source(const Steps& x, bool own) {
+    if (own) {
+      before_previous = previous;
+      previous = x;
+    }
     history = std::min(history + 1, 2);
   }
 
   // The error channel `c` may show at `level`, in grid steps.
-  double tolerance(std::size_t c, int level) const {
-    double error = options.visible_error[c] * kLevelFactor[static_cast<std::size_t>(level)];
-    if (channel_table()[c].group == ChannelGroup::eyes) error = std::min<double>(error, options.max_gaze_error_rad);
-    return error / channel_table()[c].step;
-  }
+  double tolerance(std::size_t c, int level) const { return tolerances->steps[static_cast<std::size_t>(level)][c]; }
 
   // The motion to send for channel `c` (source now at `x` grid steps): a
   // velocity in grid steps per tick and a damping class. Two steps in the
@@ -181,8 +271,8 @@ struct Encoder::State {
   Motion estimate_motion(std::size_t c, double x, double tolerance) const {
     const std::uint8_t horizon = options.stream.max_extrapolation_ticks;
     if (history < 2 || horizon == 0) return {};
-    const double d1 = x - previous[c];
-    const double d2 = previous[c] - before_previous[c];
+    const double d1 = x - (*past)[c];
+    const double d2 = (*past)[c] - (*past2)[c];
     if (d1 == 0.0 || d2 == 0.0 || (d1 > 0) != (d2 > 0)) return {};
     // A drift too slow to matter before the extrapolation stops is not worth its bits.
     if (std::abs(d1) * horizon < 0.5 * tolerance) return {};
@@ -301,6 +391,16 @@ struct Encoder::State {
     }
   }
 
+  // A frame is about to be written: its adaptive models (kilobytes, last
+  // touched a frame ago, so long out of the cache on a server holding
+  // thousands of encoders) are asked for all at once. The range coder reads
+  // them one after another in a chain that waits for each; fetched
+  // together, the misses overlap instead of adding up.
+  void prefetch_models() const {
+    const auto* bytes = reinterpret_cast<const char*>(&coding.models);
+    for (std::size_t offset = 0; offset < sizeof(FrameModels); offset += 64) __builtin_prefetch(bytes + offset);
+  }
+
   // ---- Which frame goes out ------------------------------------------------
 
   // Whether a frame goes out this tick; `trial` then holds it.
@@ -311,8 +411,10 @@ struct Encoder::State {
       key.type = FrameType::key;
       if (try_frame(key, source.wanted, key_forced, trial)) return true;
       // A key frame that is only due by the clock waits for room in the
-      // budget; meanwhile the stream goes on with predicted frames.
+      // budget; meanwhile the stream goes on with predicted frames (from
+      // the state before the key frame tried).
       if (key_forced) return false;
+      undo_trial();
     }
     return choose_predicted_frame(source, level, trial);
   }
@@ -338,6 +440,7 @@ struct Encoder::State {
     // A refresh whose only news were correctives has nothing left to say.
     const auto& update = decision.update;
     if (need == FrameNeed::refresh && std::none_of(update.begin(), update.end(), [](bool u) { return u; })) return false;
+    prefetch_models();
     const bool fits = try_frame(decision, source.wanted, false, trial);
     if (need == FrameNeed::refresh) return fits && refresh_affordable(trial);
     if (need == FrameNeed::correctives) return fits && within_share(trial, kCorrectiveBucketShare);
@@ -394,6 +497,7 @@ struct Encoder::State {
   // The channels to update, most urgent first (ties keep channel order).
   static std::vector<std::size_t> updates_by_priority(const Updates& update, const Priorities& priority) {
     std::vector<std::size_t> order;
+    order.reserve(kChannelCount);
     for (std::size_t c = 0; c < kChannelCount; ++c)
       if (update[c]) order.push_back(c);
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return priority[a] > priority[b]; });
@@ -428,7 +532,7 @@ struct Encoder::State {
   // Writes `decision` into `trial`; whether the budget takes it. Models that
   // learned small changes can make a sudden whole-face change cost more than
   // a frame may hold; a key frame (fresh models) stays well under the limit.
-  bool try_frame(const FrameDecision& decision, const FrameDecision& wanted, bool urgent, FrameTrial& trial) const {
+  bool try_frame(const FrameDecision& decision, const FrameDecision& wanted, bool urgent, FrameTrial& trial) {
     write_trial(decision, trial);
     if (trial.bytes.size() > kMaxFrameBytes) {
       FrameDecision key = wanted;
@@ -438,10 +542,21 @@ struct Encoder::State {
     return rate.allows(8.0 * static_cast<double>(trial.bytes.size()) + overhead_bits(), urgent);
   }
 
-  void write_trial(const FrameDecision& decision, FrameTrial& trial) const {
-    trial.next = coding;
+  // Writes `decision` into the coding state (after taking back any trial
+  // before it), keeping what it changes in `undo`.
+  void write_trial(const FrameDecision& decision, FrameTrial& trial) {
+    undo_trial();
+    TrialUndo& undo = trial_scratch().undo;  // this thread's: an encoder may be called from any
+    const bool key = decision.type == FrameType::key;
+    undo.pending = true;
+    undo.key = key;
+    undo.reconstruction = coding.reconstruction;
+    undo.level = coding.level;
+    undo.updated_last = coding.models.updated_last;
+    undo.group_updated_last = coding.models.group_updated_last;
+    if (key) undo.models = coding.models;
     trial.bytes.clear();
-    write_frame(*trial.next, options.stream, sequence, decision, trial.bytes);
+    write_frame(coding, options.stream, sequence, decision, trial.bytes, key ? nullptr : &undo.journal);
     trial.type = decision.type;
     trial.corrective_share = 0;
     if (decision.type == FrameType::key) return;
@@ -453,15 +568,33 @@ struct Encoder::State {
     if (updated > 0) trial.corrective_share = static_cast<double>(correctives) / static_cast<double>(updated);
   }
 
+  // The coding state goes back to before the trial frame, if one was written.
+  void undo_trial() {
+    TrialUndo& undo = trial_scratch().undo;
+    if (!undo.pending) return;
+    undo.pending = false;
+    coding.reconstruction = undo.reconstruction;
+    coding.level = undo.level;
+    if (undo.key) {
+      coding.models = *undo.models;
+    } else {
+      undo.journal.undo();
+      coding.models.updated_last = undo.updated_last;
+      coding.models.group_updated_last = undo.group_updated_last;
+    }
+  }
+
   // What the container adds to every frame, charged to the budget.
   double overhead_bits() const { return 8.0 * options.container_bytes_per_frame; }
 
-  // The frame goes out: the decoder will hold `trial.next`, and the clocks,
-  // budget and stats count it.
+  // The frame goes out: the decoder will hold the coding state it left, and
+  // the clocks, budget and stats count it.
   void commit_frame(FrameTrial& trial, const Steps& x) {
     const double bits = 8.0 * static_cast<double>(trial.bytes.size()) + overhead_bits();
     const bool key = trial.type == FrameType::key;
-    coding = std::move(*trial.next);
+    TrialUndo& undo = trial_scratch().undo;
+    undo.pending = false;
+    undo.journal.clear();
     sent_source = x;
     rate.on_frame_sent(bits, key, bits * trial.corrective_share);
     ticks_since_frame = 0;
@@ -508,25 +641,55 @@ EncoderStats Encoder::stats() const {
 
 void Encoder::hold(const FaceParams& params) {
   std::vector<std::uint8_t> none;
-  encode_tick(params, none, false);
+  Steps x;
+  observe_steps(params, x);
+  encode_tick(x, nullptr, none, false);
 }
 
 bool Encoder::encode(const FaceParams& params, std::vector<std::uint8_t>& frame) {
-  return encode_tick(params, frame, true);
+  Steps x;
+  observe_steps(params, x);
+  return encode_tick(x, nullptr, frame, true);
 }
 
-bool Encoder::encode_tick(const FaceParams& params, std::vector<std::uint8_t>& frame, bool may_send) {
+void Encoder::hold(const FaceSource& source) {
+  std::vector<std::uint8_t> none;
+  encode_tick(source.x_, &source, none, false);
+}
+
+bool Encoder::encode(const FaceSource& source, std::vector<std::uint8_t>& frame) {
+  return encode_tick(source.x_, &source, frame, true);
+}
+
+void FaceSource::offer(const FaceParams& params) {
+  before_previous_ = previous_;
+  previous_ = x_;
+  observe_steps(params, x_);
+  ++ticks_;
+}
+
+bool Encoder::encode_tick(const std::array<double, kChannelCount>& x, const FaceSource* source,
+                          std::vector<std::uint8_t>& frame, bool may_send) {
   State& s = *state_;
   frame.clear();
   s.start_tick();
+  if (!may_send) {
+    // A held tick only moves the clocks and the source history on.
+    s.remember_source(x, source == nullptr);
+    return false;
+  }
+  s.past = source != nullptr ? &source->previous_ : &s.previous;
+  s.past2 = source != nullptr ? &source->before_previous_ : &s.before_previous;
   const int level = s.rate.level();
-  const TickSource source = s.observe(params, level);
-  s.remember_source(source.x);
-  if (!may_send) return false;
-  FrameTrial trial;
-  if (!s.choose_frame(source, level, trial)) return false;
-  s.commit_frame(trial, source.x);
-  frame = std::move(trial.bytes);
+  const TickSource tick_source = s.observe(x, level);
+  s.remember_source(x, source == nullptr);
+  State::FrameTrial& trial = State::trial_scratch().trial;
+  if (!s.choose_frame(tick_source, level, trial)) {
+    s.undo_trial();
+    return false;
+  }
+  s.commit_frame(trial, x);
+  frame.assign(trial.bytes.begin(), trial.bytes.end());
   return true;
 }
 

@@ -129,14 +129,14 @@ void write_predicted(CodingState& state, RangeEncoder& rc, const FrameDecision& 
 }  // namespace
 
 void write_frame(CodingState& state, const StreamOptions& options, std::uint8_t sequence,
-                 const FrameDecision& decision, std::vector<std::uint8_t>& out) {
+                 const FrameDecision& decision, std::vector<std::uint8_t>& out, ModelJournal* journal) {
   assert(decision.type == FrameType::key || decision.type == FrameType::predicted);
   assert(decision.tick_delta >= 1 && decision.tick_delta <= kMaxTickDelta);
   assert(decision.level >= 0 && decision.level <= kMaxQualityLevel);
   out.push_back(first_byte(decision.type));
   if (options.loss_tolerant) out.push_back(sequence);
   state.reconstruction.advance(decision.tick_delta);
-  RangeEncoder rc;
+  RangeEncoder rc(out, journal);
   if (decision.type == FrameType::key) state.models.reset();  // before the tick delta: a key frame stands alone
   encode_unsigned(rc, state.models.tick_delta, decision.tick_delta - 1);
   if (decision.type == FrameType::key) {
@@ -145,7 +145,7 @@ void write_frame(CodingState& state, const StreamOptions& options, std::uint8_t 
     write_predicted(state, rc, decision);
   }
   rc.encode_raw(kCheckBits, kCheckBitCount);
-  rc.finish(out);
+  rc.finish_into();
 }
 
 }  // namespace fw::codec

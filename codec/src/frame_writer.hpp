@@ -9,6 +9,7 @@
 #include "channel_table.hpp"
 #include "coding_state.hpp"
 #include "fw/codec/codec.hpp"
+#include "model_journal.hpp"
 
 namespace fw::codec {
 
@@ -31,8 +32,10 @@ struct FrameDecision {
 
 /// Appends the frame to `out` and updates `state` to what the decoder will
 /// hold after it. `sequence` is written only in loss-tolerant streams.
+/// `journal`, when given, notes every adaptive model the frame changes (a
+/// predicted frame's changes can then be undone; a key frame resets them all).
 void write_frame(CodingState& state, const StreamOptions& options, std::uint8_t sequence,
-                 const FrameDecision& decision, std::vector<std::uint8_t>& out);
+                 const FrameDecision& decision, std::vector<std::uint8_t>& out, ModelJournal* journal = nullptr);
 
 /// First byte of a frame of `type`.
 constexpr std::uint8_t first_byte(FrameType type) {

@@ -7,9 +7,9 @@ namespace fw::codec {
 void RangeEncoder::shift_low() {
   if (low_ < 0xFF000000u || low_ > 0xFFFFFFFFu) {
     const auto carry = static_cast<std::uint8_t>(low_ >> 32);
-    if (has_cache_) bytes_.push_back(static_cast<std::uint8_t>(cache_ + carry));
+    if (has_cache_) out_->push_back(static_cast<std::uint8_t>(cache_ + carry));
     // Without a cache the value is below 1.0 and no carry can reach here.
-    for (; pending_ff_ > 0; --pending_ff_) bytes_.push_back(static_cast<std::uint8_t>(0xFF + carry));
+    for (; pending_ff_ > 0; --pending_ff_) out_->push_back(static_cast<std::uint8_t>(0xFF + carry));
     cache_ = static_cast<std::uint8_t>((low_ >> 24) & 0xFF);
     has_cache_ = true;
   } else {
@@ -33,6 +33,7 @@ void RangeEncoder::encode(AdaptiveBit& model, int bit) {
     low_ += bound;
     range_ -= bound;
   }
+  if (journal_ != nullptr) journal_->note(model);
   model.update(bit);
   normalise();
 }
@@ -52,6 +53,13 @@ void RangeEncoder::encode_raw(std::uint32_t value, int count) {
 }
 
 void RangeEncoder::finish(std::vector<std::uint8_t>& out) {
+  assert(out_ == &bytes_);
+  finish_into();
+  out.insert(out.end(), bytes_.begin(), bytes_.end());
+  bytes_.clear();
+}
+
+void RangeEncoder::finish_into() {
   // Any value in [low, low + range) decodes the same symbols; take the one
   // with the most trailing zero bits so that its tail is zero bytes to drop.
   const std::uint64_t last = low_ + range_ - 1;
@@ -64,9 +72,7 @@ void RangeEncoder::finish(std::vector<std::uint8_t>& out) {
     }
   }
   for (int i = 0; i < 5; ++i) shift_low();  // the cache, held 0xFFs and the 4 window bytes
-  while (!bytes_.empty() && bytes_.back() == 0) bytes_.pop_back();
-  out.insert(out.end(), bytes_.begin(), bytes_.end());
-  bytes_.clear();
+  while (out_->size() > start_ && out_->back() == 0) out_->pop_back();
 }
 
 std::size_t RangeEncoder::bits_so_far() const {
@@ -74,7 +80,7 @@ std::size_t RangeEncoder::bits_so_far() const {
   // inside the 32-bit window (32 - log2(range)).
   int window_bits = 0;
   for (std::uint32_t r = range_; r < 0x80000000u; r <<= 1) ++window_bits;
-  return 8 * (bytes_.size() + (has_cache_ ? 1 : 0) + pending_ff_) + static_cast<std::size_t>(window_bits);
+  return 8 * (out_->size() - start_ + (has_cache_ ? 1 : 0) + pending_ff_) + static_cast<std::size_t>(window_bits);
 }
 
 }  // namespace fw::codec

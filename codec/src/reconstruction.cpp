@@ -11,26 +11,18 @@ void Reconstruction::reset() { channels_ = {}; }
 void Reconstruction::advance(std::uint32_t ticks) {
   // Only min(age, limit) matters, so ages stop there (and never overflow).
   for (Channel& ch : channels_)
-    ch.age = static_cast<std::uint32_t>(std::min<std::uint64_t>(std::uint64_t{ch.age} + ticks, max_extrapolation_ticks_));
+    ch.age = static_cast<std::uint8_t>(std::min<std::uint64_t>(std::uint64_t{ch.age} + ticks, max_extrapolation_ticks_));
 }
 
-std::int32_t Reconstruction::shown_after(std::size_t c, std::uint32_t extra_ticks) const {
-  const Channel& ch = channels_[c];
-  const CodedRange range = coded_range(c);
-  const std::int64_t ticks = std::min<std::int64_t>(std::int64_t{ch.age} + extra_ticks, max_extrapolation_ticks_);
+std::int64_t Reconstruction::glide(const Channel& ch, std::int64_t ticks) {
+  // Tick by tick (at most 255 ticks): the exact integer recurrence of the format.
   std::int64_t v = ch.value;
-  if (ch.damping == 0) {
-    v += std::int64_t{ch.velocity} * ticks;
-  } else {
-    // Tick by tick (at most 255 ticks): the exact integer recurrence of the format.
-    std::int64_t w = ch.velocity;
-    for (std::int64_t i = 0; i < ticks && w != 0; ++i) {
-      v += w;
-      w = damp(w, ch.damping);
-    }
+  std::int64_t w = ch.velocity;
+  for (std::int64_t i = 0; i < ticks && w != 0; ++i) {
+    v += w;
+    w = damp(w, ch.damping);
   }
-  v = std::clamp<std::int64_t>(v, std::int64_t{range.min} * kSubSteps, std::int64_t{range.max} * kSubSteps);
-  return static_cast<std::int32_t>((v + kSubSteps / 2) >> kSubStepBits);  // nearest step, halves up
+  return v;
 }
 
 ChannelValues Reconstruction::shown_all(std::uint32_t extra_ticks) const {

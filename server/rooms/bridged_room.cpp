@@ -295,6 +295,7 @@ void BridgedRoom::on_tick(bridge::Down& message) {
   std::size_t next = 0;
   for (const bridge::FaceEntry& entry : message.faces)
     if (members_.count(entry.id)) faces_.push_back({entry.id, &bridged_faces_[next++]});
+  face_sources_.offer(faces_);
   const std::uint64_t now_us = monotonic_us();
   for (auto& [id, member] : members_)
     if (member.stream) member.stream->tick(message.tick, now_us, faces_);

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "face_sources.hpp"
 #include "room.hpp"
 #include "room_role.hpp"
 
@@ -57,6 +58,7 @@ class BridgedRoom : public RoomRole {
   /// Everyone as the owner last said; the people here have a stream.
   std::map<std::uint32_t, Member> members_;
   std::vector<AvatarFace> faces_;
+  FaceSources face_sources_;  ///< faces_ as every stream's encoders see them
   std::vector<codec::FaceParams> bridged_faces_;
   /// Whom each face attended, as the owner last said (PROTOCOL.md 5.14).
   std::map<std::uint32_t, codec::Attention::Entry> attention_sent_;

@@ -415,6 +415,7 @@ void OwnedRoom::finish_tick() {
   }
   faces_.clear();
   for (const auto& [id, member] : members_) faces_.push_back({id, &simulation_.face(id)});
+  face_sources_.offer(faces_);
   const std::uint64_t now_us = monotonic_us();
   const std::uint32_t tick = simulation_.tick_index();
   for (auto& [id, member] : members_)

@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "face_sources.hpp"
 #include "room.hpp"
 #include "room_role.hpp"
 #include "token_bucket.hpp"
@@ -126,6 +127,7 @@ class OwnedRoom : public RoomRole {
   RoomCounts& counts_;
   std::map<std::uint32_t, OwnedMember> members_;
   std::vector<AvatarFace> faces_;
+  FaceSources face_sources_;  ///< faces_ as every stream's encoders see them
   /// Whom each face attended in the last Attention sent (PROTOCOL.md 5.14).
   std::map<std::uint32_t, codec::Attention::Entry> attention_sent_;
   std::uint64_t next_order_ = 1;

@@ -327,13 +327,19 @@ void SubscriberStream::tick(std::uint32_t tick, std::uint64_t now_us, std::span<
   const bool send_tick = messages_sent && tick % bundle_ticks() == 0;
 
   frames_.resize(std::max(frames_.size(), faces.size()));
-  std::vector<codec::RoomEntry> entries;
-  entries.reserve(faces.size());
+  std::vector<codec::RoomEntry>& entries = entries_;  // kept from tick to tick: no allocation per tick
+  entries.clear();
   for (std::size_t i = 0; i < faces.size(); ++i) {
     auto it = encoders_.find(faces[i].id);
     if (it == encoders_.end() || awaiting_preview_.count(faces[i].id)) continue;
-    if (!send_tick) it->second.hold(*faces[i].face);
-    else if (it->second.encode(*faces[i].face, frames_[i])) entries.push_back({faces[i].id, frames_[i]});
+    codec::Encoder& encoder = it->second;
+    const codec::FaceSource* source = faces[i].source;
+    if (!send_tick) {
+      if (source != nullptr) encoder.hold(*source);
+      else encoder.hold(*faces[i].face);
+    } else if (source != nullptr ? encoder.encode(*source, frames_[i]) : encoder.encode(*faces[i].face, frames_[i])) {
+      entries.push_back({faces[i].id, frames_[i]});
+    }
   }
   if (!messages_sent) return;
   for (std::size_t start = 0; start < entries.size(); start += codec::kMaxRoomAvatars) {
@@ -345,13 +351,18 @@ void SubscriberStream::tick(std::uint32_t tick, std::uint64_t now_us, std::span<
 
 void SubscriberStream::send_room_frames(std::uint32_t tick, std::uint64_t now_us,
                                         std::span<const codec::RoomEntry> entries) {
-  frame_.clear();
-  codec::write_room_frame(entries, frame_);
   std::vector<std::uint8_t> message;
+  // Its whole size up front: grown byte by byte it would be copied a few
+  // times per message, for every subscriber every tick.
+  std::size_t bytes = 32;
+  for (const codec::RoomEntry& entry : entries) bytes += entry.frame.size() + 8;
+  message.reserve(bytes);
   if (settings_.timestamps) {
+    frame_.clear();
+    codec::write_room_frame(entries, frame_);
     codec::write_message(codec::TimedRoomFrame{tick, now_us, frame_}, message);
   } else {
-    message = frame_;
+    codec::write_room_frame(entries, message);  // the message itself, not a copy of it
   }
   metrics_.room_frames_sent.fetch_add(1, std::memory_order_relaxed);
   metrics_.avatar_frames_sent.fetch_add(entries.size(), std::memory_order_relaxed);

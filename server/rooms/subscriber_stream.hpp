@@ -56,6 +56,9 @@ struct StreamSettings {
 struct AvatarFace {
   std::uint32_t id = 0;
   const codec::FaceParams* face = nullptr;
+  /// The face as the encoders see it, offered this tick (face_sources.hpp);
+  /// null: each encoder works it out from `face`.
+  const codec::FaceSource* source = nullptr;
 };
 
 class SubscriberStream {
@@ -175,6 +178,7 @@ class SubscriberStream {
   std::uint32_t skipped_ticks_ = 0;
   std::vector<std::uint8_t> frame_;
   std::vector<std::vector<std::uint8_t>> frames_;
+  std::vector<codec::RoomEntry> entries_;
 };
 
 }  // namespace fw::server

@@ -348,5 +348,59 @@ TEST(Encoder, NeverWritesAFrameOverTheLimitAndSurvivesNonsenseInput) {
   EXPECT_EQ(decoder.quantised()[0], 0) << "NaN is the rest pose";
 }
 
+EncoderOptions sourced_options(double bps) {
+  EncoderOptions o;
+  o.target_bps = bps;
+  o.refresh_ticks = 2;
+  o.refresh_bucket_share = 1.0;
+  o.container_bytes_per_frame = 2.5;
+  return o;
+}
+
+TEST(FaceSource, EncodersOnASharedSourceWriteTheFramesOfEncodersOnTheFace) {
+  // Encoders that read one face worked out once a tick (a room's, for all
+  // its viewers) write what encoders given the face itself write, byte for
+  // byte: budgets from tight (frames tried, refused and tried again
+  // smaller) to loose, held ticks between, one encoder starting mid-stream.
+  const auto& ticks = scene().avatars[0].ticks;
+  ASSERT_GE(ticks.size(), 600u);
+  const std::vector<double> budgets = {300, 800, 2000, 8000};
+  std::vector<Encoder> on_face, on_source;
+  for (const double bps : budgets) {
+    on_face.emplace_back(sourced_options(bps));
+    on_source.emplace_back(sourced_options(bps));
+  }
+  FaceSource source;
+  std::vector<std::uint8_t> a, b;
+  std::size_t frames = 0, refused_once = 0;
+  for (std::size_t t = 0; t < ticks.size(); ++t) {
+    source.offer(ticks[t]);
+    if (t == 300) {
+      // A viewer that joins mid-stream, on each side.
+      on_face.emplace_back(sourced_options(1200));
+      on_source.emplace_back(sourced_options(1200));
+    }
+    for (std::size_t e = 0; e < on_face.size(); ++e) {
+      // Every third tick is held (a bundling or congested stream).
+      if (t % 3 == 1) {
+        on_face[e].hold(ticks[t]);
+        on_source[e].hold(source);
+        continue;
+      }
+      const bool sent_a = on_face[e].encode(ticks[t], a);
+      const bool sent_b = on_source[e].encode(source, b);
+      ASSERT_EQ(sent_a, sent_b) << "tick " << t << " encoder " << e;
+      ASSERT_EQ(a, b) << "tick " << t << " encoder " << e;
+      frames += sent_a ? 1 : 0;
+      refused_once += !sent_a && on_face[e].stats().bucket_bits > 0 ? 1 : 0;
+    }
+    for (std::size_t e = 0; e < on_face.size(); ++e)
+      ASSERT_EQ(on_face[e].reconstruction(), on_source[e].reconstruction());
+  }
+  EXPECT_GT(frames, 500u);
+  EXPECT_GT(refused_once, 100u) << "the tight budgets refused frames, so trials were taken back";
+  EXPECT_EQ(source.ticks(), ticks.size());
+}
+
 }  // namespace
 }  // namespace fw::codec

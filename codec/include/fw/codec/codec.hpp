@@ -213,6 +213,26 @@ struct EncoderStats {
   std::uint64_t bytes_sent = 0;
 };
 
+/// One avatar's face, tick by tick, as its encoders see it: the coded
+/// channels (grid steps) of this tick and the two before. A server encodes
+/// each face once per viewer, and this part of the work is the same for
+/// every viewer: worked out once per face per tick, it is shared by all of
+/// them (Encoder::encode(const FaceSource&, ...)).
+class FaceSource {
+ public:
+  /// This tick's face: call once per tick, every tick, before its encoders.
+  void offer(const FaceParams& params);
+  /// Ticks offered so far.
+  std::uint64_t ticks() const { return ticks_; }
+
+ private:
+  friend class Encoder;
+  std::array<double, kChannelCount> x_{};
+  std::array<double, kChannelCount> previous_{};
+  std::array<double, kChannelCount> before_previous_{};
+  std::uint64_t ticks_ = 0;
+};
+
 class Encoder {
  public:
   explicit Encoder(const EncoderOptions& options);
@@ -231,6 +251,13 @@ class Encoder {
   /// clock, the budget and the motion estimate move on as if the tick had
   /// been skipped for lack of budget. Call it instead of encode().
   void hold(const FaceParams& params);
+  /// The same from a face offered to `source` this tick: frames byte for
+  /// byte as encode(params) and hold(params) give, provided the encoder was
+  /// offered each of the source's last two ticks (its motion estimate reads
+  /// the source's history; a stream offered the face as FaceParams keeps its
+  /// own). Use one kind of offer or the other for an encoder.
+  bool encode(const FaceSource& source, std::vector<std::uint8_t>& frame);
+  void hold(const FaceSource& source);
 
   /// Changes the bit budget from the next tick on.
   void set_target_bps(double bits_per_second);
@@ -243,7 +270,8 @@ class Encoder {
   const EncoderOptions& options() const;
 
  private:
-  bool encode_tick(const FaceParams& params, std::vector<std::uint8_t>& frame, bool may_send);
+  bool encode_tick(const std::array<double, kChannelCount>& x, const FaceSource* source,
+                   std::vector<std::uint8_t>& frame, bool may_send);
   struct State;
   std::unique_ptr<State> state_;
 };
