@@ -635,7 +635,7 @@ RoomSimulation::TickFaces RoomSimulation::begin_tick() {
       apply_physics_level(a.physics, simulation_of(a.physics, seed), a.overrides, a.skin, now_s, a.skin_built_s);
       a.phase.sleeps = a.phase.sleeps && !a.overrides.any_muscle();
     }
-    a.phase.stepped = prepare_step(a.physics, a.face.au, physics::head_pose(a.face), s.room.dt_s(), seed, a.phase.sleeps,
+    a.phase.stepped = prepare_step(a.physics, a.face.au, model::head_pose(a.face), s.room.dt_s(), seed, a.phase.sleeps,
                                    a.phase.allowed, a.units);
     if (a.phase.stepped) out.faces.push_back(a.physics.simulation.get());
     ++(a.phase.allowed ? s.physics_faces : s.kinematic_faces);

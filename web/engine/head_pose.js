@@ -5,7 +5,7 @@
 // C++ wrote.
 import { mat4 } from '../shared/mat4.js';
 
-/** The point heads turn about (model/neck_pivot.hpp): the top of the neck. */
+/** The point heads turn about (model/head_pose.hpp): the top of the neck. */
 export const NECK_PIVOT = [0, -1.5, 0.2];
 /** Millimetres per model unit (model::kMillimetresPerUnit): head translation is in mm. */
 export const MILLIMETRES_PER_UNIT = 63;

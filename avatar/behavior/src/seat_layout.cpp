@@ -5,7 +5,6 @@
 #include <cmath>
 
 #include <glm/geometric.hpp>
-#include <glm/gtc/matrix_transform.hpp>
 
 #include "fw/model/generic_face.hpp"
 #include "fw/model/landmark_template.hpp"
@@ -99,8 +98,8 @@ const HeadGeometry& head_geometry() {
     const model::GenericFace& face = model::generic_face();
     const float mm = model::kMillimetresPerUnit;
     HeadGeometry g{};
-    // Same point as fw::render::kNeckPivot: the top of the neck, below the ears.
-    g.neck_pivot_mm = glm::vec3(0.0f, -1.5f, 0.2f) * mm;
+    // The point the renderer turns heads about (model/head_pose.hpp).
+    g.neck_pivot_mm = model::kNeckPivot * mm;
     for (int side = 0; side < 2; ++side) g.eye_mm[side] = face.eyes[static_cast<std::size_t>(side)].centre * mm;
     g.eye_mid_mm = 0.5f * (g.eye_mm[0] + g.eye_mm[1]);
     g.interocular_mm = glm::length(g.eye_mm[0] - g.eye_mm[1]);
@@ -114,13 +113,9 @@ const HeadGeometry& head_geometry() {
 }
 
 glm::vec3 head_to_seat(const HeadPose& pose, glm::vec3 p) {
-  // The renderer's head_transform: roll, then pitch, then yaw about the pivot.
+  // The renderer's turn (model::head_rotation) about the pivot.
   const glm::vec3 pivot = head_geometry().neck_pivot_mm;
-  glm::mat4 m = glm::translate(glm::mat4(1.0f), pose.translation_mm + pivot);
-  m = glm::rotate(m, pose.yaw_rad, glm::vec3(0, 1, 0));
-  m = glm::rotate(m, -pose.pitch_rad, glm::vec3(1, 0, 0));
-  m = glm::rotate(m, -pose.roll_rad, glm::vec3(0, 0, 1));
-  return glm::vec3(m * glm::vec4(p - pivot, 1.0f));
+  return pose.translation_mm + pivot + model::head_rotation(pose) * (p - pivot);
 }
 
 glm::vec3 seat_to_room(const Seat& seat, glm::vec3 p) {

@@ -3,8 +3,6 @@
 #include <cmath>
 
 #include <glm/geometric.hpp>
-#include <glm/gtc/matrix_transform.hpp>
-#include <glm/mat4x4.hpp>
 
 namespace fw::physics {
 namespace {
@@ -22,18 +20,10 @@ bool finite(const HeadPose& p) {
 
 }  // namespace
 
-glm::mat3 head_rotation(const HeadPose& pose) {
-  // render::head_transform's order and signs.
-  glm::mat4 m = glm::rotate(glm::mat4(1.0f), pose.yaw_rad, glm::vec3(0, 1, 0));
-  m = glm::rotate(m, -pose.pitch_rad, glm::vec3(1, 0, 0));
-  m = glm::rotate(m, -pose.roll_rad, glm::vec3(0, 0, 1));
-  return glm::mat3(m);
-}
-
 HeadLoad HeadMotion::advance(double dt_s, float scale) {
   if (!std::isfinite(dt_s) || dt_s <= 0.0 || !finite(next_)) return load_;
   const auto dt = static_cast<float>(dt_s);
-  const glm::mat3 rotation = head_rotation(next_);
+  const glm::mat3 rotation = model::head_rotation(next_);
   // The turn over the frame in the head's frame, R_before^T R_now = I +
   // skew(omega dt) for the small turns of one frame.
   const glm::mat3 turn = glm::transpose(rotation_) * rotation;

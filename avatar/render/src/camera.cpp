@@ -36,10 +36,8 @@ Camera Camera::group(int count, float aspect) {
 }
 
 glm::mat4 head_transform(const HeadPose& pose, const glm::mat4& place) {
-  glm::mat4 m = glm::translate(place, pose.translation + kNeckPivot);
-  m = glm::rotate(m, pose.yaw_rad, glm::vec3(0, 1, 0));
-  m = glm::rotate(m, -pose.pitch_rad, glm::vec3(1, 0, 0));
-  m = glm::rotate(m, -pose.roll_rad, glm::vec3(0, 0, 1));
+  const glm::mat4 m = glm::translate(place, pose.translation + kNeckPivot) *
+                      glm::mat4(model::head_rotation(pose.yaw_rad, pose.pitch_rad, pose.roll_rad));
   return glm::translate(m, -kNeckPivot);
 }
 

@@ -36,7 +36,7 @@ constexpr const char* kPrimaries[] = {"joy", "sadness", "anger", "fear", "surpri
 // track has it, not through the tissue: articulation.hpp).
 void record(const BehaviorRoom& room, fw::behavior::FaceId id, CorpusSequence& s) {
   s.frames.push_back(room.face(id).au);
-  s.heads.push_back(fw::physics::head_pose(room.face(id)));
+  s.heads.push_back(fw::model::head_pose(room.face(id)));
 }
 
 BehaviorRoom room_of(int faces, std::uint64_t seed) {

@@ -13,6 +13,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "fw/model/head_pose.hpp"
+
 namespace fw::behavior {
 
 struct Seat {
@@ -59,10 +61,7 @@ struct SeatLayoutAngles {
 SeatLayoutAngles seat_layout_angles(const std::vector<Seat>& seats);
 
 /// Head pose (the head's rotation about the neck pivot, FaceParams' signs).
-struct HeadPose {
-  float yaw_rad = 0, pitch_rad = 0, roll_rad = 0;
-  glm::vec3 translation_mm{0.0f};
-};
+using model::HeadPose;
 
 /// Points of the generic head in its model frame (millimetres): the neck
 /// pivot the head turns about, each eye's rotation centre, the mouth.

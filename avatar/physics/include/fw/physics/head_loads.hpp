@@ -22,9 +22,8 @@
 #include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 
-#include "fw/codec/face_params.hpp"
+#include "fw/model/head_pose.hpp"
 #include "fw/model/landmark_template.hpp"
-#include "fw/model/neck_pivot.hpp"
 
 namespace fw::physics {
 
@@ -37,22 +36,7 @@ inline constexpr float kGravityUnits = 9810.0f / model::kMillimetresPerUnit;
 inline constexpr float kMaxHeadSpeedRadS = 10.0f;
 inline constexpr float kMaxPivotSpeedMmS = 2000.0f;
 
-/// A head's pose, codec::FaceParams' signs: yaw toward the person's left,
-/// pitch up, roll toward the left shoulder, radians; translation in mm.
-struct HeadPose {
-  float yaw_rad = 0, pitch_rad = 0, roll_rad = 0;
-  glm::vec3 translation_mm{0.0f};
-  bool operator==(const HeadPose&) const = default;
-};
-
-/// The head pose a frame's parameters give.
-inline HeadPose head_pose(const codec::FaceParams& p) {
-  return {p.head_yaw_rad, p.head_pitch_rad, p.head_roll_rad,
-          {p.head_translation_mm[0], p.head_translation_mm[1], p.head_translation_mm[2]}};
-}
-
-/// The head's rotation (head frame to world), as the renderer turns it.
-glm::mat3 head_rotation(const HeadPose& pose);
+using model::HeadPose;
 
 /// An acceleration field in the head's frame: uniform + linear (p - pivot),
 /// model units per s^2.

@@ -4,7 +4,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-#include "fw/model/neck_pivot.hpp"
+#include "fw/model/head_pose.hpp"
 
 namespace fw::render {
 
@@ -25,7 +25,7 @@ struct Camera {
   static Camera group(int count, float aspect);
 };
 
-/// The point heads turn about (model/neck_pivot.hpp).
+/// The point heads turn about (model/head_pose.hpp).
 inline constexpr glm::vec3 kNeckPivot = model::kNeckPivot;
 
 /// A head's rotation (radians) and translation (model units). Signs follow
