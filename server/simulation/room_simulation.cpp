@@ -74,8 +74,10 @@ struct PhysicsFace {
 constexpr float kCloseEnough = 0.1f;
 constexpr double kCatchUpS = 1.0;
 
-// The activation time constants of avatar/physics (80 ms up, 120 ms down).
-constexpr double kRiseS = 0.08, kFallS = 0.12;
+// The muscles' activation time constants (physics::SimulationOptions): a
+// face without tissue follows its targets as its muscles would.
+constexpr physics::SimulationOptions kMuscles{};
+constexpr double kRiseS = kMuscles.activation_time_s, kFallS = kMuscles.deactivation_time_s;
 // Under the codec's finest action-unit step (1/256).
 constexpr float kKinematicRestGap = 1.0f / 512.0f;
 
@@ -140,7 +142,7 @@ physics::FaceSimulation& simulation_of(PhysicsFace& face, std::uint64_t seed) {
   if (!face.simulation) {
     physics::SimulationOptions o;
     o.seed = face.variation_seed ? face.variation_seed : seed;
-    o.individual_variation = 1.0f;  // a person's muscles (muscle_variation.hpp)
+    o.individual_variation = physics::kPersonVariation;  // a person's muscles
     o.solver = face.solver;
     face.simulation = std::make_unique<physics::FaceSimulation>(tissue_of(face), o, correctives_of(face));
   }

@@ -1,6 +1,7 @@
 // The XPBD solver: its material is the tissue's, whatever the step.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -49,8 +50,11 @@ double rms_mm(const std::vector<glm::vec3>& a, const std::vector<glm::vec3>& b) 
 // XPBD's compliance is the material's whatever the step: the same face
 // moves and settles alike at 2 and at 8 sub-steps per 30 Hz frame.
 // Measured RMS differences over the skin, as a share of the settled
-// travel: while moving (67-300 ms into the unit) at most 7.5 % (AU 12),
-// settled at most 1.9 % (AU 27's open jaw; 0.022 mm of AU 12's 1.16 mm).
+// travel: while moving (67-300 ms into the unit) at most 11 % (AU 12, 100
+// ms in: the muscles' 15 ms rise is shorter than a sub-step of 17 ms, so
+// two sub-steps a frame integrate the onset itself more coarsely; with
+// 80 ms muscles it was 7.5 %), settled at most 1.9 % (AU 27's open jaw;
+// 0.022 mm of AU 12's 1.16 mm).
 // Position-based dynamics with a stiffness in [0,1] per correction, the
 // solver's former form, made a material that stiffened with the number of
 // sub-steps: 25-43 % apart 100 ms into AU 1, 6 and 12 (its settled shapes,
@@ -64,9 +68,11 @@ TEST(Xpbd, TheMaterialDoesNotChangeWithTheStep) {
     const double travel = rms_mm(eight.back(), rest);
     ASSERT_GT(travel, 0.3) << "AU " << au;
     EXPECT_LT(rms_mm(two.back(), eight.back()), 0.03 * travel) << "AU " << au << ", settled";
+    for (std::size_t k = 0; k < kSnapshotFrames.size(); ++k)
+      std::printf("AU %d, frame %d: %.1f %% of the travel apart\n", au, kSnapshotFrames[k], 100.0 * rms_mm(two[k], eight[k]) / travel);
     if (au == 27) continue;  // the jaw's own turn is integrated per sub-step (8.8 % apart at 67 ms)
     for (std::size_t k = 0; k < kSnapshotFrames.size(); ++k)
-      EXPECT_LT(rms_mm(two[k], eight[k]), 0.1 * travel)
+      EXPECT_LT(rms_mm(two[k], eight[k]), 0.15 * travel)
           << "AU " << au << " after " << kSnapshotFrames[k] << " frames, of " << travel << " mm";
   }
 }

@@ -9,6 +9,7 @@
 
 #include "fw/model/landmark_template.hpp"
 #include "fw/physics/face_pool.hpp"
+#include "fw/physics/muscle_variation.hpp"
 #include "fw/physics/tissue_model.hpp"
 
 namespace fw::physics {
@@ -54,6 +55,10 @@ CorpusRecording record_corpus(const model::GenericFace& face, const BehaviourCor
   const auto run = [&](std::size_t i) {
     SimulationOptions options;
     options.solver = solver;
+    // Each sequence a person's face, as rooms simulate them
+    // (server/simulation): muscles of their own strengths.
+    options.individual_variation = kPersonVariation;
+    options.seed = i + 1;
     FaceSimulation sim(tissue, options, correctives);
     const CorpusSequence& sequence = corpus.sequences[i];
     for (std::size_t f = r.sequence_start[i]; f < r.sequence_start[i + 1]; ++f) {

@@ -42,6 +42,9 @@ XpbdScratch& scratch() {
   return s;
 }
 
+// The least tie stiffness times h^2 that holds: 1e-12 of a unit tie's.
+constexpr float kLeastTieStiffness = 1e-12f;
+
 }  // namespace
 
 void FaceSimulation::pbd_substep(float h, const std::array<float, kMuscleCount>& activation) {
@@ -98,7 +101,11 @@ void FaceSimulation::pbd_substep(float h, const std::array<float, kMuscleCount>&
     // The face's own muscle strength (individual variation).
     const std::size_t muscle = mp.muscle[a];
     const float stiffness = activation[muscle] * strength_[muscle] * tie_stiffness_per_strength(m, s.move, t);
-    s.tie_compliance[t] = stiffness > 0.0f ? 1.0f / (stiffness * h * h) : 0.0f;  // 0: no tie
+    // 0: no tie. A muscle relaxing toward 0 passes activations so small
+    // that 1 / (k h^2) would overflow (and inf times a multiplier of 0 is
+    // NaN): such a tie holds nothing anyway.
+    const float stiffness_h2 = stiffness * h * h;
+    s.tie_compliance[t] = stiffness_h2 > kLeastTieStiffness ? 1.0f / stiffness_h2 : 0.0f;
   }
 
   const detail::SpringKindTable table = detail::spring_kind_table(m.material);

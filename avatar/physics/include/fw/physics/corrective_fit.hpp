@@ -36,8 +36,9 @@ struct CorpusRecording {
 };
 
 /// Simulates every sequence of `corpus` on `face` (a fresh face each, at
-/// rest), one step of kCorpusFrameS a frame with the head turning as the
-/// sequence says, measured against the face's
+/// rest, with a person's muscle variation drawn from the sequence's index,
+/// as rooms give every face its own), one step of kCorpusFrameS a frame
+/// with the head turning as the sequence says, measured against the face's
 /// action units and its corrective components (if it has any).
 /// @param[in] pool  threads to spread the sequences over (null: this thread)
 CorpusRecording record_corpus(const model::GenericFace& face, const BehaviourCorpus& corpus,
@@ -47,7 +48,7 @@ CorpusRecording record_corpus(const model::GenericFace& face, const BehaviourCor
 /// fewer if the residual has fewer directions that carry anything. Vertex
 /// displacements under `zero_below` (model units) are written as 0.
 std::vector<model::Morph> fit_correctives(const model::GenericFace& face, const CorpusRecording& recording,
-                                          std::size_t count = codec::kCorrectiveCount, float percentile = 0.99f,
+                                          std::size_t count = codec::kCorrectiveCount, float percentile = 0.995f,
                                           float zero_below = 1e-4f);
 
 /// The RMS (mm, over the skin vertices and the frames) of the recorded

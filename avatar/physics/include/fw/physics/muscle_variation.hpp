@@ -29,6 +29,9 @@
 
 namespace fw::physics {
 
+/// SimulationOptions::individual_variation of a person's face: what rooms
+/// give every face, and the behaviour corpus is recorded with.
+inline constexpr float kPersonVariation = 1.0f;
 /// Largest share a muscle pair is stronger or weaker than the table.
 inline constexpr float kPairVariation = 0.2f;
 /// Largest share one side differs from the pair besides.
