@@ -8,7 +8,8 @@
 // the components are the leading eigenvectors of the residuals' second
 // moment (uncentred PCA: the neutral face has no residual, and a weight of 0
 // must rebuild the AUs alone). Each is scaled so that the weights [-1,1]
-// cover the fitting corpus to its 99th percentile. facewire-correctives
+// cover the fitting corpus to its 99.5th percentile (fewer frames clamped,
+// for steps on the wire a little coarser). facewire-correctives
 // writes them into the asset; the tests and `facewire-bench sim` use the
 // same recording to measure what they buy.
 #include <array>
