@@ -13,7 +13,7 @@ std::array<std::vector<glm::vec3>, codec::kAuChannelCount> synthesize_action_uni
   std::array<std::vector<glm::vec3>, codec::kAuChannelCount> out;
   auto synthesize = [&](std::size_t channel) {
     SimulationOptions sim_options;
-    sim_options.solver = Solver::mass_spring;
+    sim_options.solver = Solver::projective;
     sim_options.individual_variation = 0.0f;
     FaceSimulation sim(tissue, sim_options);
     std::array<float, codec::kAuChannelCount> targets{};

@@ -25,7 +25,8 @@ struct BasisSynthesisOptions {
 };
 
 /// The settled skin displacement of every AU channel of `face`, simulated
-/// with the mass-spring solver and no individual variation.
+/// with the solver rooms step (projective dynamics), so that a room's face
+/// holding one unit measures as that unit, and no individual variation.
 /// @param[in] face  a sound face
 /// @param[in] pool  threads to spread the channels over (null: this thread)
 /// @return per channel, #V displacements in model units
