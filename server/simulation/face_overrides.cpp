@@ -18,7 +18,10 @@ float clamped(std::int16_t value, float low, float high) {
 
 std::string action_unit_list() {
   std::string list;
-  for (const auto au : codec::kActionUnits) list += (list.empty() ? "" : " ") + std::to_string(au);
+  for (const auto au : codec::kActionUnits) {
+    if (!list.empty()) list += ' ';
+    list += std::to_string(au);
+  }
   return list;
 }
 

@@ -23,8 +23,8 @@ std::string RedefinedUnits::apply(const std::vector<behavior::UnitDefinition>& u
       if (codec::kAuChannels[c].au == unit.au) next.erase(c);
     for (const auto& [channel, morph] : unit.morphs) next[channel] = model::as_carried(channel, morph);
   }
-  if (const std::size_t units = redefined_units(next); units > behavior::kMaxRedefinedUnitsPerAvatar)
-    return "your avatar would have " + std::to_string(units) + " redefined action units; at most " +
+  if (const std::size_t count = redefined_units(next); count > behavior::kMaxRedefinedUnitsPerAvatar)
+    return "your avatar would have " + std::to_string(count) + " redefined action units; at most " +
            std::to_string(behavior::kMaxRedefinedUnitsPerAvatar) +
            " at once: restore one first (AU n with no displacements, then end)";
   take(std::move(next));

@@ -30,9 +30,9 @@
 
 namespace fw::server {
 namespace {
-
 using AuTargets = std::array<float, codec::kAuChannelCount>;
 using Correctives = std::array<float, codec::kCorrectiveCount>;
+}  // namespace
 
 // ---------------------------------------------------------------------------
 // The physics face: the one place it is called.
@@ -67,6 +67,10 @@ struct PhysicsFace {
   double catching_up_s = 0;  ///< time the physics face has had to catch up since it came back
   bool resting = true;
 };
+// Outside the anonymous namespace: RoomSimulation::State, which the header
+// names, holds one per avatar.
+
+namespace {
 
 // A face that gets physics back shows its kinematic track until the tissue,
 // stepped again from where it was left, is this close to it (or for at most

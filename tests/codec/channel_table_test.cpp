@@ -62,9 +62,11 @@ TEST(ChannelTable, CorrectivesCoarsenNoLaterThanAnyOtherGroup) {
   // A tight budget takes the correctives' precision first (FORMAT.md, "Quality levels").
   const auto correctives = group_index(ChannelGroup::correctives);
   for (int level = 0; level <= kMaxQualityLevel; ++level)
-    for (std::size_t g = 0; g < kChannelGroupCount; ++g)
-      if (g != group_index(ChannelGroup::eyes))
+    for (std::size_t g = 0; g < kChannelGroupCount; ++g) {
+      if (g != group_index(ChannelGroup::eyes)) {
         EXPECT_GE(group_shift(level, correctives), group_shift(level, g)) << "level " << level << " group " << g;
+      }
+    }
 }
 
 TEST(ChannelTable, PartnersAreLeftSidesOfTheSameKindAndComeFirst) {

@@ -295,7 +295,7 @@ TEST(Messages, WelcomeAndPresenceCarryAvatars) {
   EXPECT_NEAR(back.avatars[0].seat.facing_yaw_rad, 0.8726646f, 0.5e-4f);
   EXPECT_EQ(back.avatars[1].seat, SeatInfo{});
 
-  Presence left{Presence::Change::left, {7, "Bo", "", 0, 0, true}};
+  Presence left{Presence::Change::left, {7, "Bo", "", 0, 0, true, {}}};
   Presence presence_back;
   ASSERT_EQ(read_message(bytes_of(left), presence_back), MessageError::ok);
   EXPECT_EQ(presence_back.change, Presence::Change::left);
@@ -338,7 +338,7 @@ TEST(Messages, AttentionRoundTripsEveryTarget) {
 
 TEST(Messages, CommandsOfEveryKindRoundTrip) {
   Command express{.request_id = 3, .kind = Command::Kind::express, .emotion = "joy", .intensity = 0.7f,
-                  .target = 0, .duration_ms = 2500, .sentence = ""};
+                  .target = 0, .duration_ms = 2500, .sentence = "", .override_face = {}};
   Command back;
   ASSERT_EQ(read_message(bytes_of(express), back), MessageError::ok);
   EXPECT_EQ(back.emotion, "joy");
@@ -346,13 +346,13 @@ TEST(Messages, CommandsOfEveryKindRoundTrip) {
   EXPECT_EQ(back.duration_ms, 2500u);
 
   Command snub{.request_id = 4, .kind = Command::Kind::snub, .emotion = "", .intensity = 1, .target = 12,
-               .duration_ms = 10000, .sentence = ""};
+               .duration_ms = 10000, .sentence = "", .override_face = {}};
   ASSERT_EQ(read_message(bytes_of(snub), back), MessageError::ok);
   EXPECT_EQ(back.kind, Command::Kind::snub);
   EXPECT_EQ(back.target, 12u);
 
   Command facs{.request_id = 5, .kind = Command::Kind::facs, .emotion = "", .intensity = 1, .target = 0,
-               .duration_ms = 0, .sentence = "ClearAllFrame\nBeginKeyFrame\n\tAU12 0.8\n"};
+               .duration_ms = 0, .sentence = "ClearAllFrame\nBeginKeyFrame\n\tAU12 0.8\n", .override_face = {}};
   ASSERT_EQ(read_message(bytes_of(facs), back), MessageError::ok);
   EXPECT_EQ(back.sentence, facs.sentence);
 }
@@ -380,13 +380,13 @@ TEST(Messages, FaceLabCommandsAndPreviewHelloRoundTrip) {
   EXPECT_EQ(read_message(bytes, back), MessageError::value_out_of_range);
 
   Command check{.request_id = 9, .kind = Command::Kind::check, .emotion = "", .intensity = 1, .target = 0,
-                .duration_ms = 3000, .sentence = "ClearAllFrame\n\tBeginKeyFrame"};
+                .duration_ms = 3000, .sentence = "ClearAllFrame\n\tBeginKeyFrame", .override_face = {}};
   ASSERT_EQ(read_message(bytes_of(check), back), MessageError::ok);
   EXPECT_EQ(back.sentence, check.sentence);
 
   // A saved look by its name: 1 .. 32 bytes of text without layout.
   Command play{.request_id = 10, .kind = Command::Kind::play_look, .emotion = "", .intensity = 1, .target = 0,
-               .duration_ms = 3000, .sentence = "blush slowly"};
+               .duration_ms = 3000, .sentence = "blush slowly", .override_face = {}};
   ASSERT_EQ(read_message(bytes_of(play), back), MessageError::ok);
   EXPECT_EQ(back.kind, Command::Kind::play_look);
   EXPECT_EQ(back.sentence, "blush slowly");
