@@ -298,10 +298,7 @@ TEST(FaceSimulation, BadInputIsClampedOrIgnored) {
 TEST(FaceSimulation, TakesSeveralSubStepsPerFrame) {
   FaceSimulation sim(generic_tissue());
   EXPECT_GE(sim.substeps_for(kFrame), 4);
-  // 7 with a linear bulk term; its stiffer branch past the knee (three
-  // times the slope, tissue_model.cpp) bounds the step wherever a prism
-  // reaches it, so the estimate takes it for every prism.
-  EXPECT_LE(sim.substeps_for(kFrame), 9);
+  EXPECT_LE(sim.substeps_for(kFrame), 8);
 }
 
 // The paper's Fig. 2: looser skin (softer, with a negative residual strain)
