@@ -144,7 +144,7 @@ double skin_travel_mm(const FaceSimulation& sim) {
 // prism AU 17 0.36). Each unit keeps at least 0.9 of the settled RMS
 // travel it has with a linear bulk term. Measured: AU 17 and 25 0.95,
 // AU 15 0.98, AU 12 0.99, AU 9 0.99 (XPBD 0.97-1.0); with the slope tripled
-// past the knee AU 17 kept 0.91, quintupled 0.87.
+// past the knee AU 17 kept 0.91, quintupled 0.86.
 TEST_P(SettledVolumes, TheBulkCurveDoesNotLockTheUnits) {
   TissueOptions linear;
   linear.material.volume_knee = 0.0f;
