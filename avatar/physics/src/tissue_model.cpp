@@ -541,8 +541,8 @@ TissueMaterial TissueMaterial::normal() {
   // its travel or more (README, "The volume requirement"). Tripled it
   // reaches 36 % (AU 17 0.91) but the corrective basis then cuts the
   // held-out error to 0.503 of it, past its bound of a half; a ratio of 5
-  // costs AU 17 0.86 of its travel (knee 4 %), one of 10 diverges under the jaw in
-  // the projective step.
+  // leaves AU 17 0.86 of its travel, one of 10 (knee 15 %) diverges under
+  // the jaw in the projective step.
   m.volume_knee = 0.04f;
   m.volume_stiff_ratio = 2.0f;
   // Damps the 5 Hz modes at about half of critical (30 / (2 x 2 pi 5)), so
