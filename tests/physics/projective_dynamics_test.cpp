@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <string>
 
 #include <glm/geometric.hpp>
@@ -29,10 +30,10 @@ UnitTargets unit_alone(int au) {
 }
 
 // The face once `au` at full strength has settled (asleep, or after 10 s).
-FaceSimulation settled(Solver solver, int au) {
+FaceSimulation settled(Solver solver, int au, std::shared_ptr<const TissueModel> tissue = test::generic_tissue()) {
   SimulationOptions options;
   options.solver = solver;
-  FaceSimulation sim(test::generic_tissue(), options);
+  FaceSimulation sim(std::move(tissue), options);
   sim.set_action_units(unit_alone(au));
   for (int f = 0; f < 300 && !sim.at_rest(); ++f) sim.step(kPdFrame);
   return sim;
@@ -64,24 +65,6 @@ TEST(ProjectiveDynamics, SettledActionUnitsHaveTheMassSpringShapes) {
   }
 }
 
-// The volume bound: each prism within 5 % of its volume once a single unit
-// at full strength has settled. It holds for most prisms, not all, in every
-// solver: the volume stiffness (1500) is of the order of the units' slopes,
-// so a prism gives volume where a muscle shears or squeezes it (the fat and
-// muscle layers under the pulled tissue, the thin lid and nose columns),
-// and the jaw stretches the lips and cheeks in every layer. What it takes
-// (README "Where it loses accuracy"): mass-spring reaches 9 % at 30 times
-// the stiffness and 4 % at 100 times, with 25 and 45 sub-steps a frame
-// instead of 7, never coming to rest in 30 s; projective dynamics' one
-// iteration per step slows with it (3 times: AU 12's onset past 300 ms).
-// Asserted: the real 5 % bound for the share of prisms it holds for and
-// each solver's measured worst, so that a change that folds more tissue
-// fails. Measured, single units (worst unit) / AU 26-27:
-//   mass-spring  worst 55.7 % (AU 6), 157 of 1610 outside (AU 6) / 79 %
-//   projective   worst 56.1 % (AU 6), 149 of 1610 outside (AU 6) / 108 %
-//   XPBD         worst 54.1 % (AU 6), 110 of 1610 outside (AU 6) / 78 %
-// (PBD, before it was XPBD: 88 % (AU 10) / 174 %). The table the test
-// prints gives every unit's worst prism and the prisms outside the band.
 class SettledVolumes : public ::testing::TestWithParam<Solver> {};
 std::string settled_solver_name(const ::testing::TestParamInfo<Solver>& info) {
   return info.param == Solver::mass_spring ? "MassSpring" : info.param == Solver::pbd ? "Xpbd" : "Projective";
@@ -105,13 +88,30 @@ VolumeBand volume_band(const FaceSimulation& sim) {
   return band;
 }
 
+// The volume bound: each prism within 5 % of its volume once a single unit
+// at full strength has settled. It holds for most prisms, not all, in every
+// solver. The bulk curve (bulk_curve.hpp) doubles its slope past 4 %: the
+// worst prism fell from 56 % to 44 % (54 % to 39 % XPBD), the prisms beyond
+// 5 % from 157 to 139 at worst. What is left are the thin lid and chin
+// columns that a unit shears by more than their thickness, and under the
+// jaw's units the prisms whose bone corners the jaw moves apart (README,
+// "The volume requirement": what holds every prism locks the units).
+// Asserted: the real 5 % bound for the share of prisms it holds for and
+// each solver's measured worst, so that a change that folds more tissue
+// fails. Measured, single units (worst unit) / AU 26-27:
+//   mass-spring  worst 43.5 % (AU 6), 139 of 1610 outside (AU 6) / 78.3 %
+//   projective   worst 43.7 % (AU 6), 137 of 1610 outside (AU 6) / 90.6 %
+//   XPBD         worst 38.5 % (AU 6),  98 of 1610 outside (AU 6) / 78.4 %
+// (a linear bulk term: 55.7 %, 56.1 %, 54.1 %; 157, 149, 110 outside).
+// The table the test prints gives every unit's worst prism and the prisms
+// outside the band.
 TEST_P(SettledVolumes, TheVolumeBoundHoldsForMostPrisms) {
   struct Levels {
     float within, single, jaw;
   };
-  const Levels measured = GetParam() == Solver::mass_spring ? Levels{0.89f, 0.60f, 0.85f}
-                          : GetParam() == Solver::pbd       ? Levels{0.92f, 0.58f, 0.85f}
-                                                            : Levels{0.89f, 0.60f, 1.15f};
+  const Levels measured = GetParam() == Solver::mass_spring ? Levels{0.905f, 0.46f, 0.82f}
+                          : GetParam() == Solver::pbd       ? Levels{0.93f, 0.41f, 0.82f}
+                                                            : Levels{0.905f, 0.46f, 0.95f};
   float worst_single = 0.0f;
   for (int au : codec::kActionUnits) {
     const FaceSimulation sim = settled(GetParam(), au);
@@ -128,6 +128,34 @@ TEST_P(SettledVolumes, TheVolumeBoundHoldsForMostPrisms) {
     EXPECT_GE(float(prisms - band.outside), measured.within * float(prisms)) << "AU " << au << ": prisms within 5 %";
   }
   EXPECT_GT(worst_single, 0.05f) << "the 5 % requirement now holds for every prism: tighten this test to it";
+}
+
+double skin_travel_mm(const FaceSimulation& sim) {
+  const auto& rest = model::generic_face().skin.positions;
+  const auto now = sim.surface();
+  double travel2 = 0.0;
+  for (std::size_t v = 0; v < now.size(); ++v) travel2 += glm::dot(now[v] - rest[v], now[v] - rest[v]);
+  return std::sqrt(travel2 / double(now.size())) * kPdMm;
+}
+
+// What holds the prisms must not lock the tissue: a stiffer bulk term takes
+// travel from the units whose tissue shears (a slope three times as stiff
+// everywhere left AU 25 0.85 of its travel, AU 17 0.88; a hard band per
+// prism AU 17 0.36). Each unit keeps at least 0.9 of the settled RMS
+// travel it has with a linear bulk term. Measured: AU 17 and 25 0.95,
+// AU 15 0.98, AU 12 0.99, AU 9 0.99 (XPBD 0.97-1.0); with the slope tripled
+// past the knee AU 17 kept 0.91, quintupled 0.86.
+TEST_P(SettledVolumes, TheBulkCurveDoesNotLockTheUnits) {
+  TissueOptions linear;
+  linear.material.volume_knee = 0.0f;
+  linear.material.volume_stiff_ratio = 1.0f;
+  const auto& face = model::generic_face();
+  const auto linear_tissue = build_tissue_model(face, face.action_units, linear);
+  for (int au : {17, 25, 15, 12, 9}) {
+    const double kept = skin_travel_mm(settled(GetParam(), au)) / skin_travel_mm(settled(GetParam(), au, linear_tissue));
+    std::printf("AU %2d keeps %.3f of its travel\n", au, kept);
+    EXPECT_GE(kept, 0.9) << "AU " << au;
+  }
 }
 
 // One factorisation per model and step length (on a 2 % grid), made on

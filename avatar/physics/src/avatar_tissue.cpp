@@ -17,7 +17,8 @@ bool same_curve(const StressStrainCurve& a, const StressStrainCurve& b) {
 bool same_material(const TissueMaterial& a, const TissueMaterial& b) {
   for (std::size_t k = 0; k < kSpringKindCount; ++k)
     if (!same_curve(a.curves[k], b.curves[k]) || a.damping[k] != b.damping[k]) return false;
-  return a.volume_stiffness == b.volume_stiffness && a.node_mass == b.node_mass && a.bone_damping == b.bone_damping;
+  return a.volume_stiffness == b.volume_stiffness && a.volume_knee == b.volume_knee &&
+         a.volume_stiff_ratio == b.volume_stiff_ratio && a.node_mass == b.node_mass && a.bone_damping == b.bone_damping;
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "hot_clones.hpp"
+#include "bulk_curve.hpp"
 #include "wedge_volume.hpp"
 
 namespace fw::physics::detail {
@@ -108,19 +109,21 @@ FW_PHYSICS_ALWAYS_INLINE void add_spring_projections_across(const ProjectiveSyst
 // (A = I - 1 1^T / 6, so A^T A = A): the target moves them along the volume
 // gradient by lambda = (V0 - V) / |grad V|^2, one Newton step onto the rest
 // volume. The gradient sums to zero (moving a prism keeps its volume), so
-// the target stays about the centroid. One expression for the per-face
+// the target stays about the centroid. Past the bulk curve's knee lambda
+// reaches further by the stiffer slope's extra share. One expression for the per-face
 // kernel and the one across faces, as for the springs.
 struct PrismCorners {
   float px[6], py[6], pz[6], ux[6], uy[6], uz[6];  ///< positions q and u of corners 0..2 outer, 3..5 inner
 };
-FW_PHYSICS_ALWAYS_INLINE void prism_pull(const PrismCorners& c, float rest_volume, float w, float (&pull)[6][3]) {
+FW_PHYSICS_ALWAYS_INLINE void prism_pull(const PrismCorners& c, float rest_volume, float w, float knee, float extra,
+                                         float (&pull)[6][3]) {
   float gradient[6][3];
   const float volume = wedge_volume_gradient(c.px, c.py, c.pz, gradient);
   float g2 = 0.0f;
 #pragma GCC unroll 6
   for (int k = 0; k < 6; ++k)
     g2 += gradient[k][0] * gradient[k][0] + gradient[k][1] * gradient[k][1] + gradient[k][2] * gradient[k][2];
-  const float lambda = (rest_volume - volume) / std::max(g2, 1e-30f);
+  const float lambda = restoring_volume(rest_volume - volume, rest_volume, knee, extra) / std::max(g2, 1e-30f);
   // The projection about the centroid and the prism's share of L u,
   // both about their centroids: w (q - centroid(q) + lambda grad V +
   // u - centroid(u)).
@@ -155,7 +158,7 @@ void add_volume_projections(const ProjectiveSystem& s, const NodeVectors& q, con
         c.ux[k] = u.x[node], c.uy[k] = u.y[node], c.uz[k] = u.z[node];
       }
       float pull[6][3];
-      prism_pull(c, s.element_rest_volume[e], s.element_weight[e], pull);
+      prism_pull(c, s.element_rest_volume[e], s.element_weight[e], s.volume_knee, s.volume_extra, pull);
 #pragma GCC unroll 6
       for (int k = 0; k < 6; ++k)
 #pragma GCC unroll 3
@@ -197,7 +200,7 @@ FW_PHYSICS_ALWAYS_INLINE void add_volume_projections_across(const ProjectiveSyst
         c.ux[k] = uk[0], c.uy[k] = uk[W], c.uz[k] = uk[2 * W];
       }
       float pull[6][3];
-      prism_pull(c, rest[lane], w, pull);
+      prism_pull(c, rest[lane], w, s.volume_knee, s.volume_extra, pull);
 #pragma GCC unroll 6
       for (int k = 0; k < 6; ++k)
 #pragma GCC unroll 3

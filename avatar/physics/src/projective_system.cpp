@@ -132,6 +132,13 @@ void ProjectiveSystem::gather_constraints(const TissueModel& m) {
     spring_soft_share.push_back(1.0f / stiff_ratio);
     spring_compression.push_back(c.compression_share);
   }
+  // The stiffer branch goes into the target, not the weight: weights at
+  // the stiff slope (as the springs', above) kept most units moving after
+  // 10 s, one iteration per step converging that much slower on the first
+  // slope; a target past the rest volume settles as fast as before and
+  // holds under the jaw at this ratio (x10 diverges; README).
+  volume_knee = m.material.volume_knee;
+  volume_extra = std::max(m.material.volume_stiff_ratio, 1.0f) - 1.0f;
   // Volumes: weight w = kappa s |grad V|^2 at rest, so that near rest the
   // projection's pull w lambda grad V, lambda = (V0 - V) / |grad V|^2, is the
   // mass-spring solver's kappa s (V0 - V) grad V (Lee et al. 1995, eq. 6).

@@ -90,6 +90,11 @@ class ProjectiveSystem {
   std::vector<float> spring_compression;  ///< the curve's compression share (1: resists, 0: slack when short)
   std::array<std::vector<std::uint16_t>, 6> element_node;
   std::vector<float> element_rest_volume, element_weight;
+  /// The bulk curve (bulk_curve.hpp): its knee and stiff ratio - 1. The
+  /// weights hold the first slope; past the knee the projection reaches
+  /// beyond the rest volume by the extra share, so the matrix stays the
+  /// linear material's.
+  float volume_knee = 0, volume_extra = 0;
 
   /// Row (after the fill-reducing permutation) of node i, or -1 where the
   /// node is prescribed (bone, held outline).

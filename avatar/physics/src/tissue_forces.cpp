@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "hot_clones.hpp"
+#include "bulk_curve.hpp"
 #include "wedge_volume.hpp"
 
 namespace fw::physics::detail {
@@ -69,6 +70,7 @@ void add_spring_forces(const TissueModel& model, const SpringKindTable& table, c
 FW_HOT_CLONES
 void add_volume_forces(const TissueModel& model, const NodeArrays& n) {
   const float stiffness = model.material.volume_stiffness;
+  const float knee = model.material.volume_knee, extra = model.material.volume_stiff_ratio - 1.0f;
   const std::size_t count = model.element_count();
   const std::uint16_t* corner[6];
   for (std::size_t k = 0; k < 6; ++k) corner[k] = model.element_node[k].data();
@@ -85,7 +87,8 @@ void add_volume_forces(const TissueModel& model, const NodeArrays& n) {
       }
       float gradient[6][3];
       const float volume = wedge_volume_gradient(px, py, pz, gradient);
-      const float f = stiffness * (model.element_rest_volume[e] - volume) * model.element_force_scale[e];
+      const float rest = model.element_rest_volume[e];
+      const float f = stiffness * restoring_volume(rest - volume, rest, knee, extra) * model.element_force_scale[e];
 #pragma GCC unroll 6
       for (int k = 0; k < 6; ++k)
 #pragma GCC unroll 3

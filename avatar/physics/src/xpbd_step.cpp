@@ -25,6 +25,7 @@
 
 #include "fw/physics/face_simulation.hpp"
 #include "fw/physics/prism_volume.hpp"
+#include "bulk_curve.hpp"
 #include "tissue_forces.hpp"
 
 namespace fw::physics {
@@ -72,10 +73,11 @@ void FaceSimulation::pbd_substep(float h, const std::array<float, kMuscleCount>&
 
   XpbdScratch& s = scratch();
   const std::size_t ties = m.attach_node.size(), springs = m.spring_count(), elements = m.element_count();
-  s.lambda.assign(ties + springs + elements, 0.0f);
+  s.lambda.assign(ties + springs + 2 * elements, 0.0f);
   float* lambda_tie = s.lambda.data();
   float* lambda_spring = lambda_tie + ties;
   float* lambda_volume = lambda_spring + springs;
+  float* lambda_knee = lambda_volume + elements;
 
   // Each muscle's action line re-sampled at its full contraction, each
   // particle riding the bone under it (the jaw carries the lower ones);
@@ -147,7 +149,11 @@ void FaceSimulation::pbd_substep(float h, const std::array<float, kMuscleCount>&
       move(b, (-dl * wb) * n);
     }
     // Prism volumes: C = V - V0, alpha = 1 / (volume stiffness x the
-    // element's thickness scale), as the mass-spring solver's force.
+    // element's thickness scale), as the mass-spring solver's force; past
+    // the bulk curve's knee a second constraint on the part beyond it, at
+    // the stiffer slope's extra share (bulk_curve.hpp), so the two add up
+    // to the mass-spring solver's curve.
+    const float knee = m.material.volume_knee, extra = m.material.volume_stiff_ratio - 1.0f;
     for (std::size_t e = 0; e < elements; ++e) {
       const auto nodes = m.element(e);
       PrismNodes p, gradient;
@@ -159,7 +165,15 @@ void FaceSimulation::pbd_substep(float h, const std::array<float, kMuscleCount>&
       const float alpha = inv_h2 / (m.material.volume_stiffness * m.element_force_scale[e]);
       const float dl = (-c - alpha * lambda_volume[e]) / (denominator + alpha);
       lambda_volume[e] += dl;
-      for (std::size_t k = 0; k < 6; ++k) move(nodes[k], dl * inverse_mass(nodes[k]) * gradient[k]);
+      float dk = 0.0f;
+      if (extra > 0.0f) {
+        // The change after this move, to first order: the move is dl w grad V.
+        const float beyond = -detail::volume_beyond_knee(-(c + dl * denominator), m.element_rest_volume[e], knee);
+        const float alpha_knee = alpha / extra;
+        dk = (-beyond - alpha_knee * lambda_knee[e]) / (denominator + alpha_knee);
+        lambda_knee[e] += dk;
+      }
+      for (std::size_t k = 0; k < 6; ++k) move(nodes[k], (dl + dk) * inverse_mass(nodes[k]) * gradient[k]);
     }
   }
   resolve_contacts();

@@ -55,6 +55,11 @@ struct TissueMaterial {
   std::array<StressStrainCurve, kSpringKindCount> curves{};
   std::array<float, kSpringKindCount> damping{};  ///< force per unit of stretching speed
   float volume_stiffness = 0;   ///< force per model unit of thickness lost or gained
+  /// The bulk curve's knee: past this share of its rest volume lost or
+  /// gained, a prism's slope is volume_stiff_ratio x volume_stiffness
+  /// (bulk_curve.hpp). 0 with a ratio of 1: linear.
+  float volume_knee = 0;
+  float volume_stiff_ratio = 1;  ///< >= 1
   /// 1/s per node mass: each moving node's viscous bond to the bone of its
   /// column, on their relative speed (the mass-spring solver's damping
   /// beside the units' own; not a drag of the world frame).
