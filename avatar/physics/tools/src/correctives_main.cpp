@@ -67,7 +67,7 @@ int main(int argc, char** argv) {
   const auto report = [&](const char* part, const fw::physics::BehaviourCorpus& corpus) {
     const auto errors = fw::physics::corrective_errors(
         face, fw::physics::record_corpus(face, corpus, fw::physics::Solver::projective, &pool));
-    std::printf("%s: %zu frames, residual %.3f mm RMS without the correctives, %.3f mm with (%.2f of it)\n", part,
+    std::printf("%s: %zu frames, residual %.3f mm RMS without the correctives, %.3f mm with (%.3f of it)\n", part,
                 corpus.frame_count(), errors.without_mm, errors.with_mm, errors.cut());
   };
   report("fitting", fit_corpus);

@@ -8,7 +8,7 @@
 // the components are the leading eigenvectors of the residuals' second
 // moment (uncentred PCA: the neutral face has no residual, and a weight of 0
 // must rebuild the AUs alone). Each is scaled so that the weights [-1,1]
-// cover the fitting corpus to its 99.5th percentile (fewer frames clamped,
+// cover the fitting corpus to its 99.9th percentile (fewer frames clamped,
 // for steps on the wire a little coarser). facewire-correctives
 // writes them into the asset; the tests and `facewire-bench sim` use the
 // same recording to measure what they buy.
@@ -49,7 +49,7 @@ CorpusRecording record_corpus(const model::GenericFace& face, const BehaviourCor
 /// fewer if the residual has fewer directions that carry anything. Vertex
 /// displacements under `zero_below` (model units) are written as 0.
 std::vector<model::Morph> fit_correctives(const model::GenericFace& face, const CorpusRecording& recording,
-                                          std::size_t count = codec::kCorrectiveCount, float percentile = 0.995f,
+                                          std::size_t count = codec::kCorrectiveCount, float percentile = 0.999f,
                                           float zero_below = 1e-4f);
 
 /// The RMS (mm, over the skin vertices and the frames) of the recorded
