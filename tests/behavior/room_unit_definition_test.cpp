@@ -49,8 +49,12 @@ TEST(RoomUnitDefinition, TheExampleRedefinesBothSidesOfAu1AsItsMorph) {
   float lifted = 0;
   for (std::size_t v = 0; v < positions.size(); ++v) {
     EXPECT_LT(glm::length(left.vertex_delta[v] + right.vertex_delta[v] - whole->vertex_delta[v]), 1e-6f);
-    if (positions[v].x < -1e-3f) EXPECT_EQ(left.vertex_delta[v], glm::vec3(0.0f)) << v;
-    if (positions[v].x > 1e-3f) EXPECT_EQ(right.vertex_delta[v], glm::vec3(0.0f)) << v;
+    if (positions[v].x < -1e-3f) {
+      EXPECT_EQ(left.vertex_delta[v], glm::vec3(0.0f)) << v;
+    }
+    if (positions[v].x > 1e-3f) {
+      EXPECT_EQ(right.vertex_delta[v], glm::vec3(0.0f)) << v;
+    }
     lifted = std::max(lifted, whole->vertex_delta[v].y);
   }
   EXPECT_GT(lifted, 0.05f);  // the brows rise

@@ -115,8 +115,9 @@ TEST(HeadBack, IsPaintedSmoothFromTheColoursInsideTheOutline) {
   const float side_rays[] = {-0.3f, 0.0f, 0.5f, std::numbers::pi_v<float> - 0.5f, std::numbers::pi_v<float> + 0.3f};
   for (const float phi : side_rays) {
     EXPECT_LT(glm::length(texel(texture, head_back_uv(phi, 0.7f)) - pole), 0.03f) << phi;
-    if (std::abs(std::sin(phi)) < 0.35f)
+    if (std::abs(std::sin(phi)) < 0.35f) {
       EXPECT_LT(glm::length(texel(texture, head_back_uv(phi, 0.99f)) - skin), 0.05f) << phi;
+    }
   }
   // The neck's rays keep the skin's colour far back along the neck.
   const glm::vec3 neck = texel(texture, head_back_uv(-std::numbers::pi_v<float> / 2.0f, 0.75f));

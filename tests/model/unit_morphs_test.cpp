@@ -48,8 +48,11 @@ TEST(UnitMorphs, ARedefinedUnitIsCarriedOntoTheFitAsTheShippedOnesAre) {
     EXPECT_EQ(avatar.morphs[kAu9].vertex_delta[v], expected.vertex_delta[v]) << v;
   // On a wider face the lift is not simply copied: the fit's local map applies.
   EXPECT_NE(avatar.morphs[kAu9].vertex_delta, nose_lift().vertex_delta);
-  for (std::size_t c = 0; c < avatar.morphs.size(); ++c)
-    if (c != kAu9) EXPECT_EQ(avatar.morphs[c].vertex_delta, shipped.morphs[c].vertex_delta) << c;
+  for (std::size_t c = 0; c < avatar.morphs.size(); ++c) {
+    if (c != kAu9) {
+      EXPECT_EQ(avatar.morphs[c].vertex_delta, shipped.morphs[c].vertex_delta) << c;
+    }
+  }
 }
 
 TEST(UnitMorphs, ReconstructionWithTheRedefinedUnitMovesItsRegionAndOnlyIt) {

@@ -181,7 +181,9 @@ TEST(Anatomy, TheMasseterBulgesOutward) {
         peak = std::max(peak, out);
         ++over_belly;
       }
-      if (skin[v].x > 0.0f && skin[v].x < 0.4f) EXPECT_LT(glm::length(d), 0.2f) << "mid-face, vertex " << v;
+      if (skin[v].x > 0.0f && skin[v].x < 0.4f) {
+        EXPECT_LT(glm::length(d), 0.2f) << "mid-face, vertex " << v;
+      }
     }
     EXPECT_GE(over_belly, 2);
   }

@@ -73,10 +73,12 @@ TEST(Correctives, TheFitIsScaledToTheCorpusAndOrthogonal) {
         ii += glm::dot(c[i].vertex_delta[v], c[i].vertex_delta[v]);
         jj += glm::dot(c[j].vertex_delta[v], c[j].vertex_delta[v]);
       }
-      if (i != j) EXPECT_LT(std::abs(dot) / std::sqrt(ii * jj), 0.01) << i << " " << j << ": principal components";
+      if (i != j) {
+        EXPECT_LT(std::abs(dot) / std::sqrt(ii * jj), 0.01) << i << " " << j << ": principal components";
+      }
     }
-  // Weights in [-1,1] cover the fitting corpus to its 99th percentile: at
-  // most a few per cent of its frames clamp.
+  // Weights in [-1,1] cover the fitting corpus to its 99.9th percentile:
+  // at most a few per cent of its frames clamp.
   FacePool pool;
   const CorpusRecording r = record_corpus(model::generic_face(), committed_corpus("fitting"), Solver::projective, &pool);
   std::size_t clamped = 0, moving = 0;

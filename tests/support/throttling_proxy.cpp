@@ -46,14 +46,14 @@ struct ThrottlingProxy::Direction {
   }
 };
 
-namespace {
-
 // One direction of one connection: reads from `from`, holds each packet
-// until the link would have delivered it, writes it to `to`.
-class Pipe : public std::enable_shared_from_this<Pipe> {
+// until the link would have delivered it, writes it to `to`. Not in an
+// anonymous namespace: ThrottlingProxy::Connection, which the header
+// names, holds two.
+class ProxyPipe : public std::enable_shared_from_this<ProxyPipe> {
  public:
-  Pipe(tcp::socket& from, tcp::socket& to, const LinkShape& shape, std::shared_ptr<ThrottlingProxy::Direction> counters,
-       std::function<void()> on_close)
+  ProxyPipe(tcp::socket& from, tcp::socket& to, const LinkShape& shape,
+            std::shared_ptr<ThrottlingProxy::Direction> counters, std::function<void()> on_close)
       : from_(from), to_(to), shape_(shape), counters_(std::move(counters)), on_close_(std::move(on_close)),
         read_timer_(from.get_executor()), write_timer_(from.get_executor()) {
     buffer_.resize(std::max<std::size_t>(1, shape_.packet_bytes));
@@ -155,8 +155,6 @@ class Pipe : public std::enable_shared_from_this<Pipe> {
   bool writing_ = false, source_ended_ = false, finished_ = false;
 };
 
-}  // namespace
-
 // Both sockets of one proxied connection and its two pipes. The pipes hold
 // references to the sockets, so the connection outlives them: each pipe's
 // close callback holds the connection.
@@ -174,8 +172,8 @@ struct ThrottlingProxy::Connection : std::enable_shared_from_this<Connection> {
     server.async_connect(target, [self = shared_from_this(), up_shape, down_shape, up, down](boost::system::error_code connect_ec) {
       if (connect_ec) return self->close();
       auto closer = [self] { self->pipe_closed(); };
-      self->up_pipe = std::make_shared<Pipe>(self->client, self->server, up_shape, up, closer);
-      self->down_pipe = std::make_shared<Pipe>(self->server, self->client, down_shape, down, closer);
+      self->up_pipe = std::make_shared<ProxyPipe>(self->client, self->server, up_shape, up, closer);
+      self->down_pipe = std::make_shared<ProxyPipe>(self->server, self->client, down_shape, down, closer);
       self->up_pipe->start();
       self->down_pipe->start();
     });
@@ -194,7 +192,7 @@ struct ThrottlingProxy::Connection : std::enable_shared_from_this<Connection> {
   }
 
   tcp::socket client, server;
-  std::shared_ptr<Pipe> up_pipe, down_pipe;
+  std::shared_ptr<ProxyPipe> up_pipe, down_pipe;
   int closed_pipes = 0;
 };
 

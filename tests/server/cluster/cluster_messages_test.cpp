@@ -99,7 +99,9 @@ TEST(BridgeMessage, EveryKindRoundTripsAndCutsAreRefused) {
     EXPECT_EQ(back->members.size(), down.members.size());
     EXPECT_EQ(back->avatar, down.avatar);
     EXPECT_EQ(back->message, down.message);
-    if (!down.members.empty()) EXPECT_EQ(back->members[0].unit_morphs, down.members[0].unit_morphs);
+    if (!down.members.empty()) {
+      EXPECT_EQ(back->members[0].unit_morphs, down.members[0].unit_morphs);
+    }
     for (std::size_t cut = 0; cut < bytes.size(); ++cut)
       EXPECT_FALSE(bridge::decode_down(bytes.data(), cut)) << "a message cut at " << cut << " was read";
   }
@@ -225,7 +227,9 @@ void expect_refused(bridge::DownKind kind, Forge forge, const std::string& what)
       EXPECT_TRUE(cluster_check::refusal_of(down)) << what << " was believed";
       // And it is refused after travelling as bytes too (what Redis carries).
       const auto bytes = bridge::encode(down);
-      if (auto read = bridge::decode_down(bytes.data(), bytes.size())) EXPECT_TRUE(cluster_check::refusal_of(*read)) << what;
+      if (auto read = bridge::decode_down(bytes.data(), bytes.size())) {
+        EXPECT_TRUE(cluster_check::refusal_of(*read)) << what;
+      }
     }
 }
 
