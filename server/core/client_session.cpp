@@ -7,7 +7,6 @@
 #include <boost/asio/post.hpp>
 #include <spdlog/spdlog.h>
 
-#include "delivery_batch.hpp"
 #include "room_members.hpp"
 #include "display_name.hpp"
 #include "join_token.hpp"
@@ -60,10 +59,9 @@ void ClientSession::deliver(SharedBytes message) {
     inbox_.push_back(std::move(message));
     if (inbox_.size() > 1) return;  // the job that takes the first takes this one too
   }
-  auto take = [self = shared_from_this()] { self->take_inbox(); };
   // In a room tick, one post for all its connections (delivery_batch.hpp).
-  if (DeliveryBatch* batch = DeliveryBatch::open()) return batch->enlist(executor_, std::move(take));
-  net::post(executor_, std::move(take));
+  if (DeliveryBatch* batch = DeliveryBatch::open()) return batch->enlist(executor_, shared_from_this());
+  net::post(executor_, [self = shared_from_this()] { self->take_inbox(); });
 }
 
 void ClientSession::take_inbox() {

@@ -19,6 +19,7 @@
 
 #include "fw/codec/messages.hpp"
 #include "abuse_log.hpp"
+#include "delivery_batch.hpp"
 #include "room_connection.hpp"
 #include "server_keys.hpp"
 #include "session_services.hpp"
@@ -29,7 +30,9 @@ namespace fw::server {
 
 class Room;
 
-class ClientSession : public RoomConnection, public std::enable_shared_from_this<ClientSession> {
+class ClientSession : public RoomConnection,
+                      public BatchedWriter,
+                      public std::enable_shared_from_this<ClientSession> {
  public:
   ClientSession(const SessionServices& services, boost::asio::any_io_executor executor, std::string peer);
   ~ClientSession() override;
@@ -89,6 +92,7 @@ class ClientSession : public RoomConnection, public std::enable_shared_from_this
   void do_deliver(SharedBytes message);
   /// On the strand: queues what deliver() was given since the last time.
   void take_inbox();
+  void write_delivered() override { take_inbox(); }
   void write_next();
   void do_close(codec::CloseCode code, std::string reason);
   void refill_tokens(std::chrono::steady_clock::time_point now);

@@ -24,7 +24,9 @@ DeliveryBatch::~DeliveryBatch() {
   // other thread holds that strand (no queueing, no wake-up).
   auto first = entries_.front().strand;
   net::post(first, [entries = std::move(entries_)]() mutable {
-    for (auto& entry : entries) net::dispatch(entry.strand, std::move(entry.write));
+    for (auto& entry : entries) {
+      net::dispatch(entry.strand, [writer = std::move(entry.writer)] { writer->write_delivered(); });
+    }
   });
 }
 
@@ -32,9 +34,10 @@ DeliveryBatch* DeliveryBatch::open() {
   return open_batch;
 }
 
-void DeliveryBatch::enlist(net::any_io_executor strand, std::function<void()> write) {
-  if (outer_) return outer_->enlist(std::move(strand), std::move(write));
-  entries_.push_back({std::move(strand), std::move(write)});
+void DeliveryBatch::enlist(net::any_io_executor strand, std::shared_ptr<BatchedWriter> writer) {
+  if (outer_) return outer_->enlist(std::move(strand), std::move(writer));
+  if (entries_.empty()) entries_.reserve(kTypicalEntries);
+  entries_.push_back({std::move(strand), std::move(writer)});
 }
 
 }  // namespace fw::server

@@ -16,13 +16,23 @@
 // A connection's messages still go out in the order it was given them:
 // the batch only decides when the I/O threads hear of them.
 // Not thread-safe: a batch belongs to the thread that opened it.
-#include <functional>
-#include <utility>
+#include <cstddef>
+#include <memory>
 #include <vector>
 
 #include <boost/asio/any_io_executor.hpp>
 
 namespace fw::server {
+
+/// A connection that takes part: it keeps what it is given and writes it
+/// when told to, on its strand.
+class BatchedWriter {
+ public:
+  virtual void write_delivered() = 0;
+
+ protected:
+  ~BatchedWriter() = default;
+};
 
 class DeliveryBatch {
  public:
@@ -37,13 +47,17 @@ class DeliveryBatch {
   /// The batch open on this thread, or null.
   static DeliveryBatch* open();
 
-  /// `write` runs once on `strand` after the batch closes.
-  void enlist(boost::asio::any_io_executor strand, std::function<void()> write);
+  /// `writer->write_delivered()` runs once on `strand` after the batch closes.
+  void enlist(boost::asio::any_io_executor strand, std::shared_ptr<BatchedWriter> writer);
+
+  /// Room for a room of this many subscribers before the entries grow (an
+  /// allocation per doubling, every tick: they go with the job).
+  static constexpr std::size_t kTypicalEntries = 16;
 
  private:
   struct Entry {
     boost::asio::any_io_executor strand;
-    std::function<void()> write;
+    std::shared_ptr<BatchedWriter> writer;
   };
   DeliveryBatch* outer_;
   std::vector<Entry> entries_;

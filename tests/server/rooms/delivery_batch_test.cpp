@@ -22,6 +22,17 @@ using test::InMemoryServer;
 
 constexpr int kConnections = 10;
 
+/// Notes in `ran` when told to write.
+class NotingWriter : public BatchedWriter {
+ public:
+  NotingWriter(std::vector<int>& ran, int id) : ran_(ran), id_(id) {}
+  void write_delivered() override { ran_.push_back(id_); }
+
+ private:
+  std::vector<int>& ran_;
+  int id_;
+};
+
 std::vector<net::any_io_executor> strands_of(net::io_context& io) {
   std::vector<net::any_io_executor> strands;
   for (int i = 0; i < kConnections; ++i) strands.emplace_back(net::make_strand(io));
@@ -35,7 +46,9 @@ TEST(DeliveryBatch, PostsATicksWritesAsOneJobThatRunsThemInOrder) {
   {
     const DeliveryBatch batch;
     ASSERT_EQ(DeliveryBatch::open(), &batch);
-    for (int i = 0; i < kConnections; ++i) DeliveryBatch::open()->enlist(strands[i], [&ran, i] { ran.push_back(i); });
+    for (int i = 0; i < kConnections; ++i) {
+      DeliveryBatch::open()->enlist(strands[i], std::make_shared<NotingWriter>(ran, i));
+    }
     EXPECT_EQ(io.poll(), 0u) << "nothing is posted while the batch is open";
     io.restart();
   }
@@ -53,20 +66,20 @@ TEST(DeliveryBatch, PostsATicksWritesAsOneJobThatRunsThemInOrder) {
 TEST(DeliveryBatch, AnInnerBatchAddsToTheOuterOneAndOnlyTheOuterPosts) {
   net::io_context io;
   const auto strands = strands_of(io);
-  int ran = 0;
+  std::vector<int> ran;
   {
     const DeliveryBatch outer;
     {
       DeliveryBatch inner;
       EXPECT_EQ(DeliveryBatch::open(), &outer);
-      inner.enlist(strands[0], [&ran] { ++ran; });
+      inner.enlist(strands[0], std::make_shared<NotingWriter>(ran, 1));
     }
     EXPECT_EQ(io.poll(), 0u) << "the inner batch closing posts nothing";
     io.restart();
     EXPECT_EQ(DeliveryBatch::open(), &outer);
   }
   EXPECT_EQ(io.poll(), 1u);
-  EXPECT_EQ(ran, 1);
+  EXPECT_EQ(ran, std::vector<int>{1});
 }
 
 TEST(DeliveryBatch, BelongsToTheThreadThatOpenedIt) {
