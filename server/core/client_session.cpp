@@ -60,7 +60,7 @@ void ClientSession::deliver(SharedBytes message) {
     if (inbox_.size() > 1) return;  // the job that takes the first takes this one too
   }
   // In a room tick, one post for all its connections (delivery_batch.hpp).
-  if (DeliveryBatch* batch = DeliveryBatch::open()) return batch->enlist(executor_, shared_from_this());
+  if (DeliveryBatch* batch = DeliveryBatch::open()) return batch->enlist(shared_from_this());
   net::post(executor_, [self = shared_from_this()] { self->take_inbox(); });
 }
 

@@ -93,6 +93,7 @@ class ClientSession : public RoomConnection,
   /// On the strand: queues what deliver() was given since the last time.
   void take_inbox();
   void write_delivered() override { take_inbox(); }
+  const boost::asio::any_io_executor& strand() const override { return executor_; }
   void write_next();
   void do_close(codec::CloseCode code, std::string reason);
   void refill_tokens(std::chrono::steady_clock::time_point now);

@@ -18,14 +18,15 @@ DeliveryBatch::DeliveryBatch() : outer_(open_batch) {
 DeliveryBatch::~DeliveryBatch() {
   if (outer_) return;
   open_batch = nullptr;
-  if (entries_.empty()) return;
+  if (writers_.empty()) return;
   // One job on the first connection's strand; from there each connection's
   // writing is dispatched to its own strand, which runs it in place when no
   // other thread holds that strand (no queueing, no wake-up).
-  auto first = entries_.front().strand;
-  net::post(first, [entries = std::move(entries_)]() mutable {
-    for (auto& entry : entries) {
-      net::dispatch(entry.strand, [writer = std::move(entry.writer)] { writer->write_delivered(); });
+  const auto first = writers_.front()->strand();
+  net::post(first, [writers = std::move(writers_)]() mutable {
+    for (auto& writer : writers) {
+      const auto& strand = writer->strand();
+      net::dispatch(strand, [writer = std::move(writer)] { writer->write_delivered(); });
     }
   });
 }
@@ -34,10 +35,10 @@ DeliveryBatch* DeliveryBatch::open() {
   return open_batch;
 }
 
-void DeliveryBatch::enlist(net::any_io_executor strand, std::shared_ptr<BatchedWriter> writer) {
-  if (outer_) return outer_->enlist(std::move(strand), std::move(writer));
-  if (entries_.empty()) entries_.reserve(kTypicalEntries);
-  entries_.push_back({std::move(strand), std::move(writer)});
+void DeliveryBatch::enlist(std::shared_ptr<BatchedWriter> writer) {
+  if (outer_) return outer_->enlist(std::move(writer));
+  if (writers_.empty()) writers_.reserve(kTypicalWriters);
+  writers_.push_back(std::move(writer));
 }
 
 }  // namespace fw::server

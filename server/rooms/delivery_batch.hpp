@@ -28,6 +28,7 @@ namespace fw::server {
 /// when told to, on its strand.
 class BatchedWriter {
  public:
+  virtual const boost::asio::any_io_executor& strand() const = 0;
   virtual void write_delivered() = 0;
 
  protected:
@@ -47,20 +48,17 @@ class DeliveryBatch {
   /// The batch open on this thread, or null.
   static DeliveryBatch* open();
 
-  /// `writer->write_delivered()` runs once on `strand` after the batch closes.
-  void enlist(boost::asio::any_io_executor strand, std::shared_ptr<BatchedWriter> writer);
+  /// `writer->write_delivered()` runs once on its strand after the batch closes.
+  void enlist(std::shared_ptr<BatchedWriter> writer);
 
-  /// Room for a room of this many subscribers before the entries grow (an
-  /// allocation per doubling, every tick: they go with the job).
-  static constexpr std::size_t kTypicalEntries = 16;
+  /// Room for a room of this many subscribers before the writers grow (an
+  /// allocation per doubling, every tick: they go with the job). Small, so
+  /// that it is no request malloc serves by sorting its free lists first.
+  static constexpr std::size_t kTypicalWriters = 16;
 
  private:
-  struct Entry {
-    boost::asio::any_io_executor strand;
-    std::shared_ptr<BatchedWriter> writer;
-  };
   DeliveryBatch* outer_;
-  std::vector<Entry> entries_;
+  std::vector<std::shared_ptr<BatchedWriter>> writers_;
 };
 
 }  // namespace fw::server

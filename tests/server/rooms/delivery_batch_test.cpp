@@ -25,10 +25,13 @@ constexpr int kConnections = 10;
 /// Notes in `ran` when told to write.
 class NotingWriter : public BatchedWriter {
  public:
-  NotingWriter(std::vector<int>& ran, int id) : ran_(ran), id_(id) {}
+  NotingWriter(net::any_io_executor strand, std::vector<int>& ran, int id)
+      : strand_(std::move(strand)), ran_(ran), id_(id) {}
+  const net::any_io_executor& strand() const override { return strand_; }
   void write_delivered() override { ran_.push_back(id_); }
 
  private:
+  net::any_io_executor strand_;
   std::vector<int>& ran_;
   int id_;
 };
@@ -47,7 +50,7 @@ TEST(DeliveryBatch, PostsATicksWritesAsOneJobThatRunsThemInOrder) {
     const DeliveryBatch batch;
     ASSERT_EQ(DeliveryBatch::open(), &batch);
     for (int i = 0; i < kConnections; ++i) {
-      DeliveryBatch::open()->enlist(strands[i], std::make_shared<NotingWriter>(ran, i));
+      DeliveryBatch::open()->enlist(std::make_shared<NotingWriter>(strands[i], ran, i));
     }
     EXPECT_EQ(io.poll(), 0u) << "nothing is posted while the batch is open";
     io.restart();
@@ -72,7 +75,7 @@ TEST(DeliveryBatch, AnInnerBatchAddsToTheOuterOneAndOnlyTheOuterPosts) {
     {
       DeliveryBatch inner;
       EXPECT_EQ(DeliveryBatch::open(), &outer);
-      inner.enlist(strands[0], std::make_shared<NotingWriter>(ran, 1));
+      inner.enlist(std::make_shared<NotingWriter>(strands[0], ran, 1));
     }
     EXPECT_EQ(io.poll(), 0u) << "the inner batch closing posts nothing";
     io.restart();
