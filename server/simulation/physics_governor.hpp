@@ -52,16 +52,14 @@ class PhysicsGovernor {
   static constexpr double kBackOff = 0.7;  ///< the deepest cut of one window
   static constexpr double kRecovery = 0.05;
   /// A late window backs off only if the tissue took this share of the
-  /// rooms' work or more, and down to where it would take this share. With
-  /// a third, 100 rooms of 10 on 2 cores held 34 % of their faces on
-  /// physics with every window late (26-27 Hz): the tissue took 32 % of the
-  /// workers' time there (perf), under a third, so nothing was shed. A
-  /// quarter would cut to a share of 0.24 there (tissue at 0.94 of the rest's
-  /// cost per unit of share: 0.25 x 0.68 / (0.75 x 0.94)), under the quarter
-  /// of the faces the server promises at that size; 0.28 cuts to about 0.28,
-  /// and shedding it all could still win back 28 % of the work (a tick of 33
-  /// ms late by 9 ms).
-  static constexpr double kPhysicsPartToShed = 0.28;
+  /// rooms' work or more: a third, so that shedding it all could win back
+  /// a third of the work, a tick of 33 ms late by 11. It cuts down to where
+  /// the tissue would take a third, no further: at 100 rooms of 10 on 2
+  /// cores, with the tissue 36 % of the workers' time at a share of 0.33, a
+  /// cut by 30 % landed at 0.23 where the cores carried 0.31 (30 Hz); cut
+  /// to a third it lands near 0.30. (A lower part lowers that floor: 28 %
+  /// cut to 0.23 there as well.)
+  static constexpr double kPhysicsPartToShed = 1.0 / 3.0;
 
   /// What a late window multiplies the share by, given the rooms' own work
   /// and their tissue's over it (seconds): 1 while the tissue takes less
