@@ -54,11 +54,12 @@ class PhysicsGovernor {
   /// A late window backs off only if the tissue took this share of the
   /// rooms' work or more: a third, so that shedding it all could win back
   /// a third of the work, a tick of 33 ms late by 11. It cuts down to where
-  /// the tissue would take a third, no further: at 100 rooms of 10 on 2
-  /// cores, with the tissue 36 % of the workers' time at a share of 0.33, a
-  /// cut by 30 % landed at 0.23 where the cores carried 0.31 (30 Hz); cut
-  /// to a third it lands near 0.30. (A lower part lowers that floor: 28 %
-  /// cut to 0.23 there as well.)
+  /// the tissue would take a third if its cost followed the share, no
+  /// further: at 100 rooms of 10 on 2 cores, the tissue some 36 % of the
+  /// workers' time at a share of 0.33, a cut by 30 % landed at 0.23 where
+  /// the cores carried 0.31 (30 Hz). (A lower part lowers that floor: 28 %
+  /// cut to 0.23 there as well.) Batched solves cost more per face on fewer
+  /// faces, so a later late window may cut again (server/README.md).
   static constexpr double kPhysicsPartToShed = 1.0 / 3.0;
 
   /// What a late window multiplies the share by, given the rooms' own work
