@@ -5,6 +5,7 @@
 #include "channel_table.hpp"
 #include "coding_state.hpp"
 #include "frame_reader.hpp"
+#include "prefetch.hpp"
 #include "fw/codec/codec.hpp"
 
 namespace fw::codec {
@@ -68,11 +69,23 @@ DecodeError Decoder::decode(std::span<const std::uint8_t> frame) {
     return DecodeError::awaiting_key_frame;
   }
 
-  CodingState next = s.coding;
+  // Read in place, not into a copy of the whole coding state (its models
+  // are some 5 KB, copied twice a frame: most of what decoding cost). A
+  // frame refused halfway leaves models and level half-read, which nothing
+  // reads again: the decoder waits for a key frame, which resets the models
+  // and sets the level and every channel. The face it shows meanwhile is
+  // the one before the frame, so that much is kept aside. The state's lines
+  // are asked for together first: one decoder among thousands finds none
+  // of them in the cache, and fetched one by one where the frame needs them
+  // they cost more than the copy did (prefetch.hpp).
+  prefetch_whole(s.coding);
+  const Reconstruction shown_before = s.coding.reconstruction;
   std::uint32_t tick_delta = 0;
-  const DecodeError error = read_frame_payload(next, type, frame.subspan(header_bytes), tick_delta);
-  if (error != DecodeError::ok) return s.lose_sync(error);
-  s.coding = next;
+  const DecodeError error = read_frame_payload(s.coding, type, frame.subspan(header_bytes), tick_delta);
+  if (error != DecodeError::ok) {
+    s.coding.reconstruction = shown_before;
+    return s.lose_sync(error);
+  }
   s.needs_key = false;
   s.tick += tick_delta;
   ++s.frames;

@@ -24,6 +24,7 @@
 #include "channel_table.hpp"
 #include "coding_state.hpp"
 #include "model_journal.hpp"
+#include "prefetch.hpp"
 #include "frame_writer.hpp"
 #include "fw/codec/codec.hpp"
 #include "quantiser.hpp"
@@ -678,6 +679,7 @@ bool Encoder::encode_tick(const std::array<double, kChannelCount>& x, const Face
     s.remember_source(x, source == nullptr);
     return false;
   }
+  prefetch_whole(s);  // a frame reads lines all over the state (prefetch.hpp)
   s.past = source != nullptr ? &source->previous_ : &s.previous;
   s.past2 = source != nullptr ? &source->before_previous_ : &s.before_previous;
   const int level = s.rate.level();

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <deque>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <span>
 #include <string>
@@ -18,6 +19,7 @@
 
 #include "fw/codec/messages.hpp"
 #include "abuse_log.hpp"
+#include "delivery_batch.hpp"
 #include "room_connection.hpp"
 #include "server_keys.hpp"
 #include "session_services.hpp"
@@ -28,7 +30,9 @@ namespace fw::server {
 
 class Room;
 
-class ClientSession : public RoomConnection, public std::enable_shared_from_this<ClientSession> {
+class ClientSession : public RoomConnection,
+                      public BatchedWriter,
+                      public std::enable_shared_from_this<ClientSession> {
  public:
   ClientSession(const SessionServices& services, boost::asio::any_io_executor executor, std::string peer);
   ~ClientSession() override;
@@ -86,6 +90,10 @@ class ClientSession : public RoomConnection, public std::enable_shared_from_this
 
  private:
   void do_deliver(SharedBytes message);
+  /// On the strand: queues what deliver() was given since the last time.
+  void take_inbox();
+  void write_delivered() override { take_inbox(); }
+  const boost::asio::any_io_executor& strand() const override { return executor_; }
   void write_next();
   void do_close(codec::CloseCode code, std::string reason);
   void refill_tokens(std::chrono::steady_clock::time_point now);
@@ -137,6 +145,11 @@ class ClientSession : public RoomConnection, public std::enable_shared_from_this
   std::string held_token_;  ///< the join token this connection holds (TokenHolders)
   bool seated_ = false;  ///< the room seated avatar_
   std::vector<std::vector<std::uint8_t>> early_messages_;  ///< sent between hello and welcome
+  /// What deliver() was given and the strand has not taken yet, in order;
+  /// a job to take it is on its way while it holds anything (a room tick's
+  /// DeliveryBatch, else a post of its own).
+  std::mutex inbox_mutex_;
+  std::vector<SharedBytes> inbox_;
   std::deque<SharedBytes> queue_;
   bool writing_ = false;
   std::atomic<std::size_t> queued_bytes_{0};

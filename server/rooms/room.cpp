@@ -4,6 +4,7 @@
 #include <boost/asio/post.hpp>
 
 #include "bridged_room.hpp"
+#include "delivery_batch.hpp"
 #include "owned_room.hpp"
 #include "room_registry.hpp"
 
@@ -252,6 +253,8 @@ void Room::run_tick() {
 }
 
 void Room::end_tick() {
+  // The tick's messages reach the I/O threads in one post, not one per subscriber.
+  const DeliveryBatch batch;
   role_->finish_tick();
   ticking_ = false;
   // What came meanwhile, in the order it came (a close among it stops the ticks).

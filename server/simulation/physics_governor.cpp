@@ -21,11 +21,9 @@ void PhysicsGovernor::observe_tick(Clock::time_point due, Clock::time_point star
   if (started - window_start_ < window_) return;
   // One decision per window, on the counts of every room.
   const double late_fraction = static_cast<double>(late_) / static_cast<double>(ticks_);
-  const double work = room_seconds_ + physics_seconds_;
-  const bool physics_fills = work <= 0 || physics_seconds_ >= kPhysicsPartToShed * work;
   double share = share_.load(std::memory_order_relaxed);
   if (late_fraction > kLateFraction) {
-    if (physics_fills) share *= kBackOff;
+    share *= back_off(room_seconds_, physics_seconds_);
   } else if (late_ == 0) {
     share = std::min(1.0, share + kRecovery);
   }
@@ -33,6 +31,19 @@ void PhysicsGovernor::observe_tick(Clock::time_point due, Clock::time_point star
   window_start_ = started;
   ticks_ = late_ = 0;
   room_seconds_ = physics_seconds_ = 0;
+}
+
+double PhysicsGovernor::back_off(double room_seconds, double physics_seconds) {
+  const double work = room_seconds + physics_seconds;
+  if (work <= 0) return kBackOff;  // nobody says what the work is: shed as if it were the tissue
+  const double part = physics_seconds / work;
+  if (part < kPhysicsPartToShed) return 1.0;
+  // The cut r that leaves the tissue the part k = kPhysicsPartToShed of the
+  // work if its cost follows the share (r p / (1 - p + r p) = k): cutting
+  // further, the tissue would no longer be what fills the pool, and the
+  // share would land below what the pool carries.
+  const double to_threshold = kPhysicsPartToShed * (1 - part) / (part * (1 - kPhysicsPartToShed));
+  return std::max(kBackOff, to_threshold);
 }
 
 void PhysicsGovernor::observe_room_work(double seconds) {

@@ -14,8 +14,9 @@
 // would cost the whole physics face for nothing. So the governor also
 // weighs what the rooms' ticks cost (observe_work: their own work, and
 // their faces' tissue step on the pool, FaceStepper) and backs off only in
-// a window where the tissue took at least kPhysicsPartToShed of it; while
-// ticks are late and the tissue takes less, the share holds.
+// a window where the tissue took at least kPhysicsPartToShed of it, and no
+// further than where the tissue would take that part; while ticks are late
+// and the tissue takes less, the share holds.
 //
 // Thread-safe: every room's strand reports, anyone reads.
 #include <atomic>
@@ -48,12 +49,24 @@ class PhysicsGovernor {
   double share() const { return share_.load(std::memory_order_relaxed); }
 
   static constexpr double kLateFraction = 0.05;  ///< over this share of late ticks in a window: back off
-  static constexpr double kBackOff = 0.7;
+  static constexpr double kBackOff = 0.7;  ///< the deepest cut of one window
   static constexpr double kRecovery = 0.05;
   /// A late window backs off only if the tissue took this share of the
   /// rooms' work or more: a third, so that shedding it all could win back
-  /// a third of the work, a tick of 33 ms late by 11.
+  /// a third of the work, a tick of 33 ms late by 11. It cuts down to where
+  /// the tissue would take a third if its cost followed the share, no
+  /// further: at 100 rooms of 10 on 2 cores, the tissue some 36 % of the
+  /// workers' time at a share of 0.33, a cut by 30 % landed at 0.23 where
+  /// the cores carried 0.31 (30 Hz). (A lower part lowers that floor: 28 %
+  /// cut to 0.23 there as well.) Batched solves cost more per face on fewer
+  /// faces, so a later late window may cut again (server/README.md).
   static constexpr double kPhysicsPartToShed = 1.0 / 3.0;
+
+  /// What a late window multiplies the share by, given the rooms' own work
+  /// and their tissue's over it (seconds): 1 while the tissue takes less
+  /// than kPhysicsPartToShed, else the cut that leaves it that part, by
+  /// kBackOff at most.
+  static double back_off(double room_seconds, double physics_seconds);
 
  private:
   std::atomic<double> share_{1.0};

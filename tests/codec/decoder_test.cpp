@@ -51,7 +51,8 @@ struct Stream {
   std::vector<QuantisedParams> reconstruction;  ///< the encoder's, per tick
 };
 
-Stream encode(bool loss_tolerant, int seconds = 10) {
+// `key_every_ticks`: a key frame forced that often as well (0: never).
+Stream encode(bool loss_tolerant, int seconds = 10, std::size_t key_every_ticks = 0) {
   bench::SyntheticSceneOptions o;
   o.seed = 11;
   o.active_avatars = 1;
@@ -67,6 +68,7 @@ Stream encode(bool loss_tolerant, int seconds = 10) {
   Stream s;
   std::vector<std::uint8_t> frame;
   for (std::size_t t = 0; t < scene.avatars[0].ticks.size(); ++t) {
+    if (key_every_ticks > 0 && t > 0 && t % key_every_ticks == 0) encoder.force_key_frame();
     if (encoder.encode(scene.avatars[0].ticks[t], frame)) {
       s.frames.push_back(frame);
       s.ticks.push_back(static_cast<int>(t));
@@ -201,6 +203,43 @@ TEST(Decoder, CorruptAndTruncatedFramesGiveTheirErrorAndFreezeTheFace) {
     }
   }
   EXPECT_GE(refused, total * 15 / 16) << refused << " of " << total;
+}
+
+TEST(Decoder, AFrameRefusedHalfwayLeavesTheFaceAsItWasAndTheNextKeyFrameDecodesAsIfItNeverCame) {
+  // A frame is read into the coding state itself: what a refused one read
+  // must not show, nor reach the frames after the next key frame.
+  const Stream s = encode(false, 20, 45);
+  auto is_key = [](const std::vector<std::uint8_t>& frame) {
+    return static_cast<FrameType>(frame[0] & 0x0F) == FrameType::key;
+  };
+  int checked = 0;
+  for (std::size_t f = 1; f < s.frames.size(); ++f) {
+    if (is_key(s.frames[f])) continue;
+    std::size_t key = f + 1;
+    while (key < s.frames.size() && !is_key(s.frames[key])) ++key;
+    if (key + 5 >= s.frames.size()) break;  // no key frame with frames after it left
+    // Cut the frame, and flip one bit of its last byte: both are read
+    // partly before the check at its end refuses them.
+    std::vector<std::uint8_t> cut(s.frames[f].begin(), s.frames[f].end() - 1);
+    std::vector<std::uint8_t> flipped = s.frames[f];
+    flipped.back() ^= 0x10;
+    for (const auto& bad : {cut, flipped}) {
+      Decoder d;
+      for (std::size_t g = 0; g < f; ++g) ASSERT_EQ(d.decode(s.frames[g]), DecodeError::ok);
+      const QuantisedParams before = d.quantised();
+      if (d.decode(bad) == DecodeError::ok) continue;  // the rare change the check lets through
+      ++checked;
+      EXPECT_EQ(d.quantised(), before) << "frame " << f;
+      Decoder reference;
+      for (std::size_t g = 0; g < key; ++g) ASSERT_EQ(reference.decode(s.frames[g]), DecodeError::ok);
+      for (std::size_t g = key; g < key + 5; ++g) {
+        ASSERT_EQ(d.decode(s.frames[g]), DecodeError::ok) << "frame " << g << " after " << f << " was refused";
+        ASSERT_EQ(reference.decode(s.frames[g]), DecodeError::ok);
+        EXPECT_EQ(d.quantised(), reference.quantised()) << "frame " << g << " after " << f << " was refused";
+      }
+    }
+  }
+  EXPECT_GE(checked, 40) << "refused frames checked";
 }
 
 TEST(Decoder, AllocatesABoundedAmountWhateverTheBytes) {
