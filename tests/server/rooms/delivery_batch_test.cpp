@@ -23,7 +23,7 @@ using test::InMemoryServer;
 constexpr int kConnections = 10;
 
 /// Notes in `ran` when told to write.
-class NotingWriter : public BatchedWriter {
+class NotingWriter final : public BatchedWriter {
  public:
   NotingWriter(net::any_io_executor strand, std::vector<int>& ran, int id)
       : strand_(std::move(strand)), ran_(ran), id_(id) {}
