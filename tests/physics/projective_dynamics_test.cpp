@@ -90,27 +90,25 @@ VolumeBand volume_band(const FaceSimulation& sim) {
 
 // The volume bound: each prism within 5 % of its volume once a single unit
 // at full strength has settled. It holds for most prisms, not all, in every
-// solver. The bulk curve (bulk_curve.hpp) raises its slope by half past
-// 4 %: the worst prism fell from 56 % to 49 % (54 % to 45 % XPBD). What is left are the thin lid and chin
-// columns that a unit shears by more than their thickness, and under the
-// jaw's units the prisms whose bone corners the jaw moves apart (README,
-// "The volume requirement": what holds every prism locks the units).
-// Asserted: the real 5 % bound for the share of prisms it holds for and
-// each solver's measured worst, so that a change that folds more tissue
-// fails. Measured, single units (worst unit) / AU 26-27:
-//   mass-spring  worst 48.5 % (AU 6), 148 of 1610 outside (AU 6) / 78.7 %
-//   projective   worst 48.7 % (AU 6), 146 of 1610 outside (AU 6) / 97.2 %
-//   XPBD         worst 44.8 % (AU 6), 102 of 1610 outside (AU 6) / 78.0 %
-// (a linear bulk term: 55.7 %, 56.1 %, 54.1 %; 157, 149, 110 outside).
+// solver: the thin lid and chin columns that a unit shears by more than
+// their thickness, and under the jaw's units the prisms whose bone corners
+// the jaw moves apart (README, "The volume requirement": what holds every
+// prism locks the units). Asserted: the real 5 % bound for the share of
+// prisms it holds for and each solver's measured worst, so that a change
+// that folds more tissue fails. Measured, single units (worst unit) / AU
+// 26-27, with the default linear bulk term:
+//   mass-spring  worst 55.7 % (AU 6), 157 of 1610 outside (AU 6) / 79 %
+//   projective   worst 56.1 % (AU 6), 149 of 1610 outside (AU 6) / 108 %
+//   XPBD         worst 54.1 % (AU 6), 110 of 1610 outside (AU 6) / 78 %
 // The table the test prints gives every unit's worst prism and the prisms
 // outside the band.
 TEST_P(SettledVolumes, TheVolumeBoundHoldsForMostPrisms) {
   struct Levels {
     float within, single, jaw;
   };
-  const Levels measured = GetParam() == Solver::mass_spring ? Levels{0.905f, 0.50f, 0.82f}
-                          : GetParam() == Solver::pbd       ? Levels{0.93f, 0.46f, 0.82f}
-                                                            : Levels{0.905f, 0.50f, 1.0f};
+  const Levels measured = GetParam() == Solver::mass_spring ? Levels{0.89f, 0.60f, 0.85f}
+                          : GetParam() == Solver::pbd       ? Levels{0.92f, 0.58f, 0.85f}
+                                                            : Levels{0.89f, 0.60f, 1.15f};
   float worst_single = 0.0f;
   for (int au : codec::kActionUnits) {
     const FaceSimulation sim = settled(GetParam(), au);
@@ -137,21 +135,28 @@ double skin_travel_mm(const FaceSimulation& sim) {
   return std::sqrt(travel2 / double(now.size())) * kPdMm;
 }
 
-// What holds the prisms must not lock the tissue: a stiffer bulk term takes
-// travel from the units whose tissue shears (a slope three times as stiff
-// everywhere left AU 25 0.85 of its travel, AU 17 0.88; a hard band per
-// prism AU 17 0.36). Each unit keeps at least 0.9 of the settled RMS
-// travel it has with a linear bulk term. Measured: AU 17 and 25 0.95,
-// AU 15 0.98, AU 12 0.99, AU 9 0.99 (XPBD 0.97-1.0); with the slope tripled
-// past the knee AU 17 kept 0.91, quintupled 0.86.
-TEST_P(SettledVolumes, TheBulkCurveDoesNotLockTheUnits) {
-  TissueOptions linear;
-  linear.material.volume_knee = 0.0f;
-  linear.material.volume_stiff_ratio = 1.0f;
+// The bulk curve (off by default, tissue_model.cpp says why), at 1.5 times
+// past a 4 % knee: it narrows the band (AU 6's worst prism 49 % instead of
+// 56 %, XPBD 45 % instead of 54 %) without locking the tissue: a stiffer
+// bulk term takes travel from the units whose tissue shears (a slope three
+// times as stiff everywhere left AU 25 0.85 of its travel, AU 17 0.88; a
+// hard band per prism AU 17 0.36), and each unit keeps at least 0.9 of the
+// settled RMS travel it has with the linear term. Measured: AU 17 and 25
+// 0.97, AU 15, 12 and 9 0.99 (XPBD 0.98-1.0); with the slope tripled past
+// the knee AU 17 kept 0.91, quintupled 0.86.
+TEST_P(SettledVolumes, TheBulkCurveNarrowsTheBandWithoutLockingTheUnits) {
+  TissueOptions curved;
+  curved.material.volume_knee = 0.04f;
+  curved.material.volume_stiff_ratio = 1.5f;
   const auto& face = model::generic_face();
-  const auto linear_tissue = build_tissue_model(face, face.action_units, linear);
+  const auto curved_tissue = build_tissue_model(face, face.action_units, curved);
+  const float linear_worst = volume_band(settled(GetParam(), 6)).worst;
+  const float curved_worst = volume_band(settled(GetParam(), 6, curved_tissue)).worst;
+  std::printf("AU  6's worst prism: %.1f %% linear, %.1f %% with the curve\n", 100.0f * linear_worst,
+              100.0f * curved_worst);
+  EXPECT_LT(curved_worst, linear_worst - 0.05f) << "the curve narrows the band";
   for (int au : {17, 25, 15, 12, 9}) {
-    const double kept = skin_travel_mm(settled(GetParam(), au)) / skin_travel_mm(settled(GetParam(), au, linear_tissue));
+    const double kept = skin_travel_mm(settled(GetParam(), au, curved_tissue)) / skin_travel_mm(settled(GetParam(), au));
     std::printf("AU %2d keeps %.3f of its travel\n", au, kept);
     EXPECT_GE(kept, 0.9) << "AU " << au;
   }

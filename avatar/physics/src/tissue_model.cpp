@@ -531,21 +531,21 @@ TissueMaterial TissueMaterial::normal() {
   set(SpringKind::shear_muscle, 700.0f, 0.4f, 1.0f);
   set(SpringKind::bending, 40.0f, 0.2f, 0.5f);
   m.volume_stiffness = 1500.0f;
-  // Issue #30's bound is 5 % of a prism's volume under a single unit. Soft
-  // tissue is nearly incompressible (Fung 1993, "Biomechanics: Mechanical
-  // Properties of Living Tissues"), but a bulk slope three times this one
-  // everywhere costs the units their travel (AU 25 0.85, AU 17 0.88 of it),
-  // as the lid and chin columns cannot shear without giving volume. Past a
-  // knee inside the bound the slope rises by half: measured, the worst
-  // prism under a single unit 49 % instead of 56 % (README, "The volume
-  // requirement"). Doubled it reaches 44 %, tripled 36 % (AU 17 keeping
-  // 0.91 of its travel), but the corrective basis then cuts the held-out
-  // error only to 0.5005 and 0.503 of it, past its bound of a half (the
-  // muscles calibrated again to their units' sizes); a ratio of 5 leaves
-  // AU 17 0.86 of its travel, one of 10 (knee 15 %) diverges under the jaw
-  // in the projective step.
+  // Every prism within 5 % of its volume under a single unit would need a
+  // nearly incompressible tissue (soft tissue is: Fung 1993, "Biomechanics:
+  // Mechanical Properties of Living Tissues"), but a bulk slope three times
+  // this one everywhere costs the units their travel (AU 25 0.85, AU 17
+  // 0.88 of it), as the lid and chin columns cannot shear without giving
+  // volume. The bulk curve (bulk_curve.hpp) stiffens a prism only past a
+  // knee: at 1.5 times past 4 % the worst prism under a single unit is
+  // 49 % instead of 56 %, at twice 44 %, three times 36 %. It stays off
+  // (a ratio of 1): the projective face then rests on a held joy for 37 of
+  // 180 room ticks instead of 77 (tissue awake is the rooms' cost), and the
+  // corrective basis cuts the held-out error only to 0.498 (twice: 0.5005)
+  // instead of 0.493 of it, against its bound of a half (README, "The
+  // volume requirement").
   m.volume_knee = 0.04f;
-  m.volume_stiff_ratio = 1.5f;
+  m.volume_stiff_ratio = 1.0f;
   // Damps the 5 Hz modes at about half of critical (30 / (2 x 2 pi 5)), so
   // an expression settles without ringing; on relative speeds, so it takes
   // nothing from tissue that moves with its bone.
