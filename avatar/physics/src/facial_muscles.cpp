@@ -68,15 +68,15 @@ std::array<MuscleDefinition, kMusclesPerSide> make_definitions() {
       // from the galea aponeurotica above the hairline down to the brow (the
       // lateral one toward its outer third, so that over the thin forehead
       // tissue the brow's tail rises with the rest).
-      linear("frontalis_inner", 137.0f, at(0.22f, 1.3f), on(22, 0.05f, 0.03f), 0.3f, 0.14f),
-      linear("frontalis_outer", 107.0f, at(0.75f, 1.25f), on(25, 0.05f, 0.03f), 0.3f, 0.14f),
+      linear("frontalis_inner", 136.0f, at(0.22f, 1.3f), on(22, 0.05f, 0.03f), 0.3f, 0.14f),
+      linear("frontalis_outer", 105.0f, at(0.75f, 1.25f), on(25, 0.05f, 0.03f), 0.3f, 0.14f),
       // From the nasal part of the frontal bone to the middle of the brow:
       // pulls the brow down and in (AU 4).
-      linear("corrugator", 207.0f, at(0.07f, 0.12f), on(23, 0.05f, 0.0f), 0.16f, 0.14f, 0.05f),
+      linear("corrugator", 201.0f, at(0.07f, 0.12f), on(23, 0.05f, 0.0f), 0.16f, 0.14f, 0.05f),
       // From the nasal bone up to the skin between the brows.
       of_the_nose(linear("procerus", 195.0f, at(0.03f, -0.3f), on(22, -0.1f, 0.03f), 0.13f, 0.12f)),
       // Lifts the upper lid from the roof of the orbit (AU 5).
-      linear("levator_palpebrae", 172.0f, at(0.5f, 0.45f), between(43, 44, 0.0f, 0.0f), 0.16f, 0.05f),
+      linear("levator_palpebrae", 162.0f, at(0.5f, 0.45f), between(43, 44, 0.0f, 0.0f), 0.16f, 0.05f),
       // Orbicularis oculi: the orbital part gathers cheek and brow toward the
       // eye (AU 6, mostly the lower half); the palpebral part narrows the lids (AU 7).
       sphincter("orbicularis_oculi_orbital", 240.0f, between(42, 45, 0.0f, -0.02f), {0.4f, 0.3f}, 0.55f,
@@ -84,7 +84,7 @@ std::array<MuscleDefinition, kMusclesPerSide> make_definitions() {
       sphincter("orbicularis_oculi_palpebral", 272.0f, between(42, 45), {0.24f, 0.1f}, 0.6f, {0.1f, 1.0f, 0.0f},
                 0.45f, false),
       // Nose and upper lip.
-      of_the_nose(linear("levator_labii_alaeque_nasi", 279.0f, at(0.11f, -0.05f), on(35, 0.04f, -0.1f), 0.15f, 0.12f)),
+      of_the_nose(linear("levator_labii_alaeque_nasi", 276.0f, at(0.11f, -0.05f), on(35, 0.04f, -0.1f), 0.15f, 0.12f)),
       // The nasalis' transverse part runs from the maxilla beside the nose
       // up over its side into an aponeurosis across the dorsum, which the
       // procerus ties to the nasal bones. In AU 9 it gathers the side of
@@ -94,23 +94,23 @@ std::array<MuscleDefinition, kMusclesPerSide> make_definitions() {
       // from the maxilla below, it drew the side of the nose down, against
       // the lift).
       of_the_nose(linear("nasalis", 113.0f, at(0.03f, -0.28f), at(0.2f, -0.62f), 0.15f, 0.1f)),
-      linear("levator_labii_superioris", 204.0f, at(0.3f, -0.33f), on(52, 0.05f, 0.0f), 0.15f, 0.1f),
+      linear("levator_labii_superioris", 200.0f, at(0.3f, -0.33f), on(52, 0.05f, 0.0f), 0.15f, 0.1f),
       linear("zygomatic_minor", 213.0f, at(0.56f, -0.42f), on(53, 0.02f, 0.0f), 0.13f, 0.1f),
       // The mouth corner's muscles meet at the modiolus beside the corner.
-      linear("zygomatic_major", 497.0f, at(0.92f, -0.45f), on(54), 0.2f, 0.12f),
-      linear("buccinator", 439.0f, at(0.72f, -1.05f), on(54), 0.16f, 0.08f, 0.25f),
-      linear("risorius", 362.0f, at(1.05f, -1.15f), on(54), 0.18f, 0.1f),
+      linear("zygomatic_major", 492.0f, at(0.92f, -0.45f), on(54), 0.2f, 0.12f),
+      linear("buccinator", 430.0f, at(0.72f, -1.05f), on(54), 0.16f, 0.08f, 0.25f),
+      linear("risorius", 355.0f, at(1.05f, -1.15f), on(54), 0.18f, 0.1f),
       // From the mandible up to the corner and the lower lip; they ride the jaw.
-      linear("depressor_anguli_oris", 227.0f, at(0.55f, -1.72f), on(54), 0.18f, 0.1f, 0.0f, true),
-      linear("depressor_labii_inferioris", 138.0f, at(0.25f, -1.68f), on(56, 0.02f, 0.0f), 0.15f, 0.1f, 0.0f, true),
+      linear("depressor_anguli_oris", 220.0f, at(0.55f, -1.72f), on(54), 0.18f, 0.1f, 0.0f, true),
+      linear("depressor_labii_inferioris", 129.0f, at(0.25f, -1.68f), on(56, 0.02f, 0.0f), 0.15f, 0.1f, 0.0f, true),
       // From the incisive fossa down into the chin's skin: raises the chin.
-      linear("mentalis", 161.0f, at(0.1f, -1.4f), at(0.09f, -1.75f), 0.2f, 0.14f, 0.1f, true),
+      linear("mentalis", 141.0f, at(0.1f, -1.4f), at(0.09f, -1.75f), 0.2f, 0.14f, 0.1f, true),
       // Half of the orbicularis oris, in its two parts: the peripheral part
       // narrows the mouth (AU 23), the marginal part in the red of the lips
       // presses them together (AU 24).
       sphincter("orbicularis_oris_peripheral", 67.0f, between(62, 66), {0.45f, 0.22f}, 0.75f, {1.0f, 0.5f, 0.15f},
                 1.0f, true),
-      sphincter("orbicularis_oris_marginal", 82.0f, between(62, 66), {0.38f, 0.11f}, 0.8f, {0.1f, 1.0f, 0.0f}, 1.0f,
+      sphincter("orbicularis_oris_marginal", 83.0f, between(62, 66), {0.38f, 0.11f}, 0.8f, {0.1f, 1.0f, 0.0f}, 1.0f,
                 true),
       // Jaw muscles: the masseter, from the zygomatic arch to the mandible's
       // angle, closes the jaw and bulges over the ramus as it contracts: by

@@ -540,10 +540,10 @@ TissueMaterial TissueMaterial::normal() {
   // knee: at 1.5 times past 4 % the worst prism under a single unit is
   // 49 % instead of 56 %, at twice 44 %, three times 36 %. It stays off
   // (a ratio of 1): the projective face then rests on a held joy for 37 of
-  // 180 room ticks instead of 77 (tissue awake is the rooms' cost), and the
-  // corrective basis cuts the held-out error only to 0.498 (twice: 0.5005)
-  // instead of 0.493 of it, against its bound of a half (README, "The
-  // volume requirement").
+  // 180 room ticks instead of 70-77 (tissue awake is the rooms' cost), and
+  // the corrective basis cuts the held-out error only to 0.498 (twice:
+  // 0.5005) instead of 0.492 of it, against its bound of a half (README,
+  // "The volume requirement").
   m.volume_knee = 0.04f;
   m.volume_stiff_ratio = 1.0f;
   // Damps the 5 Hz modes at about half of critical (30 / (2 x 2 pi 5)), so

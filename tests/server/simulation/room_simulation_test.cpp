@@ -84,7 +84,7 @@ TEST(RoomSimulationSolver, ProjectiveDynamicsSmilesAsMassSpringDoes) {
 
 // A held smile: the physics face comes to rest on it and costs nothing,
 // yet the smile on the face still wavers (never frozen on its plateau). It
-// rests for 77 of the 180 ticks (103 on a uniform 12 mm of tissue: with the
+// rests for 70 of the 180 ticks (103 on a uniform 12 mm of tissue: with the
 // face's regional depths, the thin lid and forehead columns, the projective
 // face takes 0.6 s longer to settle on joy).
 TEST(RoomSimulationPlateau, AHeldExpressionLivesWhileTheTissueRests) {
