@@ -48,6 +48,8 @@ using Correctives = std::array<float, codec::kCorrectiveCount>;
 // its targets kinematically: each AU approaches its target with the muscles'
 // activation time constants. That track is kept always (29 numbers), so a
 // face that gets physics back blends from it into the physics output.
+// Outside the anonymous namespace: RoomSimulation::State, which the header
+// names, holds one per avatar.
 struct PhysicsFace {
   std::unique_ptr<physics::FaceSimulation> simulation;
   physics::Solver solver = physics::Solver::mass_spring;  ///< the simulation's, when it is made
@@ -67,8 +69,6 @@ struct PhysicsFace {
   double catching_up_s = 0;  ///< time the physics face has had to catch up since it came back
   bool resting = true;
 };
-// Outside the anonymous namespace: RoomSimulation::State, which the header
-// names, holds one per avatar.
 
 namespace {
 
