@@ -139,8 +139,9 @@ class OwnedRoom : public RoomRole {
   /// A preview's surface residual last sent to its page, per avatar (none: empty).
   std::map<std::uint32_t, std::vector<codec::UnitMorphs::Move>> preview_surface_sent_;
   /// The residual changes with every tick while the face moves: ten a
-  /// second keep a muscle's pull visible as it builds up (its activation
-  /// rises over 80 ms) at a few KB a second on the page's own link.
+  /// second keep a muscle's pull visible as it builds up (the tissue
+  /// follows its muscle over a few hundred ms: its slowest modes are near
+  /// 5 Hz) at a few KB a second on the page's own link.
   static constexpr std::uint32_t kPreviewSurfaceHz = 10;
 };
 

@@ -18,6 +18,7 @@
 #include "fw/physics/avatar_tissue.hpp"
 #include "fw/physics/face_pool.hpp"
 #include "fw/physics/face_simulation.hpp"
+#include "fw/physics/muscle_activation.hpp"
 #include "fw/physics/muscle_variation.hpp"
 #include "fw/physics/tissue_model.hpp"
 #include "face_model.hpp"
@@ -78,18 +79,17 @@ namespace {
 constexpr float kCloseEnough = 0.1f;
 constexpr double kCatchUpS = 1.0;
 
-// The muscles' activation time constants (physics::SimulationOptions): a
-// face without tissue follows its targets as its muscles would.
-constexpr physics::SimulationOptions kMuscles{};
-constexpr double kRiseS = kMuscles.activation_time_s, kFallS = kMuscles.deactivation_time_s;
 // Under the codec's finest action-unit step (1/256).
 constexpr float kKinematicRestGap = 1.0f / 512.0f;
 
+// A face without tissue follows its targets as its muscles would (the
+// physics face's own activation lag and time constants).
 void follow_kinematically(PhysicsFace& face, const AuTargets& targets, double dt_s) {
-  for (std::size_t c = 0; c < targets.size(); ++c) {
-    const double tau = targets[c] > face.kinematic[c] ? kRiseS : kFallS;
-    face.kinematic[c] += static_cast<float>((1.0 - std::exp(-dt_s / tau)) * (targets[c] - face.kinematic[c]));
-  }
+  constexpr physics::SimulationOptions kMuscles{};
+  const physics::ActivationRates rates =
+      physics::activation_rates(kMuscles.activation_time_s, kMuscles.deactivation_time_s, static_cast<float>(dt_s));
+  for (std::size_t c = 0; c < targets.size(); ++c)
+    face.kinematic[c] = physics::follow_activation(face.kinematic[c], targets[c], rates);
 }
 
 // The tissue model a face simulates: its avatar's own once built, else the

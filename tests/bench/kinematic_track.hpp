@@ -2,11 +2,11 @@
 // The kinematic fallback of a room's face (server/simulation
 // room_simulation.cpp, follow_kinematically): each AU approaches its target
 // with the muscles' activation time constants, avatar/physics' defaults.
-#include <cmath>
 #include <cstddef>
 
 #include "fw/physics/behaviour_corpus.hpp"
 #include "fw/physics/face_simulation.hpp"
+#include "fw/physics/muscle_activation.hpp"
 
 namespace fw::bench {
 
@@ -14,10 +14,9 @@ class KinematicTrack {
  public:
   void follow(const physics::AuFrame& targets, double dt_s) {
     const physics::SimulationOptions muscles;
-    for (std::size_t c = 0; c < targets.size(); ++c) {
-      const double tau = targets[c] > weights_[c] ? muscles.activation_time_s : muscles.deactivation_time_s;
-      weights_[c] += static_cast<float>((1.0 - std::exp(-dt_s / tau)) * (targets[c] - weights_[c]));
-    }
+    const physics::ActivationRates rates =
+        physics::activation_rates(muscles.activation_time_s, muscles.deactivation_time_s, static_cast<float>(dt_s));
+    for (std::size_t c = 0; c < targets.size(); ++c) weights_[c] = physics::follow_activation(weights_[c], targets[c], rates);
   }
   const physics::AuFrame& weights() const { return weights_; }
 

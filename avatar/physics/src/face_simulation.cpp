@@ -10,6 +10,7 @@
 #include "fw/physics/au_muscle_map.hpp"
 #include "fw/physics/au_projection.hpp"
 #include "fw/physics/lip_contact.hpp"
+#include "fw/physics/muscle_activation.hpp"
 #include "fw/physics/muscle_variation.hpp"
 #include "fw/physics/prism_volume.hpp"
 #include "fw/physics/skull_contact.hpp"
@@ -174,12 +175,8 @@ void FaceSimulation::substep(float h) {
 }
 
 void FaceSimulation::update_muscles_and_jaw(float h) {
-  const float rise = 1.0f - std::exp(-h / std::max(options_.activation_time_s, 1e-4f));
-  const float fall = 1.0f - std::exp(-h / std::max(options_.deactivation_time_s, 1e-4f));
-  for (std::size_t i = 0; i < kMuscleCount; ++i) {
-    const float gap = target_[i] - activation_[i];
-    activation_[i] += gap * (gap > 0.0f ? rise : fall);
-  }
+  const ActivationRates rates = activation_rates(options_.activation_time_s, options_.deactivation_time_s, h);
+  for (std::size_t i = 0; i < kMuscleCount; ++i) activation_[i] = follow_activation(activation_[i], target_[i], rates);
   // Semi-implicit: the speed first, then the angle with the new speed; in
   // pieces of at most 35 ms (h omega 0.7), since the update diverges once
   // h omega > 2 (a 0.1 s step) and rings well before.
