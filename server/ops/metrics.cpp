@@ -27,6 +27,9 @@ std::string Metrics::render(double physics_share, const AbuseLog& abuse) const {
   family("facewire_bytes_received_total", "counter", "Bytes read from room connections.", bytes_received.load());
   family("facewire_room_frames_sent_total", "counter", "Room frames sent.", room_frames_sent.load());
   family("facewire_avatar_frames_sent_total", "counter", "Avatar frames inside room frames.", avatar_frames_sent.load());
+  family("facewire_avatar_frames_shared_total", "counter",
+         "Avatar frames sent to a viewer as already encoded for another viewer of the face.",
+         avatar_frames_shared.load());
   family("facewire_package_bytes_sent_total", "counter", "Avatar package bytes sent in chunks.", package_bytes_sent.load());
   family("facewire_dropped_ticks_total", "counter", "Subscriber ticks skipped because the link was full.",
          skipped_ticks.load());

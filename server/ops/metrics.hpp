@@ -17,6 +17,7 @@ struct Metrics {
   std::atomic<std::uint64_t> bytes_received{0};
   std::atomic<std::uint64_t> room_frames_sent{0};
   std::atomic<std::uint64_t> avatar_frames_sent{0};
+  std::atomic<std::uint64_t> avatar_frames_shared{0};  ///< of those, encoded once for several viewers (shared_encoder.hpp)
   std::atomic<std::uint64_t> package_bytes_sent{0};
   std::atomic<std::uint64_t> skipped_ticks{0};      ///< subscriber ticks dropped: the link was full
   std::atomic<std::uint64_t> late_ticks{0};         ///< room ticks that started after their time

@@ -11,10 +11,17 @@ void FaceSources::offer(std::span<AvatarFace> faces) {
     return std::none_of(faces.begin(), faces.end(), [&](const AvatarFace& f) { return f.id == entry.first; });
   });
   for (AvatarFace& face : faces) {
-    codec::FaceSource& source = sources_[face.id];
-    source.offer(*face.face);
-    face.source = &source;
+    Face& own = sources_[face.id];
+    own.source.offer(*face.face);
+    face.source = &own.source;
+    face.encoders = &own.encoders;
   }
+}
+
+std::size_t FaceSources::shared_encoders() {
+  std::size_t groups = 0;
+  for (auto& [id, face] : sources_) groups += face.encoders.groups();
+  return groups;
 }
 
 }  // namespace fw::server

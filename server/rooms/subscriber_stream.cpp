@@ -62,7 +62,7 @@ void SubscriberStream::add_avatar(std::uint32_t avatar, SharedBytes preview, Sha
   // entry adds its id and length.
   const double shared_bytes = 1.0 + 4.0 + (settings_.timestamps ? 13.0 : 0.0);
   options.container_bytes_per_frame = 2.0 + shared_bytes / static_cast<double>(encoders_.size() + 1);
-  encoders_.emplace(avatar, codec::Encoder(options));
+  encoders_.try_emplace(avatar, options);
   if (settings_.packages) {
     // Previews go before every full package, whoever joined first.
     const auto first_full = std::find_if(packages_.begin(), packages_.end(), [](const PackageSend& p) {
@@ -326,21 +326,18 @@ void SubscriberStream::tick(std::uint32_t tick, std::uint64_t now_us, std::span<
   // them all, instead of one nearly empty room frame per tick.
   const bool send_tick = messages_sent && tick % bundle_ticks() == 0;
 
-  frames_.resize(std::max(frames_.size(), faces.size()));
   std::vector<codec::RoomEntry>& entries = entries_;  // kept from tick to tick: no allocation per tick
   entries.clear();
-  for (std::size_t i = 0; i < faces.size(); ++i) {
-    auto it = encoders_.find(faces[i].id);
-    if (it == encoders_.end() || awaiting_preview_.count(faces[i].id)) continue;
-    codec::Encoder& encoder = it->second;
-    const codec::FaceSource* source = faces[i].source;
-    if (!send_tick) {
-      if (source != nullptr) encoder.hold(*source);
-      else encoder.hold(*faces[i].face);
-    } else if (source != nullptr ? encoder.encode(*source, frames_[i]) : encoder.encode(*faces[i].face, frames_[i])) {
-      entries.push_back({faces[i].id, frames_[i]});
-    }
+  const std::uint32_t bundle = bundle_ticks();
+  std::uint64_t reused = 0;
+  for (const AvatarFace& face : faces) {
+    auto it = encoders_.find(face.id);
+    if (it == encoders_.end() || awaiting_preview_.count(face.id)) continue;
+    const ViewerEncoding::Offered offered = it->second.offer(tick, face, send_tick, bundle);
+    if (!offered.frame.empty()) entries.push_back({face.id, offered.frame});
+    reused += offered.reused && !offered.frame.empty();
   }
+  if (reused > 0) metrics_.avatar_frames_shared.fetch_add(reused, std::memory_order_relaxed);
   if (!messages_sent) return;
   for (std::size_t start = 0; start < entries.size(); start += codec::kMaxRoomAvatars) {
     const std::size_t count = std::min(codec::kMaxRoomAvatars, entries.size() - start);
@@ -408,8 +405,9 @@ void SubscriberStream::rebalance(double seconds) {
     if (awaiting_preview_.count(id)) continue;
     Fairness& f = fairness_[id];
     const codec::EncoderStats stats = encoder.stats();
-    const double fps = static_cast<double>(stats.frames_sent - f.frames_at_second_start) / seconds;
-    f.frames_at_second_start = stats.frames_sent;
+    // The viewer's own count: a shared encoder's counts its group's frames.
+    const double fps = static_cast<double>(encoder.frames_sent() - f.frames_at_second_start) / seconds;
+    f.frames_at_second_start = encoder.frames_sent();
     const bool held_back = stats.bucket_bits > 0.3 * stats.bucket_capacity_bits;
     if (fps < kFairFps && held_back) f.weight = std::min(kMaxWeight, f.weight * 1.2);
     else if (fps > kFairFps || !held_back) f.weight = std::max(kMinWeight, f.weight / 1.1);

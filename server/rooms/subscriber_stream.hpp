@@ -33,11 +33,13 @@
 #include <utility>
 #include <vector>
 
+#include "avatar_face.hpp"
 #include "fw/codec/codec.hpp"
 #include "fw/codec/face_params.hpp"
 #include "fw/codec/messages.hpp"
 #include "metrics.hpp"
 #include "room_connection.hpp"
+#include "viewer_encoding.hpp"
 
 namespace fw::server {
 
@@ -51,14 +53,6 @@ struct StreamSettings {
   /// codec::kFirstSpeakingVersion or later are sent speaking messages, of
   /// codec::kFirstUnitMorphsVersion or later unit morphs.
   std::uint16_t protocol_version = codec::kProtocolVersion;
-};
-
-struct AvatarFace {
-  std::uint32_t id = 0;
-  const codec::FaceParams* face = nullptr;
-  /// The face as the encoders see it, offered this tick (face_sources.hpp);
-  /// null: each encoder works it out from `face`.
-  const codec::FaceSource* source = nullptr;
 };
 
 class SubscriberStream {
@@ -155,7 +149,7 @@ class SubscriberStream {
   StreamSettings settings_;
   std::shared_ptr<RoomConnection> connection_;
   Metrics& metrics_;
-  std::map<std::uint32_t, codec::Encoder> encoders_;
+  std::map<std::uint32_t, ViewerEncoding> encoders_;
   struct Fairness {
     double weight = 1.0;  ///< the avatar's share of the parameter budget, relative to an equal one
     std::uint64_t frames_at_second_start = 0;
@@ -177,7 +171,6 @@ class SubscriberStream {
   bool congested_this_second_ = false;
   std::uint32_t skipped_ticks_ = 0;
   std::vector<std::uint8_t> frame_;
-  std::vector<std::vector<std::uint8_t>> frames_;
   std::vector<codec::RoomEntry> entries_;
 };
 

@@ -12,63 +12,23 @@
 #include <gtest/gtest.h>
 
 #include "metrics.hpp"
-#include "room_connection.hpp"
+#include "draining_connection.hpp"
 #include "subscriber_stream.hpp"
 
 namespace fw::server {
 namespace {
 
+using test::DrainingConnection;
+using test::moving_face_of;
+
 constexpr int kTickHz = 30;
 constexpr std::uint64_t kTickUs = 1'000'000 / kTickHz;
-
-/// Keeps every message; its socket drains a set number of bytes a tick, so
-/// that a thin one backs up and the stream holds ticks.
-class RecordingConnection : public RoomConnection {
- public:
-  explicit RecordingConnection(std::size_t drain_per_tick) : drain_per_tick_(drain_per_tick) {}
-  void deliver(SharedBytes message) override {
-    queued_ += message->size();
-    messages_.push_back(std::move(message));
-  }
-  std::size_t queued_bytes() const override { return queued_; }
-  std::uint64_t bytes_written() const override { return written_; }
-  std::size_t framing_bytes(std::size_t) const override { return 2; }
-  void close(codec::CloseCode, std::string) override {}
-  void joined(std::uint32_t, SharedBytes) override {}
-
-  void drain_a_tick() {
-    const std::size_t n = std::min(queued_, drain_per_tick_);
-    queued_ -= n;
-    written_ += n;
-  }
-  const std::vector<SharedBytes>& messages() const { return messages_; }
-
- private:
-  std::size_t drain_per_tick_;
-  std::size_t queued_ = 0;
-  std::uint64_t written_ = 0;
-  std::vector<SharedBytes> messages_;
-};
-
-/// A face that keeps moving, different for every avatar.
-codec::FaceParams face_of(std::uint32_t avatar, std::uint32_t tick) {
-  codec::FaceParams face;
-  const float t = static_cast<float>(tick) + 17.0f * static_cast<float>(avatar);
-  face.set_au(12, 0.4f + 0.3f * std::sin(t * 0.11f));
-  face.set_au(26, 0.3f + 0.3f * std::sin(t * 0.37f));
-  face.set_au(4, 0.2f + 0.2f * std::sin(t * 0.05f));
-  face.head_yaw_rad = 0.3f * std::sin(t * 0.04f);
-  face.head_pitch_rad = 0.1f * std::sin(t * 0.06f);
-  face.eye_left.yaw_rad = face.eye_right.yaw_rad = (static_cast<int>(t) / 40) % 2 == 0 ? 0.2f : -0.25f;
-  face.corrective[0] = 0.5f * std::sin(t * 0.03f);
-  return face;
-}
 
 /// Two viewers alike but for where their encoders read the faces from.
 struct Pair {
   Pair(std::uint32_t budget_bps, std::size_t drain_per_tick)
-      : with_sources(std::make_shared<RecordingConnection>(drain_per_tick)),
-        alone(std::make_shared<RecordingConnection>(drain_per_tick)),
+      : with_sources(std::make_shared<DrainingConnection>(drain_per_tick)),
+        alone(std::make_shared<DrainingConnection>(drain_per_tick)),
         shared_stream(settings(budget_bps), with_sources, metrics),
         own_stream(settings(budget_bps), alone, metrics) {}
 
@@ -91,7 +51,7 @@ struct Pair {
     ++tick_index;
     std::vector<codec::FaceParams> faces;
     faces.reserve(avatars.size());
-    for (const std::uint32_t id : avatars) faces.push_back(face_of(id, tick_index));
+    for (const std::uint32_t id : avatars) faces.push_back(moving_face_of(id, tick_index));
     std::vector<AvatarFace> plain;
     for (std::size_t i = 0; i < avatars.size(); ++i) plain.push_back({avatars[i], &faces[i]});
     std::vector<AvatarFace> sourced = plain;
@@ -109,7 +69,7 @@ struct Pair {
   }
 
   Metrics metrics;
-  std::shared_ptr<RecordingConnection> with_sources, alone;
+  std::shared_ptr<DrainingConnection> with_sources, alone;
   SubscriberStream shared_stream, own_stream;
   FaceSources sources;
   std::uint32_t tick_index = 0;
