@@ -51,6 +51,12 @@ SharedEncoder::Offer SharedEncoder::offer(std::uint32_t tick, const codec::FaceS
                                           bool& reused) {
   reused = false;
   if (broken_) return Offer::diverged;
+  if (ran_ && tick == tick_ && (&source != source_ || source.ticks() != source_ticks_)) {
+    // The same tick number from another source: the room was taken over
+    // and counts afresh. This tick's frame is not the one encoded before.
+    broken_ = true;
+    return Offer::diverged;
+  }
   if (ran_ && tick == tick_) {
     if (send != sent_) return Offer::diverged;
     reused = true;
@@ -64,6 +70,8 @@ SharedEncoder::Offer SharedEncoder::offer(std::uint32_t tick, const codec::FaceS
   }
   ran_ = true;
   tick_ = tick;
+  source_ = &source;
+  source_ticks_ = source.ticks();
   sent_ = send;
   if (send) {
     produced_ = encoder_.encode(source, frame_);

@@ -18,8 +18,10 @@
 //   frame costs its members a few predicted frames' bits.
 // - Every member offers every tick the same way (a frame or a hold): one
 //   whose link needs something else this tick leaves, with an encoder of
-//   its own starting on a key frame. A group that missed a tick (no member
-//   offered it) is broken and every member leaves: its clock would be off.
+//   its own starting on a key frame.
+// - A group offered a tick out of turn (no member offered the one before,
+//   or a room taken over counts its ticks afresh) is broken and every
+//   member leaves: its clock would be off.
 //
 // Rooms' streams are not loss-tolerant (their decoders take a key frame at
 // any point of the stream), which a viewer moving between encoders needs.
@@ -96,6 +98,8 @@ class SharedEncoder {
   double target_bps_;
   bool ran_ = false, broken_ = false, sent_ = false, produced_ = false;
   std::uint32_t tick_ = 0;
+  const codec::FaceSource* source_ = nullptr;  ///< the last offered tick's, and its count
+  std::uint64_t source_ticks_ = 0;
   bool any_join_ = false;
   std::uint32_t last_join_tick_ = 0;
   std::vector<std::uint8_t> frame_;

@@ -226,5 +226,26 @@ TEST(SharedEncoders, AGroupTakesMembersAtMostOnceASecond) {
   EXPECT_EQ(group.target_bps(), 10000);
 }
 
+TEST(SharedEncoders, AGroupOfferedATickOutOfTurnIsBroken) {
+  const SharingKey key{kRoomHz, 2, 1};
+  int a = 0, b = 0;
+  codec::FaceSource source, other;
+  source.offer(moving_face_of(1, 1));
+  other.offer(moving_face_of(1, 1));
+  bool reused = false;
+  SharedEncoder skipped(codec::Encoder(codec::EncoderOptions{}), key, &a, 10000);
+  EXPECT_EQ(skipped.offer(5, source, true, reused), SharedEncoder::Offer::frame);
+  source.offer(moving_face_of(1, 2));
+  EXPECT_EQ(skipped.offer(7, source, true, reused), SharedEncoder::Offer::diverged) << "tick 6 was missed";
+  EXPECT_FALSE(skipped.fits(key, 10000)) << "nobody joins a broken group";
+
+  SharedEncoder taken_over(codec::Encoder(codec::EncoderOptions{}), key, &b, 10000);
+  EXPECT_EQ(taken_over.offer(5, source, true, reused), SharedEncoder::Offer::frame);
+  EXPECT_EQ(taken_over.offer(5, source, true, reused), SharedEncoder::Offer::frame);
+  EXPECT_TRUE(reused);
+  EXPECT_EQ(taken_over.offer(5, other, true, reused), SharedEncoder::Offer::diverged)
+      << "the same tick number from another room's source";
+}
+
 }  // namespace
 }  // namespace fw::server
