@@ -12,6 +12,10 @@
 
 namespace fw::test {
 
+/// The rooms' tick rate in these tests, and a tick in microseconds.
+inline constexpr int kRoomTickHz = 30;
+inline constexpr std::uint64_t kRoomTickUs = 1'000'000 / kRoomTickHz;
+
 class DrainingConnection : public server::RoomConnection {
  public:
   explicit DrainingConnection(std::size_t drain_per_tick) : drain_per_tick_(drain_per_tick) {}

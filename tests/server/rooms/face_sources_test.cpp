@@ -11,18 +11,18 @@
 
 #include <gtest/gtest.h>
 
-#include "metrics.hpp"
 #include "draining_connection.hpp"
+#include "metrics.hpp"
 #include "subscriber_stream.hpp"
 
 namespace fw::server {
 namespace {
 
 using test::DrainingConnection;
+using test::kRoomTickHz;
+using test::kRoomTickUs;
 using test::moving_face_of;
 
-constexpr int kTickHz = 30;
-constexpr std::uint64_t kTickUs = 1'000'000 / kTickHz;
 
 /// Two viewers alike but for where their encoders read the faces from.
 struct Pair {
@@ -34,7 +34,7 @@ struct Pair {
 
   static StreamSettings settings(std::uint32_t budget_bps) {
     StreamSettings s;
-    s.tick_hz = kTickHz;
+    s.tick_hz = kRoomTickHz;
     s.budget_bps = budget_bps;
     s.packages = false;
     return s;
@@ -56,7 +56,7 @@ struct Pair {
     for (std::size_t i = 0; i < avatars.size(); ++i) plain.push_back({avatars[i], &faces[i]});
     std::vector<AvatarFace> sourced = plain;
     sources.offer(sourced);
-    now_us += kTickUs;
+    now_us += kRoomTickUs;
     shared_stream.tick(tick_index, now_us, sourced);
     own_stream.tick(tick_index, now_us, plain);
     with_sources->drain_a_tick();

@@ -14,19 +14,19 @@
 
 #include <gtest/gtest.h>
 
+#include "draining_connection.hpp"
 #include "face_sources.hpp"
 #include "metrics.hpp"
-#include "draining_connection.hpp"
 #include "subscriber_stream.hpp"
 
 namespace fw::server {
 namespace {
 
 using test::DrainingConnection;
+using test::kRoomTickHz;
+using test::kRoomTickUs;
 using test::moving_face_of;
 
-constexpr int kRoomHz = 30;
-constexpr std::uint64_t kRoomTickUs = 1'000'000 / kRoomHz;
 constexpr std::size_t kAmpleDrain = 1'000'000;
 
 /// One viewer: its stream, and what its client decoded of what was sent.
@@ -36,7 +36,7 @@ struct RoomViewer {
         stream(settings(budget), connection, metrics) {}
   static StreamSettings settings(std::uint32_t budget_bps) {
     StreamSettings s;
-    s.tick_hz = kRoomHz;
+    s.tick_hz = kRoomTickHz;
     s.budget_bps = budget_bps;
     s.packages = false;
     return s;
@@ -207,7 +207,7 @@ TEST(SharedEncoders, AResyncRequestGivesOnlyThatViewerAKeyFrame) {
 }
 
 TEST(SharedEncoders, AGroupTakesMembersAtMostOnceASecond) {
-  SharingKey key{kRoomHz, 2, 1};
+  SharingKey key{kRoomTickHz, 2, 1};
   codec::EncoderOptions options;
   int a = 0, b = 0, c = 0;
   SharedEncoder group(codec::Encoder(options), key, &a, 10000);
@@ -215,19 +215,19 @@ TEST(SharedEncoders, AGroupTakesMembersAtMostOnceASecond) {
   group.join(&b, 10000, 100);
   EXPECT_TRUE(group.takes_members_at(100)) << "ready the same tick: the same key frame";
   EXPECT_FALSE(group.takes_members_at(101));
-  EXPECT_TRUE(group.takes_members_at(100 + kRoomHz));
+  EXPECT_TRUE(group.takes_members_at(100 + kRoomTickHz));
   group.join(&c, 9000, 130);
   EXPECT_EQ(group.target_bps(), 9000) << "the least budget of its members";
   EXPECT_FALSE(group.fits(key, 7000)) << "would lower the others' by more than a fifth";
   EXPECT_FALSE(group.fits(key, 14000)) << "would be held far under its own";
   EXPECT_TRUE(group.fits(key, 12000));
-  EXPECT_FALSE(group.fits({kRoomHz, 2, 2}, 9000)) << "bundled otherwise";
+  EXPECT_FALSE(group.fits({kRoomTickHz, 2, 2}, 9000)) << "bundled otherwise";
   group.leave(&c);
   EXPECT_EQ(group.target_bps(), 10000);
 }
 
 TEST(SharedEncoders, AGroupOfferedATickOutOfTurnIsBroken) {
-  const SharingKey key{kRoomHz, 2, 1};
+  const SharingKey key{kRoomTickHz, 2, 1};
   int a = 0, b = 0;
   codec::FaceSource source, other;
   source.offer(moving_face_of(1, 1));
