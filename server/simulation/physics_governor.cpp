@@ -24,7 +24,7 @@ void PhysicsGovernor::observe_tick(Clock::time_point due, Clock::time_point star
   double share = share_.load(std::memory_order_relaxed);
   if (late_fraction > kLateFraction) {
     share *= back_off(room_seconds_, physics_seconds_);
-  } else if (late_ == 0) {
+  } else if (late_fraction <= kOnTimeFraction) {
     share = std::min(1.0, share + kRecovery);
   }
   share_.store(share < 0.01 ? 0.0 : share, std::memory_order_relaxed);
