@@ -6,7 +6,6 @@
 
 #include "fw/physics/face_pool.hpp"
 #include "fw/physics/face_simulation.hpp"
-#include "fw/physics/tissue_model.hpp"
 
 namespace fw::server {
 
@@ -35,13 +34,16 @@ void FaceStepper::step(std::vector<physics::FaceSimulation*> faces, double dt_s,
 }
 
 std::vector<FaceStepper::Entry> FaceStepper::take_batch() {
-  // The oldest waiting face leads; the faces of its model and step length
-  // behind it join, up to what one solve takes.
+  // The oldest waiting face leads; the faces that share its solve and its
+  // step length behind it join, up to what one solve takes. Every avatar's
+  // own face shares the generic face's factorisation (physics::solve_key):
+  // taking only the faces of one avatar's model, as before, made solves of
+  // 2 to 8 faces at 100 rooms of 10, since few wear the same face.
   std::vector<Entry> batch;
-  const physics::TissueModel* model = &waiting_.front().face->model();
+  const void* key = physics::solve_key(*waiting_.front().face);
   const double dt_s = waiting_.front().from->dt_s;
   for (auto it = waiting_.begin(); it != waiting_.end() && batch.size() < physics::max_batch_faces();) {
-    if (&it->face->model() == model && it->from->dt_s == dt_s) {
+    if (physics::solve_key(*it->face) == key && it->from->dt_s == dt_s) {
       batch.push_back(std::move(*it));
       it = waiting_.erase(it);
     } else {

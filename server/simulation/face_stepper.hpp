@@ -1,13 +1,14 @@
 #pragma once
 // The physics faces of many rooms stepped together on the worker pool.
 //
-// A projective solve costs about as much for 16 faces of one tissue model as
-// for 2 (avatar/physics face_pool.hpp: the faces' right-hand sides run lane
-// by lane through one factored matrix), but a room of 10 has only the few
+// A projective solve costs about as much for 16 faces as for 2 (avatar/physics
+// face_pool.hpp: the faces' right-hand sides run lane by lane through one
+// factored matrix, which every avatar's fitted face shares with the generic
+// face: physics::solve_key), but a room of 10 has only the few
 // faces that are awake and allowed physics in a tick. So a room's tick comes
 // in two halves (RoomSimulation::begin_tick, finish_tick) and in between the
 // room hands its faces here. The worker that hands faces over steps what
-// waits, in batches of up to physics::max_batch_faces() of one model, while
+// waits, in batches of up to physics::max_batch_faces() sharing a solve, while
 // nobody else does or while a full batch waits; the hand-overs of rooms
 // whose ticks come meanwhile (on the other workers) wait for it and join
 // the next batch, so the busier the pool, the fuller the batches. Nothing
@@ -72,8 +73,8 @@ class FaceStepper {
     physics::FaceSimulation* face;
     std::shared_ptr<HandOver> from;
   };
-  /// Takes the next batch from waiting_ (under mutex_): the first waiting
-  /// face's model and step, up to a solve's worth.
+  /// Takes the next batch from waiting_ (under mutex_): the faces that share
+  /// the first waiting face's solve and step, up to a solve's worth.
   std::vector<Entry> take_batch();
   /// Steps a batch; the hand-overs it completes.
   std::vector<std::shared_ptr<HandOver>> run_batch(const std::vector<Entry>& batch);

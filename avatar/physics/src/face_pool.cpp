@@ -132,4 +132,6 @@ void step_together(std::span<FaceSimulation* const> faces, double dt_seconds) {
 
 std::size_t max_batch_faces() { return detail::kMaxBatchFaces; }
 
+const void* solve_key(const FaceSimulation& face) { return factor_owner(face); }
+
 }  // namespace fw::physics

@@ -2,12 +2,14 @@
 // stepped together on a pool give every room the faces it gives alone.
 #include "face_stepper.hpp"
 
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <cstring>
 #include <deque>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -15,6 +17,9 @@
 
 #include <gtest/gtest.h>
 
+#include "fw/model/avatar_model.hpp"
+#include "fw/physics/avatar_tissue.hpp"
+#include "fw/physics/face_simulation.hpp"
 #include "room_simulation.hpp"
 #include "step_gate.hpp"
 
@@ -118,6 +123,46 @@ TEST(FaceStepper, RoomsSteppedTogetherOnThePoolGiveTheFacesEachGivesAlone) {
   EXPECT_EQ(stepper.faces_stepped(), handed);
   // Batches of up to 16 across the rooms: fewer solves than hand-overs.
   EXPECT_LT(stepper.batches(), hand_overs);
+}
+
+// An avatar's own tissue, fitted to a face stretched by `wide` and sheared.
+std::shared_ptr<const physics::TissueModel> fitted_tissue(float wide) {
+  std::vector<glm::vec2> xy;
+  for (const glm::vec3& p : model::generic_face().skin.positions) xy.emplace_back(wide * p.x + 0.02f * p.y, 0.95f * p.y);
+  return physics::build_avatar_tissue_model(model::make_avatar_model(model::generic_face(), xy),
+                                            physics::generic_tissue_model());
+}
+
+TEST(FaceStepper, TheFacesOfDifferentAvatarsShareASolve) {
+  // Two avatars' own faces, each its own tissue model: one solve takes both
+  // (they share the generic face's factorisation), and each ends as stepped alone.
+  const auto first = fitted_tissue(1.1f), second = fitted_tissue(0.9f);
+  ASSERT_NE(first.get(), second.get());
+  std::array<float, codec::kAuChannelCount> smile{};
+  smile[codec::au_channel(12, codec::AuSide::left)] = smile[codec::au_channel(12, codec::AuSide::right)] = 0.8f;
+  const auto made = [&](std::shared_ptr<const physics::TissueModel> tissue) {
+    physics::SimulationOptions options;
+    options.solver = physics::Solver::projective;
+    auto face = std::make_unique<physics::FaceSimulation>(std::move(tissue), options);
+    face->set_action_units(smile);
+    return face;
+  };
+  auto a = made(first), b = made(second), a_alone = made(first), b_alone = made(second);
+  FaceStepper stepper;
+  for (int t = 0; t < 10; ++t) {
+    bool done = false;
+    stepper.step({a.get(), b.get()}, 1.0 / 30, [&done] { done = true; });
+    ASSERT_TRUE(done);
+    FaceStepper::step_here({a_alone.get()}, 1.0 / 30);
+    FaceStepper::step_here({b_alone.get()}, 1.0 / 30);
+  }
+  EXPECT_EQ(stepper.batches(), 10u) << "one solve a tick for both";
+  const auto same = [](const std::vector<glm::vec3>& x, const std::vector<glm::vec3>& y) {
+    return x.size() == y.size() && std::memcmp(x.data(), y.data(), x.size() * sizeof(glm::vec3)) == 0;
+  };
+  EXPECT_TRUE(same(a->surface(), a_alone->surface()));
+  EXPECT_TRUE(same(b->surface(), b_alone->surface()));
+  EXPECT_FALSE(same(a->surface(), b->surface())) << "each on its own face";
 }
 
 TEST(FaceStepper, AHandOverOfNoFacesIsDoneAtOnce) {

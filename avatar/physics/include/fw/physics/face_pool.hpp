@@ -26,6 +26,10 @@ namespace fw::physics {
 void step_together(std::span<FaceSimulation* const> faces, double dt_seconds);
 /// The most faces one projective solve takes at once.
 std::size_t max_batch_faces();
+/// Faces with the same key can share a solve of step_together: the model
+/// whose factorisation they solve with (every avatar's fitted face shares
+/// the generic face's), not the face's own model.
+const void* solve_key(const FaceSimulation& face);
 
 class FacePool {
  public:
