@@ -188,6 +188,7 @@ TEST_P(FaceSimulationBothSolvers, EveryElementKeepsItsVolumeWithinBounds) {
 TEST_P(FaceSimulationBothSolvers, SameSeedSameResultAndTheSeedMatters) {
   SimulationOptions options = with_solver(GetParam());
   options.individual_variation = 0.1f;
+  options.course_variation = 0.1f;
   options.seed = 77;
   FaceSimulation a(generic_tissue(), options), b(generic_tissue(), options);
   options.seed = 78;
@@ -294,6 +295,7 @@ TEST(FaceSimulation, TwoPeopleUnderOneActionUnitDifferInShapeAndEachReadsAsIt) {
     options.solver = Solver::projective;
     options.seed = seed;
     options.individual_variation = kPersonVariation;
+    options.course_variation = 1.0f;  // a typical person's courses
     auto sim = std::make_unique<FaceSimulation>(generic_tissue(), options);
     sim->set_action_units(targets);
     for (int f = 0; f < 180 && !sim->at_rest(); ++f) sim->step(kFrame);
@@ -420,6 +422,7 @@ TEST(FaceSimulation, StateFitsTheMemoryBudget) {
     SimulationOptions options;
     options.seed = seed;
     options.individual_variation = kPersonVariation;
+    options.course_variation = 1.0f;
     FaceSimulation sim(generic_tissue(), options);
     EXPECT_LT(sim.state_bytes() + sim.model().memory_bytes(), 256u * 1024u) << "issue 6: at most 256 KB per face";
   }

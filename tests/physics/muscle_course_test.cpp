@@ -156,5 +156,52 @@ TEST(MuscleCourse, EveryPersonsMusclesStayOnTheirSideInTheTissue) {
   EXPECT_LT(farthest_mm, 12.0f);
 }
 
+// One person's course, the same in every solver: the same face with and
+// without its courses (strengths alike) differs, and alike in all three.
+TEST(MuscleCourse, EverySolverRunsThePersonsCourse) {
+  constexpr std::size_t kSmile = 15;  // AU 12, left
+  ASSERT_EQ(codec::kAuChannels[kSmile].au, 12);
+  std::array<float, codec::kAuChannelCount> targets{};
+  targets[kSmile] = 1.0f;
+  targets[static_cast<std::size_t>(codec::au_channel(9, codec::AuSide::both))] = 0.6f;
+  std::vector<std::vector<glm::vec3>> change;
+  for (const Solver solver : {Solver::projective, Solver::mass_spring, Solver::pbd}) {
+    std::array<std::vector<glm::vec3>, 2> surface;
+    for (int course = 0; course < 2; ++course) {
+      SimulationOptions options;
+      options.solver = solver;
+      options.seed = 5;
+      options.individual_variation = kPersonVariation;
+      options.course_variation = static_cast<float>(course);
+      FaceSimulation sim(generic_tissue(), options);
+      sim.set_action_units(targets);
+      for (int f = 0; f < 90; ++f) sim.step(1.0 / 30.0);
+      surface[static_cast<std::size_t>(course)] = sim.surface();
+    }
+    std::vector<glm::vec3> d(surface[0].size());
+    double sum = 0.0;
+    for (std::size_t v = 0; v < d.size(); ++v) {
+      d[v] = (surface[1][v] - surface[0][v]) * kMm;
+      sum += glm::dot(d[v], d[v]);
+    }
+    const double rms = std::sqrt(sum / double(d.size()));
+    std::printf("solver %d: the person's courses move the face by %.2f mm RMS\n", static_cast<int>(solver), rms);
+    EXPECT_GT(rms, 0.05) << "solver " << static_cast<int>(solver) << " ignores the person's courses";
+    change.push_back(std::move(d));
+  }
+  // The same variation: each solver's change points the projective one's way.
+  for (std::size_t k = 1; k < change.size(); ++k) {
+    double ab = 0.0, aa = 0.0, bb = 0.0;
+    for (std::size_t v = 0; v < change[0].size(); ++v) {
+      ab += glm::dot(change[0][v], change[k][v]);
+      aa += glm::dot(change[0][v], change[0][v]);
+      bb += glm::dot(change[k][v], change[k][v]);
+    }
+    const double cosine = ab / std::sqrt(aa * bb);
+    std::printf("solver %zu's change against the projective one's: cosine %.2f\n", k, cosine);
+    EXPECT_GT(cosine, 0.7);
+  }
+}
+
 }  // namespace muscle_course_test
 }  // namespace fw::physics

@@ -88,7 +88,7 @@ FaceSimulation::FaceSimulation(std::shared_ptr<const TissueModel> model, const S
 void FaceSimulation::lay_muscles() {
   const TissueModel& m = *model_;
   for (std::size_t i = 0; i < kMuscleCount; ++i) strength_[i] = m.muscles[i].strength * strength_factor_[i];
-  course_ = lay_muscle_course(m, muscle_course_shifts(options_.seed, options_.individual_variation),
+  course_ = lay_muscle_course(m, muscle_course_shifts(options_.seed, options_.course_variation),
                               options_.solver == Solver::pbd);
 }
 

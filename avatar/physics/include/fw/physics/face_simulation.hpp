@@ -42,12 +42,14 @@ class ProjectiveStepper;
 struct SimulationOptions {
   Solver solver = Solver::mass_spring;
   std::uint64_t seed = 1;
-  /// How far each face's muscles depart from the table, drawn from the seed
-  /// (muscle_variation.hpp: real faces differ): their strengths
-  /// (muscle_strength_factors) and their courses (muscle_course_shifts,
-  /// laid by muscle_course.hpp; past 1 the courses stay at 1's).
-  /// 1 a person's spread, 0 the reference face.
+  /// How far each face's muscle strengths depart from the table, drawn from
+  /// the seed (muscle_strength_factors, muscle_variation.hpp: real faces
+  /// differ): 1 a person's spread, 0 the reference face.
   float individual_variation = 0.0f;
+  /// How far each face's muscle courses depart from the table, drawn from
+  /// the seed (muscle_course_shifts, laid by muscle_course.hpp): 1 a
+  /// typical person, 0 the reference face; clamped to [0, 1].
+  float course_variation = 0.0f;
   /// Longest sub-step, seconds; a mass-spring step never exceeds the
   /// model's stable bound either. 1/120 s is the paper's four per frame.
   /// XPBD takes xpbd_substep_s instead; the projective solver steps up to
