@@ -147,6 +147,7 @@ physics::FaceSimulation& simulation_of(PhysicsFace& face, std::uint64_t seed) {
     physics::SimulationOptions o;
     o.seed = face.variation_seed ? face.variation_seed : seed;
     o.individual_variation = physics::kPersonVariation;  // a person's muscles
+    o.course_variation = physics::kPersonCourseVariation;
     o.solver = face.solver;
     face.simulation = std::make_unique<physics::FaceSimulation>(tissue_of(face), o, correctives_of(face));
   }

@@ -100,6 +100,9 @@ SolverRun run_solver(const SimBenchArgs& args, const std::string& name,
   physics::SimulationOptions options;
   options.solver = solver_named(name);
   options.individual_variation = 0.05f;
+  // Each face lays its own muscle courses (muscle_course.hpp): the bench
+  // pays for a person's face, whatever rooms set.
+  options.course_variation = 0.05f;
   std::vector<physics::FaceSimulation> faces;
   std::vector<Drive> drives;
   faces.reserve(static_cast<std::size_t>(args.faces));

@@ -154,6 +154,7 @@ TEST(AvatarTissue, FacesOfDifferentAvatarsBatchTogether) {
     SimulationOptions o = projective();
     o.seed = std::uint64_t(i);
     o.individual_variation = 1.0f;
+    o.course_variation = 1.0f;  // every face its own courses, one factorisation
     const auto& model = i % 3 == 0 ? generic : i % 3 == 1 ? wide : lean;
     batch.emplace_back(model, o);
     alone.emplace_back(model, o);
@@ -190,6 +191,7 @@ TEST(AvatarTissue, EveryBatchWidthGivesEachFaceItsOwnBits) {
       SimulationOptions o = projective();
       o.seed = i;
       o.individual_variation = 1.0f;
+      o.course_variation = 1.0f;
       const auto& model = i % 3 == 0 ? lean : i % 3 == 1 ? generic : wide;
       batch.emplace_back(model, o);
       alone.emplace_back(model, o);

@@ -17,6 +17,7 @@ std::vector<FaceSimulation> faces(std::size_t n, Solver solver) {
     options.solver = solver;
     options.seed = i;
     options.individual_variation = 0.05f;
+    options.course_variation = 0.05f;
     out.emplace_back(tissue, options);
     std::array<float, codec::kAuChannelCount> targets{};
     targets[i % codec::kAuChannelCount] = 1.0f;

@@ -56,8 +56,9 @@ CorpusRecording record_corpus(const model::GenericFace& face, const BehaviourCor
     SimulationOptions options;
     options.solver = solver;
     // Each sequence a person's face, as rooms simulate them
-    // (server/simulation): muscles of their own strengths.
+    // (server/simulation): muscles of their own strengths and courses.
     options.individual_variation = kPersonVariation;
+    options.course_variation = kPersonCourseVariation;
     options.seed = i + 1;
     FaceSimulation sim(tissue, options, correctives);
     const CorpusSequence& sequence = corpus.sequences[i];

@@ -82,7 +82,14 @@ FaceSimulation::FaceSimulation(std::shared_ptr<const TissueModel> model, const S
   load_.uniform.y = -options_.gravity;
   at_rest_ = options_.gravity == 0.0f;
   strength_factor_ = muscle_strength_factors(options_.seed, options_.individual_variation);
+  lay_muscles();
+}
+
+void FaceSimulation::lay_muscles() {
+  const TissueModel& m = *model_;
   for (std::size_t i = 0; i < kMuscleCount; ++i) strength_[i] = m.muscles[i].strength * strength_factor_[i];
+  course_ = lay_muscle_course(m, muscle_course_shifts(options_.seed, options_.course_variation),
+                              options_.solver == Solver::pbd);
 }
 
 void FaceSimulation::set_action_units(const std::array<float, codec::kAuChannelCount>& targets) {
@@ -204,8 +211,8 @@ glm::vec3 FaceSimulation::jaw_turned(const glm::vec3& p, float share) const {
 std::array<glm::vec3, kMuscleCount> FaceSimulation::muscle_origins() const {
   std::array<glm::vec3, kMuscleCount> origin;
   for (std::size_t i = 0; i < kMuscleCount; ++i) {
-    const TissueMuscle& muscle = model_->muscles[i];
-    origin[i] = muscle.origin_jaw_share > 0.0f ? jaw_turned(muscle.origin, muscle.origin_jaw_share) : muscle.origin;
+    const float share = model_->muscles[i].origin_jaw_share;
+    origin[i] = share > 0.0f ? jaw_turned(course_.origin[i], share) : course_.origin[i];
   }
   return origin;
 }
@@ -322,7 +329,7 @@ float FaceSimulation::height_above_skull(std::size_t node) const {
 std::size_t FaceSimulation::state_bytes() const {
   std::size_t bytes = sizeof(*this);
   for (const auto* v : {&x_, &y_, &z_, &vx_, &vy_, &vz_, &fx_, &fy_, &fz_}) bytes += v->capacity() * sizeof(float);
-  return bytes + skull_normal_.capacity() * sizeof(glm::vec3);
+  return bytes + skull_normal_.capacity() * sizeof(glm::vec3) + course_.memory_bytes() - sizeof(course_);
 }
 
 }  // namespace fw::physics

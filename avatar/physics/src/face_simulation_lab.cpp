@@ -50,7 +50,7 @@ void FaceSimulation::replace_model(std::shared_ptr<const TissueModel> model) {
     const glm::vec3 held = jaw_turned({m.rest_x[i], m.rest_y[i], m.rest_z[i]}, m.jaw_share[i % m.vertex_count]);
     x_[i] = held.x, y_[i] = held.y, z_[i] = held.z;
   }
-  for (std::size_t i = 0; i < kMuscleCount; ++i) strength_[i] = m.muscles[i].strength * strength_factor_[i];
+  lay_muscles();
   at_rest_ = false;  // other forces: let it find its rest
 }
 

@@ -36,7 +36,7 @@ void FaceSimulation::mass_spring_substep(float h) {
   detail::add_spring_forces(m, detail::spring_kind_table(m.material), nodes);
   detail::add_volume_forces(m, nodes);
 
-  detail::add_muscle_forces(m, {activation_, strength_, muscle_origins(), skull_normal_.data()}, nodes);
+  detail::add_muscle_forces(m, {activation_, strength_, muscle_origins(), skull_normal_.data(), course_}, nodes);
 
   // Semi-implicit Euler. Each node is damped against the bone of its own
   // column (relative speed, implicit): the tissue's viscous bond to the

@@ -137,7 +137,8 @@ void ProjectiveStepper::substep(std::span<FaceSimulation* const> faces, float h)
     // External forces at the start of the step: the head's load (and any
     // extra gravity, head_loads.hpp), then the muscles.
     fill_load_forces(face.load_, mass, nodes, x, y, z, s.sum[0].data(), s.sum[1].data(), s.sum[2].data());
-    detail::add_muscle_forces(face.model(), {face.activation_, face.strength_, face.muscle_origins(), face.skull_normal_.data()},
+    detail::add_muscle_forces(face.model(), {face.activation_, face.strength_, face.muscle_origins(), face.skull_normal_.data(),
+                               face.course_},
                               {x, y, z, vx, vy, vz, s.sum[0].data(), s.sum[1].data(), s.sum[2].data()});
     for (const std::uint16_t i : free_in_order) {
       // M s / h^2 with s = x + h v + h^2 f / m. The first guess is x + h v,

@@ -108,23 +108,24 @@ void add_muscle_forces(const TissueModel& m, const MuscleDrive& drive, const Nod
   for (std::size_t i = 0; i < kMuscleCount; ++i) {
     const float a = drive.activation[i];
     const TissueMuscle& muscle = m.muscles[i];
-    if (a < 1e-5f || muscle.first == muscle.last) continue;
+    const AttachmentSpan span = muscle_attachments(m, drive.course, i);
+    if (a < 1e-5f || span.count == 0) continue;
     const float pull = a * drive.strength[i];
     const glm::vec3 o = drive.origin[i];
     const glm::vec3 scale = muscle.kind == MuscleKind::sphincter ? muscle.pull_scale : glm::vec3(1.0f);
     const bool slides = muscle.kind == MuscleKind::linear;
-    for (std::uint32_t t = muscle.first; t < muscle.last; ++t) {
-      const std::size_t node = m.attach_node[t];
+    for (std::uint32_t t = 0; t < span.count; ++t) {
+      const std::size_t node = span.node[t];
       glm::vec3 d(o.x - n.x[node], o.y - n.y[node], o.z - n.z[node]);
       // A linear muscle's fibres run along the skull: the tissue is pulled
       // along the bone surface, not into it.
       if (slides) {
-        const glm::vec3& normal = drive.skull_normal[m.attach_column[t]];
+        const glm::vec3& normal = drive.skull_normal[span.column[t]];
         d -= glm::dot(d, normal) * normal;
       }
       const float length = glm::length(d);
       if (length < 1e-6f) continue;
-      const glm::vec3 f = (pull * m.attach_weight[t] / length) * (d * scale);
+      const glm::vec3 f = (pull * span.weight[t] / length) * (d * scale);
       n.fx[node] += f.x, n.fy[node] += f.y, n.fz[node] += f.z;
     }
   }

@@ -9,6 +9,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "fw/physics/muscle_course.hpp"
 #include "fw/physics/tissue_model.hpp"
 
 namespace fw::physics::detail {
@@ -57,14 +58,16 @@ void add_spring_forces(const TissueModel& model, const SpringKindTable& table, c
 void add_volume_forces(const TissueModel& model, const NodeArrays& nodes);
 
 /// What drives the muscles now: activation x strength, each muscle's origin
-/// where the jaw has carried it, the skull normals turned with the jaw.
+/// where the jaw has carried it, the skull normals turned with the jaw, and
+/// the face's own weight on each attachment (its course, muscle_course.hpp).
 struct MuscleDrive {
   const std::array<float, kMuscleCount>& activation;
   const std::array<float, kMuscleCount>& strength;
   const std::array<glm::vec3, kMuscleCount>& origin;
   const glm::vec3* skull_normal;  ///< #V
+  const MuscleCourse& course;     ///< the nodes each muscle pulls, and how much
 };
-/// Each attached node pulled toward its muscle's origin (linear, along the
+/// Each node the face's course attaches pulled toward its muscle's origin (linear, along the
 /// skull) or centre (sphincter) by activation x strength x profile weight.
 void add_muscle_forces(const TissueModel& model, const MuscleDrive& drive, const NodeArrays& nodes);
 

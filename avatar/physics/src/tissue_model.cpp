@@ -12,6 +12,7 @@
 
 #include "fw/model/landmark_template.hpp"
 #include "fw/model/mesh.hpp"
+#include "fw/physics/muscle_course.hpp"
 #include "fw/physics/muscle_profile.hpp"
 #include "fw/physics/prism_volume.hpp"
 #include "fw/physics/regional_thickness.hpp"
@@ -358,39 +359,15 @@ class Builder {
     return p + offset;
   }
 
-  // The front-facing column nearest to `xy` in the face plane.
-  std::uint32_t column_at(glm::vec2 xy) const {
-    std::uint32_t best = 0;
-    float best_d = std::numeric_limits<float>::max();
-    for (std::uint32_t v = 0; v < m_.vertex_count; ++v) {
-      if (m_.skull_normal[v].z < 0.3f) continue;
-      const glm::vec3& p = face_.skin.positions[v];
-      const float d = glm::length(glm::vec2(p.x, p.y) - xy);
-      // Ties go to the column farther from the midline, so that the two
-      // sides of a symmetric face pick mirrored columns.
-      const bool tie = std::abs(d - best_d) < 1e-6f;
-      if ((!tie && d < best_d) || (tie && std::abs(p.x) > std::abs(face_.skin.positions[best].x))) best_d = d, best = v;
-    }
-    return best;
-  }
-
   // A point at `xy` below the skin by `share` of the local thickness plus `extra`.
-  glm::vec3 point_below(glm::vec2 xy, float share, float extra) const {
-    const std::uint32_t v = column_at(xy);
-    const glm::vec3 surface(xy, face_.skin.positions[v].z);
-    return surface - m_.skull_normal[v] * (m_.column_thickness[v] * share + extra);
-  }
+  glm::vec3 point_below(glm::vec2 xy, float share, float extra) const { return point_below_skin(m_, xy, share, extra); }
 
   void add_muscles() {
-    // Muscles pull mostly at the fascia, less through the fat into the dermis
-    // (the mimetic muscles insert into the skin).
-    constexpr std::array<std::pair<TissueLayer, float>, 3> kAttachedLayers = {
-        {{TissueLayer::dermis, 0.3f}, {TissueLayer::fat, 0.6f}, {TissueLayer::fascia, 1.0f}}};
     // The nose's columns: every triangle around them is the nose's.
-    std::vector<int> nose(m_.vertex_count, 1);
+    m_.column_in_nose.assign(m_.vertex_count, 1);
     for (std::size_t f = 0; f < face_.skin.triangles.size(); ++f)
       if (face_.triangle_regions[f] != FaceRegion::nose)
-        for (int k = 0; k < 3; ++k) nose[face_.skin.triangles[f][k]] = 0;
+        for (int k = 0; k < 3; ++k) m_.column_in_nose[face_.skin.triangles[f][k]] = 0;
     for (std::size_t index = 0; index < kMuscleCount; ++index) {
       const MuscleDefinition& def = facial_muscle_definitions()[index / 2];
       const bool left = index % 2 == 0;
@@ -400,40 +377,31 @@ class Builder {
       muscle.strength = def.strength;
       muscle.jaw_angle_rad = def.jaw_angle_rad;
       muscle.first = muscle.last = static_cast<std::uint32_t>(m_.attach_node.size());
-      glm::vec3 insertion(0.0f);
+      MuscleAttachments attached{m_.attach_node, m_.attach_weight, m_.attach_column};
       if (def.kind == MuscleKind::sphincter) {
         muscle.origin = point_below(anchor_xy(def.centre, left), 0.0f, 0.0f);
         muscle.pull_scale = def.pull_scale;
         muscle.origin_jaw_share = 0.0f;
-      } else {
-        muscle.origin = point_below(anchor_xy(def.origin, left), 1.0f, def.origin_depth);
-        insertion = point_below(anchor_xy(def.insertion, left), kLayerDepth[3], 0.0f);
-        muscle.origin_jaw_share = def.origin_on_jaw ? 1.0f : 0.0f;
-      }
-      if (def.kind != MuscleKind::jaw) {
-        for (const auto& [layer, layer_weight] : kAttachedLayers) {
+        for (std::size_t layer = 1; layer < kMovingLayerCount; ++layer) {
           for (std::uint32_t v = 0; v < m_.vertex_count; ++v) {
-            // Columns whose fascia is held (the outline) take no muscle
-            // pull: it would only fold their skin over the fixed frame.
-            if (m_.inverse_mass[node(3, v)] == 0.0f) continue;
-            if (nose[v] && !def.moves_nose) continue;
-            const std::uint16_t i = node(static_cast<std::size_t>(layer), v);
+            if (!takes_pull(m_, def, v)) continue;
+            const std::uint16_t i = node(layer, v);
             const glm::vec3 p = rest(i);
-            float w = 0.0f;
-            if (def.kind == MuscleKind::sphincter) {
-              w = sphincter_weight(p, muscle.origin, def.semi_axes.x, def.semi_axes.y, def.ring);
-              if (p.y > muscle.origin.y) w *= def.upper_share;
-              if (def.half) w *= smoothstep((side * (p.x - muscle.origin.x) + 0.04f) / 0.08f);
-            } else {
-              w = linear_muscle_weight(p, muscle.origin, insertion, def.width, def.reach, def.onset);
-            }
-            w *= layer_weight;
-            if (w < 0.01f) continue;
-            m_.attach_node.push_back(i);
-            m_.attach_weight.push_back(w);
-            m_.attach_column.push_back(static_cast<std::uint16_t>(v));
+            float w = sphincter_weight(p, muscle.origin, def.semi_axes.x, def.semi_axes.y, def.ring);
+            if (p.y > muscle.origin.y) w *= def.upper_share;
+            if (def.half) w *= smoothstep((side * (p.x - muscle.origin.x) + 0.04f) / 0.08f);
+            w *= attached_layer_share(layer);
+            if (w < kLeastAttachment) continue;
+            attached.add(i, w, v);
           }
         }
+      } else {
+        muscle.origin_anchor = anchor_xy(def.origin, left);
+        muscle.insertion_anchor = anchor_xy(def.insertion, left);
+        const MuscleLine line = lay_muscle_line(m_, def, muscle.origin_anchor, muscle.insertion_anchor);
+        muscle.origin = line.origin;
+        muscle.origin_jaw_share = def.origin_on_jaw ? 1.0f : 0.0f;
+        if (def.kind == MuscleKind::linear) lay_linear_attachments(m_, def, line, nullptr, attached);
       }
       muscle.last = static_cast<std::uint32_t>(m_.attach_node.size());
       m_.muscles.push_back(muscle);
@@ -457,6 +425,7 @@ class Builder {
                     &m_.attach_weight})
       v->shrink_to_fit();
     m_.column_on_bone.shrink_to_fit();
+    m_.column_in_nose.shrink_to_fit();
     m_.bulge_muscle.shrink_to_fit();
     for (auto* v : {&m_.moving_bone_columns, &m_.pinned_nodes, &m_.spring_a, &m_.spring_b, &m_.attach_node, &m_.attach_column})
       v->shrink_to_fit();
@@ -576,7 +545,8 @@ std::size_t TissueModel::memory_bytes() const {
          bytes(column_thickness) + bytes(column_on_bone) + bytes(jaw_share) + bytes(bulge_depth) + bytes(bulge_muscle) + bytes(moving_bone_columns) + bytes(inverse_mass) + bytes(pinned_nodes) + bytes(spring_a) + bytes(spring_b) +
          bytes(spring_rest) + bytes(spring_kind) + 6 * bytes(element_node[0]) + bytes(element_rest_volume) +
          bytes(element_force_scale) + bytes(skin_triangles) + bytes(skin_rest_area) + bytes(muscles) +
-         bytes(attach_node) + bytes(attach_weight) + bytes(attach_column) + muscle_particles.memory_bytes() +
+         bytes(attach_node) + bytes(attach_weight) + bytes(attach_column) + bytes(column_in_nose) +
+         muscle_particles.memory_bytes() +
          basis.memory_bytes();
 }
 

@@ -37,6 +37,8 @@ struct XpbdScratch {
   std::vector<float> lambda;
   std::vector<glm::vec3> move, particle, tie_target;
   std::vector<float> tie_compliance;
+  std::vector<std::uint16_t> tie_node;  ///< each tie's node, the face's muscles in order
+  std::vector<float> tie_weight;
 };
 XpbdScratch& scratch() {
   thread_local XpbdScratch s;
@@ -50,7 +52,8 @@ constexpr float kLeastTieStiffness = 1e-12f;
 
 void FaceSimulation::pbd_substep(float h, const std::array<float, kMuscleCount>& activation) {
   const TissueModel& m = *model_;
-  const MuscleParticles& mp = m.muscle_particles;
+  // This face's muscles: its own particles where its course moved them.
+  const MuscleParticles& mp = course_.own_particles ? course_.particles : m.muscle_particles;
   const std::size_t moving = m.moving_node_count;
   float* __restrict x = x_.data();
   float* __restrict y = y_.data();
@@ -72,7 +75,14 @@ void FaceSimulation::pbd_substep(float h, const std::array<float, kMuscleCount>&
   auto move = [&](std::size_t node, const glm::vec3& d) { x[node] += d.x, y[node] += d.y, z[node] += d.z; };
 
   XpbdScratch& s = scratch();
-  const std::size_t ties = m.attach_node.size(), springs = m.spring_count(), elements = m.element_count();
+  s.tie_node.clear();
+  s.tie_weight.clear();
+  for (std::size_t i = 0; i < kMuscleCount; ++i) {
+    const AttachmentSpan span = muscle_attachments(m, course_, i);
+    s.tie_node.insert(s.tie_node.end(), span.node, span.node + span.count);
+    s.tie_weight.insert(s.tie_weight.end(), span.weight, span.weight + span.count);
+  }
+  const std::size_t ties = s.tie_node.size(), springs = m.spring_count(), elements = m.element_count();
   s.lambda.assign(ties + springs + 2 * elements, 0.0f);
   float* lambda_tie = s.lambda.data();
   float* lambda_spring = lambda_tie + ties;
@@ -86,7 +96,7 @@ void FaceSimulation::pbd_substep(float h, const std::array<float, kMuscleCount>&
   // Hill's muscle, whose force is the activation times a force-length
   // relation (Zajac 1989), here falling linearly to nothing at full
   // contraction. An inactive muscle holds nothing.
-  full_contraction(m, s.move);
+  full_contraction(m, mp, course_.origin, s.move);
   s.particle.resize(mp.particle_count());
   for (std::size_t k = 0; k < mp.particle_count(); ++k) {
     const std::size_t bone = moving + mp.column[k];
@@ -96,13 +106,13 @@ void FaceSimulation::pbd_substep(float h, const std::array<float, kMuscleCount>&
   s.tie_target.resize(ties);
   s.tie_compliance.resize(ties);
   for (std::size_t t = 0; t < ties; ++t) {
-    const std::size_t a = mp.tie_first[t], n = m.attach_node[t];
+    const std::size_t a = mp.tie_first[t], n = s.tie_node[t];
     const float share = mp.tie_share[t] * (1.0f / 255.0f);
     const glm::vec3 shift = share > 0.0f ? (1.0f - share) * s.particle[a] + share * s.particle[a + 1] : s.particle[a];
     s.tie_target[t] = glm::vec3(m.rest_x[n], m.rest_y[n], m.rest_z[n]) + shift;
-    // The face's own muscle strength (individual variation).
+    // The face's own muscle strength and course (individual variation).
     const std::size_t muscle = mp.muscle[a];
-    const float stiffness = activation[muscle] * strength_[muscle] * tie_stiffness_per_strength(m, s.move, t);
+    const float stiffness = activation[muscle] * strength_[muscle] * tie_stiffness_per_strength(mp, s.move, t, s.tie_weight[t]);
     // 0: no tie. A muscle relaxing toward 0 passes activations so small
     // that 1 / (k h^2) would overflow (and inf times a multiplier of 0 is
     // NaN): such a tie holds nothing anyway.
@@ -115,7 +125,7 @@ void FaceSimulation::pbd_substep(float h, const std::array<float, kMuscleCount>&
   for (int iteration = 0; iteration < std::max(1, options_.pbd_iterations); ++iteration) {
     // Ties: C = |x_n - target|, alpha = 1 / the tie's stiffness.
     for (std::size_t t = 0; t < ties; ++t) {
-      const std::size_t n = m.attach_node[t];
+      const std::size_t n = s.tie_node[t];
       const float w = inverse_masses[n], alpha = s.tie_compliance[t];
       if (w == 0.0f || alpha == 0.0f) continue;
       const glm::vec3 d = at(n) - s.tie_target[t];

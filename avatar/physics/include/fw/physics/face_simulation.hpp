@@ -26,6 +26,7 @@
 #include "fw/physics/corrective_projection.hpp"
 #include "fw/physics/facial_muscles.hpp"
 #include "fw/physics/head_loads.hpp"
+#include "fw/physics/muscle_course.hpp"
 #include "fw/physics/tissue_model.hpp"
 
 namespace fw::physics {
@@ -41,10 +42,14 @@ class ProjectiveStepper;
 struct SimulationOptions {
   Solver solver = Solver::mass_spring;
   std::uint64_t seed = 1;
-  /// How far each face's muscles depart from the table, drawn from the seed
-  /// (muscle_strength_factors, muscle_variation.hpp: real faces differ):
-  /// 1 a person's spread, 0 the reference face.
+  /// How far each face's muscle strengths depart from the table, drawn from
+  /// the seed (muscle_strength_factors, muscle_variation.hpp: real faces
+  /// differ): 1 a person's spread, 0 the reference face.
   float individual_variation = 0.0f;
+  /// How far each face's muscle courses depart from the table, drawn from
+  /// the seed (muscle_course_shifts, laid by muscle_course.hpp): 1 a
+  /// typical person, 0 the reference face; clamped to [0, 1].
+  float course_variation = 0.0f;
   /// Longest sub-step, seconds; a mass-spring step never exceeds the
   /// model's stable bound either. 1/120 s is the paper's four per frame.
   /// XPBD takes xpbd_substep_s instead; the projective solver steps up to
@@ -127,7 +132,7 @@ class FaceSimulation {
   /// the same node count. Every node keeps its displacement from the rest
   /// shape and its speed, so the face goes on from where it is (no jump in
   /// what measure() sees), and it wakes. The muscles keep this face's
-  /// variation, on the new model's strengths.
+  /// variation, on the new model's strengths and landmarks.
   void replace_model(std::shared_ptr<const TissueModel> model);
   /// The corrective components measure() projects on from now on (null:
   /// none), built against the AU basis of the model the face now has.
@@ -175,6 +180,8 @@ class FaceSimulation {
   /// Advances the clock; the sub-steps step(dt) takes, 0 if the face does not move.
   int begin_step(double& dt_seconds);
   void update_rest_state();
+  /// strength_ and course_ from the model and this face's seed and variation.
+  void lay_muscles();
   std::array<glm::vec3, kMuscleCount> muscle_origins() const;
   void substep(float h);
   void update_muscles_and_jaw(float h);
@@ -194,6 +201,9 @@ class FaceSimulation {
 
   std::array<float, kMuscleCount> strength_factor_{};  ///< muscle_strength_factors
   std::array<float, kMuscleCount> strength_{};
+  /// This face's muscle courses on the model (the seed's, muscle_course.hpp):
+  /// what every solver reads for the muscles' origins and attachment weights.
+  MuscleCourse course_;
   std::array<float, kMuscleCount> target_{}, activation_{};
   std::array<float, codec::kAuChannelCount> au_targets_{};
   std::array<float, kMuscleCount> floor_{};  ///< set_muscle_floor

@@ -28,13 +28,15 @@
 namespace fw::physics {
 
 struct TissueModel;
+struct MuscleCourse;
 
 struct MuscleParticles {
   // Per particle.
   std::vector<glm::vec3> rest;        ///< model units
   std::vector<std::uint16_t> column;  ///< the skin vertex whose bone it rides and along whose skull it moves
   std::vector<std::uint8_t> muscle;   ///< facial_muscles.hpp order
-  /// Per muscle attachment (TissueModel::attach_node order): the node lies
+  /// Per muscle attachment (muscle by muscle, muscle_attachments() order
+  /// within each; the model's attach_node order for its own): the node lies
   /// beside (1 - share) particle[first] + share particle[first + 1] (a
   /// sphincter's share is 0), share in 255ths, keeping its rest offset.
   std::vector<std::uint16_t> tie_first;
@@ -44,19 +46,22 @@ struct MuscleParticles {
   std::size_t memory_bytes() const;
 };
 
-/// Each particle's move at activation 1: toward the origin by
-/// kFullShortening of its distance (linear), toward the centre weighted per
-/// axis (sphincter), along the skull under it. #particles.
-void full_contraction(const TissueModel& model, std::vector<glm::vec3>& move);
+/// Each of `particles`' moves at activation 1: toward its muscle's
+/// `origin` by kFullShortening of its distance (linear), toward the centre
+/// weighted per axis (sphincter), along the skull under it. #particles.
+void full_contraction(const TissueModel& model, const MuscleParticles& particles,
+                      const std::array<glm::vec3, kMuscleCount>& origin, std::vector<glm::vec3>& move);
 
 /// Each tie's stiffness per unit of its muscle's strength (times the
 /// strength and the activation, force per model unit): it pulls with
-/// strength x attachment weight, the mass-spring solver's force, while the
-/// node has not moved. `move` is full_contraction's; #attachments.
-float tie_stiffness_per_strength(const TissueModel& model, const std::vector<glm::vec3>& move, std::size_t tie);
+/// strength x attachment `weight`, the mass-spring solver's force, while
+/// the node has not moved. `move` is full_contraction's.
+float tie_stiffness_per_strength(const MuscleParticles& particles, const std::vector<glm::vec3>& move, std::size_t tie,
+                                 float weight);
 
 /// Lays the particles and ties of every muscle of `model` (its muscles,
-/// attachments and rest shape must be built).
-MuscleParticles build_muscle_particles(const TissueModel& model);
+/// attachments and rest shape must be built), or of one face's `course`
+/// of them (muscle_course.hpp).
+MuscleParticles build_muscle_particles(const TissueModel& model, const MuscleCourse* course = nullptr);
 
 }  // namespace fw::physics

@@ -20,6 +20,7 @@
 #include <memory>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "fw/codec/face_params.hpp"
@@ -95,6 +96,9 @@ struct TissueMuscle {
   float origin_jaw_share = 0;   ///< how much of the jaw's turn the origin follows
   glm::vec3 pull_scale{1.0f};   ///< sphincters: per-axis weight of the pull toward the centre
   float jaw_angle_rad = 0;      ///< jaw angle held at activation 1
+  /// Linear and jaw muscles: the face-plane anchors the origin and the
+  /// insertion are laid under (a person's course moves them, muscle_course.hpp).
+  glm::vec2 origin_anchor{0.0f}, insertion_anchor{0.0f};
   std::uint32_t first = 0, last = 0;  ///< its attachments: [first, last)
 };
 
@@ -163,6 +167,9 @@ struct TissueModel {
   std::vector<std::uint16_t> attach_node;
   std::vector<float> attach_weight;
   std::vector<std::uint16_t> attach_column;   ///< the attached node's column (skin vertex)
+  /// #V: 1 for the nose's columns, which only the nose's own muscles pull
+  /// (MuscleDefinition::moves_nose).
+  std::vector<std::uint8_t> column_in_nose;
   /// The muscles as particles along their action lines, for the XPBD solver.
   MuscleParticles muscle_particles;
 
