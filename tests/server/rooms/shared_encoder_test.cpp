@@ -94,6 +94,7 @@ struct ViewedRoom {
     sources.offer(faces);
     for (const std::size_t v : order) viewers[v]->stream.tick(tick_index, now_us, faces);
     for (const auto& viewer : viewers) {
+      if (!viewer) continue;
       viewer->connection->drain_a_tick();
       viewer->read();
     }
@@ -103,6 +104,11 @@ struct ViewedRoom {
   }
   /// Reverses the order viewers are ticked in (a room ticks its members by id).
   void reverse_order() { std::reverse(order.begin(), order.end()); }
+  /// Viewer `v` is gone (its connection closed): its stream goes with it.
+  void drop_viewer(std::size_t v) {
+    viewers[v].reset();
+    std::erase(order, v);
+  }
 
   Metrics metrics;
   std::vector<std::uint32_t> avatars = {1, 2, 3};
@@ -172,6 +178,20 @@ TEST(SharedEncoders, AViewerWhoseLinkBacksUpGoesOnAloneAndStillDecodes) {
   EXPECT_GE(room.metrics.avatar_frames_shared.load() - shared_before,
             (room.viewers[0]->frames - frames_before) * 9 / 10);
   for (std::size_t v = 0; v < 2; ++v)
+    for (const std::uint32_t id : room.avatars) EXPECT_LT(smile_error(room, v, id), 0.08f) << "viewer " << v;
+}
+
+TEST(SharedEncoders, AViewerThatVanishesLeavesItsGroupToTheOthers) {
+  ViewedRoom room;
+  for (int v = 0; v < 3; ++v) room.add_viewer(48000);
+  room.run(60);
+  const std::uint64_t frames_before = room.viewers[2]->frames;
+  room.drop_viewer(0);  // the founder, whose encoder the group took over
+  room.run(90);
+  ASSERT_FALSE(HasFatalFailure());
+  EXPECT_GT(room.viewers[2]->frames, frames_before + 100);
+  EXPECT_EQ(room.sources.shared_encoders(), room.avatars.size()) << "the two left still share";
+  for (std::size_t v = 1; v < 3; ++v)
     for (const std::uint32_t id : room.avatars) EXPECT_LT(smile_error(room, v, id), 0.08f) << "viewer " << v;
 }
 
