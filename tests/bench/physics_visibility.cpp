@@ -35,7 +35,7 @@ nlohmann::json physics_visibility(const std::string& corpus_path) {
   const model::AvatarModel avatar = model::generic_avatar_model();
   physics::FacePool pool;
   const physics::CorpusRecording recording =
-      physics::record_corpus(avatar.face, corpus, physics::Solver::projective, &pool);
+      physics::record_corpus(avatar.face, corpus, physics::Solver::projective, &pool, physics::kHeldOutFirstSeed);
   double with = 0.0, without = 0.0;
   for (std::size_t s = 0; s + 1 < recording.sequence_start.size(); ++s) {
     KinematicTrack kinematic;

@@ -1,7 +1,8 @@
 #pragma once
 // What of the physics face a viewer could see, for `facewire-bench sim`:
 // the held-out behaviour corpus (avatar/physics/corpus/held_out.txt)
-// simulated as a room does, rebuilt as a client would.
+// simulated as a room does, on people the corrective fit never saw,
+// rebuilt as a client would.
 #include <string>
 
 #include <nlohmann/json.hpp>

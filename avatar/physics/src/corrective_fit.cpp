@@ -36,7 +36,7 @@ void au_residual(const model::GenericFace& face, const CorpusRecording& r, std::
 }  // namespace
 
 CorpusRecording record_corpus(const model::GenericFace& face, const BehaviourCorpus& corpus, Solver solver,
-                              FacePool* pool) {
+                              FacePool* pool, std::uint64_t first_seed) {
   const std::shared_ptr<const TissueModel> tissue = build_tissue_model(face, face.action_units);
   const auto correctives =
       std::make_shared<const CorrectiveBasis>(CorrectiveBasis::from_morphs(face.correctives, tissue->basis));
@@ -59,7 +59,7 @@ CorpusRecording record_corpus(const model::GenericFace& face, const BehaviourCor
     // (server/simulation): muscles of their own strengths and courses.
     options.individual_variation = kPersonVariation;
     options.course_variation = kPersonCourseVariation;
-    options.seed = i + 1;
+    options.seed = first_seed + i;
     FaceSimulation sim(tissue, options, correctives);
     const CorpusSequence& sequence = corpus.sequences[i];
     for (std::size_t f = r.sequence_start[i]; f < r.sequence_start[i + 1]; ++f) {

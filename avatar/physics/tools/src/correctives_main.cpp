@@ -64,14 +64,14 @@ int main(int argc, char** argv) {
   for (const auto& problem : problems) std::cerr << "facewire-correctives: " << problem << "\n";
   if (!problems.empty()) return 1;
 
-  const auto report = [&](const char* part, const fw::physics::BehaviourCorpus& corpus) {
+  const auto report = [&](const char* part, const fw::physics::BehaviourCorpus& corpus, std::uint64_t people) {
     const auto errors = fw::physics::corrective_errors(
-        face, fw::physics::record_corpus(face, corpus, fw::physics::Solver::projective, &pool));
+        face, fw::physics::record_corpus(face, corpus, fw::physics::Solver::projective, &pool, people));
     std::printf("%s: %zu frames, residual %.3f mm RMS without the correctives, %.3f mm with (%.3f of it)\n", part,
                 corpus.frame_count(), errors.without_mm, errors.with_mm, errors.cut());
   };
-  report("fitting", fit_corpus);
-  if (!held_out.empty()) report("held out", held_corpus);
+  report("fitting", fit_corpus, fw::physics::kFittingFirstSeed);
+  if (!held_out.empty()) report("held out (other people)", held_corpus, fw::physics::kHeldOutFirstSeed);
 
   const std::string text = fw::model::serialize_face_asset(face);
   if (!fw::model::write_file_atomically(output, text, error)) {

@@ -36,14 +36,22 @@ struct CorpusRecording {
   std::size_t frame_count() const { return measured.size(); }
 };
 
+/// The people a corpus is recorded on (their muscles' variation seeds):
+/// the fitting corpus on people kFittingFirstSeed on, held-out behaviour on
+/// people no fit has seen, kHeldOutFirstSeed on, so that what is held out
+/// is the faces as well as the behaviour (rooms hold people the fit never met).
+inline constexpr std::uint64_t kFittingFirstSeed = 1;
+inline constexpr std::uint64_t kHeldOutFirstSeed = 1001;
+
 /// Simulates every sequence of `corpus` on `face` (a fresh face each, at
-/// rest, with a person's muscle variation drawn from the sequence's index,
-/// as rooms give every face its own), one step of kCorpusFrameS a frame
-/// with the head turning as the sequence says, measured against the face's
+/// rest, with the muscle variation of person first_seed + its index, as
+/// rooms give every face its own), one step of kCorpusFrameS a frame with
+/// the head turning as the sequence says, measured against the face's
 /// action units and its corrective components (if it has any).
 /// @param[in] pool  threads to spread the sequences over (null: this thread)
 CorpusRecording record_corpus(const model::GenericFace& face, const BehaviourCorpus& corpus,
-                              Solver solver = Solver::projective, FacePool* pool = nullptr);
+                              Solver solver = Solver::projective, FacePool* pool = nullptr,
+                              std::uint64_t first_seed = kFittingFirstSeed);
 
 /// Fits at most `count` corrective components on `recording` of `face`:
 /// fewer if the residual has fewer directions that carry anything. Vertex
