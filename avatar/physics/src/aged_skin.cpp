@@ -10,7 +10,7 @@ TissueMaterial TissueMaterial::aged(float age, float looseness) {
   const TissueMaterial young = normal(), old = loose();
   const float a = std::clamp(age, 0.0f, 1.0f), l = std::clamp(looseness, 0.0f, 1.0f);
   TissueMaterial m = young;
-  // Only the skin's own curves differ between the two; the muscle layer,
+  // Only the skin layers' curves differ between the two; the muscle layer,
   // damping, volume and mass stay normal()'s, as loose() keeps them.
   for (std::size_t k = 0; k < kSpringKindCount; ++k) {
     StressStrainCurve& c = m.curves[k];

@@ -529,12 +529,18 @@ TissueMaterial TissueMaterial::normal() {
 
 TissueMaterial TissueMaterial::loose() {
   TissueMaterial m = normal();
+  // Every skin layer softer (the elastin and collagen lost with age); the
+  // epidermis and dermis also longer than the neutral face and tension only
+  // (the paper's "epidermal/dermal stress-strain curves", Fig. 2b): slack at
+  // rest, not pre-compressed. The layers under them keep their natural
+  // length and resist compression, so a face let go comes back.
   for (SpringKind kind : {SpringKind::epidermis, SpringKind::dermis, SpringKind::fat, SpringKind::column_skin,
-                          SpringKind::shear_skin, SpringKind::bending}) {
+                          SpringKind::shear_skin, SpringKind::bending})
+    m.curves[static_cast<std::size_t>(kind)].stiffness *= 0.5f;
+  for (SpringKind kind : {SpringKind::epidermis, SpringKind::dermis}) {
     StressStrainCurve& c = m.curves[static_cast<std::size_t>(kind)];
-    c.stiffness *= 0.5f;
     c.residual_strain = -0.05f;
-    c.compression_share = 0.0f;  // slack at rest, not pre-compressed
+    c.compression_share = 0.0f;
   }
   return m;
 }

@@ -75,15 +75,19 @@ struct TissueMaterial {
   float load_scale = 0;
   /// Normal adult skin (the paper's Fig. 2a).
   static TissueMaterial normal();
-  /// Looser, aged skin (Fig. 2b): softer skin layers with a negative
-  /// residual strain and tension only, so the skin hangs slack at its
-  /// neutral length instead of pushing.
+  /// Looser, aged skin (Fig. 2b, "the epidermal/dermal stress-strain
+  /// curves"): every skin layer softer, and the epidermis and dermis with a
+  /// negative residual strain and tension only, so the skin hangs slack at
+  /// its neutral length instead of pushing. The fat, the columns, the shears
+  /// and the bending unit keep their natural length and compression: made
+  /// slack too, nothing brought a released face back (2.5 mm off its rest
+  /// 2.5 s after a smile let go).
   static TissueMaterial loose();
   /// Between the two, for the face lab (aged_skin.cpp): `age` (0 .. 1)
   /// softens the skin layers' slopes from normal() to loose()'s half (the
-  /// elastin lost with age), `looseness` (0 .. 1) takes their residual
-  /// strain from 0 to loose()'s -0.05 and their compression share from 1
-  /// to 0 (skin slack at its neutral length).
+  /// elastin lost with age), `looseness` (0 .. 1) takes the epidermis' and
+  /// dermis' residual strain from 0 to loose()'s -0.05 and their compression
+  /// share from 1 to 0 (skin slack at its neutral length).
   /// aged(0, 0) is normal(), aged(1, 1) is loose(); values are clamped.
   static TissueMaterial aged(float age, float looseness);
 };
