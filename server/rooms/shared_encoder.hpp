@@ -1,12 +1,12 @@
 #pragma once
 // One encoder of a face whose frames go to several of its viewers at once.
 //
-// A room of n people held n(n-1) encoders, one per face per viewer, and an
-// encoder makes exactly the frames another one makes once both hold the
-// same state, are offered the same face and are allowed the same bits. In
-// the common room, viewers on links that keep up with alike budgets, every
-// face was encoded n-1 times over: the encoders were a fifth of a loaded
-// server's time. So such viewers of a face share one encoder (a group): the
+// A room of n people held n^2 encoders, one per face per stream (each
+// person's stream carries its own face too), and an encoder makes exactly
+// the frames another one makes once both hold the same state, are offered
+// the same face and are allowed the same bits. In the common room, viewers
+// on links that keep up with alike budgets, every face was encoded n times
+// over: the encoders were a fifth of a loaded server's time. So such viewers of a face share one encoder (a group): the
 // first of them to be ticked encodes, the rest send the same bytes.
 // ViewerEncoding decides who shares; this is the group.
 //

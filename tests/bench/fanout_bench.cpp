@@ -216,6 +216,7 @@ nlohmann::json run_once(const FanoutArgs& args, int node_count) {
   // Per node: memory, how much physics it kept at the end of the window,
   // the rooms it owns (by Redis) and the clients it serves.
   double rss_mb = 0, rss_peak_mb = 0, physics_share = 1.0, kinematic_faces = 0;
+  double frames_sent = 0, frames_shared = 0;  ///< avatar frames the nodes sent, and of them already encoded
   std::vector<int> rooms_owned(static_cast<std::size_t>(nodes), 0);
   for (int r = 0; r < args.rooms && servers->clustered(); ++r) {
     const std::string owner = servers->owner_of("bench-" + std::to_string(r));
@@ -230,6 +231,8 @@ nlohmann::json run_once(const FanoutArgs& args, int node_count) {
     const std::string metrics = test::http_get(servers->http_port(n), "/metrics").body;
     const double share = metric_value(metrics, "facewire_physics_share", 1.0);
     const double kinematic = metric_value(metrics, "facewire_kinematic_faces", 0.0);
+    frames_sent += metric_value(metrics, "facewire_avatar_frames_sent_total", 0.0);
+    frames_shared += metric_value(metrics, "facewire_avatar_frames_shared_total", 0.0);
     rss_mb += rss;
     rss_peak_mb += rss_peak;
     physics_share = std::min(physics_share, share);
@@ -278,6 +281,11 @@ nlohmann::json run_once(const FanoutArgs& args, int node_count) {
       {"solver", args.solver},
       {"physics_share_end", round2(physics_share)},
       {"kinematic_faces_end", kinematic_faces},
+      // Of the avatar frames the nodes sent since they started, the share a
+      // shared encoder had already made for another viewer (server/rooms/
+      // shared_encoder.hpp): at most (n - 1) / n in rooms of n, each face
+      // going to all n, its own person's stream included.
+      {"shared_frame_share", frames_sent > 0 ? round2(frames_shared / frames_sent) : 0.0},
       {"clients", clients},
       {"clients_joined", totals.joined.load()},
       {"clients_held", held},

@@ -25,6 +25,10 @@ TEST(BenchFanout, PrintsOneJsonObjectWithTheAgreedKeys) {
   EXPECT_EQ(json.at("nodes"), 1) << "one process, no Redis, by default";
   EXPECT_EQ(json.at("redis_cpu_pct"), 0.0);
   EXPECT_GT(json.at("cpu_us_per_avatar_frame").get<double>(), 0.0);
+  // Each face goes to the room's three streams (its own person's too) on
+  // alike links: one encoder's frames serve all three.
+  EXPECT_GT(json.at("shared_frame_share").get<double>(), 0.3);
+  EXPECT_LE(json.at("shared_frame_share").get<double>(), 2.0 / 3.0 + 0.01);
 }
 
 // --nodes 1,2: one process, then a redis-server and two cluster nodes with
