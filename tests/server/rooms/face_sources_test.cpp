@@ -23,7 +23,6 @@ using test::kRoomTickHz;
 using test::kRoomTickUs;
 using test::moving_face_of;
 
-
 /// Two viewers alike but for where their encoders read the faces from.
 struct Pair {
   Pair(std::uint32_t budget_bps, std::size_t drain_per_tick)
