@@ -5,14 +5,13 @@
 namespace fw::server {
 
 ViewerEncoding::ViewerEncoding(const codec::EncoderOptions& options)
-    : options_(options), target_bps_(options.target_bps), own_(std::in_place, options) {}
+    : options_(options), own_(std::in_place, options) {}
 
 ViewerEncoding::~ViewerEncoding() {
   if (group_) group_->leave(this);
 }
 
 void ViewerEncoding::set_target_bps(double bits_per_second) {
-  target_bps_ = bits_per_second;
   options_.target_bps = bits_per_second;
   if (own_) own_->set_target_bps(bits_per_second);
   if (group_) group_->set_target(this, bits_per_second);
@@ -48,18 +47,18 @@ void ViewerEncoding::leave(std::uint32_t tick) {
 }
 
 void ViewerEncoding::try_to_share(std::uint32_t tick, FaceEncoders& encoders, const SharingKey& key) {
-  if (auto group = encoders.find(key, target_bps_)) {
+  if (auto group = encoders.find(key, options_.target_bps)) {
     // Its next frame is a key frame for all: this tick's, unless a member
     // offered this tick already (then this viewer's own encoder makes this
     // tick's frame, and the group's key frame comes next tick).
     if (!group->takes_members_at(tick)) return;
-    group->join(this, target_bps_, tick);
+    group->join(this, options_.target_bps, tick);
     group_ = std::move(group);
     if (!group_->offered(tick)) own_.reset();
     return;
   }
   // None fits: this viewer's encoder becomes a group's, in step with its decoder.
-  group_ = encoders.found(std::move(*own_), key, this, target_bps_);
+  group_ = encoders.found(std::move(*own_), key, this, options_.target_bps);
   own_.reset();
 }
 
@@ -67,12 +66,13 @@ ViewerEncoding::Offered ViewerEncoding::offer(std::uint32_t tick, const AvatarFa
                                               std::uint32_t bundle_ticks) {
   last_tick_ = tick;
   const bool can_share = face.encoders != nullptr && face.source != nullptr;
+  const SharingKey wanted = key(bundle_ticks);
   if (group_ && own_) own_.reset();  // joined last tick: the group's key frame is next
-  if (group_ && group_->members() == 1) group_->rekey(key(bundle_ticks));
-  if (group_ && (!can_share || !(group_->key() == key(bundle_ticks)) ||
-                 target_bps_ > SharedEncoder::kMaxBudgetRatio * group_->target_bps()))
+  if (group_ && group_->members() == 1) group_->rekey(wanted);
+  if (group_ && (!can_share || !(group_->key() == wanted) ||
+                 options_.target_bps > SharedEncoder::kMaxBudgetRatio * group_->target_bps()))
     leave(tick);
-  if (!group_ && can_share && send && tick >= share_from_tick_) try_to_share(tick, *face.encoders, key(bundle_ticks));
+  if (!group_ && can_share && send && tick >= share_from_tick_) try_to_share(tick, *face.encoders, wanted);
   if (own_) return offer_own(face, send);
 
   bool reused = false;

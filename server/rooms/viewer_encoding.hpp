@@ -53,7 +53,6 @@ class ViewerEncoding {
   codec::EncoderStats stats() const;
   /// Frames this viewer was sent.
   std::uint64_t frames_sent() const { return frames_sent_; }
-  bool shared() const { return group_ != nullptr && own_ == std::nullopt; }
 
   static constexpr double kRejoinSeconds = 2.0;
 
@@ -65,8 +64,7 @@ class ViewerEncoding {
   void leave(std::uint32_t tick);
   Offered offer_own(const AvatarFace& face, bool send);
 
-  codec::EncoderOptions options_;
-  double target_bps_;
+  codec::EncoderOptions options_;  ///< target_bps: this viewer's own budget for the face
   std::optional<codec::Encoder> own_;  ///< null while in a group
   std::shared_ptr<SharedEncoder> group_;
   std::uint32_t share_from_tick_ = 0;  ///< no sharing before this tick
