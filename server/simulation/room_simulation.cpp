@@ -630,6 +630,10 @@ RoomSimulation::TickFaces RoomSimulation::begin_tick() {
       }
       apply_overrides(a.overrides, a.face, played ? &*played : nullptr, now_s < a.scripted_colour_until_s);
     }
+    // While a line is said its track owns the jaw and lips (laid over the
+    // face in finish_tick); the tissue and the kinematic track hold the
+    // rest of the face (articulation.hpp, without_articulation).
+    if (s.room.articulation(id)) a.face.au = behavior::without_articulation(a.face.au);
     a.phase = {};
     if (!s.options.physics) continue;
     const std::uint64_t seed = s.options.seed ^ id;
@@ -673,7 +677,8 @@ void RoomSimulation::finish_tick() {
     }
     // Speech moves jaw and lips at syllable rate (4-5 a second); the
     // tissue's response would smooth that to half, so the track's
-    // articulation is shown as it is (articulation.hpp).
+    // articulation is shown as it is, over a face whose tissue was not
+    // given it (begin_tick).
     if (const auto& mouth = s.room.articulation(id)) behavior::articulate(a.face.au, *mouth);
     // After the physics face, so that its tissue may rest on a held
     // expression while the expression still wavers (plateau_motion.hpp).

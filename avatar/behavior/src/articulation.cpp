@@ -8,4 +8,9 @@ void articulate(AuTargets& au, const AuTargets& mouth) {
       if (codec::kAuChannels[c].au == articulated) au[c] = mouth[c];
 }
 
+AuTargets without_articulation(AuTargets au) {
+  articulate(au, AuTargets{});
+  return au;
+}
+
 }  // namespace fw::behavior

@@ -3,6 +3,7 @@
 // corrective components).
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -75,6 +76,39 @@ TEST(RoomCorrectiveWeights, AFaceBackToPhysicsBlendsThemIn) {
   }
   EXPECT_GT(most, 0.05f) << "physics is back";
   EXPECT_LT(biggest_step, 0.6f) << "the weights come in over the blend";
+}
+
+// While a line is said the frames show its track's mouth; the tissue is not
+// given it, so its corrective weights carry no residual of a mouth of its
+// own (given the track, a neutral face's tissue followed late and at half,
+// and its weights reached 0.5 on the track's mouth).
+TEST(RoomCorrectiveWeights, ASpeakingFaceLaysNoMouthOfItsTissueOnTheTracks) {
+  RoomSimulation r = room(5);
+  const AvatarId a = r.add_avatar({"a", true});
+  r.add_avatar({"b", true});
+  ASSERT_EQ(r.command(a, ExpressCommand{"neutral", 1, 30}), "");
+  for (int i = 0; i < 60; ++i) r.tick();
+  float before = 0;
+  for (int i = 0; i < 30; ++i) {
+    r.tick();
+    before = std::max(before, largest(r.face(a)));
+  }
+  r.chat(a, "a baby bought a puppy, mom, maybe the map is in the pub");
+  float during = 0, jaw_lo = 1, jaw_hi = 0;
+  int spoken = 0;
+  for (int i = 0; i < 30 * 8 && (spoken == 0 || r.speaking(a)); ++i) {
+    r.tick();
+    if (!r.speaking(a)) continue;
+    ++spoken;
+    during = std::max(during, largest(r.face(a)));
+    jaw_lo = std::min(jaw_lo, r.face(a).au_intensity(26));
+    jaw_hi = std::max(jaw_hi, r.face(a).au_intensity(26));
+  }
+  std::printf("corrective weights: at most %.3f before the line, %.3f while it is said (%d ticks, jaw %.2f .. %.2f)\n",
+              before, during, spoken, jaw_lo, jaw_hi);
+  ASSERT_GT(spoken, 45);
+  EXPECT_GT(jaw_hi - jaw_lo, 0.2f) << "the track's jaw is shown";
+  EXPECT_LT(during, before + 0.05f);
 }
 
 TEST(RoomCorrectiveWeights, AFaceWithRedefinedUnitsCarriesNone) {

@@ -18,4 +18,13 @@ inline constexpr std::array<int, 8> kArticulationAus = {10, 17, 20, 23, 24, 25, 
 /// `au` with its articulation channels taken from `mouth`.
 void articulate(AuTargets& au, const AuTargets& mouth);
 
+/// `au` with its articulation channels at rest: what a physics face's
+/// tissue is given while a track owns the mouth. Speech moves the jaw and
+/// lips at syllable rate, which the tissue follows at about half and late
+/// (avatar/physics README, "Physics against kinematic"), so the frames show
+/// the track's mouth; a tissue that spoke too would measure a residual of
+/// its own mouth, which its corrective weights would then lay on the
+/// track's (0.17 mm RMS over the face, 1.6 mm at worst).
+AuTargets without_articulation(AuTargets au);
+
 }  // namespace fw::behavior
