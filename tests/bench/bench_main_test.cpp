@@ -95,6 +95,12 @@ TEST(BenchSim, PrintsTheModelSizeSpeedBytesAndResidualForBothSolvers) {
     EXPECT_GE(json.at("elements").get<int>(), 1000);
     EXPECT_GT(json.at("face_frames_per_s").get<double>(), 0.0);
     EXPECT_EQ(json.at("solver").get<std::string>(), solver);
+    // The lines played through the tissue: the track's own lips close at
+    // its bilabials, so the measure found them.
+    ASSERT_TRUE(json.contains("speech_bilabial_gap_mm_track")) << result.output;
+    EXPECT_GT(json.at("speech_frames").get<int>(), 200);
+    EXPECT_LT(json.at("speech_bilabial_gap_mm_track").get<double>(), 1.0);
+    EXPECT_GT(json.at("speech_vs_track_mm").get<double>(), 0.0);
   }
   const auto bad = test::run_command(test::bin("facewire-bench") + " sim --solver verlet --json");
   EXPECT_EQ(bad.status, 2) << bad.output;

@@ -18,6 +18,7 @@
 #include "fw/physics/face_simulation.hpp"
 #include "bench_failure.hpp"
 #include "physics_visibility.hpp"
+#include "speech_through_tissue.hpp"
 #include "test_paths.hpp"
 
 namespace fw::bench {
@@ -216,7 +217,10 @@ void run(const SimBenchArgs& args) {
   out["paper_face_frames_per_s"] = kPaperFaceFramesPerS;
   out["paper_bytes_per_face"] = kPaperBytesPerFace;
   // What a viewer could see of the physics, on the held-out corpus.
-  if (!args.no_visibility) out.update(physics_visibility(test::source_path("avatar/physics/corpus/held_out.txt")));
+  if (!args.no_visibility) {
+    out.update(physics_visibility(test::source_path("avatar/physics/corpus/held_out.txt")));
+    out.update(speech_through_tissue());
+  }
   if (args.json) {
     std::cout << out.dump() << "\n";
     return;
@@ -234,6 +238,10 @@ void run(const SimBenchArgs& args) {
     std::cout << "  held-out corpus: physics vs kinematic " << out["physics_vs_kinematic_mm"] << " mm RMS ("
               << out["physics_vs_kinematic_mm_without_correctives"] << " without the correctives), corrective error cut "
               << out["corrective_error_cut"] << "\n";
+  if (out.contains("speech_vs_track_mm"))
+    std::cout << "  speech through the tissue: " << out["speech_vs_track_mm"] << " mm RMS from the track's face, lips "
+              << out["speech_bilabial_gap_mm"] << " mm apart at its closures (the track's "
+              << out["speech_bilabial_gap_mm_track"] << "), jaw " << out["speech_jaw_lag_frames"] << " frames late\n";
 }
 
 }  // namespace
@@ -249,7 +257,7 @@ void add_sim_bench(CLI::App& app) {
   cmd->add_option("--seed", args->seed, "seed of the faces and their expression drive");
   cmd->add_flag("--json", args->json, "print one JSON object");
   cmd->add_flag("--no-visibility", args->no_visibility,
-                "skip physics_vs_kinematic_mm and corrective_error_cut (the held-out corpus, a few seconds)");
+                "skip physics_vs_kinematic_mm, corrective_error_cut (the held-out corpus, a few seconds) and the speech_ figures");
   cmd->callback([args] { run(*args); });
 }
 
