@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "bench_failure.hpp"
+#include "vertex_error.hpp"
 #include "fw/model/avatar_model.hpp"
 #include "fw/model/face_reconstruction.hpp"
 #include "fw/model/landmark_template.hpp"
@@ -57,7 +58,8 @@ int best_lag(const std::vector<double>& a, const std::vector<double>& b) {
 
 nlohmann::json speech_through_tissue() {
   const model::AvatarModel avatar = model::generic_avatar_model();
-  double distance = 0.0, physics_gap = 0.0, track_gap = 0.0, lag = 0.0, samples = 0.0;
+  VertexError distance(avatar);
+  double physics_gap = 0.0, track_gap = 0.0, lag = 0.0;
   std::size_t frames = 0, closures = 0;
   for (const char* line : kLines) {
     speech::PhonemeTiming timing;
@@ -76,12 +78,8 @@ nlohmann::json speech_through_tissue() {
       physical.au = m.action_units;
       physical.corrective = m.corrective;
       spoken.au = track.at(t);
+      distance.add(spoken, physical);
       const model::FaceShape p = model::reconstruct_face(avatar, physical), s = model::reconstruct_face(avatar, spoken);
-      for (std::size_t v = 0; v < p.positions.size(); ++v) {
-        const glm::vec3 d = p.positions[v] - s.positions[v];
-        distance += double(d.x * d.x + d.y * d.y + d.z * d.z);
-      }
-      samples += double(p.positions.size());
       gap_physics.push_back(lip_gap_mm(p, face.model()));
       gap_track.push_back(lip_gap_mm(s, face.model()));
       jaw_physics.push_back(physical.au_intensity(26));
@@ -100,7 +98,7 @@ nlohmann::json speech_through_tissue() {
   return {
       {"speech_frames", frames},
       {"speech_lead_ms", kLeadS * 1000.0},
-      {"speech_vs_track_mm", rounded(std::sqrt(distance / samples) * model::kMillimetresPerUnit)},
+      {"speech_vs_track_mm", rounded(distance.rms_mm())},
       {"speech_bilabial_gap_mm", closures ? rounded(physics_gap / double(closures)) : 0.0},
       {"speech_bilabial_gap_mm_track", closures ? rounded(track_gap / double(closures)) : 0.0},
       {"speech_jaw_lag_frames", rounded(lag / lines)},
