@@ -248,5 +248,35 @@ TEST(Anatomy, TheLipsMeetAndDoNotPass) {
   EXPECT_GT(gap_mm(pressed), -0.05f) << "the AU 24 morph";
 }
 
+// The lips close within a syllable: parted 7 mm (AU 25 0.4, AU 26 0.3),
+// the lip-sync track's bilabial pose (AU 24, AU 23 0.6, AU 17 0.3) brings
+// them within 1 mm of each other in 8 frames (264 ms) at one step a frame,
+// as rooms step faces. Syllables come 4-5 a second (Greenberg 1999). With
+// the marginal orbicularis oris pulling the lip's dermis and fat as weakly
+// as the other muscles do (it lies in the red of the lips:
+// muscle_course.cpp) they were still 1.8 mm apart then; now 0.5 mm.
+TEST(Anatomy, TheLipsCloseWithinASyllable) {
+  SimulationOptions options;
+  options.solver = Solver::projective;
+  FaceSimulation sim(test::generic_tissue(), options);
+  const auto gap_mm = [&] {
+    float gap = 0.0f;
+    for (const auto& pair : sim.model().lip_pairs) gap += sim.node_position(pair[0]).y - sim.node_position(pair[1]).y;
+    return gap / float(sim.model().lip_pairs.size()) * kMm;
+  };
+  codec::FaceParams open, bilabial;
+  open.set_au(25, 0.4f);
+  open.set_au(26, 0.3f);
+  bilabial.set_au(24, 1.0f);
+  bilabial.set_au(23, 0.6f);
+  bilabial.set_au(17, 0.3f);
+  sim.set_action_units(open.au);
+  for (int f = 0; f < 30; ++f) sim.step(kFrame);
+  ASSERT_GT(gap_mm(), 6.0f) << "parted";
+  sim.set_action_units(bilabial.au);
+  for (int f = 0; f < 8; ++f) sim.step(kFrame);
+  EXPECT_LT(gap_mm(), 1.0f) << "closed within 264 ms";
+}
+
 }  // namespace
 }  // namespace fw::physics::anatomy

@@ -45,8 +45,10 @@ FaceSimulation settled(Solver solver, int au, std::shared_ptr<const TissueModel>
 // under 4 % of their travel), and 0.52 mm of the 17.1 mm of AU 27's open
 // jaw, whose stretched lips are where the two volume treatments part most.
 // AU 24 presses the lips onto their contact, resolved after each of
-// mass-spring's seven sub-steps and after PD's one step: 0.046 mm of its
-// 0.53 (9 %).
+// mass-spring's seven sub-steps and after PD's one step: 0.084 mm of its
+// 0.69 (12 %). The harder the press the more the two part there: 0.046 of
+// 0.53 mm before the lips' own muscle pulled their skin as fully as its
+// fascia (muscle_course.cpp).
 TEST(ProjectiveDynamics, SettledActionUnitsHaveTheMassSpringShapes) {
   const auto& rest = model::generic_face().skin.positions;
   for (int au : codec::kActionUnits) {
@@ -60,8 +62,8 @@ TEST(ProjectiveDynamics, SettledActionUnitsHaveTheMassSpringShapes) {
     }
     const double rms_mm = std::sqrt(difference2 / double(a.size())) * kPdMm;
     const double travel_mm = std::sqrt(travel2 / double(a.size())) * kPdMm;
-    EXPECT_LT(rms_mm, moves_the_jaw(au) ? 0.8 : 0.06) << "AU " << au << " of " << travel_mm << " mm";
-    EXPECT_LT(rms_mm, (moves_the_jaw(au) ? 0.05 : au == 24 ? 0.1 : 0.08) * travel_mm) << "AU " << au;
+    EXPECT_LT(rms_mm, moves_the_jaw(au) ? 0.8 : au == 24 ? 0.1 : 0.06) << "AU " << au << " of " << travel_mm << " mm";
+    EXPECT_LT(rms_mm, (moves_the_jaw(au) ? 0.05 : au == 24 ? 0.14 : 0.08) * travel_mm) << "AU " << au;
   }
 }
 

@@ -36,6 +36,11 @@ MuscleDefinition of_the_nose(MuscleDefinition m) {
   return m;
 }
 
+MuscleDefinition in_the_lips(MuscleDefinition m) {
+  m.within_the_lips = true;
+  return m;
+}
+
 MuscleDefinition sphincter(std::string_view name, float strength, FaceAnchor centre, glm::vec2 semi_axes, float ring,
                            glm::vec3 pull_scale, float upper_share, bool half) {
   MuscleDefinition m;
@@ -107,11 +112,14 @@ std::array<MuscleDefinition, kMusclesPerSide> make_definitions() {
       linear("mentalis", 141.0f, at(0.1f, -1.4f), at(0.09f, -1.75f), 0.2f, 0.14f, 0.1f, true),
       // Half of the orbicularis oris, in its two parts: the peripheral part
       // narrows the mouth (AU 23), the marginal part in the red of the lips
-      // presses them together (AU 24).
+      // presses them together (AU 24) and pulls their skin as fully as its
+      // fascia, since no fat lies between them. (So pulled, the peripheral
+      // part pressed the lips so hard that the projective face crept on
+      // their contact for more than 10 s under AU 23.)
       sphincter("orbicularis_oris_peripheral", 67.0f, between(62, 66), {0.45f, 0.22f}, 0.75f, {1.0f, 0.5f, 0.15f},
                 1.0f, true),
-      sphincter("orbicularis_oris_marginal", 83.0f, between(62, 66), {0.38f, 0.11f}, 0.8f, {0.1f, 1.0f, 0.0f}, 1.0f,
-                true),
+      in_the_lips(sphincter("orbicularis_oris_marginal", 83.0f, between(62, 66), {0.38f, 0.11f}, 0.8f,
+                            {0.1f, 1.0f, 0.0f}, 1.0f, true)),
       // Jaw muscles: the masseter, from the zygomatic arch to the mandible's
       // angle, closes the jaw and bulges over the ramus as it contracts: by
       // ultrasound it is about 2 mm thicker clenched than relaxed (Raadsheer,

@@ -390,7 +390,7 @@ class Builder {
             float w = sphincter_weight(p, muscle.origin, def.semi_axes.x, def.semi_axes.y, def.ring);
             if (p.y > muscle.origin.y) w *= def.upper_share;
             if (def.half) w *= smoothstep((side * (p.x - muscle.origin.x) + 0.04f) / 0.08f);
-            w *= attached_layer_share(layer);
+            w *= attached_layer_share(layer, def.within_the_lips);
             if (w < kLeastAttachment) continue;
             attached.add(i, w, v);
           }

@@ -65,6 +65,11 @@ struct MuscleDefinition {
   /// orbicularis oculi, the lip elevators) end at its border and leave its
   /// columns alone.
   bool moves_nose = false;
+  /// The orbicularis oris' marginal part lies within the red of the lips,
+  /// with no fat between it and their skin, into which its fibres insert:
+  /// it pulls the lip's dermis and fat as fully as its fascia
+  /// (muscle_course.hpp, attached_layer_share).
+  bool within_the_lips = false;
 };
 
 inline constexpr std::size_t kMusclesPerSide = 21;

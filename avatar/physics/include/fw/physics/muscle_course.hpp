@@ -52,8 +52,10 @@ MuscleLine muscle_line(const TissueModel& model, std::size_t index, glm::vec2 or
 
 /// How much of a muscle's pull the nodes of `layer` take: most at the
 /// fascia, less through the fat into the dermis (the mimetic muscles insert
-/// into the skin); none in the epidermis and the bone.
-float attached_layer_share(std::size_t layer);
+/// into the skin); none in the epidermis and the bone. A muscle within the
+/// red of the lips (MuscleDefinition::within_the_lips) pulls the dermis,
+/// fat and fascia alike.
+float attached_layer_share(std::size_t layer, bool within_the_lips = false);
 
 /// Linear muscle `definition`'s pull weight on `node` along `line`: the
 /// profile of muscle_profile.hpp times the node's layer share (no cut-off).
