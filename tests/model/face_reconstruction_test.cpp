@@ -137,6 +137,11 @@ TEST_P(ReconstructionTest, IntensitiesAreClamped) {
 INSTANTIATE_TEST_SUITE_P(GenericAndFitted, ReconstructionTest, ::testing::Values(false, true),
                          [](const ::testing::TestParamInfo<bool>& param_info) { return param_info.param ? std::string("fitted") : std::string("generic"); });
 
+// Mirror images to within what the asset keeps: the AU synthesis writes a
+// displacement under 1e-3 model units (0.06 mm) as zero, and a unit's far
+// edge may fall either side of that on its two sides (AU 1 at an inner lip
+// corner: 0.00099 on one side, 0 on the other). AU 12's corners mirror
+// each other to 1e-5.
 TEST(Reconstruction, PairedUnitsAreMirrorSymmetricOnTheGenericFace) {
   const AvatarModel avatar = generic_avatar_model();
   codec::FaceParams params;
@@ -146,8 +151,8 @@ TEST(Reconstruction, PairedUnitsAreMirrorSymmetricOnTheGenericFace) {
   for (int i = 0; i < kLandmarkCount; ++i) {
     const std::uint32_t v = avatar.face.landmark_vertices[static_cast<std::size_t>(i)];
     const std::uint32_t m = avatar.face.landmark_vertices[static_cast<std::size_t>(mirrored_landmark(i))];
-    EXPECT_NEAR(s.positions[v].x, -s.positions[m].x, 1e-4f) << i;
-    EXPECT_NEAR(s.positions[v].y, s.positions[m].y, 1e-4f) << i;
+    EXPECT_NEAR(s.positions[v].x, -s.positions[m].x, 1.1e-3f) << i;
+    EXPECT_NEAR(s.positions[v].y, s.positions[m].y, 1.1e-3f) << i;
   }
 }
 

@@ -254,7 +254,8 @@ TEST(Anatomy, TheLipsMeetAndDoNotPass) {
 // as rooms step faces. Syllables come 4-5 a second (Greenberg 1999). With
 // the marginal orbicularis oris pulling the lip's dermis and fat as weakly
 // as the other muscles do (it lies in the red of the lips:
-// muscle_course.cpp) they were still 1.8 mm apart then; now 0.5 mm.
+// muscle_course.cpp) they were still 1.8 mm apart then; now 0.3 mm (0.5
+// before the projective solver's bond to the bone).
 TEST(Anatomy, TheLipsCloseWithinASyllable) {
   SimulationOptions options;
   options.solver = Solver::projective;

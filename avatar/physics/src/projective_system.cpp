@@ -16,14 +16,18 @@ namespace {
 // Stiffness-proportional (Rayleigh) damping, D = beta K (Baraff & Witkin
 // 1998, "Large Steps in Cloth Simulation", likewise damp each condition
 // along its own stiffness): the units resist their stretching speed, not
-// the world. The stiff, fast modes stop at once
-// (zeta = beta omega / 2 is 2 at omega = 500/s); the slowest, near 5 Hz
-// (omega ~ 31/s, zeta 0.12), are damped further by implicit Euler itself
-// (at 30 Hz a step of h = 1/omega). 8 ms is the largest beta that keeps
-// AU 12's step response half-way within 300 ms and settled to 2 % by 1 s
-// at 200 Hz steps (face_simulation_test.cpp), where implicit Euler damps
-// little; 15 ms and more make it creep.
-constexpr float kDampingS = 0.008f;
+// the world, as the mass-spring solver's dampers do (their c / k is 0.7 to
+// 3.3 ms in the skin and muscle layers, 10 in the fat). The slow modes
+// near 5 Hz are damped by each node's bond to its bone, the material's
+// bone_damping, as in the other solvers, and by implicit Euler itself.
+// Over the held-out corpus at 5 ms the face is 0.175 mm RMS from the
+// mass-spring solver's, as near as with 8 ms and no bond (0.176), and
+// the corrective basis cuts the residual to 0.488 of it. Less beta comes
+// nearer (4 ms 0.166, 2 ms 0.156) but the basis then cuts less than half
+// (0.499, 0.54: a less damped face leaves more of its ringing outside a
+// few components); with the bond, 8 ms makes AU 12 creep (96 % of its
+// travel after 1 s, face_simulation_test.cpp) and is 0.203 mm away.
+constexpr float kDampingS = 0.005f;
 
 // Each width is built for AVX2 and for any x86-64 (hot_clones.hpp), without
 // fused multiply-adds (CMakeLists.txt), so every width gives a lane the
@@ -170,9 +174,10 @@ ProjectiveFactor::ProjectiveFactor(const TissueModel& m, const ProjectiveSystem&
 
   // S over the free nodes, in node order.
   const double h = step_s, scale = 1.0 + double(damping_s) / h;
+  // M / h^2, and the bond to the bone c M / h (implicit: ProjectiveStepper).
+  const double mass = m.material.node_mass, bond = double(m.material.bone_damping) * mass / h;
   std::vector<Eigen::Triplet<double>> entries;
-  for (std::size_t i = 0; i < n; ++i)
-    entries.emplace_back(int(i), int(i), double(m.material.node_mass) / (h * h));
+  for (std::size_t i = 0; i < n; ++i) entries.emplace_back(int(i), int(i), mass / (h * h) + bond);
   for (std::size_t s = 0; s < c.spring_a.size(); ++s) {
     const int a = index[c.spring_a[s]], b = index[c.spring_b[s]];
     const double w = scale * c.spring_weight[s];
