@@ -8,7 +8,8 @@
 // Muscles and gravity are external forces; the skull is a projection after
 // the step; the bone layer and the held outline are prescribed positions.
 // No mass scaling, no speed limit, no drag of the world: the step is stable
-// at any length, and the damping is Rayleigh's (projective_system.cpp).
+// at any length. The damping is Rayleigh's (projective_system.cpp) and
+// each node's bond to its bone, the material's bone_damping.
 #include <cstddef>
 #include <span>
 

@@ -4,10 +4,11 @@
 // Simulation", SIGGRAPH, eq. 10-11) for one tissue model and one step
 // length h: the constraints with their weights, and the matrix
 //
-//   S = M / h^2 + (1 + beta / h) sum_i w_i A_i^T A_i
+//   S = M / h^2 + c M / h + (1 + beta / h) sum_i w_i A_i^T A_i
 //
 // over the moving nodes that are not held (the bone layer and the held
-// outline are prescribed positions, moved to the right-hand side), factored
+// outline are prescribed positions, moved to the right-hand side), with c
+// each node's bond to its bone (TissueMaterial::bone_damping), factored
 // once as P^T L D L^T P. The same matrix serves x, y and z and every face of
 // the model, so a solve takes many right-hand sides at once: rows of up to
 // 48 floats, the three coordinates of up to 16 faces side by side, so that
@@ -33,7 +34,8 @@ inline constexpr std::size_t kMaxBatchFaces = 16;
 
 class ProjectiveSystem;
 
-/// S = M / h^2 + (1 + beta / h) sum w A^T A over the free nodes, factored.
+/// S = M / h^2 + c M / h + (1 + beta / h) sum w A^T A over the free nodes,
+/// factored.
 class ProjectiveFactor {
  public:
   /// Factors the matrix of `constraints` (their nodes and weights) over the
