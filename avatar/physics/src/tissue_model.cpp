@@ -507,17 +507,16 @@ TissueMaterial TissueMaterial::normal() {
   // 0.88 of it), as the lid and chin columns cannot shear without giving
   // volume. The bulk curve (bulk_curve.hpp) stiffens a prism only past a
   // knee: at 1.5 times past 4 % the worst prism under a single unit is
-  // 49 % instead of 56 %, at twice 44 %, three times 36 %. It stays off
-  // (a ratio of 1). Before the projective solver had its bond to the bone,
+  // 49 % instead of 56 %, at twice 44 %, three times 36 %. It is on at
+  // 1.5. Before the projective solver had its bond to the bone it was off:
   // the face then rested on a held joy for 37 of 180 room ticks instead of
   // 70-77 (tissue awake is the rooms' cost), and the corrective basis cut
-  // the held-out error only to 0.498 (twice: 0.5005) instead of 0.492 of
-  // it, against its bound of a half. With the bond: 81 of 180 ticks at
-  // 1.5, 157 at 2, 132 linear; cuts 0.494, 0.498, 0.488. Both objections
-  // have narrowed; turning it on is still to decide (README, "The volume
-  // requirement").
+  // the held-out error only to 0.498 instead of 0.492, against its bound
+  // of a half. With the bond, at 1.5, a held joy rests 81 of 180 ticks
+  // (132 linear) and the basis cuts to 0.494 (0.488 linear); at 2 the cut
+  // is 0.498, at the bound (README, "The volume requirement").
   m.volume_knee = 0.04f;
-  m.volume_stiff_ratio = 1.0f;
+  m.volume_stiff_ratio = 1.5f;
   // Damps the 5 Hz modes at about half of critical (30 / (2 x 2 pi 5)), so
   // an expression settles without ringing; on relative speeds, so it takes
   // nothing from tissue that moves with its bone.

@@ -84,10 +84,11 @@ TEST(RoomSimulationSolver, ProjectiveDynamicsSmilesAsMassSpringDoes) {
 
 // A held smile: the physics face comes to rest on it and costs nothing,
 // yet the smile on the face still wavers (never frozen on its plateau). It
-// rests for 132 of the 180 ticks since the projective solver's bond to the
-// bone, 70 before (103 on a uniform 12 mm of tissue: with the face's
-// regional depths, the thin lid and forehead columns, the projective face
-// took 0.6 s longer to settle on joy).
+// rests for 81 of the 180 ticks with the bulk curve on (132 linear; 70
+// before the projective solver's bond to the bone, and 103 on a uniform
+// 12 mm of tissue: with the face's regional depths, the thin lid and
+// forehead columns, the projective face took 0.6 s longer to settle on
+// joy).
 TEST(RoomSimulationPlateau, AHeldExpressionLivesWhileTheTissueRests) {
   RoomSimulation room = room_with_physics();
   const AvatarId a = room.add_avatar({"a", true});
