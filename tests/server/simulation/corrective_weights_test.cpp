@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "fw/model/generic_face.hpp"
+#include "neutral_speaker.hpp"
 #include "room_simulation.hpp"
 #include "test_paths.hpp"
 
@@ -84,26 +85,17 @@ TEST(RoomCorrectiveWeights, AFaceBackToPhysicsBlendsThemIn) {
 // and its weights reached 0.5 on the track's mouth).
 TEST(RoomCorrectiveWeights, ASpeakingFaceLaysNoMouthOfItsTissueOnTheTracks) {
   RoomSimulation r = room(5);
-  const AvatarId a = r.add_avatar({"a", true});
-  r.add_avatar({"b", true});
-  ASSERT_EQ(r.command(a, ExpressCommand{"neutral", 1, 30}), "");
-  for (int i = 0; i < 60; ++i) r.tick();
-  float before = 0;
-  for (int i = 0; i < 30; ++i) {
-    r.tick();
-    before = std::max(before, largest(r.face(a)));
+  const test::NeutralSpeaker line =
+      test::neutral_speaker_says(r, "a baby bought a puppy, mom, maybe the map is in the pub");
+  ASSERT_EQ(line.refused, "");
+  float before = 0, during = 0, jaw_lo = 1, jaw_hi = 0;
+  for (const codec::FaceParams& face : line.before) before = std::max(before, largest(face));
+  for (const codec::FaceParams& face : line.during) {
+    during = std::max(during, largest(face));
+    jaw_lo = std::min(jaw_lo, face.au_intensity(26));
+    jaw_hi = std::max(jaw_hi, face.au_intensity(26));
   }
-  r.chat(a, "a baby bought a puppy, mom, maybe the map is in the pub");
-  float during = 0, jaw_lo = 1, jaw_hi = 0;
-  int spoken = 0;
-  for (int i = 0; i < 30 * 8 && (spoken == 0 || r.speaking(a)); ++i) {
-    r.tick();
-    if (!r.speaking(a)) continue;
-    ++spoken;
-    during = std::max(during, largest(r.face(a)));
-    jaw_lo = std::min(jaw_lo, r.face(a).au_intensity(26));
-    jaw_hi = std::max(jaw_hi, r.face(a).au_intensity(26));
-  }
+  const int spoken = static_cast<int>(line.during.size());
   std::printf("corrective weights: at most %.3f before the line, %.3f while it is said (%d ticks, jaw %.2f .. %.2f)\n",
               before, during, spoken, jaw_lo, jaw_hi);
   ASSERT_GT(spoken, 45);

@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include "neutral_speaker.hpp"
+
 namespace fw::server {
 namespace {
 
@@ -115,23 +117,15 @@ float mouth_open(const codec::FaceParams& face) { return face.au_intensity(25) +
 // second while it speaks, and is still before and after.
 TEST(RoomSimulationSpeech, AChatLineIsSpokenWithTheMouth) {
   RoomSimulation room = room_with_physics();
-  const AvatarId a = room.add_avatar({"a", true});
-  room.add_avatar({"b", true});
-  // Its person holds a neutral face, so that no smile of its own parts the
-  // lips: what moves the mouth below is the line alone.
-  ASSERT_EQ(room.command(a, ExpressCommand{"neutral", 1, 30}), "");
-  for (int i = 0; i < 60; ++i) room.tick();
+  // What moves the mouth below is the line alone.
+  const test::NeutralSpeaker spoken =
+      test::neutral_speaker_says(room, "hello there, it is a lovely morning for a walk by the river");
+  ASSERT_EQ(spoken.refused, "");
+  const AvatarId a = spoken.id;
   float before = 0;
-  for (int i = 0; i < 30; ++i) {
-    room.tick();
-    before = std::max(before, mouth_open(room.face(a)));
-  }
-  room.chat(a, "hello there, it is a lovely morning for a walk by the river");
+  for (const codec::FaceParams& face : spoken.before) before = std::max(before, mouth_open(face));
   std::vector<float> opening;
-  for (int i = 0; i < 30 * 8 && (opening.empty() || room.speaking(a)); ++i) {
-    room.tick();
-    if (room.speaking(a)) opening.push_back(mouth_open(room.face(a)));
-  }
+  for (const codec::FaceParams& face : spoken.during) opening.push_back(mouth_open(face));
   ASSERT_GT(opening.size(), 60u) << "the line was not said for long";
   // Open-close cycles: each opening that rises at least 0.1 above the
   // closing before it and falls 0.1 after (a syllable seen at 30 Hz).
