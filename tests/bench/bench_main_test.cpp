@@ -101,6 +101,13 @@ TEST(BenchSim, PrintsTheModelSizeSpeedBytesAndResidualForBothSolvers) {
     EXPECT_GT(json.at("speech_frames").get<int>(), 200);
     EXPECT_LT(json.at("speech_bilabial_gap_mm_track").get<double>(), 1.0);
     EXPECT_GT(json.at("speech_vs_track_mm").get<double>(), 0.0);
+    // Both solvers' skins over the held-out corpus: they simulate one
+    // tissue, so they lie nearer each other than either does to the
+    // kinematic face.
+    ASSERT_TRUE(json.contains("reference_skin_vs_kinematic_mm")) << result.output;
+    EXPECT_GT(json.at("reference_skin_vs_kinematic_mm").get<double>(), 0.0);
+    EXPECT_LT(json.at("projective_vs_reference_mm").get<double>(), json.at("reference_skin_vs_kinematic_mm").get<double>());
+    EXPECT_LT(json.at("projective_vs_reference_mm").get<double>(), json.at("simulated_skin_vs_kinematic_mm").get<double>());
   }
   const auto bad = test::run_command(test::bin("facewire-bench") + " sim --solver verlet --json");
   EXPECT_EQ(bad.status, 2) << bad.output;

@@ -237,7 +237,9 @@ void run(const SimBenchArgs& args) {
   if (out.contains("physics_vs_kinematic_mm"))
     std::cout << "  held-out corpus: physics vs kinematic " << out["physics_vs_kinematic_mm"] << " mm RMS ("
               << out["physics_vs_kinematic_mm_without_correctives"] << " without the correctives), corrective error cut "
-              << out["corrective_error_cut"] << "\n";
+              << out["corrective_error_cut"] << "; the simulated skin " << out["simulated_skin_vs_kinematic_mm"]
+              << " mm from the kinematic face (mass-spring's " << out["reference_skin_vs_kinematic_mm"] << "), "
+              << out["projective_vs_reference_mm"] << " mm from mass-spring's\n";
   if (out.contains("speech_vs_track_mm"))
     std::cout << "  speech through the tissue: " << out["speech_vs_track_mm"] << " mm RMS from the track's face, lips "
               << out["speech_bilabial_gap_mm"] << " mm apart at its closures (the track's "

@@ -20,16 +20,15 @@ namespace {
 // 3.3 ms in the skin and muscle layers, 10 in the fat). The slow modes
 // near 5 Hz are damped by each node's bond to its bone, the material's
 // bone_damping, as in the other solvers, and by implicit Euler itself.
-// Over the held-out corpus at 5 ms the face is 0.175 mm RMS from the
-// mass-spring solver's, as near as with 8 ms and no bond (0.176), and
-// the corrective basis cuts the residual to 0.488 of it. Less beta comes
-// nearer (4 ms 0.166, 2 ms 0.156) but the basis then cuts less than half
-// (0.499, 0.54: a less damped face leaves more of its ringing outside a
-// few components); with the bond, 8 ms makes AU 12 creep (96 % of its
-// travel after 1 s, face_simulation_test.cpp) and is 0.203 mm away.
-// (Measured with the linear bulk term; with the bulk curve on, 5 ms is
-// 0.172 mm from mass-spring and cuts to 0.494.)
-constexpr float kDampingS = 0.005f;
+// K here is the weights' L, which resists a unit's turning as much as its
+// stretching, so beta damps more than the mass-spring dampers do. Over the
+// held-out corpus, against the mass-spring face (two 17 ms steps a frame,
+// ProjectiveStepper::kLongestStepS): beta 2 ms is 0.089 mm RMS from it and
+// the corrective basis cuts the residual to 0.452; 0 comes nearer (0.076)
+// but the basis then cuts only to 0.522 (a less damped face leaves more of
+// its ringing outside a few components); 5 ms is 0.140 away. (At one 33 ms
+// step a frame 5 ms was 0.172 away, README "Accuracy".)
+constexpr float kDampingS = 0.002f;
 
 // Each width is built for AVX2 and for any x86-64 (hot_clones.hpp), without
 // fused multiply-adds (CMakeLists.txt), so every width gives a lane the

@@ -53,7 +53,7 @@ struct SimulationOptions {
   /// Longest sub-step, seconds; a mass-spring step never exceeds the
   /// model's stable bound either. 1/120 s is the paper's four per frame.
   /// XPBD takes xpbd_substep_s instead; the projective solver steps up to
-  /// 35 ms whatever this says.
+  /// 17.5 ms whatever this says (ProjectiveStepper::kLongestStepS).
   double max_substep_s = 1.0 / 120.0;
   /// Muscle excitation-contraction lag: first-order time constants, seconds
   /// (Winters 1995; Thelen 2003, "Adjustment of muscle mechanics model
