@@ -32,8 +32,8 @@ class ProjectiveStepper {
   /// the longer the step is. At one 33 ms step a frame the face was 0.172 mm
   /// RMS from the mass-spring reference over the held-out corpus, and AU 12
   /// took 245 ms to half its travel (mass-spring 125). Two steps of 17 ms
-  /// are 0.089 mm from it and take 190 ms (README "Accuracy"); 17.5 ms
-  /// keeps a late 30 Hz frame (35 ms) at two steps.
+  /// are 0.089 mm from it and take 190 ms (README, "The projective
+  /// solver"); 17.5 ms keeps a late 30 Hz frame (35 ms) at two steps.
   static constexpr double kLongestStepS = 0.0175;
   /// The step the factorisations' grid of step lengths passes through: a
   /// 30 Hz frame's half.
@@ -41,8 +41,9 @@ class ProjectiveStepper {
   /// Local/global alternations per sub-step. One: each step starts from
   /// where the face is going (x + h v), so a face held by its muscles ends
   /// at the exact equilibrium however few there are, and a moving face lags
-  /// it by a little (README "Accuracy"). Two cost 1.6 times as much and
-  /// come less near the reference than two steps of half the length.
+  /// it by a little (README, "The projective solver"). Two cost 1.6 times
+  /// as much and come less near the reference than two steps of half the
+  /// length.
   static constexpr int kIterations = 1;
 
   /// Steps `faces` by `dt_seconds` as FaceSimulation::step does, those of one

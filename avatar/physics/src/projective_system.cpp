@@ -24,10 +24,10 @@ namespace {
 // stretching, so beta damps more than the mass-spring dampers do. Over the
 // held-out corpus, against the mass-spring face (two 17 ms steps a frame,
 // ProjectiveStepper::kLongestStepS): beta 2 ms is 0.089 mm RMS from it and
-// the corrective basis cuts the residual to 0.452; 0 comes nearer (0.076)
+// the corrective basis cuts the residual to 0.453; 0 comes nearer (0.076)
 // but the basis then cuts only to 0.522 (a less damped face leaves more of
 // its ringing outside a few components); 5 ms is 0.140 away. (At one 33 ms
-// step a frame 5 ms was 0.172 away, README "Accuracy".)
+// step a frame 5 ms was 0.172 away: README, "The projective solver".)
 constexpr float kDampingS = 0.002f;
 
 // Each width is built for AVX2 and for any x86-64 (hot_clones.hpp), without
