@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 
 #include "bench_failure.hpp"
+#include "bench_rounding.hpp"
 #include "kinematic_track.hpp"
 #include "fw/model/avatar_model.hpp"
 #include "fw/model/face_reconstruction.hpp"
@@ -14,8 +15,6 @@
 
 namespace fw::bench {
 namespace {
-
-double rounded(double v) { return std::round(v * 1000.0) / 1000.0; }
 
 double squared_distance(const model::FaceShape& a, const model::FaceShape& b) {
   double sum = 0.0;
@@ -48,7 +47,7 @@ nlohmann::json physics_visibility(const std::string& corpus_path) {
       physics::record_corpus(avatar.face, corpus, physics::Solver::projective, &pool, physics::kHeldOutFirstSeed);
   // The mass-spring solver at its stable step is the reference the
   // projective one trades accuracy against for speed (physics README,
-  // "Accuracy").
+  // "The projective solver").
   const physics::CorpusRecording reference =
       physics::record_corpus(avatar.face, corpus, physics::Solver::mass_spring, &pool, physics::kHeldOutFirstSeed);
   // The simulated skin itself against the kinematic face: what a perfect

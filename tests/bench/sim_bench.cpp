@@ -17,6 +17,7 @@
 #include "fw/physics/face_pool.hpp"
 #include "fw/physics/face_simulation.hpp"
 #include "bench_failure.hpp"
+#include "bench_rounding.hpp"
 #include "physics_visibility.hpp"
 #include "speech_through_tissue.hpp"
 #include "test_paths.hpp"
@@ -154,8 +155,6 @@ SolverRun run_solver(const SimBenchArgs& args, const std::string& name,
   return run;
 }
 
-double rounded(double v, double unit) { return std::round(v / unit) * unit; }
-
 void run(const SimBenchArgs& args) {
   if (args.faces < 1 || args.faces > 100000) fail_bench("sim", "--faces must be in 1..100000");
   if (!(args.seconds > 0.0) || args.seconds > 3600.0) fail_bench("sim", "--seconds must be in (0, 3600]");
@@ -234,16 +233,18 @@ void run(const SimBenchArgs& args) {
               << " us of a core, " << r.substeps_per_frame
               << " sub-steps per frame), residual " << rounded(r.residual_mean, 0.001) << " mm RMS (max "
               << rounded(r.residual_worst, 0.001) << ")\n";
+  // A figure as a person reads it: json prints a double's every digit.
+  const auto figure = [&](const char* key) { return out[key].get<double>(); };
   if (out.contains("physics_vs_kinematic_mm"))
-    std::cout << "  held-out corpus: physics vs kinematic " << out["physics_vs_kinematic_mm"] << " mm RMS ("
-              << out["physics_vs_kinematic_mm_without_correctives"] << " without the correctives), corrective error cut "
-              << out["corrective_error_cut"] << "; the simulated skin " << out["simulated_skin_vs_kinematic_mm"]
-              << " mm from the kinematic face (mass-spring's " << out["reference_skin_vs_kinematic_mm"] << "), "
-              << out["projective_vs_reference_mm"] << " mm from mass-spring's\n";
+    std::cout << "  held-out corpus: physics vs kinematic " << figure("physics_vs_kinematic_mm") << " mm RMS ("
+              << figure("physics_vs_kinematic_mm_without_correctives") << " without the correctives), corrective error cut "
+              << figure("corrective_error_cut") << "; the simulated skin " << figure("simulated_skin_vs_kinematic_mm")
+              << " mm from the kinematic face (mass-spring's " << figure("reference_skin_vs_kinematic_mm") << "), "
+              << figure("projective_vs_reference_mm") << " mm from mass-spring's\n";
   if (out.contains("speech_vs_track_mm"))
-    std::cout << "  speech through the tissue: " << out["speech_vs_track_mm"] << " mm RMS from the track's face, lips "
-              << out["speech_bilabial_gap_mm"] << " mm apart at its closures (the track's "
-              << out["speech_bilabial_gap_mm_track"] << "), jaw " << out["speech_jaw_lag_frames"] << " frames late\n";
+    std::cout << "  speech through the tissue: " << figure("speech_vs_track_mm") << " mm RMS from the track's face, lips "
+              << figure("speech_bilabial_gap_mm") << " mm apart at its closures (the track's "
+              << figure("speech_bilabial_gap_mm_track") << "), jaw " << figure("speech_jaw_lag_frames") << " frames late\n";
 }
 
 }  // namespace

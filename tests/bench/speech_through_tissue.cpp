@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "bench_failure.hpp"
+#include "bench_rounding.hpp"
 #include "vertex_error.hpp"
 #include "fw/model/avatar_model.hpp"
 #include "fw/model/face_reconstruction.hpp"
@@ -28,8 +29,6 @@ const char* const kLines[] = {"a baby bought a puppy, mom", "hello everyone, nic
                               "maybe the map is in the pub", "i miss them so much, but it will be fine"};
 // A closure of the track's lips: a local minimum of their opening under this.
 constexpr double kClosedMm = 1.5;
-
-double rounded(double v) { return std::round(v * 1000.0) / 1000.0; }
 
 // The lips' opening (mm): the upper inner edge over the lower, over the
 // lips' contact pairs (skin vertices).

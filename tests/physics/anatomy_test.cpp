@@ -250,12 +250,12 @@ TEST(Anatomy, TheLipsMeetAndDoNotPass) {
 
 // The lips close within a syllable: parted 7 mm (AU 25 0.4, AU 26 0.3),
 // the lip-sync track's bilabial pose (AU 24, AU 23 0.6, AU 17 0.3) brings
-// them within 1 mm of each other in 8 frames (264 ms) at one step a frame,
-// as rooms step faces. Syllables come 4-5 a second (Greenberg 1999). With
-// the marginal orbicularis oris pulling the lip's dermis and fat as weakly
-// as the other muscles do (it lies in the red of the lips:
-// muscle_course.cpp) they were still 1.8 mm apart then; now 0.3 mm (0.5
-// before the projective solver's bond to the bone).
+// them within 1 mm of each other in 8 frames (264 ms), stepped as rooms
+// step faces. Syllables come 4-5 a second (Greenberg 1999). With the
+// marginal orbicularis oris pulling the lip's dermis and fat as weakly as
+// the other muscles do (it lies in the red of the lips: muscle_course.cpp)
+// they were still 1.8 mm apart then, at one step a frame; now they touch
+// (0.3 mm at one step a frame, 0.5 before the solver's bond to the bone).
 TEST(Anatomy, TheLipsCloseWithinASyllable) {
   SimulationOptions options;
   options.solver = Solver::projective;

@@ -66,7 +66,7 @@ float attached_layer_share(std::size_t layer, bool within_the_lips) {
   // (Standring, Gray's Anatomy, 41st ed., 2016, "Lips"): its pull does not
   // thin out on the way to the surface. With the generic shares the
   // bilabial pose took about 300 ms to close the lips from 7 mm apart, more
-  // than a syllable; now about 230 ms (tests/physics anatomy_test.cpp).
+  // than a syllable; now about 190 ms (tests/physics anatomy_test.cpp).
   const auto kind = static_cast<TissueLayer>(layer);
   if (within_the_lips && (kind == TissueLayer::dermis || kind == TissueLayer::fat)) return 1.0f;
   switch (kind) {

@@ -108,9 +108,9 @@ void ProjectiveStepper::substep(std::span<FaceSimulation* const> faces, float h)
   // relative speed (TissueMaterial::bone_damping, as the mass-spring and
   // XPBD solvers have it): implicitly, c M / h (x - x_n - the bone's move
   // this step) = 0 joins the system, so tissue on the turning mandible
-  // keeps up with it: 99 ms after the jaw open at 0.2 rad is let go, the
-  // lower lip is 14.1 mm from rest, its bone 5.4 (mass-spring 12.9;
-  // without the bond 16.8).
+  // keeps up with it: 99 ms after the open jaw is let go, the lower lip
+  // trails its bone by 7.0 mm (mass-spring 5.7; without the bond 11.4:
+  // projective_dynamics_test.cpp).
   const float bond = mass * m.material.bone_damping / ht;
   const std::size_t vertices = m.vertex_count;
 
